@@ -1,0 +1,400 @@
+"""The `tmm` command line: parse, call the core, hand the result to the renderers.
+
+Heavy modules (numpy, scipy, matplotlib, the core) are imported inside the commands, so
+``tmm --help`` stays instant. Every bad input becomes one line on stderr and exit status 2.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+from pathlib import Path
+
+import click
+
+from .errors import TmmError
+
+CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
+
+
+class TmmGroup(click.Group):
+    """A click group whose errors are one line on stderr with exit status 2, never a traceback."""
+
+    def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True, **extra):
+        if not standalone_mode:
+            return super().main(args, prog_name, complete_var, standalone_mode, **extra)
+        try:
+            rv = super().main(args, prog_name or "tmm", complete_var, False, **extra)
+        except TmmError as exc:
+            _fail(str(exc))
+        except click.exceptions.Abort:
+            click.echo("tmm: aborted", err=True)
+            sys.exit(1)
+        except click.ClickException as exc:
+            _fail(exc.format_message())
+        except KeyboardInterrupt:
+            click.echo("tmm: interrupted", err=True)
+            sys.exit(130)
+        except Exception as exc:  # a bug: one line, not a traceback, unless TMM_DEBUG is set
+            if os.environ.get("TMM_DEBUG"):
+                raise
+            click.echo(f"tmm: internal error: {exc.__class__.__name__}: {exc} (run with TMM_DEBUG=1 for details)", err=True)
+            sys.exit(1)
+        sys.exit(rv if isinstance(rv, int) else 0)
+
+
+def _fail(message: str) -> None:
+    line = " ".join(str(message).split())
+    click.echo(f"tmm: error: {line}", err=True)
+    sys.exit(2)
+
+
+def _lang(lang: str | None) -> str:
+    from .render.i18n import default_lang
+
+    return lang or default_lang()
+
+
+def _console(lang: str):
+    from rich.console import Console
+
+    return Console(highlight=False)
+
+
+def _variant(number: str, variants_file: str | None):
+    from .variants import get_variant
+
+    return get_variant(number, variants_file)
+
+
+def _out_folder(out: str | None, number: int) -> Path:
+    base = Path(out) if out else Path("tmm-out")
+    return base / f"variant-{number:02d}"
+
+
+def _print_json(obj) -> None:
+    click.echo(json.dumps(obj, ensure_ascii=False, indent=2))
+
+
+def _print_notes(console, notes, lang: str) -> None:
+    from .render.i18n import note_text, pick
+
+    if not notes:
+        return
+    from rich.panel import Panel
+
+    lines = []
+    for note in notes:
+        mark = "[yellow]⚠[/]" if note.level == "warning" else "[cyan]ℹ[/]"
+        lines.append(f"{mark} {note_text(note, lang)}")
+    title = pick(lang, "Warnings and assumptions", "Предупреждения и допущения")
+    console.print(Panel("\n".join(lines), title=title, expand=False))
+
+
+def _print_files(console, folder: Path, names: list[str], lang: str) -> None:
+    from .render.i18n import pick
+
+    if names:
+        console.print(pick(lang, "Files written to ", "Файлы записаны в ") + f"[bold]{folder}[/]: " + ", ".join(names))
+
+
+# Shared options -----------------------------------------------------------------------------
+
+variant_option = click.option("--variant", "-v", "variant", required=True, metavar="N", help="Variant number from Table 1.2 (1–68).")
+variants_file_option = click.option(
+    "--variants-file", type=click.Path(dir_okay=False), default=None, metavar="PATH",
+    help="Use your own table in the format of variants/table_1_2.csv.",
+)
+out_option = click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Output folder (default ./tmm-out); files go to DIR/variant-NN/.")
+format_option = click.option("--format", "fmt", type=click.Choice(["png", "svg", "pdf"]), default="png", show_default=True, help="Figure file format.")
+no_plots_option = click.option("--no-plots", is_flag=True, help="Do not draw figures (faster).")
+json_option = click.option("--json", "as_json", is_flag=True, help="Print only JSON on stdout.")
+lang_option = click.option("--lang", type=click.Choice(["ru", "en"]), default=None, help="Output language (default: from the locale).")
+step_option = click.option("--step", "step_deg", type=float, default=10.0, show_default=True, metavar="DEG", help="Cam angle step of the printed tables [deg].")
+crank_option = click.option("--crank-rpm", type=float, default=None, metavar="R", help="Crank speed of the linkage n_кр [rpm] (default: the book's 220 rpm, stated in the output).")
+torque_option = click.option("--torque", "torque_nm", type=float, default=None, metavar="NM", help="Mean reduced moment M from sheet 2 [N·m], for the motor power (§2.6).")
+ratio_option = click.option("--ratio", default=None, metavar="P/Q", help="Force the planetary ratio fraction of the book's procedure, e.g. 13/4.")
+tolerance_option = click.option("--tolerance", "tolerance_pct", type=float, default=5.0, show_default=True, metavar="PCT", help="Allowed planetary ratio error [%].")
+planets_option = click.option("--planets", type=int, default=None, metavar="K", help="Force the number of planets.")
+
+
+def _parse_ratio(ratio: str | None):
+    if ratio is None:
+        return None
+    from .gears.design import parse_ratio
+
+    return parse_ratio(ratio)
+
+
+@click.group(cls=TmmGroup, context_settings=CONTEXT)
+@click.version_option(package_name="tmm", prog_name="tmm")
+def cli():
+    """tmm — the calculation part of the TMM course project (Pozhbelko et al., 2003, part 2).
+
+    Sheet 3: cam mechanism synthesis (`tmm cam`). Sheet 4: gear drive synthesis (`tmm gears`).
+    Both at once, with a report: `tmm project --variant 17`. Teachers: `tmm batch`, `tmm check`.
+    """
+
+
+# tmm variants ------------------------------------------------------------------------------
+
+
+@cli.group("variants", invoke_without_command=True, context_settings=CONTEXT)
+@variants_file_option
+@lang_option
+@click.pass_context
+def variants_cmd(ctx, variants_file, lang):
+    """List Table 1.2 (the 68 variants of sheet 3); `tmm variants show N` explains one row."""
+    ctx.obj = {"variants_file": variants_file, "lang": lang}
+    if ctx.invoked_subcommand is None:
+        from .render.variants_tables import print_variant_table
+        from .variants import load_table
+
+        lang = _lang(lang)
+        print_variant_table(_console(lang), load_table(variants_file), lang)
+
+
+@variants_cmd.command("show", context_settings=CONTEXT)
+@click.argument("number")
+@variants_file_option
+@lang_option
+@click.pass_context
+def variants_show(ctx, number, variants_file, lang):
+    """Show one variant with the meaning of each field."""
+    from .render.variants_tables import print_variant_detail
+
+    variants_file = variants_file or ctx.obj.get("variants_file")
+    lang = _lang(lang or ctx.obj.get("lang"))
+    print_variant_detail(_console(lang), _variant(number, variants_file), lang)
+
+
+# tmm cam -----------------------------------------------------------------------------------
+
+
+@cli.command("cam", context_settings=CONTEXT)
+@variant_option
+@variants_file_option
+@out_option
+@format_option
+@no_plots_option
+@json_option
+@step_option
+@lang_option
+def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang):
+    """Sheet 3: follower diagrams, main dimensions, cam profile, pressure angle."""
+    from .cam.design import design_cam
+    from .render.cam_json import cam_to_json, profile_csv
+    from .render.files import staged_dir, write_json, write_text
+    from .render.report import cam_document
+
+    lang = _lang(lang)
+    v = _variant(variant, variants_file)
+    folder = _out_folder(out, v.number)
+    from .render.files import ensure_writable_dir
+
+    ensure_writable_dir(folder.parent)
+    result = design_cam(v, step_deg=step_deg)
+    doc = cam_document(v, result, lang)
+    with staged_dir(folder) as tmp:
+        write_json(tmp / "cam.json", doc)
+        write_text(tmp / "cam_profile.csv", profile_csv(result))
+        if not no_plots:
+            from .render.cam_figures import cam_figures
+            from .render.files import save_figures
+
+            save_figures(tmp, cam_figures(result, lang), fmt)
+        written = sorted(p.name for p in tmp.iterdir())
+    if as_json:
+        _print_json(doc)
+        return
+    from .render.cam_tables import print_cam
+
+    console = _console(lang)
+    print_cam(console, result, lang)
+    _print_notes(console, result.notes, lang)
+    _print_files(console, folder, written, lang)
+
+
+# tmm gears ---------------------------------------------------------------------------------
+
+
+@cli.command("gears", context_settings=CONTEXT)
+@variant_option
+@variants_file_option
+@crank_option
+@torque_option
+@ratio_option
+@tolerance_option
+@planets_option
+@out_option
+@format_option
+@no_plots_option
+@json_option
+@lang_option
+def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, lang):
+    """Sheet 4: motor, ratio split, planetary reducer synthesis, spur pair to the cam."""
+    from .gears.design import design_gears
+    from .render.files import ensure_writable_dir, staged_dir, write_json
+    from .render.report import gears_document
+
+    lang = _lang(lang)
+    v = _variant(variant, variants_file)
+    folder = _out_folder(out, v.number)
+    ensure_writable_dir(folder.parent)
+    result = design_gears(
+        v.n_cam_rpm, crank_rpm=crank_rpm, torque_nm=torque_nm, ratio=_parse_ratio(ratio),
+        tolerance_pct=tolerance_pct, planets=planets,
+    )
+    doc = gears_document(v, result, lang)
+    with staged_dir(folder) as tmp:
+        write_json(tmp / "gears.json", doc)
+        if not no_plots:
+            from .render.files import save_figures
+            from .render.gears_figures import gears_figures
+
+            save_figures(tmp, gears_figures(result, lang), fmt)
+        written = sorted(p.name for p in tmp.iterdir())
+    if as_json:
+        _print_json(doc)
+        return
+    from .render.gears_tables import print_gears
+
+    console = _console(lang)
+    print_gears(console, result, lang)
+    _print_notes(console, result.notes, lang)
+    _print_files(console, folder, written, lang)
+
+
+# tmm project -------------------------------------------------------------------------------
+
+
+@cli.command("project", context_settings=CONTEXT)
+@variant_option
+@variants_file_option
+@crank_option
+@torque_option
+@ratio_option
+@tolerance_option
+@planets_option
+@out_option
+@format_option
+@no_plots_option
+@json_option
+@click.option("--report", "report", type=click.Choice(["md", "pdf"]), default="md", show_default=True, help="Report format written beside the figures.")
+@step_option
+@lang_option
+def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, report, step_deg, lang):
+    """The whole project for one variant: sheet 4 then sheet 3, figures, results.json and a report."""
+    from .project import run_project
+    from .render.files import ensure_writable_dir
+    from .render.report import write_project_folder
+
+    lang = _lang(lang)
+    v = _variant(variant, variants_file)
+    folder = _out_folder(out, v.number)
+    ensure_writable_dir(folder.parent)
+    result = run_project(
+        v, crank_rpm=crank_rpm, torque_nm=torque_nm, step_deg=step_deg,
+        ratio=_parse_ratio(ratio), tolerance_pct=tolerance_pct, planets=planets,
+    )
+    doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report)
+    if as_json:
+        _print_json(doc)
+        return
+    from .render.report import print_project
+
+    console = _console(lang)
+    print_project(console, result, lang)
+    _print_files(console, folder, written, lang)
+
+
+# tmm batch ---------------------------------------------------------------------------------
+
+
+@cli.command("batch", context_settings=CONTEXT)
+@click.option("--variants", "variants_spec", default=None, metavar="LIST", help="Variants, e.g. 1-68 or 3,17,40.")
+@click.option("--roster", type=click.Path(dir_okay=False), default=None, metavar="FILE", help="CSV with columns student,variant[,crank_rpm][,torque].")
+@variants_file_option
+@crank_option
+@torque_option
+@out_option
+@format_option
+@click.option("--jobs", "-j", type=int, default=None, metavar="N", help="Parallel worker processes (default: number of cores).")
+@no_plots_option
+@click.option("--report", "report", type=click.Choice(["md", "pdf", "none"]), default="md", show_default=True, help="Per-variant report format.")
+@lang_option
+def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, fmt, jobs, no_plots, report, lang):
+    """Teachers: run many variants or a class roster in parallel and write summary.csv."""
+    from .batch import jobs_from_roster, jobs_from_spec, run_batch
+    from .render.batch_render import print_batch
+
+    lang = _lang(lang)
+    if (variants_spec is None) == (roster is None):
+        raise TmmError("give exactly one of --variants (e.g. 1-68) or --roster FILE")
+    if jobs is not None and jobs < 1:
+        raise TmmError(f"--jobs is {jobs}; give 1 or more worker processes")
+    if variants_spec is not None:
+        rows, bad = jobs_from_spec(variants_spec, crank_rpm, torque_nm), []
+    else:
+        rows, bad = jobs_from_roster(roster, crank_rpm, torque_nm)
+    out_dir = Path(out) if out else Path("tmm-out")
+    summary = run_batch(
+        rows, bad, out_dir, variants_file=variants_file, lang=lang, fmt=fmt,
+        plots=not no_plots, report=None if report == "none" else report, jobs_n=jobs, progress=True,
+    )
+    print_batch(_console(lang), summary, out_dir, lang)
+    return 1 if summary.failed else 0
+
+
+# tmm check ---------------------------------------------------------------------------------
+
+
+@cli.command("check", context_settings=CONTEXT)
+@click.option("--variant", "-v", "variant", default=None, metavar="N", help="Variant number (one student).")
+@click.option("--answers", type=click.Path(dir_okay=False), default=None, metavar="FILE", help="The student's numbers (TOML or CSV, keys in `tmm check --keys`).")
+@click.option("--roster", type=click.Path(dir_okay=False), default=None, metavar="FILE", help="Class roster CSV (student,variant[,crank_rpm][,torque]).")
+@click.option("--answers-dir", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Folder with one answers file per student (STUDENT.toml or STUDENT.csv).")
+@variants_file_option
+@crank_option
+@torque_option
+@click.option("--rtol", "rtol_pct", type=float, default=3.0, show_default=True, metavar="PCT", help="Tolerance for graphical quantities [%].")
+@click.option("--keys", "show_keys", is_flag=True, help="List the answer keys and exit.")
+@json_option
+@lang_option
+def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, torque_nm, rtol_pct, show_keys, as_json, lang):
+    """Teachers: check a student's numbers against the computed ones."""
+    from .check import check_group, check_one, read_answers
+    from .render.check_render import print_check, print_group, print_keys
+
+    lang = _lang(lang)
+    console = _console(lang)
+    if show_keys:
+        print_keys(console, lang)
+        return 0
+    if rtol_pct <= 0:
+        raise TmmError(f"--rtol is {rtol_pct:g}; give a positive tolerance in percent")
+    if roster is not None or answers_dir is not None:
+        if roster is None or answers_dir is None:
+            raise TmmError("group check needs both --roster FILE and --answers-dir DIR")
+        group = check_group(roster, answers_dir, variants_file=variants_file, crank_rpm=crank_rpm, torque_nm=torque_nm, rtol_pct=rtol_pct)
+        if as_json:
+            _print_json(group.to_json())
+        else:
+            print_group(console, group, lang)
+        return 0 if group.all_passed else 1
+    if variant is None or answers is None:
+        raise TmmError("give --variant N and --answers FILE (or --roster FILE with --answers-dir DIR)")
+    v = _variant(variant, variants_file)
+    report = check_one(v, read_answers(answers), crank_rpm=crank_rpm, torque_nm=torque_nm, rtol_pct=rtol_pct)
+    if as_json:
+        _print_json(report.to_json())
+    else:
+        print_check(console, report, lang)
+    return 0 if report.passed else 1
+
+
+main = cli
+
+if __name__ == "__main__":  # pragma: no cover
+    cli()

@@ -1,0 +1,145 @@
+"""The project's documents: JSON objects, the terminal report and the Markdown / PDF report.
+
+Every document reads the same result objects: the JSON comes from ``cam_to_json`` and
+``gears_to_json``; the Markdown and PDF reports embed the very tables printed in the terminal
+(recorded from rich) and the very figures saved beside them.
+"""
+
+from __future__ import annotations
+
+import io
+from pathlib import Path
+
+from .. import __version__
+from ..variants import Variant
+from .i18n import note_text, pick
+
+SHEET_FIGURES = ("gears_planetary", "gears_assembly", "gears_mesh", "cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle")
+
+
+def _head(v: Variant) -> dict:
+    return {"tool": f"tmm {__version__}", "variant": v.number, "input": v.as_input_dict()}
+
+
+def cam_document(v: Variant, cam, lang: str) -> dict:
+    """The JSON of `tmm cam`: variant, input row, cam."""
+    from .cam_json import cam_to_json
+
+    return {**_head(v), "cam": cam_to_json(cam, lang)}
+
+
+def gears_document(v: Variant, gears, lang: str) -> dict:
+    """The JSON of `tmm gears`: variant, input row, gears."""
+    from .gears_json import gears_to_json
+
+    return {**_head(v), "gears": gears_to_json(gears, lang)}
+
+
+def project_document(result, lang: str) -> dict:
+    """The JSON of `tmm project` (= results.json): the union of the cam and gears documents."""
+    from .cam_json import cam_to_json
+    from .gears_json import gears_to_json
+
+    notes = result.notes
+    return {
+        **_head(result.variant),
+        "gears": gears_to_json(result.gears, lang),
+        "cam": cam_to_json(result.cam, lang),
+        "assumptions": [note_text(n, lang) for n in notes if n.level == "assumption"],
+        "warnings": [note_text(n, lang) for n in notes if n.level == "warning"],
+    }
+
+
+def print_project(console, result, lang: str) -> None:
+    """The terminal report in the order of the explanatory note: input, sheet 4, sheet 3, notes."""
+    from rich.rule import Rule
+
+    from .cam_tables import print_cam
+    from .gears_tables import print_gears
+    from .variants_tables import print_variant_detail
+
+    v = result.variant
+    console.print(Rule(pick(lang, f"TMM course project — variant {v.number}", f"Курсовой проект по ТММ — вариант {v.number}")))
+    print_variant_detail(console, v, lang)
+    console.print(Rule(pick(lang, "Sheet 4 — gear drive", "Лист 4 — синтез зубчатых механизмов")))
+    print_gears(console, result.gears, lang)
+    console.print(Rule(pick(lang, "Sheet 3 — cam mechanism", "Лист 3 — синтез кулачкового механизма")))
+    print_cam(console, result.cam, lang)
+    notes = result.notes
+    if notes:
+        from rich.panel import Panel
+
+        assumptions = [n for n in notes if n.level == "assumption"]
+        warnings = [n for n in notes if n.level == "warning"]
+        lines = [f"[cyan]ℹ[/] {note_text(n, lang)}" for n in assumptions]
+        lines += [f"[yellow]⚠[/] {note_text(n, lang)}" for n in warnings]
+        title = pick(lang, f"Assumptions ({len(assumptions)}) and warnings ({len(warnings)})",
+                     f"Допущения ({len(assumptions)}) и предупреждения ({len(warnings)})")
+        console.print(Panel("\n".join(lines), title=title, expand=False))
+
+
+def terminal_text(result, lang: str, width: int = 110) -> str:
+    """The terminal report as plain text (what `print_project` shows, without colours)."""
+    from rich.console import Console
+
+    console = Console(record=True, width=width, file=io.StringIO(), color_system=None, highlight=False)
+    print_project(console, result, lang)
+    return console.export_text()
+
+
+def markdown_report(result, lang: str, figure_files: list[str]) -> str:
+    """A Markdown report: the terminal tables verbatim and every figure linked."""
+    v = result.variant
+    title = pick(lang, f"TMM course project, variant {v.number}", f"Курсовой проект по ТММ, вариант {v.number}")
+    parts = [f"# {title}", "", pick(lang, f"Computed by tmm {__version__}.", f"Рассчитано программой tmm {__version__}."), ""]
+    parts += ["```text", terminal_text(result, lang).rstrip(), "```", ""]
+    if figure_files:
+        parts += ["## " + pick(lang, "Figures", "Рисунки"), ""]
+        for name in figure_files:
+            stem = Path(name).stem
+            parts += [f"### {stem}", "", f"![{stem}]({name})", ""]
+    return "\n".join(parts)
+
+
+def pdf_report(path: Path, result, lang: str, figures: dict) -> None:
+    """One printable PDF: the text report on A4 pages, then every figure on its own page."""
+    from matplotlib.backends.backend_pdf import PdfPages
+    from matplotlib.figure import Figure
+
+    lines = terminal_text(result, lang, width=110).splitlines()
+    per_page = 80
+    with PdfPages(path) as pdf:
+        for start in range(0, max(len(lines), 1), per_page):
+            fig = Figure(figsize=(8.27, 11.69))
+            fig.text(0.04, 0.97, "\n".join(lines[start:start + per_page]), family="DejaVu Sans Mono",
+                     fontsize=5.6, va="top", ha="left")
+            pdf.savefig(fig)
+        for fig in figures.values():
+            pdf.savefig(fig)
+
+
+def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", plots: bool = True, report: str | None = "md"):
+    """Write results.json, cam_profile.csv, the figures and the report into `folder`, atomically.
+
+    Returns (the JSON document, the sorted list of file names written).
+    """
+    from .cam_json import profile_csv
+    from .files import save_figures, staged_dir, write_json, write_text
+
+    doc = project_document(result, lang)
+    with staged_dir(folder) as tmp:
+        write_json(tmp / "results.json", doc)
+        write_text(tmp / "cam_profile.csv", profile_csv(result.cam))
+        figures = {}
+        if plots:
+            from .cam_figures import cam_figures
+            from .gears_figures import gears_figures
+
+            figures = {**gears_figures(result.gears, lang), **cam_figures(result.cam, lang)}
+        files = [p.name for p in save_figures(tmp, figures, fmt)]
+        if report == "md":
+            write_text(tmp / "report.md", markdown_report(result, lang, files))
+        elif report == "pdf":
+            pdf_report(tmp / "report.pdf", result, lang, figures)
+        written = sorted(p.name for p in tmp.iterdir())
+    return doc, written
