@@ -1,0 +1,167 @@
+"""`tmm project`, `tmm batch`, `tmm check` through CliRunner: files, exit codes, summary rows."""
+
+import csv
+import json
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from tmm_cli.cli import cli
+
+FIGURES = {"gears_planetary", "gears_assembly", "gears_mesh", "cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle"}
+
+
+def run(*args):
+    return CliRunner().invoke(cli, [str(a) for a in args])
+
+
+@pytest.fixture(scope="module")
+def project17(tmp_path_factory):
+    out = tmp_path_factory.mktemp("p17")
+    res = run("project", "--variant", 17, "--crank-rpm", 95, "--out", out, "--lang", "en")
+    assert res.exit_code == 0, res.output + res.stderr
+    return out / "variant-17", res
+
+
+def test_project_writes_the_whole_folder(project17):
+    folder, res = project17
+    names = {p.name for p in folder.iterdir()}
+    assert {"results.json", "cam_profile.csv", "report.md"} <= names
+    assert {f"{f}.png" for f in FIGURES} <= names
+    assert not [n for n in names if n.startswith(".")]
+    for f in FIGURES:
+        assert (folder / f"{f}.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    report = (folder / "report.md").read_text()
+    for f in FIGURES:
+        assert f"({f}.png)" in report
+    # the terminal report follows the explanatory note: sheet 4 before sheet 3
+    assert res.output.index("Sheet 4") < res.output.index("Sheet 3")
+
+
+def test_results_json_is_the_union_and_matches_stdout(project17, tmp_path):
+    folder, _ = project17
+    doc = json.loads((folder / "results.json").read_text())
+    assert doc["variant"] == 17
+    assert doc["input"]["scheme"] == 1 and doc["input"]["n_cam_rpm"] == -1000
+    for key in ("scheme", "law", "closure", "follower", "r0_mm", "e_mm", "l_oc_mm", "roller_mm",
+                "pressure_angle_max_deg", "psi_deg", "rho_min_mm", "pitch_curve_mm", "warnings"):
+        assert key in doc["cam"], key
+    for key in ("crank_rpm", "motor", "i_spur", "i_planetary", "planetary", "spur", "warnings"):
+        assert key in doc["gears"], key
+    assert doc["gears"]["crank_rpm"] == 95
+    res = run("project", "--variant", 17, "--crank-rpm", 95, "--out", tmp_path, "--json", "--no-plots", "--lang", "en")
+    assert res.exit_code == 0
+    printed = json.loads(res.output)
+    assert printed == json.loads((tmp_path / "variant-17" / "results.json").read_text())
+    assert printed["cam"] == doc["cam"] and printed["gears"] == doc["gears"]
+
+
+def test_default_crank_speed_is_stated(tmp_path):
+    res = run("project", "--variant", 5, "--out", tmp_path, "--json", "--no-plots", "--lang", "en")
+    assert res.exit_code == 0
+    doc = json.loads(res.output)
+    assert doc["gears"]["crank_rpm"] == 220
+    assert any("220" in a for a in doc["assumptions"])
+
+
+def test_pdf_report(tmp_path):
+    res = run("project", "--variant", 2, "--out", tmp_path, "--no-plots", "--report", "pdf", "--lang", "ru")
+    assert res.exit_code == 0, res.stderr
+    pdf = tmp_path / "variant-02" / "report.pdf"
+    assert pdf.read_bytes()[:5] == b"%PDF-"
+
+
+def test_failed_project_leaves_no_folder(tmp_path):
+    res = run("project", "--variant", 17, "--crank-rpm", 2000, "--out", tmp_path)
+    assert res.exit_code == 2 and "Traceback" not in res.output
+    assert len(res.stderr.strip().splitlines()) == 1
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_batch_variants(tmp_path):
+    res = run("batch", "--variants", "1-3,17", "--no-plots", "--jobs", 2, "--out", tmp_path, "--report", "none")
+    assert res.exit_code == 0, res.output + res.stderr
+    rows = list(csv.DictReader((tmp_path / "summary.csv").open()))
+    assert [r["variant"] for r in rows] == ["1", "2", "3", "17"]
+    assert all(r["status"] == "ok" for r in rows)
+    for r in rows:
+        doc = json.loads((Path(r["folder"]) / "results.json").read_text())
+        assert float(r["r0_mm"]) == pytest.approx(doc["cam"]["r0_mm"], rel=1e-5)
+        assert int(r["z1"]) == doc["gears"]["spur"]["z1"]
+
+
+def test_batch_roster_with_bad_rows(tmp_path):
+    roster = tmp_path / "roster.csv"
+    roster.write_text(
+        "student,variant,crank_rpm,torque\n"
+        "Ivanov,17,95,\n"
+        "Petrov,99,,\n"
+        "Sidorov,5,-40,\n"
+        ",7,,\n"
+        "Kuznetsova,8,120,50\n"
+    )
+    res = run("batch", "--roster", roster, "--no-plots", "--jobs", 1, "--out", tmp_path / "o", "--report", "none")
+    assert res.exit_code == 1
+    rows = {r["student"]: r for r in csv.DictReader((tmp_path / "o" / "summary.csv").open())}
+    assert rows["Ivanov"]["status"] == "ok" and rows["Kuznetsova"]["status"] == "ok"
+    assert rows["Kuznetsova"]["power_kw"] != ""
+    assert rows["Petrov"]["status"] == "failed" and "variant 99" in rows["Petrov"]["error"]
+    assert rows["Sidorov"]["status"] == "failed" and "-40" in rows["Sidorov"]["error"]
+    assert any(r["status"] == "failed" and "student" in r["error"] for r in rows.values() if r["student"].startswith("line"))
+    assert (tmp_path / "o" / "Ivanov" / "variant-17" / "results.json").exists()
+
+
+def test_batch_roster_missing_column(tmp_path):
+    roster = tmp_path / "roster.csv"
+    roster.write_text("name,variant\nA,1\n")
+    res = run("batch", "--roster", roster, "--out", tmp_path / "o")
+    assert res.exit_code == 2 and "student" in res.stderr
+
+
+def _answers_from(doc):
+    st = doc["gears"]["planetary"]["stages"][0]
+    return {
+        "r0_mm": doc["cam"]["r0_mm"] * 1.02,  # within 3 %
+        "z_sun": st["z_sun"],
+        "z_ring": st["z_ring"],
+        "planets": st["planets"],
+        "eps_alpha": doc["gears"]["spur"]["eps_alpha"],
+        "n_motor_rpm": doc["gears"]["motor"]["n_rpm"],
+    }
+
+
+def test_check_pass_fail_unknown(project17, tmp_path):
+    folder, _ = project17
+    doc = json.loads((folder / "results.json").read_text())
+    good = _answers_from(doc)
+    f = tmp_path / "good.toml"
+    f.write_text("\n".join(f"{k} = {v}" for k, v in good.items()) + "\n")
+    res = run("check", "--variant", 17, "--crank-rpm", 95, "--answers", f, "--json")
+    assert res.exit_code == 0, res.output
+    rep = json.loads(res.output)
+    assert rep["passed"] and all(r["status"] == "pass" for r in rep["rows"])
+
+    bad = dict(good, z_sun=good["z_sun"] + 1, r0_mm=doc["cam"]["r0_mm"] * 1.05, r_zero=3)
+    f2 = tmp_path / "bad.csv"
+    f2.write_text("key,value\n" + "\n".join(f"{k},{v}" for k, v in bad.items()) + "\n")
+    res = run("check", "--variant", 17, "--crank-rpm", 95, "--answers", f2, "--json")
+    assert res.exit_code == 1
+    rows = {r["key"]: r["status"] for r in json.loads(res.output)["rows"]}
+    assert rows["z_sun"] == "fail" and rows["r0_mm"] == "fail" and rows["r_zero"] == "unknown key"
+    assert rows["planets"] == "pass"
+
+
+def test_check_group(project17, tmp_path):
+    folder, _ = project17
+    doc = json.loads((folder / "results.json").read_text())
+    (tmp_path / "answers").mkdir()
+    (tmp_path / "answers" / "Ivanov.toml").write_text(f"r0_mm = {doc['cam']['r0_mm']}\n")
+    (tmp_path / "answers" / "Petrov.toml").write_text("r0_mm = 1.0\n")
+    roster = tmp_path / "roster.csv"
+    roster.write_text("student,variant,crank_rpm\nIvanov,17,95\nPetrov,17,95\nSmirnov,17,95\n")
+    res = run("check", "--roster", roster, "--answers-dir", tmp_path / "answers", "--json")
+    assert res.exit_code == 1
+    by = {s["student"]: s for s in json.loads(res.output)["students"]}
+    assert by["Ivanov"]["passed"] and not by["Petrov"]["passed"]
+    assert "no answers file" in by["Smirnov"]["error"]
