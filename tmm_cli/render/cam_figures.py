@@ -1,0 +1,281 @@
+"""The four fields of sheet 3 as matplotlib figures (no pyplot, no global state).
+
+matplotlib is imported inside :func:`cam_figures` only, so importing this module stays cheap.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..cam.design import CamResult
+from .i18n import pick
+
+C_RISE = "#1f77b4"
+C_RET = "#d62728"
+C_DWELL = "#7f7f7f"
+C_ZONE = "#2ca02c"
+C_BOOK = "#9467bd"
+
+
+def _phase_marks(ax, r: CamResult, lang: str, labels: bool = False) -> None:
+    v = r.variant
+    bounds = [0.0, v.phi_rise_deg, v.phi_rise_deg + v.phi_far_dwell_deg, v.phi_working_deg, 360.0]
+    names = [pick(lang, "rise", "удаление"), pick(lang, "far dwell", "дал. стояние"), pick(lang, "return", "возвращение"), pick(lang, "near dwell", "бл. стояние")]
+    colors = [C_RISE, C_DWELL, C_RET, C_DWELL]
+    for i in range(4):
+        a, b = bounds[i], bounds[i + 1]
+        if b - a <= 0:
+            continue
+        ax.axvspan(a, b, color=colors[i], alpha=0.06, lw=0)
+        if labels and b - a >= 25:
+            ax.text((a + b) / 2, 0.97, names[i], transform=ax.get_xaxis_transform(), ha="center", va="top", fontsize=8, color=colors[i])
+    for x in bounds[1:4]:
+        ax.axvline(x, color="k", lw=0.6, ls=":")
+
+
+def _motion_figure(Figure, r: CamResult, lang: str):
+    v, m = r.variant, r.motion
+    fig = Figure(figsize=(9, 9.5), layout="constrained")
+    axes = fig.subplots(3, 1, sharex=True)
+    deg = np.degrees(m.phi)
+    rows = [(x.phi_deg, x) for x in m.table]
+    if v.is_rocker:
+        l_mm = v.l_bc_m * 1000
+        series = [
+            (np.degrees(m.s), "γ, °", pick(lang, f"γ (S_B = γ·l_BC, l_BC = {l_mm:g} mm)", f"γ (S_B = γ·l_BC, l_BC = {l_mm:g} мм)"), [math.degrees(x.s) for _, x in rows]),
+            (m.v, pick(lang, "ω, rad/s", "ω, рад/с"), "ω = dγ/dt", [x.v for _, x in rows]),
+            (m.a, pick(lang, "ε, rad/s²", "ε, рад/с²"), "ε = dω/dt", [x.a for _, x in rows]),
+        ]
+    else:
+        series = [
+            (m.s * 1000, pick(lang, "S, mm", "S, мм"), "S", [x.s * 1000 for _, x in rows]),
+            (m.v, pick(lang, "V, m/s", "V, м/с"), "V = dS/dt", [x.v for _, x in rows]),
+            (m.a, pick(lang, "a, m/s²", "a, м/с²"), "a = dV/dt", [x.a for _, x in rows]),
+        ]
+    xs = [p for p, _ in rows]
+    for k, (ax, (y, ylabel, name, pts)) in enumerate(zip(axes, series)):
+        _phase_marks(ax, r, lang, labels=(k == 0))
+        # break the line at jumps of the acceleration so that it is drawn as a step
+        yy = np.array(y, dtype=float)
+        if k == 2:
+            jump = np.abs(np.diff(yy)) > 0.2 * (np.abs(yy).max() + 1e-30)
+            yy = yy.copy()
+            xx = deg.copy()
+            ins = np.nonzero(jump)[0] + 1
+            xx = np.insert(xx, ins, np.nan)
+            yy = np.insert(yy, ins, np.nan)
+            ax.plot(xx, yy, color="k", lw=1.4, label=name)
+        else:
+            ax.plot(deg, yy, color="k", lw=1.4, label=name)
+        ax.plot(xs, pts, "o", ms=3, color="tab:orange", label=pick(lang, "table positions", "положения таблицы"))
+        ax.axhline(0, color="k", lw=0.5)
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3)
+        ax.legend(loc="lower right" if k == 0 else "upper right", fontsize=8, framealpha=0.85)
+    axes[-1].set_xlabel(pick(lang, "cam angle φ, °", "угол поворота кулачка φ, °"))
+    axes[-1].set_xlim(0, 360)
+    axes[-1].set_xticks(np.arange(0, 361, 30))
+    w = m.omega
+    top = axes[0].secondary_xaxis("top", functions=(lambda d: np.radians(d) / w * 1000.0, lambda t: np.degrees(np.asarray(t) / 1000.0 * w)))
+    top.set_xlabel(pick(lang, "time t, ms", "время t, мс"))
+    law = pick(lang, f"law {v.law}", f"закон {v.law}")
+    fig.suptitle(
+        pick(lang, f"Variant {v.number}: follower motion diagrams\n({law}, n_k = {v.n_cam_rpm:g} rpm)", f"Вариант {v.number}: диаграммы движения толкателя\n({law}, n_k = {v.n_cam_rpm:g} об/мин)")
+    )
+    return fig
+
+
+def _zone_figure(Figure, r: CamResult, lang: str):
+    from matplotlib.patches import Polygon
+
+    v, z = r.variant, r.sizing
+    zn = z.zone
+    fig = Figure(figsize=(8.5, 9.5), layout="constrained")
+    ax = fig.subplots()
+    k = 1000.0
+    b, d = zn.b * k, zn.d * k
+    rise = zn.phase == 0
+    ret = zn.phase == 2
+    o = np.array(z.centre) * k
+    bv = np.array(z.book_centre) * k
+    pts = [b, d, o[None], bv[None], np.zeros((1, 2))]
+    if z.pivot is not None:
+        pts.append(np.array(z.pivot)[None] * k)
+    allp = np.concatenate(pts)
+    lo, hi = allp.min(axis=0), allp.max(axis=0)
+    span0 = max(hi - lo) + 1e-9
+    lo = np.minimum(lo, o - np.array([0.0, 0.45 * span0]))  # show the zone below the centre
+    span = max(hi - lo) * 1.12 + 1e-9
+    mid = (lo + hi) / 2
+    xlim = (mid[0] - span / 2, mid[0] + span / 2)
+    ylim = (mid[1] - span / 2, mid[1] + span / 2)
+
+    ax.add_patch(Polygon(zn.polygon * k, closed=True, facecolor=C_ZONE, alpha=0.15, edgecolor=C_ZONE, lw=1.0, label=pick(lang, "feasible zone (ν ≤ ν_max everywhere)", "зона возможного положения центра (ν ≤ ν_max)")))
+    ax.plot(b[rise, 0], b[rise, 1], color="k", lw=1.2, label=pick(lang, "roller-centre path B", "траектория центра ролика B"))
+    ax.plot(d[rise, 0], d[rise, 1], color=C_RISE, lw=1.6, label=pick(lang, "D-curve, rise", "кривая D, удаление"))
+    ls = "-" if z.closure == "form" else "--"
+    lab = pick(lang, "D-curve, return", "кривая D, возвращение") + ("" if z.closure == "form" else pick(lang, " (not constrained)", " (не ограничивается)"))
+    ax.plot(d[ret, 0], d[ret, 1], color=C_RET, lw=1.4, ls=ls, label=lab)
+    # a few segments B_i D_i
+    for idx in (np.nonzero(rise)[0], np.nonzero(ret)[0]):
+        for i in idx[:: max(1, len(idx) // 8)]:
+            ax.plot([b[i, 0], d[i, 0]], [b[i, 1], d[i, 1]], color="0.5", lw=0.6)
+    # the book's bounding lines
+    for L in zn.lines:
+        p0 = np.array(L.point) * k
+        dd = np.array(L.direction)
+        t = np.linspace(-3 * span, 3 * span, 2)
+        ax.plot(p0[0] + t * dd[0], p0[1] + t * dd[1], color=C_BOOK, lw=1.0, ls="-.")
+        # label the line where it enters the window
+        for tt in np.linspace(-3 * span, 3 * span, 400):
+            q = p0 + tt * dd
+            if xlim[0] + 0.04 * span < q[0] < xlim[1] - 0.2 * span and ylim[0] + 0.04 * span < q[1] < ylim[1] - 0.04 * span:
+                ax.text(q[0], q[1], " " + pick(lang, "line ", "прямая ") + L.name, color=C_BOOK, fontsize=11, weight="bold", va="bottom")
+                break
+    ax.plot([], [], color=C_BOOK, lw=1.0, ls="-.", label=pick(lang, "book's bounding lines (ν_max)", "ограничивающие прямые по пособию (ν_max)"))
+    ax.plot([0, o[0]], [0, o[1]], color="k", lw=1.0, ls="--")
+    ax.plot(*o, marker="*", ms=16, color=C_ZONE, mec="k", ls="none", zorder=5, label=pick(lang, f"chosen centre O: r0 = {z.r0_m * k:.2f} mm", f"принятый центр O: r_0 = {z.r0_m * k:.2f} мм"))
+    ax.plot(*bv, marker="X", ms=10, color=C_BOOK, mec="k", ls="none", label=pick(lang, f"book's vertex: r0 = {z.book_r0_m * k:.2f} mm, ν ≤ {max(z.book_nu_rise_max_deg, z.book_nu_return_max_deg if z.closure == 'form' else 0):.1f}°", f"вершина по пособию: r_0 = {z.book_r0_m * k:.2f} мм, ν ≤ {max(z.book_nu_rise_max_deg, z.book_nu_return_max_deg if z.closure == 'form' else 0):.1f}°"))
+    ax.plot(0, 0, "o", color="k", ms=5)
+    ax.annotate("B₀", (0, 0), textcoords="offset points", xytext=(6, 4), fontsize=11)
+    ax.annotate("O", o, textcoords="offset points", xytext=(8, -12), fontsize=11)
+    ax.text(o[0] / 2, o[1] / 2, f" r₀ = {z.r0_m * k:.1f}", fontsize=9, rotation=0, ha="left")
+    if z.pivot is not None:
+        c = np.array(z.pivot) * k
+        ax.plot(*c, "s", color="k", ms=6)
+        ax.annotate("C", c, textcoords="offset points", xytext=(6, 6), fontsize=11)
+        ax.plot([o[0], c[0]], [o[1], c[1]], color="tab:brown", lw=1.2, label=pick(lang, f"l_OC = {z.l_oc_m * k:.2f} mm", f"l_OC = {z.l_oc_m * k:.2f} мм"))
+        ax.plot([c[0], 0], [c[1], 0], color="k", lw=2.0, alpha=0.6, label=pick(lang, f"rocker CB₀, l_BC = {v.l_bc_m * k:g} mm", f"коромысло CB₀, l_BC = {v.l_bc_m * k:g} мм"))
+    else:
+        ax.axvline(0, color="k", lw=0.8, ls=":")
+        ax.plot([o[0], 0], [o[1], o[1]], color="tab:brown", lw=1.4, label=pick(lang, f"offset e = {z.e_m * k:+.2f} mm", f"эксцентриситет e = {z.e_m * k:+.2f} мм"))
+    ax.set_xlim(*xlim)
+    ax.set_ylim(*ylim)
+    ax.set_aspect("equal", adjustable="box")
+    ax.grid(alpha=0.3)
+    ax.set_xlabel(pick(lang, "x, mm (B₀ at the origin)", "x, мм (начало в B₀)"))
+    ax.set_ylabel(pick(lang, "y, mm (rise direction at B₀ = +y)", "y, мм (+y — направление удаления в B₀)"))
+    fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncol=2, fontsize=8, frameon=False)
+    rot = pick(lang, "cam turns counter-clockwise", "кулачок вращается против часовой стрелки") if v.ccw else pick(lang, "cam turns clockwise", "кулачок вращается по часовой стрелке")
+    fig.suptitle(pick(lang, f"Variant {v.number}: zone of the cam centre, ν_max = {v.nu_max_deg:g}°\n({rot})", f"Вариант {v.number}: зона положения центра кулачка, ν_max = {v.nu_max_deg:g}°\n({rot})"))
+    return fig
+
+
+def _profile_figure(Figure, r: CamResult, lang: str):
+    from matplotlib.patches import Circle, FancyArrowPatch
+
+    v, z, p = r.variant, r.sizing, r.profile
+    k = 1000.0
+    fig = Figure(figsize=(8.5, 9.5), layout="constrained")
+    ax = fig.subplots()
+    P = p.pitch * k
+    th = np.linspace(0, 2 * math.pi, 361)
+    r0 = z.r0_m * k
+    rp = p.roller_m * k
+    ax.plot(r0 * np.cos(th), r0 * np.sin(th), color="0.4", lw=0.8, ls="--", label=pick(lang, f"base circle r0 = {r0:.2f} mm", f"окружность r_0 = {r0:.2f} мм"))
+    ax.plot(P[:, 0], P[:, 1], color=C_RISE, lw=1.2, ls="-.", label=pick(lang, "pitch curve T", "теоретический профиль T"))
+    ax.plot(p.inner[:, 0] * k, p.inner[:, 1] * k, color="k", lw=1.8, label=pick(lang, f"working profile D1 (roller r = {rp:.2f} mm)", f"действительный профиль D1 (ролик r = {rp:.2f} мм)"))
+    if p.outer is not None:
+        ax.plot(p.outer[:, 0] * k, p.outer[:, 1] * k, color="k", lw=1.8, ls="-", alpha=0.7)
+        ax.plot([], [], color="k", lw=1.8, alpha=0.7, label=pick(lang, "groove side D2", "вторая сторона паза D2"))
+    # inverted follower positions and rollers at the table positions
+    n = len(p.phi) - 1
+    idxs = [int(round(math.radians(row.phi_deg) / (2 * math.pi) * n)) % n for row in r.motion.table]
+    idxs = idxs[:: max(1, len(idxs) // 8)]
+    stem = 0.45 * r0
+    for j, i in enumerate(idxs):
+        c = P[i]
+        ax.add_patch(Circle(c, rp, fill=False, color="tab:orange", lw=0.9))
+        if p.pivot_path is not None:
+            q = p.pivot_path[i] * k
+            ax.plot([q[0], c[0]], [q[1], c[1]], color="tab:brown", lw=1.0, alpha=0.8)
+            ax.plot(*q, "s", color="tab:brown", ms=3)
+        else:
+            u = p.axis_dir[i]
+            ax.plot([c[0], c[0] + stem * u[0]], [c[1], c[1] + stem * u[1]], color="tab:brown", lw=1.0, alpha=0.8)
+    ax.plot([], [], color="tab:orange", lw=0.9, label=pick(lang, "roller at table positions", "ролик в положениях таблицы"))
+    ax.plot([], [], color="tab:brown", lw=1.0, label=pick(lang, "follower in inverted motion", "толкатель в обращённом движении"))
+    if p.pivot_path is not None:
+        pp = p.pivot_path * k
+        ax.plot(pp[:, 0], pp[:, 1], color="tab:brown", lw=0.6, ls=":", label=pick(lang, f"pivot circle l_OC = {z.l_oc_m * k:.2f} mm", f"окружность центров качания l_OC = {z.l_oc_m * k:.2f} мм"))
+    else:
+        e = abs(z.e_m) * k
+        if e > 1e-6:
+            ax.plot(e * np.cos(th), e * np.sin(th), color="tab:brown", lw=0.6, ls=":", label=pick(lang, f"offset circle |e| = {e:.2f} mm", f"окружность эксцентриситета |e| = {e:.2f} мм"))
+        # the follower axis in the drawn position (start of rise)
+        ax.plot([z.e_m * k, z.e_m * k], [P[0, 1] - 0.2 * r0, P[0, 1] + stem], color="tab:brown", lw=1.6)
+    ax.plot([0], [0], "+", color="k", ms=12, mew=1.5)
+    ax.annotate("O", (0, 0), textcoords="offset points", xytext=(-12, -14), fontsize=11)
+    b0 = P[0]
+    ax.plot([0, b0[0]], [0, b0[1]], color="0.2", lw=0.9)
+    ax.annotate(f"r₀ = {r0:.1f}", b0 / 2, textcoords="offset points", xytext=(4, 0), fontsize=9)
+    ax.annotate("B₀", b0, textcoords="offset points", xytext=(6, -12), fontsize=11)
+    # rotation arrow outside the cam
+    R = 1.12 * np.max(np.hypot(P[:, 0], P[:, 1])) + rp
+    a0, a1 = (math.radians(200), math.radians(250)) if v.ccw else (math.radians(250), math.radians(200))
+    arr = FancyArrowPatch((R * math.cos(a0), R * math.sin(a0)), (R * math.cos(a1), R * math.sin(a1)), connectionstyle=f"arc3,rad={0.2 if v.ccw else -0.2}", arrowstyle="-|>", mutation_scale=18, lw=1.6, color="k")
+    ax.add_patch(arr)
+    am = math.radians(225)
+    ax.text(1.12 * R * math.cos(am), 1.12 * R * math.sin(am), "ω_k", fontsize=12, ha="center", va="center")
+    lim = 1.3 * R + stem * 0.2
+    ax.set_xlim(-lim, lim)
+    top = max(lim, float(P[:, 1].max() + stem + rp))
+    ax.set_ylim(-lim, top * 1.02)
+    if p.pivot_path is not None:
+        pp = p.pivot_path * k
+        m = float(np.abs(pp).max()) * 1.08
+        ax.set_xlim(-max(lim, m), max(lim, m))
+        ax.set_ylim(-max(lim, m), max(top, m))
+    ax.set_aspect("equal", adjustable="box")
+    ax.grid(alpha=0.25)
+    ax.set_xlabel(pick(lang, "x, mm (cam frame, centre O at the origin)", "x, мм (система кулачка, центр O в начале)"))
+    ax.set_ylabel("y, " + pick(lang, "mm", "мм"))
+    fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncol=2, fontsize=8, frameon=False)
+    dims = f"e = {z.e_m * k:+.2f} mm" if not v.is_rocker else f"l_OC = {z.l_oc_m * k:.2f} mm, l_BC = {v.l_bc_m * k:g} mm"
+    if lang == "ru":
+        dims = dims.replace("mm", "мм")
+    uc = pick(lang, " — UNDERCUT", " — ПОДРЕЗ") if p.undercut else ""
+    fig.suptitle(pick(lang, f"Variant {v.number}: cam profile{uc}\nr0 = {r0:.2f} mm, {dims}", f"Вариант {v.number}: профиль кулачка{uc}\nr_0 = {r0:.2f} мм, {dims}"))
+    return fig
+
+
+def _pressure_figure(Figure, r: CamResult, lang: str):
+    v, z, p = r.variant, r.sizing, r.profile
+    fig = Figure(figsize=(9, 4.8), layout="constrained")
+    ax = fig.subplots()
+    deg = np.degrees(p.phi)
+    ph = r.motion.program.phase_index(p.phi)
+    _phase_marks(ax, r, lang, labels=True)
+    rise = np.where(ph == 0, p.nu_deg, np.nan)
+    ret = np.where(ph == 2, p.nu_deg, np.nan)
+    dwell = np.where((ph == 1) | (ph == 3), p.nu_deg, np.nan)
+    ax.plot(deg, rise, color=C_RISE, lw=1.8, label=pick(lang, f"rise, max {z.nu_rise_max_deg:.2f}°", f"удаление, max {z.nu_rise_max_deg:.2f}°"))
+    lab = pick(lang, f"return, max {z.nu_return_max_deg:.2f}°", f"возвращение, max {z.nu_return_max_deg:.2f}°")
+    if z.closure == "force":
+        lab += pick(lang, " (spring: not limited)", " (пружина: не ограничивается)")
+    ax.plot(deg, ret, color=C_RET, lw=1.8, ls="-" if z.closure == "form" else "--", label=lab)
+    ax.plot(deg, dwell, color=C_DWELL, lw=1.0, ls=":", label=pick(lang, "dwells (no motion)", "выстои (нет движения)"))
+    ax.axhline(v.nu_max_deg, color="k", lw=1.2, ls="-.", label=f"ν_max = {v.nu_max_deg:g}°")
+    ax.set_xlim(0, 360)
+    ax.set_xticks(np.arange(0, 361, 30))
+    ax.set_ylim(0, max(90.0 if z.closure == "force" else v.nu_max_deg * 1.35, float(np.nanmax(p.nu_deg)) * 1.08))
+    ax.set_xlabel(pick(lang, "cam angle φ, °", "угол поворота кулачка φ, °"))
+    ax.set_ylabel(pick(lang, "pressure angle ν, °", "угол давления ν, °"))
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper right", fontsize=8, framealpha=0.9)
+    fig.suptitle(pick(lang, f"Variant {v.number}: pressure angle over the cam turn", f"Вариант {v.number}: угол давления за оборот кулачка"))
+    return fig
+
+
+def cam_figures(result: CamResult, lang: str) -> dict:
+    """Figures "cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle" (matplotlib Figure objects)."""
+    from matplotlib.figure import Figure
+
+    return {
+        "cam_motion": _motion_figure(Figure, result, lang),
+        "cam_zone": _zone_figure(Figure, result, lang),
+        "cam_profile": _profile_figure(Figure, result, lang),
+        "cam_pressure_angle": _pressure_figure(Figure, result, lang),
+    }

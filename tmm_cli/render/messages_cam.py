@@ -1,0 +1,89 @@
+"""Sentences for the cam notes (sheet 3), ru and en; `note_text` formats them with the note's params."""
+
+_SCHEME = {
+    1: ("translating roller follower with force closure (spring)", "поступательный роликовый толкатель, силовое замыкание (пружина)"),
+    2: ("translating roller follower with form closure (grooved cam)", "поступательный роликовый толкатель, геометрическое замыкание (пазовый кулачок)"),
+    3: ("rocker (oscillating roller follower) with force closure (spring)", "качающийся роликовый толкатель (коромысло), силовое замыкание (пружина)"),
+    4: ("rocker (oscillating roller follower) with form closure (grooved cam)", "качающийся роликовый толкатель (коромысло), геометрическое замыкание (пазовый кулачок)"),
+}
+
+MESSAGES: dict[str, dict[str, str]] = {}
+
+for _n, (_en, _ru) in _SCHEME.items():
+    MESSAGES[f"cam_scheme_{_n}"] = {
+        "en": f"Scheme {_n} is read as a {_en} (Fig. 1.8 is missing from the book's text; project reading).",
+        "ru": f"Схема {_n} принята как {_ru} (рис. 1.8 в тексте пособия утрачен; принятое в проекте прочтение).",
+    }
+
+MESSAGES.update(
+    {
+        "cam_swing_same": {
+            "en": "The rocker turns the same way as the cam during the rise: r0 = {r0_mm:.2f} mm (the opposite swing would need {other_mm:.2f} mm).",
+            "ru": "Коромысло при удалении поворачивается в ту же сторону, что и кулачок: r_0 = {r0_mm:.2f} мм (при обратном направлении качания потребовалось бы {other_mm:.2f} мм).",
+        },
+        "cam_swing_opposite": {
+            "en": "The rocker turns opposite to the cam during the rise: r0 = {r0_mm:.2f} mm (the same-way swing would need {other_mm:.2f} mm).",
+            "ru": "Коромысло при удалении поворачивается в сторону, противоположную вращению кулачка: r_0 = {r0_mm:.2f} мм (при качании в ту же сторону потребовалось бы {other_mm:.2f} мм).",
+        },
+        "cam_true_minimum": {
+            "en": "The cam centre is the exact smallest-r0 point of the feasible zone (every position checked): r0 = {r0_mm:.2f} mm; the book's vertex of the two bounding lines gives r0 = {book_r0_mm:.2f} mm ({diff_pct:+.2f} %).",
+            "ru": "Центр кулачка выбран в точке зоны возможного положения с наименьшим r_0 (проверены все положения): r_0 = {r0_mm:.2f} мм; точка пересечения двух ограничивающих прямых по пособию даёт r_0 = {book_r0_mm:.2f} мм ({diff_pct:+.2f} %).",
+        },
+        "cam_book_vertex_over": {
+            "en": "The book's vertex (r0 = {book_r0_mm:.2f} mm) would give a pressure angle of {nu_deg:.2f}° > ν_max = {nu_max_deg:g}°, because the wedges turn with the follower; the exact zone gives r0 = {r0_mm:.2f} mm instead.",
+            "ru": "Точка пересечения прямых по пособию (r_0 = {book_r0_mm:.2f} мм) дала бы угол давления {nu_deg:.2f}° > ν_max = {nu_max_deg:g}°, так как направления ограничивающих прямых меняются с положением толкателя; по точной зоне r_0 = {r0_mm:.2f} мм.",
+        },
+        "cam_pressure_over": {
+            "en": "The pressure angle reaches {nu_deg:.3f}° > ν_max = {nu_max_deg:g}° on a constrained phase; enlarge r0.",
+            "ru": "Угол давления на проверяемом участке достигает {nu_deg:.3f}° > ν_max = {nu_max_deg:g}°; увеличьте r_0.",
+        },
+        "cam_force_return": {
+            "en": "Force closure: the return is driven by the spring, so its pressure angle is not limited (it reaches {nu_return_deg:.1f}°).",
+            "ru": "Силовое замыкание: возвращение обеспечивает пружина, угол давления на участке возвращения не ограничивается (достигает {nu_return_deg:.1f}°).",
+        },
+        "cam_roller_rule": {
+            "en": "Roller radius r_roller = {ratio:g}·r0 = {roller_mm:.2f} mm (1.28); r0 is the pitch-curve base radius, the working profile's smallest radius is r0 − r_roller = {working_min_mm:.2f} mm.",
+            "ru": "Радиус ролика r_р = {ratio:g}·r_0 = {roller_mm:.2f} мм (1.28); r_0 — радиус теоретического профиля, наименьший радиус действительного профиля r_0 − r_р = {working_min_mm:.2f} мм.",
+        },
+        "cam_undercut_convex": {
+            "en": "Undercut: the roller ({roller_mm:.2f} mm) is not smaller than the pitch curve's smallest convex radius of curvature {rho_mm:.2f} mm (at φ = {phi_deg:g}°); use a roller below {rho_mm:.2f} mm or a larger r0.",
+            "ru": "Подрез профиля: радиус ролика ({roller_mm:.2f} мм) не меньше наименьшего радиуса кривизны выпуклой части теоретического профиля {rho_mm:.2f} мм (при φ = {phi_deg:g}°); возьмите ролик меньше {rho_mm:.2f} мм или увеличьте r_0.",
+        },
+        "cam_undercut_concave": {
+            "en": "Undercut of the groove's outer side: the roller ({roller_mm:.2f} mm) is not smaller than the smallest concave radius of curvature {rho_mm:.2f} mm (at φ = {phi_deg:g}°); use a roller below {rho_mm:.2f} mm or a larger r0.",
+            "ru": "Подрез наружной стороны паза: радиус ролика ({roller_mm:.2f} мм) не меньше наименьшего радиуса кривизны вогнутой части {rho_mm:.2f} мм (при φ = {phi_deg:g}°); возьмите ролик меньше {rho_mm:.2f} мм или увеличьте r_0.",
+        },
+        "cam_undercut_convex_fix_offset": {
+            "en": "Undercut: the roller ({roller_mm:.2f} mm) is not smaller than the pitch curve's smallest convex radius of curvature {rho_mm:.2f} mm (at φ = {phi_deg:g}°). Use a roller below {rho_mm:.2f} mm, or r0 = {r0_fix_mm:.2f} mm with e = {fix_mm:.2f} mm (keeps ν ≤ ν_max and the 0.2·r0 roller).",
+            "ru": "Подрез профиля: радиус ролика ({roller_mm:.2f} мм) не меньше наименьшего радиуса кривизны выпуклой части теоретического профиля {rho_mm:.2f} мм (при φ = {phi_deg:g}°). Возьмите ролик меньше {rho_mm:.2f} мм или r_0 = {r0_fix_mm:.2f} мм при e = {fix_mm:.2f} мм (ν ≤ ν_max сохраняется, ролик 0,2·r_0 работает).",
+        },
+        "cam_undercut_convex_fix_rocker": {
+            "en": "Undercut: the roller ({roller_mm:.2f} mm) is not smaller than the pitch curve's smallest convex radius of curvature {rho_mm:.2f} mm (at φ = {phi_deg:g}°). Use a roller below {rho_mm:.2f} mm, or r0 = {r0_fix_mm:.2f} mm with l_OC = {fix_mm:.2f} mm (keeps ν ≤ ν_max and the 0.2·r0 roller).",
+            "ru": "Подрез профиля: радиус ролика ({roller_mm:.2f} мм) не меньше наименьшего радиуса кривизны выпуклой части теоретического профиля {rho_mm:.2f} мм (при φ = {phi_deg:g}°). Возьмите ролик меньше {rho_mm:.2f} мм или r_0 = {r0_fix_mm:.2f} мм при l_OC = {fix_mm:.2f} мм (ν ≤ ν_max сохраняется, ролик 0,2·r_0 работает).",
+        },
+        "cam_undercut_concave_fix_offset": {
+            "en": "Undercut of the groove's outer side: the roller ({roller_mm:.2f} mm) is not smaller than the smallest concave radius of curvature {rho_mm:.2f} mm (at φ = {phi_deg:g}°). Use a roller below {rho_mm:.2f} mm, or r0 = {r0_fix_mm:.2f} mm with e = {fix_mm:.2f} mm.",
+            "ru": "Подрез наружной стороны паза: радиус ролика ({roller_mm:.2f} мм) не меньше наименьшего радиуса кривизны вогнутой части {rho_mm:.2f} мм (при φ = {phi_deg:g}°). Возьмите ролик меньше {rho_mm:.2f} мм или r_0 = {r0_fix_mm:.2f} мм при e = {fix_mm:.2f} мм.",
+        },
+        "cam_undercut_concave_fix_rocker": {
+            "en": "Undercut of the groove's outer side: the roller ({roller_mm:.2f} mm) is not smaller than the smallest concave radius of curvature {rho_mm:.2f} mm (at φ = {phi_deg:g}°). Use a roller below {rho_mm:.2f} mm, or r0 = {r0_fix_mm:.2f} mm with l_OC = {fix_mm:.2f} mm.",
+            "ru": "Подрез наружной стороны паза: радиус ролика ({roller_mm:.2f} мм) не меньше наименьшего радиуса кривизны вогнутой части {rho_mm:.2f} мм (при φ = {phi_deg:g}°). Возьмите ролик меньше {rho_mm:.2f} мм или r_0 = {r0_fix_mm:.2f} мм при l_OC = {fix_mm:.2f} мм.",
+        },
+        "cam_roller_tight": {
+            "en": "The roller ({roller_mm:.2f} mm) is above 80 % of the limiting radius of curvature {rho_mm:.2f} mm: no undercut, but a sharp working profile (high contact stress).",
+            "ru": "Радиус ролика ({roller_mm:.2f} мм) больше 80 % предельного радиуса кривизны {rho_mm:.2f} мм: подреза нет, но действительный профиль острый (высокие контактные напряжения).",
+        },
+        "cam_layout": {
+            "en": "Drawing scales (1.9)–(1.18) assume b = {b_mm:g} mm for φ_р, Y_Smax = {y_mm:g} mm, H_V = {h_v_mm:g} mm, H_a = {h_a_mm:g} mm (largest round bases keeping ordinates within 60 mm).",
+            "ru": "Масштабы (1.9)–(1.18) рассчитаны для b = {b_mm:g} мм на φ_р, Y_Smax = {y_mm:g} мм, H_V = {h_v_mm:g} мм, H_a = {h_a_mm:g} мм (наибольшие круглые базы, при которых ординаты не превышают 60 мм).",
+        },
+        "cam_step_halved_rise": {
+            "en": "The rise is short, so its table step is {step_deg:g}° (§1.2 item 2).",
+            "ru": "Участок удаления короткий, шаг таблицы на нём {step_deg:g}° (§1.2, п. 2).",
+        },
+        "cam_step_halved_return": {
+            "en": "The return is short, so its table step is {step_deg:g}° (§1.2 item 2).",
+            "ru": "Участок возвращения короткий, шаг таблицы на нём {step_deg:g}° (§1.2, п. 2).",
+        },
+    }
+)
