@@ -1,0 +1,147 @@
+"""Sheet 4 against the book's worked examples (§2.3, §2.4, §2.5) and seed 000's involute example."""
+
+import math
+
+import pytest
+
+from tmm_cli.gears.design import design_gears
+from tmm_cli.gears.involute import inv, inv_inverse, shift_sum_for_distance, working_angle, centre_distance_mm
+from tmm_cli.gears.spur import design_spur, spur_geometry, spur_teeth
+
+
+# ---------------------------------------------------------------- §2.3 spur pair
+
+
+def test_spur_book_example_teeth_and_geometry():
+    g = design_spur(720, 600)  # §2.3: n_d = 720, n_k = 600
+    assert (g.z1, g.z2) == (17, 20)
+    assert g.i_d == pytest.approx(1.2)
+    m = 20.0
+    assert (g.d1_mm, g.d2_mm) == (340.0, 400.0)
+    assert g.db1_mm == pytest.approx(340 * math.cos(math.radians(20)))
+    assert (g.da1_mm, g.da2_mm, g.df1_mm, g.df2_mm) == (380.0, 440.0, 290.0, 350.0)
+    assert g.a_mm == 370.0
+    assert g.p_mm == pytest.approx(math.pi * m) and g.pb_mm == pytest.approx(59.0426, abs=1e-4)
+    assert g.s_mm == g.e_mm == pytest.approx(31.4159, abs=1e-4)
+    assert g.tau1_deg == pytest.approx(21.1765, abs=1e-4) and g.tau2_deg == 18.0
+    assert (g.h_mm, g.hd_mm, g.c_mm) == (45.0, 40.0, 5.0)
+    # item 11, the check: a = da1/2 + df2/2 + C = da2/2 + df1/2 + C; 2h = da − df
+    assert g.check_ok
+    assert 380 / 2 + 350 / 2 + 5 == g.a_mm == 440 / 2 + 290 / 2 + 5
+
+
+def test_contact_ratio_by_the_angle_formula():
+    # independent form: ε = [z1(tg α_a1 − tg α_w) + z2(tg α_a2 − tg α_w)]/(2π)
+    for z1, z2 in ((17, 20), (17, 43), (59, 17), (24, 17)):
+        g = spur_geometry(z1, z2)
+        al = math.radians(20)
+        aa1 = math.acos(z1 * math.cos(al) / (z1 + 2))
+        aa2 = math.acos(z2 * math.cos(al) / (z2 + 2))
+        eps = (z1 * (math.tan(aa1) - math.tan(al)) + z2 * (math.tan(aa2) - math.tan(al))) / (2 * math.pi)
+        assert g.eps_alpha == pytest.approx(eps, rel=1e-12)
+        # overlap angles: ε·τ equals the turn while the contact runs P1 → P2
+        assert g.phi_alpha1_deg == pytest.approx(g.phi_alpha1_geom_deg, rel=1e-12)
+        assert g.phi_alpha2_deg == pytest.approx(g.phi_alpha2_geom_deg, rel=1e-12)
+        # zones: P1 < U2 < U1 < P2 when 1 < ε < 2, double zones equal
+        assert g.p1_mm < g.u2_mm < g.u1_mm < g.p2_mm
+        assert g.u2_mm - g.p1_mm == pytest.approx(g.p2_mm - g.u1_mm)
+
+
+def test_spur_rounding_exact_half_goes_up():
+    # variants 24 and 44 have n_k = −1800: 17·1800/720 = 42.5 → 43 (a float could round it either way)
+    assert spur_teeth(720, -1800) == (43, 17)
+    assert spur_teeth(720, 600) == (17, 20)
+    assert spur_teeth(720, 720) == (17, 17)
+    # a multiplier: the small gear is the driven one, on the cam
+    z1, z2 = spur_teeth(720, 2500)
+    assert z2 == 17 and z1 == round(17 * 2500 / 720)
+
+
+# ---------------------------------------------------------------- §2.4 single row
+
+
+def test_book_2_4_single_row_example():
+    r = design_gears(600, 220, ratio=(13, 4))
+    assert r.motor_rpm == 720 and r.scheme == "1"
+    st = r.planetary.stages[0]
+    assert (st.z_sun, st.z_planet, st.z_ring, st.planets) == (40, 25, 90, 5)
+    assert st.z_planet2 is None
+    d = r.derivation.stages[0]
+    assert (d.chosen.d, d.chosen.a) == (9, 4)  # z_n/z_k = 13/4 − 1 = 9/4 (the book prints 1 − 13/4)
+    assert d.chosen.y_min == 10
+    # the book's list "k1 = 2, k2 = 5, k3 = 10, k4 = 13 …": the divisors of z_k·i = 40·13/4 = 130,
+    # the planet counts the assembly condition (2.4) allows
+    assert d.assembly_n == 130 and d.assembly_ks[:4] == (2, 5, 10, 13)
+    assert d.neighbour_limit == 7 and d.k_max == 5
+    codes = {n.code for n in r.notes}
+    assert "book_printed_ok" in codes and "book_printed_wrong" not in codes
+    assert r.checks.ok
+    assert r.checks.velocity.ratio == pytest.approx(3.25, rel=1e-12)
+    assert r.checks.ratio_formula_21_total == pytest.approx(3.25, rel=1e-12)
+
+
+def test_default_crank_speed_is_the_books():
+    r = design_gears(600)
+    assert r.crank_rpm == 220 and r.crank_rpm_assumed
+    assert any(n.code == "crank_default" for n in r.notes)
+
+
+# ---------------------------------------------------------------- §2.5 double row
+
+
+def test_book_2_5_double_row_carried_honestly():
+    r = design_gears(600, 67, ratio=(53, 5))
+    assert r.motor_rpm == 720 and r.scheme == "2"
+    bad = [n for n in r.notes if n.code == "book_printed_wrong"]
+    assert len(bad) == 1
+    kw = bad[0].kwargs
+    assert kw["teeth"] == "34/56/50/120" and (kw["lhs"], kw["rhs"]) == (90, 70)
+    assert float(kw["ratio"]) == pytest.approx(1 + 56 * 120 / (34 * 50), abs=1e-3)
+    assert not r.printed.coaxial_ok and not r.printed.ratio_ok
+    d = r.derivation.stages[0]
+    assert d.x1_range == (10, 23) and d.x2_range == (11, 25)  # the book's (corrected) ranges
+    row10 = next(rw for rw in d.rows if rw.table == "2.3" and rw.x == 10)
+    assert row10.teeth == (38, 76, 30, 144) and (row10.gamma1, row10.gamma2) == (190, 144)  # Table 2.3's printed row
+    # the book's x2 = 12 set with z_k ≥ 17 kept: y_min = 3 (y = 2 gives the book's z_k = 14)
+    row12 = next(rw for rw in d.rows if rw.table == "2.4x2" and rw.x == 12)
+    assert row12.teeth == (21, 84, 75, 180)
+    # every row realises 53/5 exactly and is coaxial
+    for rw in d.rows:
+        zk, zc, zc2, zn = rw.teeth
+        assert zk + zc == zn - zc2
+        assert (zk * zc2 + zc * zn) * 5 == 53 * zk * zc2
+        assert zk >= 17 and zc >= 17 and zc2 >= 20 and zn >= 85
+    # the carried design gives 53/5 exactly and is no larger than the procedure's best row
+    pl = r.planetary
+    assert pl.ratio == pytest.approx(53 / 5, rel=1e-12)
+    assert pl.size <= d.chosen.size
+    assert r.checks.ok
+
+
+def test_assembly_exact_condition_admits_more_than_the_books_form():
+    # 20/64/42/126 realises 53/5; z_k·i = 212 = 2²·53 (book: k = 2) but a double planet turned
+    # by whole teeth fits 3 (k·gcd(64, 42) = 6 divides 20·42 + 64·126 = 8904)
+    r = design_gears(600, 67, ratio=(53, 5))
+    c = r.checks.stages[0]
+    if c.stage.teeth == (20, 64, 42, 126):
+        assert c.k_max == 3 and c.k_max_book == 2
+        assert any(n.code == "assembly_forms_differ" for n in r.notes)
+
+
+# ---------------------------------------------------------------- seed 000: involute helpers
+
+
+def test_seed000_shifted_planetary_example():
+    aw12 = working_angle(30, 48, -0.4 + 0.4)
+    assert math.degrees(aw12) == pytest.approx(20.0, abs=1e-12)
+    assert centre_distance_mm(5, 30, 48, aw12) == pytest.approx(195.0, abs=1e-9)
+    aw34, xs = shift_sum_for_distance(5, 48, 27, 195.0)
+    assert math.degrees(aw34) == pytest.approx(25.371, abs=5e-4)
+    assert xs == pytest.approx(1.7, abs=5e-3)
+    assert xs - 0.4 == pytest.approx(1.3, abs=5e-3)
+
+
+@pytest.mark.parametrize("deg", [0.5, 5, 20, 25.371, 45, 70, 85])
+def test_inv_inverse_round_trip(deg):
+    a = math.radians(deg)
+    assert inv_inverse(inv(a)) == pytest.approx(a, rel=1e-12)

@@ -1,0 +1,200 @@
+"""The carried reducer rechecked by an independent checker, and a separate brute force for
+the smallest reducer, over crank speeds 30 … 960 rpm."""
+
+import math
+import time
+from fractions import Fraction
+
+import pytest
+
+from tmm_cli.gears.design import design_gears
+
+MOTORS = (720, 920, 1420, 2880)
+
+
+def required_ratio(n_cr):
+    n_d = next(n for n in MOTORS if n >= 3 * n_cr)
+    return n_d, n_d / n_cr
+
+
+# ---------------------------------------------------------------- independent checker
+
+
+def planet_fits(k, zk, zc, zc2, zn):
+    """Can a second planet be placed 360°/k after the first, sun and ring standing still?
+
+    Tooth phases (in pitches): the sun at the contact direction u (turns) is at z_k·u, the planet c
+    there at z_c·(u + ½ − v) (v its orientation); in an external mesh their sum is fixed. The ring
+    at u is at z_n·u, the planet c′ at z_c′·(u − v); in an internal mesh their difference is fixed.
+    c and c′ are one rigid block. Searching the planet's orientation over the z_c solutions of the
+    first condition, the second must hold too. (For k planets equally spaced, planet j is j times
+    the first step.)"""
+    u = Fraction(1, k)
+    for m in range(zc):
+        dv = ((zk + zc) * u + m) / zc  # z_c·dv ≡ (z_k + z_c)·u (mod 1)
+        if (zc2 * dv - (zc2 - zn) * u).denominator == 1:
+            return True
+    return False
+
+
+def neighbours_fit(k, zk, zc, zc2):
+    """Tip circles of the larger planet on adjacent carrier positions do not touch (m = 1)."""
+    a = (zk + zc) / 2
+    d_tip = max(zc, zc2) + 2
+    c0 = (a, 0.0)
+    c1 = (a * math.cos(2 * math.pi / k), a * math.sin(2 * math.pi / k))
+    return k == 1 or math.dist(c0, c1) > d_tip + 1e-9
+
+
+def stage_ok(zk, zc, zc2, zn, k, double):
+    coaxial = zk + zc == zn - zc2
+    table22 = zk >= 17 and zn >= 85 and zn - zc2 >= 8 and (zc >= 17 and zc2 >= 20 if double else zc >= 20)
+    return coaxial and table22 and neighbours_fit(k, zk, zc, zc2) and planet_fits(k, zk, zc, zc2, zn)
+
+
+def willis(zk, zc, zc2, zn):
+    """Willis: (ω_k − ω_H)/(ω_n − ω_H) = −z_c·z_n/(z_k·z_c′) with ω_n = 0."""
+    return 1 + Fraction(zc * zn, zk * zc2)
+
+
+def max_planets(zk, zc, zc2, zn):
+    best = 1
+    for k in range(2, 41):
+        if neighbours_fit(k, zk, zc, zc2) and planet_fits(k, zk, zc, zc2, zn):
+            best = k
+    return best
+
+
+def recheck(result, tol=5.0):
+    pl = result.planetary
+    i = Fraction(1)
+    for st in pl.stages:
+        double = st.z_planet2 is not None
+        zc2 = st.z_planet2 if double else st.z_planet
+        assert stage_ok(st.z_sun, st.z_planet, zc2, st.z_ring, st.planets, double), st
+        i *= willis(st.z_sun, st.z_planet, zc2, st.z_ring)
+    assert abs(float(i) / result.i_planetary - 1) <= tol / 100 + 1e-12
+    assert float(i) == pytest.approx(pl.ratio, rel=1e-12)
+    assert result.checks.velocity.ratio == pytest.approx(float(i), rel=1e-9)
+    assert result.checks.ok
+
+
+def test_every_crank_speed_30_to_960_gives_a_valid_design():
+    worst = 0.0
+    schemes = set()
+    for n_cr in range(30, 961):
+        t = time.perf_counter()
+        r = design_gears(1000, n_cr)
+        worst = max(worst, time.perf_counter() - t)
+        schemes.add(r.scheme)
+        recheck(r)
+        n_d, i = required_ratio(n_cr)
+        assert r.motor_rpm == n_d
+        exp = "1" if i <= 8 else ("2" if i <= 16 else "1+1")
+        assert r.scheme == exp
+        if r.planetary.planets < 3:
+            assert any(n.code == "few_planets" for n in r.notes)
+    assert schemes == {"1", "2", "1+1"}
+    assert worst < 0.5, f"slowest synthesis {worst:.3f} s"
+
+
+# ---------------------------------------------------------------- brute force, written separately
+
+
+def brute_single(i_req, tol, double):
+    """Smallest max(z_k + 2z_c, z_n) with ≥ 3 planets if any (else any), by direct enumeration."""
+    lo, hi = i_req * (1 - tol / 100), i_req * (1 + tol / 100)
+    cands = []
+    for zk in range(17, 201):
+        for zc in range(17 if double else 20, 101):
+            if zk + 2 * zc > 200:
+                break
+            if not double:
+                zn = zk + 2 * zc
+                if zn >= 85 and lo <= 1 + zn / zk <= hi:
+                    cands.append((zn, zk, zc, zc, zn))
+                continue
+            # i − 1 = z_c(z_k + z_c + z_c′)/(z_k·z_c′) decreases with z_c′: solve for its range
+            lo_c2 = zc * (zk + zc) / ((hi - 1) * zk - zc) if (hi - 1) * zk > zc else None
+            if lo_c2 is None:
+                continue
+            hi_c2 = zc * (zk + zc) / ((lo - 1) * zk - zc) if (lo - 1) * zk > zc else 1e9
+            for zc2 in range(max(20, math.ceil(lo_c2 - 1e-9)), min(200, math.floor(hi_c2 + 1e-9)) + 1):
+                zn = zk + zc + zc2
+                if zn < 85 or zn > 200:
+                    continue
+                r = float(willis(zk, zc, zc2, zn))
+                if lo - 1e-12 <= r <= hi + 1e-12:
+                    cands.append((max(zk + 2 * zc, zn), zk, zc, zc2, zn))
+    cands.sort()
+    for size, zk, zc, zc2, zn in cands:
+        if max_planets(zk, zc, zc2, zn) >= 3:
+            return size, True
+    return (cands[0][0], False) if cands else (None, False)
+
+
+def brute_two(i_req, tol):
+    lo, hi = i_req * (1 - tol / 100), i_req * (1 + tol / 100)
+    sets = []
+    for zk in range(17, 201):
+        for zc in range(20, 101):
+            zn = zk + 2 * zc
+            if zn > 200:
+                break
+            if zn >= 85:
+                sets.append((zn, 1 + zn / zk, (zk, zc, zn)))
+    sets.sort()
+    good3 = {}
+    for size in sorted({s[0] for s in sets}):
+        pool = [s for s in sets if s[0] <= size]
+        pool3 = []
+        for s in pool:
+            key = s[2]
+            if key not in good3:
+                zk, zc, zn = key
+                good3[key] = max_planets(zk, zc, zc, zn) >= 3
+            if good3[key]:
+                pool3.append(s)
+        rs = sorted(s[1] for s in pool3)
+        import bisect
+
+        for r in rs:
+            j = bisect.bisect_left(rs, lo / r - 1e-12)
+            if j < len(rs) and rs[j] <= hi / r + 1e-12:
+                return size
+    return None
+
+
+SAMPLE_1 = [96, 100, 120, 150, 180, 220, 240, 241, 300, 307, 400, 480, 700, 960]
+SAMPLE_2 = [45, 52, 60, 67, 80, 89]
+SAMPLE_11 = [30, 36, 44]
+
+
+@pytest.mark.parametrize("n_cr", SAMPLE_1 + SAMPLE_2)
+def test_no_smaller_reducer_by_brute_force(n_cr):
+    r = design_gears(1000, n_cr)
+    size, has3 = brute_single(r.i_planetary, 5.0, double=r.scheme == "2")
+    assert r.planetary.size == size
+    assert (r.planetary.planets >= 3) == has3
+
+
+@pytest.mark.parametrize("n_cr", SAMPLE_11)
+def test_no_smaller_two_stage_reducer_by_brute_force(n_cr):
+    r = design_gears(1000, n_cr)
+    assert r.scheme == "1+1"
+    assert r.planetary.planets >= 3
+    assert r.planetary.size == brute_two(r.i_planetary, 5.0)
+
+
+def test_forced_planets_are_honoured():
+    r = design_gears(1000, 220, planets=3)
+    assert all(s.planets == 3 for s in r.planetary.stages)
+    recheck(r)
+
+
+def test_checker_agrees_with_books_numbers():
+    # §2.4: 40/25/90 takes 2, 5, 10, 13 … by assembly, neighbours limit 7 → 5
+    assert [k for k in range(2, 14) if planet_fits(k, 40, 25, 25, 90)] == [2, 5, 10, 13]
+    assert max_planets(40, 25, 25, 90) == 5
+    # a double-planet set where turning the block by whole teeth admits 3 though z_k·i = 212
+    assert planet_fits(3, 20, 64, 42, 126) and not 212 % 3 == 0

@@ -1,0 +1,129 @@
+"""Sentences for the gear-drive notes (sheet 4), Russian and English, by note code."""
+
+MESSAGES: dict[str, dict[str, str]] = {
+    "crank_default": {
+        "en": "No crank speed given: using n_cr = {rpm:g} rpm, the book's own example (§2.2, §2.4). "
+              "Give your linkage's crank speed from sheet 1 with --crank-rpm.",
+        "ru": "Частота вращения кривошипа не задана: принято n_кр = {rpm:g} об/мин, как в примере пособия "
+              "(п. 2.2, 2.4). Задайте её по 1-му листу (--crank-rpm).",
+    },
+    "motor_choice": {
+        "en": "Motor: the smallest standard speed with n_d ≥ 3·n_cr = {three_ncr} rpm is n_d = {n_d} rpm (§2.2).",
+        "ru": "Двигатель: наименьшая стандартная частота с n_д ≥ 3·n_кр = {three_ncr} об/мин — n_д = {n_d} об/мин (п. 2.2).",
+    },
+    "book_printed_ok": {
+        "en": "The book's printed answer of §{section} ({teeth}, k = {k}) is reproduced by its procedure.",
+        "ru": "Ответ пособия в п. {section} ({teeth}, k = {k}) воспроизводится его методикой.",
+    },
+    "book_printed_wrong": {
+        "en": "The book's printed answer of §{section}, {teeth}, is wrong: coaxiality gives {lhs} ≠ {rhs} and its "
+              "ratio is {ratio}, not {fraction} = {target}. Carried through correctly, the book's procedure gives "
+              "{procedure} (size {size}).",
+        "ru": "Ответ пособия в п. {section} ({teeth}) ошибочен: условие соосности даёт {lhs} ≠ {rhs}, а передаточное "
+              "отношение равно {ratio}, а не {fraction} = {target}. Методика пособия, доведённая правильно, даёт "
+              "{procedure} (габарит {size}).",
+    },
+    "book_no_derivation": {
+        "en": "The book's hand procedure finds no tooth set for scheme {scheme} from a simple fraction within the "
+              "tolerance; only the search result is shown.",
+        "ru": "Ручная методика пособия не дала чисел зубьев для схемы {scheme} ни для одной простой дроби в пределах "
+              "допуска; показан только результат перебора.",
+    },
+    "book_vs_search_same": {
+        "en": "The book's procedure gives {book} (size {book_size}); the exhaustive search finds no smaller reducer "
+              "({found}, size {size}).",
+        "ru": "Методика пособия даёт {book} (габарит {book_size}); полный перебор не нашёл меньшего редуктора "
+              "({found}, габарит {size}).",
+    },
+    "book_vs_search_smaller": {
+        "en": "The book's procedure gives {book} (size {book_size}); the exhaustive search finds a smaller one, "
+              "{found} (size {size}), and the program carries that.",
+        "ru": "Методика пособия даёт {book} (габарит {book_size}); полный перебор нашёл меньший редуктор "
+              "{found} (габарит {size}), он и принят.",
+    },
+    "book_vs_search_book_smaller": {
+        "en": "The book's procedure gives {book} (size {book_size}), smaller than the carried {found} (size {size}), "
+              "but it takes fewer than 3 planets (or not the forced number); the search rule prefers ≥ 3 planets.",
+        "ru": "Методика пособия даёт {book} (габарит {book_size}) меньше принятого {found} (габарит {size}), но с "
+              "числом сателлитов меньше 3 (или не заданным); правило выбора предпочитает ≥ 3 сателлитов.",
+    },
+    "carried_smallest_3plus": {
+        "en": "Carried: {teeth}, k = {k} — the smallest reducer (size = max(z_k + 2z_c, z_n) = {size}) with at least "
+              "3 planets among {n} tooth sets within tolerance (every wheel ≤ {zmax} teeth).",
+        "ru": "Принят {teeth}, k = {k} — наименьший редуктор (габарит max(z_k + 2z_c, z_n) = {size}) с не менее чем "
+              "3 сателлитами среди {n} наборов чисел зубьев в пределах допуска (все колёса ≤ {zmax} зубьев).",
+    },
+    "carried_smallest_no3": {
+        "en": "Carried: {teeth}, k = {k} — no tooth set within tolerance takes 3 planets, so the smallest "
+              "(size {size}) is carried.",
+        "ru": "Принят {teeth}, k = {k} — ни один набор в пределах допуска не допускает 3 сателлитов, поэтому принят "
+              "наименьший (габарит {size}).",
+    },
+    "carried_forced_planets": {
+        "en": "Carried: {teeth} — the smallest reducer (size {size}) that takes the requested k = {k} planets.",
+        "ru": "Принят {teeth} — наименьший редуктор (габарит {size}), допускающий заданное число сателлитов k = {k}.",
+    },
+    "two_stage_order": {
+        "en": "Two single-row stages in series (Fig. 2.4 scheme 3): stage 1 (motor side) takes the larger ratio, so "
+              "the low-speed stage, which carries the larger torque, is the one with the smaller ratio; one module "
+              "assumed for the size.",
+        "ru": "Две последовательные однорядные ступени (рис. 2.4, схема 3): первая (со стороны двигателя) имеет "
+              "большее передаточное отношение, тихоходная ступень с большим моментом — меньшее; габарит — при "
+              "одинаковом модуле.",
+    },
+    "forced_ratio": {
+        "en": "Ratio fixed by the user at {fraction} = {value}: only tooth sets giving it exactly are searched.",
+        "ru": "Передаточное отношение задано пользователем: {fraction} = {value}; перебираются только наборы, "
+              "дающие его точно.",
+    },
+    "few_planets": {
+        "en": "Only k = {k} planet(s): fewer than 3 leaves the carrier unbalanced and loads the bearings; consider a "
+              "wider tolerance or another fraction.",
+        "ru": "Всего k = {k} сателлит(а): меньше 3 — водило не уравновешено, опоры нагружены; расширьте допуск или "
+              "возьмите другую дробь.",
+    },
+    "assembly_forms_differ": {
+        "en": "Stage {stage}: the exact assembly condition (k·{g} divides {t}) admits up to k = {exact}, the book's "
+              "form (k divides N = {n}) only k = {book}; a double planet can be fitted turned by whole teeth.",
+        "ru": "Ступень {stage}: точное условие сборки (k·{g} делит {t}) допускает до k = {exact}, форма пособия "
+              "(k делит N = {n}) — лишь k = {book}; двойной сателлит можно установить с поворотом на целое число зубьев.",
+    },
+    "ratio_error": {
+        "en": "The reducer gives i = {i} instead of {target} ({err} %, tolerance ±{tol} %): the crank turns at "
+              "{rpm} rpm instead of {want}.",
+        "ru": "Редуктор даёт i = {i} вместо {target} ({err} %, допуск ±{tol} %): кривошип вращается с "
+              "{rpm} об/мин вместо {want}.",
+    },
+    "spur_multiplier": {
+        "en": "n_d < |n_k|: the spur pair is a multiplier, so the driven gear on the cam shaft is the small one "
+              "(z1 = {z1} on the motor, z2 = {z2} on the cam).",
+        "ru": "n_д < |n_к|: простая передача — мультипликатор, малое колесо ведомое, на валу кулачка "
+              "(z1 = {z1} на двигателе, z2 = {z2} на кулачке).",
+    },
+    "spur_ratio": {
+        "en": "Spur pair z1/z2 = {z1}/{z2}: i = {i} instead of {target} ({err} %); the cam turns at {rpm} rpm instead "
+              "of {want}.",
+        "ru": "Простая передача z1/z2 = {z1}/{z2}: i = {i} вместо {target} ({err} %); кулачок вращается с "
+              "{rpm} об/мин вместо {want}.",
+    },
+    "undercut": {
+        "en": "z = {z} is below the undercut limit 2h_a*/sin²α = {zmin} of a zero gear: a slight undercut of the root "
+              "(a shift x ≥ {x} would remove it); the book's rule z_min = 17 accepts it.",
+        "ru": "z = {z} меньше предела подрезания 2h_a*/sin²α = {zmin} нулевого колеса: незначительный подрез ножки "
+              "(устраняется смещением x ≥ {x}); по правилу пособия z_min = 17 допустимо.",
+    },
+    "eps_low": {
+        "en": "Contact ratio ε_α = {eps} is below the recommended 1.2: the pair runs less smoothly.",
+        "ru": "Коэффициент перекрытия ε_α = {eps} меньше рекомендуемого 1,2: плавность работы снижена.",
+    },
+    "efficiency": {
+        "en": "Efficiencies for (2.6): η1 = {eta1} for scheme {scheme} (0.96 per single- or double-row stage, §2.6; "
+              "two stages 0.96²), η2 = {eta2} for the linkage.",
+        "ru": "КПД в (2.6): η1 = {eta1} для схемы {scheme} (0,96 на однорядную или двухрядную ступень, п. 2.6; "
+              "две ступени — 0,96²), η2 = {eta2} для рычажного механизма.",
+    },
+    "power_above_series": {
+        "en": "Required power {kw} kW is above the largest rated motor of the series ({top} kW).",
+        "ru": "Потребная мощность {kw} кВт больше наибольшей в ряду ({top} кВт).",
+    },
+}
