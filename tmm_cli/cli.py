@@ -78,18 +78,9 @@ def _print_json(obj) -> None:
 
 
 def _print_notes(console, notes, lang: str) -> None:
-    from .render.i18n import note_text, pick
+    from .render.report import print_notes
 
-    if not notes:
-        return
-    from rich.panel import Panel
-
-    lines = []
-    for note in notes:
-        mark = "[yellow]⚠[/]" if note.level == "warning" else "[cyan]ℹ[/]"
-        lines.append(f"{mark} {note_text(note, lang)}")
-    title = pick(lang, "Warnings and assumptions", "Предупреждения и допущения")
-    console.print(Panel("\n".join(lines), title=title, expand=False))
+    print_notes(console, notes, lang)
 
 
 def _print_files(console, folder: Path, names: list[str], lang: str) -> None:

@@ -6,7 +6,7 @@ import math
 
 from ..cam.design import CamResult
 from ..cam.laws import law_impacts
-from .i18n import note_text, pick
+from .i18n import pick
 from .variants_tables import law_words, rotation_words, scheme_words
 
 OK = "[green]✔[/green]"
@@ -19,7 +19,7 @@ def _table(title: str, *cols: tuple[str, str]):
 
     t = Table(title=title, header_style="bold", title_justify="left")
     for name, justify in cols:
-        t.add_column(name, justify=justify)
+        t.add_column(name, justify=justify, overflow="fold")
     return t
 
 
@@ -250,17 +250,15 @@ def _checks_table(r: CamResult, lang: str):
     return t
 
 
-def print_cam(console, result: CamResult, lang: str) -> None:
-    """Print sheet 3's tables and notes to a rich Console."""
-    for make in (_input_table, _motion_table, _maxima_table, _scales_table, _dims_table, _psi_table, _checks_table):
+def print_cam(console, result: CamResult, lang: str, *, include_input: bool = True) -> None:
+    """Print sheet 3's tables to a rich Console (the shell prints the notes, once, at the end)."""
+    makers = (_motion_table, _maxima_table, _scales_table, _dims_table, _psi_table, _checks_table)
+    if include_input:
+        makers = (_input_table,) + makers
+    for make in makers:
         console.print(make(result, lang))
-    warns = [n for n in result.notes if n.level == "warning"]
-    assum = [n for n in result.notes if n.level == "assumption"]
-    if warns:
-        console.print(pick(lang, "[bold yellow]Warnings[/bold yellow]", "[bold yellow]Предупреждения[/bold yellow]"))
-        for n in warns:
-            console.print(f"  [yellow]![/yellow] {note_text(n, lang)}", highlight=False)
-    if assum:
-        console.print(pick(lang, "[bold]Assumptions[/bold]", "[bold]Принятые допущения[/bold]"))
-        for n in assum:
-            console.print(f"  • {note_text(n, lang)}", highlight=False)
+
+
+def print_cam_input(console, result: CamResult, lang: str) -> None:
+    """The input-data table alone (the project report opens with it)."""
+    console.print(_input_table(result, lang))

@@ -29,7 +29,7 @@ def _table(title: str, *cols: str, left: tuple[int, ...] = (0,), **kw):
 
     t = Table(title=title, title_justify="left", title_style="bold", **kw)
     for i, c in enumerate(cols):
-        t.add_column(c, justify="left" if i in left else "right")
+        t.add_column(c, justify="left" if i in left else "right", overflow="fold")
     return t
 
 

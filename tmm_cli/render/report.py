@@ -54,28 +54,32 @@ def print_project(console, result, lang: str) -> None:
     """The terminal report in the order of the explanatory note: input, sheet 4, sheet 3, notes."""
     from rich.rule import Rule
 
-    from .cam_tables import print_cam
+    from .cam_tables import print_cam, print_cam_input
     from .gears_tables import print_gears
-    from .variants_tables import print_variant_detail
 
     v = result.variant
     console.print(Rule(pick(lang, f"TMM course project — variant {v.number}", f"Курсовой проект по ТММ — вариант {v.number}")))
-    print_variant_detail(console, v, lang)
+    print_cam_input(console, result.cam, lang)
     console.print(Rule(pick(lang, "Sheet 4 — gear drive", "Лист 4 — синтез зубчатых механизмов")))
     print_gears(console, result.gears, lang)
     console.print(Rule(pick(lang, "Sheet 3 — cam mechanism", "Лист 3 — синтез кулачкового механизма")))
-    print_cam(console, result.cam, lang)
-    notes = result.notes
-    if notes:
-        from rich.panel import Panel
+    print_cam(console, result.cam, lang, include_input=False)
+    print_notes(console, result.notes, lang)
 
-        assumptions = [n for n in notes if n.level == "assumption"]
-        warnings = [n for n in notes if n.level == "warning"]
-        lines = [f"[cyan]ℹ[/] {note_text(n, lang)}" for n in assumptions]
-        lines += [f"[yellow]⚠[/] {note_text(n, lang)}" for n in warnings]
-        title = pick(lang, f"Assumptions ({len(assumptions)}) and warnings ({len(warnings)})",
-                     f"Допущения ({len(assumptions)}) и предупреждения ({len(warnings)})")
-        console.print(Panel("\n".join(lines), title=title, expand=False))
+
+def print_notes(console, notes, lang: str) -> None:
+    """All assumptions, then all warnings, in one panel at the end of a report."""
+    if not notes:
+        return
+    from rich.panel import Panel
+
+    assumptions = [n for n in notes if n.level == "assumption"]
+    warnings = [n for n in notes if n.level == "warning"]
+    lines = [f"[cyan]ℹ[/] {note_text(n, lang)}" for n in assumptions]
+    lines += [f"[yellow]⚠[/] {note_text(n, lang)}" for n in warnings]
+    title = pick(lang, f"Assumptions ({len(assumptions)}) and warnings ({len(warnings)})",
+                 f"Допущения ({len(assumptions)}) и предупреждения ({len(warnings)})")
+    console.print(Panel("\n".join(lines), title=title, expand=False))
 
 
 def terminal_text(result, lang: str, width: int = 110) -> str:
@@ -106,7 +110,8 @@ def pdf_report(path: Path, result, lang: str, figures: dict) -> None:
     from matplotlib.backends.backend_pdf import PdfPages
     from matplotlib.figure import Figure
 
-    lines = terminal_text(result, lang, width=110).splitlines()
+    # DejaVu Sans Mono has no "ℹ"; the PDF shows "i" in its place
+    lines = terminal_text(result, lang, width=110).replace("ℹ", "i").splitlines()
     per_page = 80
     with PdfPages(path) as pdf:
         for start in range(0, max(len(lines), 1), per_page):
