@@ -57,9 +57,13 @@ def _lang(lang: str | None) -> str:
 
 
 def _console(lang: str):
+    """A rich console; 120 columns when the output is a file or a pipe (rich would assume 80)."""
     from rich.console import Console
 
-    return Console(highlight=False)
+    console = Console(highlight=False)
+    if not console.is_terminal:
+        console = Console(highlight=False, width=120)
+    return console
 
 
 def _variant(number: str, variants_file: str | None):

@@ -64,7 +64,7 @@ def write_text(path: Path, text: str) -> None:
     Path(path).write_text(text, encoding="utf-8")
 
 
-def save_figures(folder: Path, figures: dict, fmt: str = "png", dpi: int = 150) -> list[Path]:
+def save_figures(folder: Path, figures: dict, fmt: str = "png", dpi: int = 120) -> list[Path]:
     """Save matplotlib Figures as ``folder/<name>.<fmt>``; returns the paths in order."""
     paths = []
     for name, fig in figures.items():

@@ -126,16 +126,18 @@ def _mesh_geometry(g):
 
 
 def _draw_mesh(ax, g, lang, zoom: bool):
-    from matplotlib.patches import Arc
+    from matplotlib.patches import Arc, Polygon
 
     o1, o2, p, u, n1, at = _mesh_geometry(g)
     m = g.m_mm
     # gear 1 tooth on the line of centres at P; gear 2 a space there
     g1 = gear_outline(g.z1, m, o1, rot=math.pi / 2)
     g2 = gear_outline(g.z2, m, o2, rot=-math.pi / 2 + math.pi / g.z2)
-    ax.fill(g1[:, 0], g1[:, 1], color=C_SUN, alpha=0.18, lw=0)
+    # add_artist, not fill(): fill() updates the data limits vertex by vertex through Bezier
+    # extrema (0.4 s per gear); the outlines plotted beside them set the limits anyway
+    ax.add_artist(Polygon(g1, closed=True, color=C_SUN, alpha=0.18, lw=0))
     ax.plot(g1[:, 0], g1[:, 1], color=C_SUN, lw=1.0)
-    ax.fill(g2[:, 0], g2[:, 1], color=C_PLANET, alpha=0.15, lw=0)
+    ax.add_artist(Polygon(g2, closed=True, color=C_PLANET, alpha=0.15, lw=0))
     ax.plot(g2[:, 0], g2[:, 1], color=C_PLANET, lw=1.0)
     styles = (("d", "-", 0.9), ("d_b", "--", 0.8), ("d_a", ":", 0.8), ("d_f", "-.", 0.8))
     t = np.linspace(0, 2 * math.pi, 721)
