@@ -165,3 +165,33 @@ def test_check_group(project17, tmp_path):
     by = {s["student"]: s for s in json.loads(res.output)["students"]}
     assert by["Ivanov"]["passed"] and not by["Petrov"]["passed"]
     assert "no answers file" in by["Smirnov"]["error"]
+
+
+def test_check_accepts_the_books_vertex(tmp_path):
+    """Variant 47: the book's two-line vertex differs from the true smallest r0 by a third."""
+    res = run("cam", "--variant", 47, "--json", "--no-plots", "--out", tmp_path)
+    cam = json.loads(res.output)["cam"]
+    book = cam["book_vertex"]
+    assert abs(book["r0_mm"] / cam["r0_mm"] - 1) > 0.1
+    f = tmp_path / "a.toml"
+    f.write_text(f"r0_mm = {book['r0_mm']}\nl_oc_mm = {book['l_oc_mm']}\n")
+    res = run("check", "--variant", 47, "--answers", f, "--json")
+    rows = {r["key"]: r["status"] for r in json.loads(res.output)["rows"]}
+    assert rows["r0_mm"] == "pass (book)" and rows["l_oc_mm"].startswith("pass") and res.exit_code == 0
+    f.write_text(f"r0_mm = {(book['r0_mm'] + cam['r0_mm']) / 2}\n")
+    res = run("check", "--variant", 47, "--answers", f, "--json")
+    assert res.exit_code == 1 and json.loads(res.output)["rows"][0]["status"] == "fail"
+
+
+def test_batch_figures_reuse_the_reducer_drawing_only_when_it_is_the_same(tmp_path):
+    roster = tmp_path / "roster.csv"
+    roster.write_text("student,variant,crank_rpm\nA,1,95\nB,2,95\nC,3,60\n")
+    res = run("batch", "--roster", roster, "--jobs", 1, "--out", tmp_path / "o", "--report", "md")
+    assert res.exit_code == 0, res.output
+    folders = {s: tmp_path / "o" / s / f"variant-{n:02d}" for s, n in (("A", 1), ("B", 2), ("C", 3))}
+    for folder in folders.values():
+        assert {f"{f}.png" for f in FIGURES} <= {p.name for p in folder.iterdir()}
+        assert all(f"({f}.png)" in (folder / "report.md").read_text() for f in FIGURES)
+    planetary = {s: (f / "gears_planetary.png").read_bytes() for s, f in folders.items()}
+    assert planetary["A"] == planetary["B"] != planetary["C"]
+    assert (folders["A"] / "gears_mesh.png").read_bytes() != (folders["B"] / "gears_mesh.png").read_bytes()

@@ -177,6 +177,9 @@ def summary_row(job: BatchJob, doc: dict, folder: str) -> dict:
     return row
 
 
+_FIGURE_CACHE: dict = {}  # per worker process: reducer drawings shared by rows with one crank speed
+
+
 def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, fmt: str, plots: bool, report: str | None) -> dict:
     """Run one row in this process: the project, its folder, its summary row (or a failure row)."""
     from .project import run_project
@@ -189,7 +192,7 @@ def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, f
         folder = Path(out_dir) / job.folder
         if job.folder and not job.folder.startswith("variant-"):
             folder = folder / f"variant-{v.number:02d}"
-        doc, _ = write_project_folder(result, folder, lang, fmt=fmt, plots=plots, report=report)
+        doc, _ = write_project_folder(result, folder, lang, fmt=fmt, plots=plots, report=report, figure_cache=_FIGURE_CACHE)
         return summary_row(job, doc, str(folder))
     except TmmError as exc:
         return _failure_row(job, str(exc))

@@ -25,10 +25,12 @@ class AnswerKey:
     en: str
     ru: str
     scale_path: tuple | None = None  # tolerance relative to this value instead (e.g. e relative to r0)
+    book_path: tuple | None = None  # the book's graphical answer, also accepted (status "pass (book)")
 
 
-def _k(key, path, kind, en, ru, scale_path=None):
-    return AnswerKey(key, tuple(path), kind, en, ru, None if scale_path is None else tuple(scale_path))
+def _k(key, path, kind, en, ru, scale_path=None, book_path=None):
+    return AnswerKey(key, tuple(path), kind, en, ru, None if scale_path is None else tuple(scale_path),
+                     None if book_path is None else tuple(book_path))
 
 
 ANSWER_KEYS: tuple[AnswerKey, ...] = (
@@ -48,9 +50,12 @@ ANSWER_KEYS: tuple[AnswerKey, ...] = (
     _k("z2", ("gears", "spur", "z2"), "int", "spur wheel teeth z2", "число зубьев колеса z2"),
     _k("a_mm", ("gears", "spur", "a_mm"), "float", "spur centre distance a [mm]", "межосевое расстояние a [мм]"),
     _k("eps_alpha", ("gears", "spur", "eps_alpha"), "float", "transverse contact ratio ε_α", "коэффициент перекрытия ε_α"),
-    _k("r0_mm", ("cam", "r0_mm"), "float", "cam base radius r0 [mm]", "минимальный радиус кулачка r_0 [мм]"),
-    _k("e_mm", ("cam", "e_mm"), "float", "offset e [mm] (tolerance relative to r0)", "эксцентриситет e [мм] (допуск от r_0)", ("cam", "r0_mm")),
-    _k("l_oc_mm", ("cam", "l_oc_mm"), "float", "centre distance l_OC [mm]", "межцентровое расстояние l_OC [мм]"),
+    _k("r0_mm", ("cam", "r0_mm"), "float", "cam base radius r0 [mm] (the book's vertex is accepted too)",
+       "минимальный радиус кулачка r_0 [мм] (принимается и вершина по пособию)", book_path=("cam", "book_vertex", "r0_mm")),
+    _k("e_mm", ("cam", "e_mm"), "float", "offset e [mm] (tolerance relative to r0; the book's vertex accepted)",
+       "эксцентриситет e [мм] (допуск от r_0; принимается и вершина по пособию)", ("cam", "r0_mm"), ("cam", "book_vertex", "e_mm")),
+    _k("l_oc_mm", ("cam", "l_oc_mm"), "float", "centre distance l_OC [mm] (the book's vertex accepted)",
+       "межцентровое расстояние l_OC [мм] (принимается и вершина по пособию)", book_path=("cam", "book_vertex", "l_oc_mm")),
     _k("roller_mm", ("cam", "roller_mm"), "float", "roller radius r_p [mm]", "радиус ролика r_p [мм]"),
     _k("nu_rise_deg", ("cam", "pressure_angle_max_deg", "rise"), "float", "max pressure angle on rise [deg]", "максимальный угол давления на удалении [°]"),
     _k("nu_return_deg", ("cam", "pressure_angle_max_deg", "return"), "float", "max pressure angle on return [deg]", "максимальный угол давления на возвращении [°]"),
@@ -67,7 +72,7 @@ class CheckRow:
     expected: object
     given: object
     deviation_pct: float | None
-    status: str  # "pass", "fail", "unknown key", "not computed"
+    status: str  # "pass", "pass (book)", "fail", "unknown key", "not computed"
 
 
 @dataclass(frozen=True)
@@ -80,7 +85,7 @@ class CheckReport:
 
     @property
     def passed(self) -> bool:
-        return not self.error and bool(self.rows) and all(r.status == "pass" for r in self.rows)
+        return not self.error and bool(self.rows) and all(r.status.startswith("pass") for r in self.rows)
 
     def to_json(self) -> dict:
         return {
@@ -172,12 +177,20 @@ def compare(doc: dict, answers: dict, rtol_pct: float) -> tuple[CheckRow, ...]:
             dev = None if expected == 0 else 100.0 * (float(given) - float(expected)) / abs(float(expected))
             rows.append(CheckRow(key, expected, given, dev, "pass" if ok else "fail"))
             continue
-        scale = abs(float(_lookup(doc, spec.scale_path) or 0.0)) if spec.scale_path else abs(float(expected))
-        diff = float(given) - float(expected)
-        dev = 100.0 * diff / scale if scale > 0 else (0.0 if diff == 0 else math.inf)
-        ok = abs(dev) <= rtol_pct + 1e-9
-        rows.append(CheckRow(key, expected, given, dev, "pass" if ok else "fail"))
+        dev = _deviation_pct(doc, spec, expected, given)
+        status = "pass" if abs(dev) <= rtol_pct + 1e-9 else "fail"
+        book = _lookup(doc, spec.book_path) if spec.book_path else None
+        if status == "fail" and book is not None and abs(_deviation_pct(doc, spec, book, given)) <= rtol_pct + 1e-9:
+            status = "pass (book)"  # the student followed the book's two-line construction
+        rows.append(CheckRow(key, expected, given, dev, status))
     return tuple(rows)
+
+
+def _deviation_pct(doc: dict, spec: AnswerKey, expected, given) -> float:
+    """Signed deviation of `given` from `expected` in per cent of the key's scale."""
+    scale = abs(float(_lookup(doc, spec.scale_path) or 0.0)) if spec.scale_path else abs(float(expected))
+    diff = float(given) - float(expected)
+    return 100.0 * diff / scale if scale > 0 else (0.0 if diff == 0 else math.inf)
 
 
 def check_one(variant, answers: dict, *, crank_rpm=None, torque_nm=None, rtol_pct: float = 3.0, label: str = "", lang: str = "en") -> CheckReport:

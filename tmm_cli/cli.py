@@ -94,6 +94,26 @@ def _print_files(console, folder: Path, names: list[str], lang: str) -> None:
         console.print(pick(lang, "Files written to ", "Файлы записаны в ") + f"[bold]{folder}[/]: " + ", ".join(names))
 
 
+def _emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, lang: str) -> None:
+    """Write `files` (name -> JSON object or text) and the figures atomically, then either print
+    `json_doc` alone or the tables (`show(console)`), the notes and the list of files."""
+    from .render.files import save_figures, staged_dir, write_json, write_text
+
+    with staged_dir(folder) as tmp:
+        for name, content in files.items():
+            (write_text if isinstance(content, str) else write_json)(tmp / name, content)
+        if figures is not None:
+            save_figures(tmp, figures(), fmt)
+        written = sorted(p.name for p in tmp.iterdir())
+    if json_doc is not None:
+        _print_json(json_doc)
+        return
+    console = _console(lang)
+    show(console)
+    _print_notes(console, notes, lang)
+    _print_files(console, folder, written, lang)
+
+
 # Shared options -----------------------------------------------------------------------------
 
 variant_option = click.option("--variant", "-v", "variant", required=True, metavar="N", help="Variant number from Table 1.2 (1–68).")
@@ -179,36 +199,29 @@ def variants_show(ctx, number, variants_file, lang):
 def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang):
     """Sheet 3: follower diagrams, main dimensions, cam profile, pressure angle."""
     from .cam.design import design_cam
-    from .render.cam_json import cam_to_json, profile_csv
-    from .render.files import staged_dir, write_json, write_text
+    from .render.cam_json import profile_csv
+    from .render.files import ensure_writable_dir
     from .render.report import cam_document
 
     lang = _lang(lang)
     v = _variant(variant, variants_file)
     folder = _out_folder(out, v.number)
-    from .render.files import ensure_writable_dir
-
     ensure_writable_dir(folder.parent)
     result = design_cam(v, step_deg=step_deg)
     doc = cam_document(v, result, lang)
-    with staged_dir(folder) as tmp:
-        write_json(tmp / "cam.json", doc)
-        write_text(tmp / "cam_profile.csv", profile_csv(result))
-        if not no_plots:
-            from .render.cam_figures import cam_figures
-            from .render.files import save_figures
 
-            save_figures(tmp, cam_figures(result, lang), fmt)
-        written = sorted(p.name for p in tmp.iterdir())
-    if as_json:
-        _print_json(doc)
-        return
-    from .render.cam_tables import print_cam
+    def figures():
+        from .render.cam_figures import cam_figures
 
-    console = _console(lang)
-    print_cam(console, result, lang)
-    _print_notes(console, result.notes, lang)
-    _print_files(console, folder, written, lang)
+        return cam_figures(result, lang)
+
+    def show(console):
+        from .render.cam_tables import print_cam
+
+        print_cam(console, result, lang)
+
+    _emit(folder, {"cam.json": doc, "cam_profile.csv": profile_csv(result)}, None if no_plots else figures,
+          fmt, doc if as_json else None, show, result.notes, lang)
 
 
 # tmm gears ---------------------------------------------------------------------------------
@@ -230,7 +243,7 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang)
 def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, lang):
     """Sheet 4: motor, ratio split, planetary reducer synthesis, spur pair to the cam."""
     from .gears.design import design_gears
-    from .render.files import ensure_writable_dir, staged_dir, write_json
+    from .render.files import ensure_writable_dir
     from .render.report import gears_document
 
     lang = _lang(lang)
@@ -242,23 +255,19 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
         tolerance_pct=tolerance_pct, planets=planets,
     )
     doc = gears_document(v, result, lang)
-    with staged_dir(folder) as tmp:
-        write_json(tmp / "gears.json", doc)
-        if not no_plots:
-            from .render.files import save_figures
-            from .render.gears_figures import gears_figures
 
-            save_figures(tmp, gears_figures(result, lang), fmt)
-        written = sorted(p.name for p in tmp.iterdir())
-    if as_json:
-        _print_json(doc)
-        return
-    from .render.gears_tables import print_gears
+    def figures():
+        from .render.gears_figures import gears_figures
 
-    console = _console(lang)
-    print_gears(console, result, lang)
-    _print_notes(console, result.notes, lang)
-    _print_files(console, folder, written, lang)
+        return gears_figures(result, lang)
+
+    def show(console):
+        from .render.gears_tables import print_gears
+
+        print_gears(console, result, lang)
+
+    _emit(folder, {"gears.json": doc}, None if no_plots else figures, fmt, doc if as_json else None, show,
+          result.notes, lang)
 
 
 # tmm project -------------------------------------------------------------------------------

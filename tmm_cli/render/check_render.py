@@ -6,6 +6,7 @@ from .i18n import pick
 
 STATUS = {
     "pass": ("[green]pass[/]", "[green]верно[/]"),
+    "pass (book)": ("[green]pass[/] (the book's vertex)", "[green]верно[/] (вершина по пособию)"),
     "fail": ("[red]FAIL[/]", "[red]НЕВЕРНО[/]"),
     "unknown key": ("[yellow]unknown key[/]", "[yellow]неизвестный ключ[/]"),
     "not computed": ("[yellow]not computed for this variant[/]", "[yellow]не вычисляется для варианта[/]"),
@@ -48,7 +49,7 @@ def print_check(console, report, lang: str) -> None:
         dev = "—" if r.deviation_pct is None else f"{r.deviation_pct:+.2f}"
         t.add_row(r.key, _val(r.expected), _val(r.given), dev, pick(lang, *STATUS[r.status]))
     console.print(t)
-    n_pass = sum(r.status == "pass" for r in report.rows)
+    n_pass = sum(r.status.startswith("pass") for r in report.rows)
     verdict = (pick(lang, "[green]PASSED[/]", "[green]ЗАЧТЕНО[/]") if report.passed
                else pick(lang, "[red]NOT PASSED[/]", "[red]НЕ ЗАЧТЕНО[/]"))
     console.print(pick(lang, f"Verdict: {verdict} ({n_pass} of {len(report.rows)} values correct)",
@@ -66,8 +67,8 @@ def print_group(console, group, lang: str) -> None:
         if rep.error:
             t.add_row(rep.label, "—", "—", "—", f"[red]{rep.error}[/]")
             continue
-        good = sum(r.status == "pass" for r in rep.rows)
-        wrong = ", ".join(r.key for r in rep.rows if r.status != "pass") or "—"
+        good = sum(r.status.startswith("pass") for r in rep.rows)
+        wrong = ", ".join(r.key for r in rep.rows if not r.status.startswith("pass")) or "—"
         verdict = pick(lang, "[green]passed[/]", "[green]зачтено[/]") if rep.passed else pick(lang, "[red]not passed[/]", "[red]не зачтено[/]")
         t.add_row(rep.label, str(rep.variant), f"{good}/{len(rep.rows)}", wrong, verdict)
     console.print(t)

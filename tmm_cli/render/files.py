@@ -69,6 +69,6 @@ def save_figures(folder: Path, figures: dict, fmt: str = "png", dpi: int = 120) 
     paths = []
     for name, fig in figures.items():
         p = Path(folder) / f"{name}.{fmt}"
-        fig.savefig(p, format=fmt, dpi=dpi, bbox_inches="tight")
+        fig.savefig(p, format=fmt, dpi=dpi)  # every figure uses the constrained layout
         paths.append(p)
     return paths

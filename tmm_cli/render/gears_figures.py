@@ -524,10 +524,10 @@ def _assembly_figure(result, lang):
     return fig
 
 
-def gears_figures(result, lang: str) -> dict:
-    """Sheet-4 figures: "gears_planetary", "gears_assembly", "gears_mesh" (matplotlib Figures)."""
-    return {
-        "gears_planetary": _planetary_figure(result, lang),
-        "gears_assembly": _assembly_figure(result, lang),
-        "gears_mesh": _mesh_figure(result, lang),
-    }
+def gears_figures(result, lang: str, names=None) -> dict:
+    """Sheet-4 figures: "gears_planetary", "gears_assembly", "gears_mesh" (matplotlib Figures).
+
+    `names` limits the drawing to some of them (all three by default).
+    """
+    makers = {"gears_planetary": _planetary_figure, "gears_assembly": _assembly_figure, "gears_mesh": _mesh_figure}
+    return {name: make(result, lang) for name, make in makers.items() if names is None or name in names}

@@ -123,9 +123,21 @@ def pdf_report(path: Path, result, lang: str, figures: dict) -> None:
             pdf.savefig(fig)
 
 
-def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", plots: bool = True, report: str | None = "md"):
+# Figures that depend only on the planetary reducer, i.e. on design_gears' inputs other than the
+# cam speed; a batch with one crank speed draws them once per worker process (see figure_cache).
+REDUCER_FIGURES = ("gears_planetary", "gears_assembly")
+
+
+def _reducer_key(gears, lang: str, fmt: str) -> tuple:
+    return (gears.crank_rpm, gears.motor_rpm, gears.tolerance_pct, gears.forced_ratio, gears.forced_planets, lang, fmt)
+
+
+def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", plots: bool = True,
+                         report: str | None = "md", figure_cache: dict | None = None):
     """Write results.json, cam_profile.csv, the figures and the report into `folder`, atomically.
 
+    `figure_cache` (a dict the caller keeps between calls, as `tmm batch` does) lets variants
+    that share a reducer reuse its two drawings instead of drawing them again.
     Returns (the JSON document, the sorted list of file names written).
     """
     from .cam_json import profile_csv
@@ -135,13 +147,25 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     with staged_dir(folder) as tmp:
         write_json(tmp / "results.json", doc)
         write_text(tmp / "cam_profile.csv", profile_csv(result.cam))
-        figures = {}
+        figures, files = {}, []
         if plots:
             from .cam_figures import cam_figures
             from .gears_figures import gears_figures
 
-            figures = {**gears_figures(result.gears, lang), **cam_figures(result.cam, lang)}
-        files = [p.name for p in save_figures(tmp, figures, fmt)]
+            cached = {}
+            if figure_cache is not None and report != "pdf":
+                key = _reducer_key(result.gears, lang, fmt)
+                if key not in figure_cache:
+                    reducer = gears_figures(result.gears, lang, names=REDUCER_FIGURES)
+                    figure_cache[key] = {n: save_figures(tmp, {n: f}, fmt)[0].read_bytes() for n, f in reducer.items()}
+                cached = figure_cache[key]
+                for name, data in cached.items():
+                    (tmp / f"{name}.{fmt}").write_bytes(data)
+            names = [n for n in ("gears_planetary", "gears_assembly", "gears_mesh") if n not in cached]
+            figures = {**gears_figures(result.gears, lang, names=names), **cam_figures(result.cam, lang)}
+            save_figures(tmp, figures, fmt)
+            files = [f"{n}.{fmt}" for n in (*REDUCER_FIGURES, "gears_mesh") if n in cached or n in figures]
+            files += [f"{n}.{fmt}" for n in figures if n.startswith("cam_")]
         if report == "md":
             write_text(tmp / "report.md", markdown_report(result, lang, files))
         elif report == "pdf":
