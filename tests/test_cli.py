@@ -109,3 +109,18 @@ def test_unwritable_out(tmp_path):
 def test_missing_option_is_one_line():
     res = run("cam")
     assert_one_line_error(res, "--variant")
+
+
+@pytest.mark.parametrize("env, word", [({"LANG": "ru_RU.UTF-8"}, "Вариант"), ({"LANG": "en_US.UTF-8"}, "Variant")])
+def test_language_defaults_to_the_locale(env, word):
+    clean = {"LC_ALL": None, "LC_MESSAGES": None, "LANGUAGE": None, **env}
+    res = CliRunner().invoke(cli, ["variants", "show", "17"], env=clean)
+    assert res.exit_code == 0 and word in res.output
+
+
+def test_json_output_is_only_json(tmp_path):
+    res = run("cam", "--variant", 4, "--json", "--no-plots", "--out", tmp_path, "--lang", "ru")
+    assert res.exit_code == 0
+    doc = json.loads(res.output)  # nothing but JSON on stdout
+    assert doc["variant"] == 4 and doc["cam"]["follower"] == "rocker" and doc["cam"]["e_mm"] is None
+    assert json.loads((tmp_path / "variant-04" / "cam.json").read_text()) == doc

@@ -105,13 +105,17 @@ def markdown_report(result, lang: str, figure_files: list[str]) -> str:
     return "\n".join(parts)
 
 
+_PDF_SAFE = str.maketrans({"ℹ": "i", "━": "─", "┃": "│", "┏": "┌", "┓": "┐", "┗": "└", "┛": "┘", "┳": "┬",
+                          "┻": "┴", "╋": "┼", "┣": "├", "┫": "┤", "┡": "├", "┩": "┤", "╇": "┼"})
+
+
 def pdf_report(path: Path, result, lang: str, figures: dict) -> None:
     """One printable PDF: the text report on A4 pages, then every figure on its own page."""
     from matplotlib.backends.backend_pdf import PdfPages
     from matplotlib.figure import Figure
 
-    # DejaVu Sans Mono has no "ℹ"; the PDF shows "i" in its place
-    lines = terminal_text(result, lang, width=110).replace("ℹ", "i").splitlines()
+    # DejaVu Sans Mono lacks "ℹ" and the heavy box-drawing lines: use "i" and the light ones
+    lines = terminal_text(result, lang, width=110).translate(_PDF_SAFE).splitlines()
     per_page = 80
     with PdfPages(path) as pdf:
         for start in range(0, max(len(lines), 1), per_page):
