@@ -124,3 +124,17 @@ def test_json_output_is_only_json(tmp_path):
     doc = json.loads(res.output)  # nothing but JSON on stdout
     assert doc["variant"] == 4 and doc["cam"]["follower"] == "rocker" and doc["cam"]["e_mm"] is None
     assert json.loads((tmp_path / "variant-04" / "cam.json").read_text()) == doc
+
+
+def test_rerun_never_mixes_two_runs(tmp_path):
+    folder = tmp_path / "variant-02"
+    assert run("cam", "--variant", 2, "--out", tmp_path).exit_code == 0
+    assert run("gears", "--variant", 2, "--out", tmp_path, "--crank-rpm", 100).exit_code == 0
+    names = {p.name for p in folder.iterdir()}
+    assert {"cam.json", "gears.json", "cam_profile.png", "gears_mesh.png"} <= names
+    assert run("cam", "--variant", 2, "--out", tmp_path, "--no-plots").exit_code == 0
+    names = {p.name for p in folder.iterdir()}
+    assert not any(n.startswith("cam_") and n.endswith(".png") for n in names)
+    assert "gears_mesh.png" in names  # another command's files stay
+    assert run("project", "--variant", 2, "--out", tmp_path, "--no-plots").exit_code == 0
+    assert sorted(p.name for p in folder.iterdir()) == ["cam_profile.csv", "report.md", "results.json"]

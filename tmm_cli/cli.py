@@ -94,12 +94,12 @@ def _print_files(console, folder: Path, names: list[str], lang: str) -> None:
         console.print(pick(lang, "Files written to ", "Файлы записаны в ") + f"[bold]{folder}[/]: " + ", ".join(names))
 
 
-def _emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, lang: str) -> None:
+def _emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, lang: str, owns=()) -> None:
     """Write `files` (name -> JSON object or text) and the figures atomically, then either print
     `json_doc` alone or the tables (`show(console)`), the notes and the list of files."""
     from .render.files import save_figures, staged_dir, write_json, write_text
 
-    with staged_dir(folder) as tmp:
+    with staged_dir(folder, owns) as tmp:
         for name, content in files.items():
             (write_text if isinstance(content, str) else write_json)(tmp / name, content)
         if figures is not None:
@@ -221,7 +221,7 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang)
         print_cam(console, result, lang)
 
     _emit(folder, {"cam.json": doc, "cam_profile.csv": profile_csv(result)}, None if no_plots else figures,
-          fmt, doc if as_json else None, show, result.notes, lang)
+          fmt, doc if as_json else None, show, result.notes, lang, owns=("cam_*.*",))
 
 
 # tmm gears ---------------------------------------------------------------------------------
@@ -267,7 +267,7 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
         print_gears(console, result, lang)
 
     _emit(folder, {"gears.json": doc}, None if no_plots else figures, fmt, doc if as_json else None, show,
-          result.notes, lang)
+          result.notes, lang, owns=("gears_*.*",))
 
 
 # tmm project -------------------------------------------------------------------------------

@@ -33,11 +33,14 @@ def ensure_writable_dir(path: Path) -> Path:
 
 
 @contextmanager
-def staged_dir(target: Path) -> Iterator[Path]:
+def staged_dir(target: Path, owns: tuple[str, ...] = ()) -> Iterator[Path]:
     """Yield an empty staging folder; on success its files move into `target`, on error it vanishes.
 
     Files are moved one by one with :func:`os.replace` (atomic per file), only after everything
     was written, so a failed run leaves no half-written file and keeps what `target` had.
+    `owns` lists glob patterns of the files this command writes: older files matching them that
+    this run did not write again (a figure of an earlier run with other options) are removed,
+    so the folder never mixes results of two runs.
     """
     target = Path(target)
     parent = ensure_writable_dir(target.parent)
@@ -46,6 +49,11 @@ def staged_dir(target: Path) -> Iterator[Path]:
         yield tmp
         try:
             target.mkdir(exist_ok=True)
+            fresh = {item.name for item in tmp.iterdir()}
+            for pattern in owns:
+                for stale in target.glob(pattern):
+                    if stale.is_file() and stale.name not in fresh:
+                        stale.unlink()
             for item in sorted(tmp.iterdir()):
                 os.replace(item, target / item.name)
         except OSError as exc:

@@ -148,7 +148,8 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     from .files import save_figures, staged_dir, write_json, write_text
 
     doc = project_document(result, lang)
-    with staged_dir(folder) as tmp:
+    # the project owns its folder: nothing of an earlier run (other options) stays beside it
+    with staged_dir(folder, owns=("*",)) as tmp:
         write_json(tmp / "results.json", doc)
         write_text(tmp / "cam_profile.csv", profile_csv(result.cam))
         figures, files = {}, []
