@@ -111,13 +111,21 @@ def gear_outline(z: int, m: float, centre=(0.0, 0.0), rot: float = 0.0, **kw) ->
 # the mesh
 
 
-def _mesh_geometry(g):
+def _mesh_geometry(g, motor_sense: str = "cw"):
+    """Centres, pole, the unit vector u of the line of action from N1 to N2, N1, and s ↦ point.
+
+    Gear 1 (on the motor, centre O1 below) drives. The line of action is the one along which
+    its working flanks push: the pitch-point velocity of gear 1 has a positive component along u,
+    so contact runs P1 → P2 (from gear 2's tip circle to gear 1's). Gear 1 turning clockwise
+    (top moving right) gives the line rising to the right; counter-clockwise, its mirror image.
+    """
     a = g.a_mm
     al = math.radians(g.alpha_w_deg)
     r1, r2 = g.d1_mm / 2, g.d2_mm / 2
     o1, o2 = np.array([0.0, 0.0]), np.array([0.0, a])
     p = np.array([0.0, r1])
-    u = np.array([math.cos(al), math.sin(al)])
+    sx = 1.0 if motor_sense == "cw" else -1.0
+    u = np.array([sx * math.cos(al), math.sin(al)])
     n1 = p - g.pole_mm * u
 
     def at(s):
@@ -125,14 +133,37 @@ def _mesh_geometry(g):
     return o1, o2, p, u, n1, at
 
 
-def _draw_mesh(ax, g, lang, zoom: bool):
+def _rotation_arrow(ax, centre, radius, sense, mid_deg, color, label):
+    """A curved arrow of 70° about ``centre`` showing the sense of rotation ('cw'/'ccw')."""
+    sgn = 1.0 if sense == "ccw" else -1.0
+    t = np.radians(mid_deg + sgn * np.linspace(-35.0, 35.0, 40))
+    x, y = centre[0] + radius * np.cos(t), centre[1] + radius * np.sin(t)
+    ax.plot(x[:-1], y[:-1], color=color, lw=1.6)
+    ax.annotate("", (x[-1], y[-1]), xytext=(x[-3], y[-3]),
+                arrowprops=dict(arrowstyle="-|>,head_length=0.7,head_width=0.35", color=color, lw=1.6,
+                                shrinkA=0, shrinkB=0))
+    m = math.radians(mid_deg)
+    ax.annotate(label, (centre[0] + radius * math.cos(m), centre[1] + radius * math.sin(m)),
+                xytext=(10 * math.cos(m), 10 * math.sin(m)), textcoords="offset points", color=color, fontsize=10,
+                fontweight="bold", ha="left" if math.cos(m) > 0.2 else ("right" if math.cos(m) < -0.2 else "center"),
+                va="bottom" if math.sin(m) > 0.2 else ("top" if math.sin(m) < -0.2 else "center"))
+
+
+def _sense_text(sense, lang):
+    return pick(lang, "counter-clockwise" if sense == "ccw" else "clockwise",
+                "против часовой" if sense == "ccw" else "по часовой")
+
+
+def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
     from matplotlib.patches import Arc, Polygon
 
-    o1, o2, p, u, n1, at = _mesh_geometry(g)
+    o1, o2, p, u, n1, at = _mesh_geometry(g, motor_sense)
+    sx = 1.0 if u[0] > 0 else -1.0  # the mirror of the picture for a motor turning counter-clockwise
     m = g.m_mm
     # gear 1 tooth on the line of centres at P; gear 2 a space there
-    g1 = gear_outline(g.z1, m, o1, rot=math.pi / 2)
-    g2 = gear_outline(g.z2, m, o2, rot=-math.pi / 2 + math.pi / g.z2)
+    rot1, rot2 = math.pi / 2, -math.pi / 2 + math.pi / g.z2
+    g1 = gear_outline(g.z1, m, o1, rot=rot1)
+    g2 = gear_outline(g.z2, m, o2, rot=rot2)
     # add_artist, not fill(): fill() updates the data limits vertex by vertex through Bezier
     # extrema (0.4 s per gear); the outlines plotted beside them set the limits anyway
     ax.add_artist(Polygon(g1, closed=True, color=C_SUN, alpha=0.18, lw=0))
@@ -168,23 +199,33 @@ def _draw_mesh(ax, g, lang, zoom: bool):
         q = at(s)
         ax.plot(*q, "o", color="k", ms=3.5 if zoom else 2.5, zorder=5)
         if zoom or name in ("N1", "N2", "P"):
-            ax.annotate(name, q, xytext=off[name], textcoords="offset points", fontsize=fs, fontweight="bold")
+            dx, dy = off[name]
+            ax.annotate(name, q, xytext=(sx * dx, dy), textcoords="offset points", fontsize=fs, fontweight="bold",
+                        ha="left" if sx > 0 else "right")
     # α_w: between the tangent to the pitch circles at P (horizontal) and the line of action
     if zoom:
         rr = 0.6 * g.g_alpha_mm
-        ax.add_patch(Arc(tuple(p), 2 * rr, 2 * rr, theta1=0, theta2=g.alpha_w_deg, color="k", lw=0.9))
-        ax.plot([p[0], p[0] + 1.3 * rr], [p[1], p[1]], color="k", lw=0.7, ls="--")
+        th0, th1 = (0.0, g.alpha_w_deg) if sx > 0 else (180.0 - g.alpha_w_deg, 180.0)
+        ax.add_patch(Arc(tuple(p), 2 * rr, 2 * rr, theta1=th0, theta2=th1, color="k", lw=0.9))
+        ax.plot([p[0], p[0] + sx * 1.3 * rr], [p[1], p[1]], color="k", lw=0.7, ls="--")
         mid = math.radians(g.alpha_w_deg / 2)
-        ax.annotate(f"α_w = {g.alpha_w_deg:.0f}°", (p[0] + rr * math.cos(mid), p[1] + rr * math.sin(mid)),
-                    xytext=(10, -3), textcoords="offset points", fontsize=fs,
+        ax.annotate(f"α_w = {g.alpha_w_deg:.0f}°", (p[0] + sx * rr * math.cos(mid), p[1] + rr * math.sin(mid)),
+                    xytext=(sx * 10, -3), textcoords="offset points", fontsize=fs, ha="left" if sx > 0 else "right",
                     bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
         # the active profile parts (double line in the book): radii of P1 from O1 and P2 from O2
         r_p1_on_1 = float(np.hypot(*(at(g.p1_mm) - o1)))
         r_p2_on_2 = float(np.hypot(*(at(g.p2_mm) - o2)))
-        for gg, centre, rmin, rmax, col in ((g1, o1, r_p1_on_1, g.da1_mm / 2, C_SUN), (g2, o2, r_p2_on_2, g.da2_mm / 2, C_PLANET)):
+        # only the working flanks: those meeting along this line of action — the clockwise side of
+        # each tooth of either gear when gear 1 turns clockwise, the other side otherwise
+        for gg, centre, rmin, rmax, col, axis0, z in (
+                (g1, o1, r_p1_on_1, g.da1_mm / 2, C_SUN, rot1, g.z1),
+                (g2, o2, r_p2_on_2, g.da2_mm / 2, C_PLANET, rot2, g.z2)):
             rad = np.hypot(gg[:, 0] - centre[0], gg[:, 1] - centre[1])
             near = np.hypot(gg[:, 0] - p[0], gg[:, 1] - p[1]) < 1.15 * g.p_mm
-            sel = (rad >= rmin - 1e-6) & (rad <= rmax - 0.02 * m) & near
+            tau = 2 * math.pi / z
+            delta = np.arctan2(gg[:, 1] - centre[1], gg[:, 0] - centre[0]) - axis0
+            delta = delta - tau * np.floor(delta / tau + 0.5)
+            sel = (rad >= rmin - 1e-6) & (rad <= rmax - 0.02 * m) & near & (sx * delta < 0)
             pts = np.where(sel[:, None], gg, np.nan)
             ax.plot(pts[:, 0], pts[:, 1], color=col, lw=2.6)
         half = min(max(1.25 * g.g_alpha_mm, 0.6 * g.n1n2_mm * math.cos(math.radians(g.alpha_w_deg))),
@@ -203,10 +244,17 @@ def _mesh_figure(result, lang):
     gs = fig.add_gridspec(1, 2, width_ratios=[1, 1.25])
     ax0 = fig.add_subplot(gs[0])
     ax1 = fig.add_subplot(gs[1])
-    _draw_mesh(ax0, g, lang, zoom=False)
-    _draw_mesh(ax1, g, lang, zoom=True)
-    ax0.set_title(pick(lang, f"Spur pair z1 = {g.z1}, z2 = {g.z2}, m = {g.m_mm:g} mm, a = {g.a_mm:g} mm",
-                       f"Зубчатая передача z1 = {g.z1}, z2 = {g.z2}, m = {g.m_mm:g} мм, a = {g.a_mm:g} мм"), fontsize=11)
+    dirs = result.directions
+    _draw_mesh(ax0, g, lang, zoom=False, motor_sense=dirs.motor)
+    _draw_mesh(ax1, g, lang, zoom=True, motor_sense=dirs.motor)
+    # senses of rotation: motor (gear 1) and cam (gear 2), opposite in an external mesh
+    _rotation_arrow(ax0, (0.0, 0.0), 0.45 * g.d1_mm / 2, dirs.motor, 235.0, C_SUN, "ω1")
+    _rotation_arrow(ax0, (0.0, g.a_mm), 0.45 * g.d2_mm / 2, dirs.cam, 55.0, C_PLANET, "ω2")
+    ax0.set_title(pick(lang, f"Spur pair z1 = {g.z1}, z2 = {g.z2}, m = {g.m_mm:g} mm, a = {g.a_mm:g} mm\n"
+                             f"ω1: motor ({_sense_text(dirs.motor, lang)}), ω2: cam ({_sense_text(dirs.cam, lang)})",
+                       f"Зубчатая передача z1 = {g.z1}, z2 = {g.z2}, m = {g.m_mm:g} мм, a = {g.a_mm:g} мм\n"
+                       f"ω1: двигатель ({_sense_text(dirs.motor, lang)}), ω2: кулачок ({_sense_text(dirs.cam, lang)})"),
+                  fontsize=10.5)
     ax1.set_title(pick(lang, f"Mesh zone: ε_α = P1P2/p_b = {g.g_alpha_mm:.1f}/{g.pb_mm:.2f} = {g.eps_alpha:.3f};  "
                              f"φ_α1 = {g.phi_alpha1_deg:.2f}°, φ_α2 = {g.phi_alpha2_deg:.2f}°",
                        f"Зона зацепления: ε_α = P1P2/p_b = {g.g_alpha_mm:.1f}/{g.pb_mm:.2f} = {g.eps_alpha:.3f};  "
@@ -309,6 +357,7 @@ def _velocity(ax, result, lang, ylim):
     d = result.planetary
     cols = [(C_SUN, C_PLANET, C_CARRIER), C_STAGE2]
     vmax = max(max(s.v_a for s in v.stages), 1e-9)
+    named = []  # (v, r, name): points of the picture; coinciding points share one label
     for j, (s, st) in enumerate(zip(v.stages, d.stages)):
         ck, cc, chc = cols[j]
         suf = str(j + 1) if len(v.stages) > 1 else ""
@@ -319,17 +368,38 @@ def _velocity(ax, result, lang, ylim):
         slope = s.v_a / (s.r_a - s.r_b)
         ax.plot([slope * (r_lo - s.r_b), slope * (r_hi - s.r_b)], [r_lo, r_hi], color=cc, lw=1.8)
         ax.plot([0, s.v_c], [0, s.r_c], color=chc, lw=1.8)
-        for (vx, ry, name) in ((s.v_a, s.r_a, f"A{suf}"), (s.v_c, s.r_c, f"C{suf}"), (0, s.r_b, f"B{suf}")):
-            ax.plot(vx, ry, "o", color="k", ms=3.5)
-            ax.annotate(name, (vx, ry), xytext=(5, 3), textcoords="offset points", fontsize=9)
-            ax.plot([0, max(vx, 0)], [ry, ry], color="0.6", lw=0.5, ls=":")
-        ax.annotate(f"k{suf}", (0.55 * s.v_a, 0.55 * s.r_a), xytext=(4, -10), textcoords="offset points", color=ck,
-                    fontsize=10, fontweight="bold")
-        ax.annotate(f"H{suf}", (0.8 * s.v_c, 0.8 * s.r_c), xytext=(5, -4), textcoords="offset points", color=chc,
-                    fontsize=10, fontweight="bold")
-        ax.annotate(f"c{suf}", (slope * ((s.r_a + s.r_b) / 2 - s.r_b), (s.r_a + s.r_b) / 2), xytext=(5, 0),
-                    textcoords="offset points", color=cc, fontsize=10, fontweight="bold")
-        ax.annotate(f"V_A{suf}", (s.v_a / 2, s.r_a), xytext=(0, 3), textcoords="offset points", fontsize=8, ha="center")
+        # the vectors V_A and V_C, drawn from the vertical (radius) axis as in the book
+        for vx, ry in ((s.v_a, s.r_a), (s.v_c, s.r_c)):
+            ax.annotate("", (vx, ry), xytext=(0, ry), arrowprops=dict(arrowstyle="-|>", color="0.35", lw=0.8,
+                                                                      shrinkA=0, shrinkB=0))
+        named += [(s.v_a, s.r_a, f"A{suf}"), (s.v_c, s.r_c, f"C{suf}"), (0.0, s.r_b, f"B{suf}")]
+        last = j == len(v.stages) - 1
+        if j == 0:  # a later stage's sun turns with the carrier before it: one line, one label
+            ax.annotate(f"k{suf}", (0.7 * s.v_a, 0.7 * s.r_a), xytext=(4, -12), textcoords="offset points",
+                        color=ck, fontsize=10, fontweight="bold")
+        if last:
+            ax.annotate(f"H{suf}", (0.8 * s.v_c, 0.8 * s.r_c), xytext=(-6, 2), textcoords="offset points", color=chc,
+                        fontsize=10, fontweight="bold", ha="right")
+        else:  # right of the line, below the next sun's point A
+            ax.annotate(f"H{suf} = k{j + 2}", (0.45 * s.v_c, 0.45 * s.r_c), xytext=(6, -2), textcoords="offset points",
+                        color=chc, fontsize=10, fontweight="bold", ha="left", va="top")
+        # the planet's label between A and C (C is the midpoint of AB in a single row: keep off it)
+        r_lab = s.r_a + 0.5 * (s.r_c - s.r_a)
+        ax.annotate(f"c{suf}", (slope * (r_lab - s.r_b), r_lab), xytext=(6, 0),
+                    textcoords="offset points", color=cc, fontsize=10, fontweight="bold", va="center")
+        ax.annotate(f"V_A{suf}", (s.v_a, s.r_a), xytext=(-8, 3), textcoords="offset points", fontsize=8, ha="right")
+    groups: list[list] = []
+    tol = 1e-6 * max(1.0, vmax)
+    for vx, ry, name in named:
+        for gr in groups:
+            if abs(gr[0] - vx) < tol and abs(gr[1] - ry) < tol:
+                gr[2].append(name)
+                break
+        else:
+            groups.append([vx, ry, [name]])
+    for vx, ry, names in groups:
+        ax.plot(vx, ry, "o", color="k", ms=3.5)
+        ax.annotate(" = ".join(names), (vx, ry), xytext=(5, 3), textcoords="offset points", fontsize=9)
     s0, sl = v.stages[0], v.stages[-1]
     from matplotlib.patches import Arc
 
@@ -337,10 +407,11 @@ def _velocity(ax, result, lang, ylim):
     ax.add_patch(Arc((0, 0), 2 * r_arc, 2 * r_arc, theta1=90 - s0.phi_k_deg, theta2=90, color=C_SUN, lw=1))
     ax.add_patch(Arc((0, 0), 2.7 * r_arc, 2.7 * r_arc, theta1=90 - sl.phi_h_deg, theta2=90,
                      color=C_CARRIER if len(v.stages) == 1 else C_STAGE2[2], lw=1))
-    ax.annotate("φ_k", (r_arc * math.sin(math.radians(s0.phi_k_deg / 2)), r_arc * math.cos(math.radians(s0.phi_k_deg / 2))),
-                xytext=(3, 2), textcoords="offset points", fontsize=9, color=C_SUN)
-    ax.annotate("φ_H", (1.35 * r_arc * math.sin(math.radians(sl.phi_h_deg)), 1.35 * r_arc), xytext=(3, 3),
-                textcoords="offset points", fontsize=9, color=C_CARRIER if len(v.stages) == 1 else C_STAGE2[2])
+    # the angle labels left of the radius axis, at the top of their arcs (the picture is on the right)
+    ax.annotate("φ_k", (0, r_arc), xytext=(-4, 0), textcoords="offset points", fontsize=9, color=C_SUN,
+                ha="right", va="center")
+    ax.annotate("φ_H", (0, 1.35 * r_arc), xytext=(-4, 0), textcoords="offset points", fontsize=9,
+                color=C_CARRIER if len(v.stages) == 1 else C_STAGE2[2], ha="right", va="center")
     ax.plot([0, 0], [0, ylim[1]], color="k", lw=0.8)
     ax.axhline(0, color="0.5", lw=0.7, ls=(0, (10, 3, 2, 3)))
     vmin = min(min(s.v_a / (s.r_a - s.r_b) * (max(s.r_b, s.r_a + 2 * s.r_planet) - s.r_b) for s in v.stages), 0)
@@ -374,11 +445,16 @@ def _angular(ax, result, lang, y0: float):
         last = j == len(v.stages) - 1
         pts.append((h * th, f"h{suf}" if last else f"h{suf} = k{j + 2}", chc))
     xs = [p[0] for p in pts]
-    for xv, name, col in pts:
+    # labels above the line; one that would run into its left neighbour goes below it
+    span = max(xs + [0]) - min(xs + [0])
+    prev_x, prev_up = None, False
+    for xv, name, col in sorted(pts, key=lambda p: p[0]):
         ax.plot([0, xv], [y0 - h, y0], color=col, lw=1.4)
         ax.plot(xv, y0, "o", color=col, ms=4)
-        ax.annotate(name, (xv, y0), xytext=(0, 6), textcoords="offset points", ha="center", color=col, fontsize=10,
-                    fontweight="bold")
+        up = not (prev_x is not None and prev_up and xv - prev_x < 0.09 * span)
+        ax.annotate(name, (xv, y0), xytext=(0, 6) if up else (0, -8), textcoords="offset points", ha="center",
+                    va="bottom" if up else "top", color=col, fontsize=10, fontweight="bold")
+        prev_x, prev_up = xv, up
     ax.plot([min(xs + [0]) - 0.05 * h, max(xs) + 0.05 * h], [y0, y0], color="k", lw=0.9)
     ax.plot(0, y0 - h, "ko", ms=4)
     ax.annotate("P", (0, y0 - h), xytext=(6, -4), textcoords="offset points", fontsize=10)
@@ -464,13 +540,19 @@ def _assembly_stage(ax, stage, checks, lang, title):
             ax.add_patch(Circle((cx, cy), rc2, fill=False, color="#8c564b", lw=1.3, ls="--"))
         ax.add_patch(Circle((cx, cy), big + 1.0, fill=False, color="0.4", lw=0.6, ls=":"))
         ax.plot(cx, cy, "o", color="k", ms=3)
-        ax.annotate(str(j + 1), (cx, cy), xytext=(0, 0), textcoords="offset points", ha="center", va="center",
-                    fontsize=13, fontweight="bold", color="k")
+        # the planet's number beside its centre, on the side away from the carrier arm
+        ax.annotate(str(j + 1), (cx, cy), xytext=(12 * math.cos(th - math.pi / 2), 12 * math.sin(th - math.pi / 2)),
+                    textcoords="offset points", ha="center", va="center", fontsize=13, fontweight="bold", color="k")
     if k >= 2:
-        r_arc = 0.55 * rk
+        # the angle 2β between the first two arms, its label outside the arc (a small sun must not
+        # hide the arc under the label)
+        r_arc = max(0.55 * rk, 0.4 * rC)
         ax.add_patch(Arc((0, 0), 2 * r_arc, 2 * r_arc, theta1=90, theta2=90 + 360 / k, color="k", lw=1.2))
         mid = math.radians(90 + 180 / k)
-        ax.annotate(f"2β = {360 / k:.4g}°", (r_arc * math.cos(mid), r_arc * math.sin(mid)), ha="center", va="center",
+        ax.annotate(f"2β = {360 / k:.4g}°", (r_arc * math.cos(mid), r_arc * math.sin(mid)),
+                    xytext=(14 * math.cos(mid), 14 * math.sin(mid)), textcoords="offset points",
+                    ha="right" if math.cos(mid) < -0.2 else ("left" if math.cos(mid) > 0.2 else "center"),
+                    va="bottom" if math.sin(mid) > 0.2 else ("top" if math.sin(mid) < -0.2 else "center"),
                     fontsize=10, bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="none", alpha=0.85))
     ax.plot(0, 0, "k+", ms=8)
     lim = max(rn, rC + big) + 4
