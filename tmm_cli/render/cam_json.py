@@ -38,6 +38,35 @@ def _curve_mm(arr, nd: int = 4) -> list[list[float]] | None:
     return [[round(float(x) * 1000.0, nd), round(float(y) * 1000.0, nd)] for x, y in arr]
 
 
+def _follower_geometry(result: CamResult) -> dict:
+    """The follower at the start of the rise (φ = 0) in the curve frame [mm], for inverting the motion.
+
+    With this, the pitch curve alone gives the mechanism back: at cam angle φ the cam has turned by
+    φ in the sense of `rotation`, so the roller centre in the fixed frame (= the curve frame at
+    φ = 0) is R(±φ)·P(φ) (+ for "ccw"). Translating: B moves on the line through `axis_point_mm`
+    along `rise_direction` (the axis, offset e from the cam centre). Rocker: B turns about the
+    fixed pivot `pivot_mm` (|pivot| = l_OC, |B0 − pivot| = l_BC); `rocker_turns_on_rise` says
+    which way CB turns while the follower rises.
+    """
+    z = result.sizing
+    b0 = result.profile.pitch[0]
+    out = {
+        "b0_mm": _pt_mm(b0),
+        "rise_direction": [0.0, 1.0],
+        "axis_point_mm": None,
+        "pivot_mm": None,
+        "rocker_turns_on_rise": None,
+    }
+    if z.rocker:
+        o = z.centre
+        out["pivot_mm"] = _pt_mm((z.pivot[0] - o[0], z.pivot[1] - o[1]))
+        same = z.swing == "same"
+        out["rocker_turns_on_rise"] = ("ccw" if z.ccw else "cw") if same else ("cw" if z.ccw else "ccw")
+    else:
+        out["axis_point_mm"] = _pt_mm((z.e_m, 0.0))
+    return out
+
+
 def cam_to_json(result: CamResult, lang: str) -> dict:
     """The JSON object of sheet 3 (no numpy types; mm and degrees)."""
     v, m, z, p = result.variant, result.motion, result.sizing, result.profile
@@ -80,6 +109,8 @@ def cam_to_json(result: CamResult, lang: str) -> dict:
         "n_cam_rpm": v.n_cam_rpm,
         "omega_cam_rad_s": _f(m.omega, 6),
         "nu_max_deg": v.nu_max_deg,
+        "s_max_mm": None if rocker else _mm(v.stroke),  # the stroke of Table 1.2 (schemes 1, 2)
+        "gamma_max_deg": v.stroke if rocker else None,  # the rocker swing (schemes 3, 4)
         "phases_deg": {
             "rise": v.phi_rise_deg,
             "far_dwell": v.phi_far_dwell_deg,
@@ -152,6 +183,8 @@ def cam_to_json(result: CamResult, lang: str) -> dict:
             "k_v": _f(sc.k_v, 8),
             "k_a": _f(sc.k_a, 6),
             "k_s_unit": "rad/mm" if rocker else "m/mm",
+            "k_v_unit": "rad/s per mm" if rocker else "m/s per mm",
+            "k_a_unit": "rad/s^2 per mm" if rocker else "m/s^2 per mm",
             "k_gamma_deg_per_mm": _f(sc.k_gamma_deg_mm, 8),
             "k_s_b_m_per_mm": _f(sc.k_s_b, 10),
             "k_v_b_m_s_per_mm": _f(sc.k_v_b, 8),
@@ -163,6 +196,7 @@ def cam_to_json(result: CamResult, lang: str) -> dict:
         "curve_frame": "cam frame at the start of the rise: cam centre at the origin, +y = rise direction at B0",
         "pitch_curve_step_deg": _f(math.degrees(float(p.phi[1] - p.phi[0])), 6),
         "pitch_curve_mm": _curve_mm(p.pitch),
+        "follower_in_curve_frame": _follower_geometry(result),
         "working_profile_mm": _curve_mm(p.inner),
         "groove_outer_profile_mm": _curve_mm(p.outer),
         "warnings": warnings,

@@ -138,13 +138,13 @@ def _scales_table(r: CamResult, lang: str):
     )
     t.add_row(pick(lang, "layout", "разметка"), f"b = {s.b_mm:g} {mm}, Y_Smax = {s.y_s_max_mm:g} {mm}", f"H_V = {s.h_v_mm:g} {mm}, H_a = {s.h_a_mm:g} {mm}")
     t.add_row("k_φ", _g(s.k_phi_deg_mm, 5), pick(lang, "deg/mm = φ_р/b (1.9)", "град/мм = φ_р/b (1.9)"))
-    t.add_row("k_t", _g(s.k_t_s_mm, 5), pick(lang, "s/mm = φ_р/(6·n_k·b) (1.10)", "с/мм = φ_р/(6·n_k·b) (1.10)"))
+    t.add_row("k_t", _g(s.k_t_s_mm, 5), pick(lang, "s/mm = φ_р/(6·|n_k|·b) (1.10)", "с/мм = φ_р/(6·|n_k|·b) (1.10)"))
     if v.is_rocker:
-        t.add_row("k_γ град", _g(s.k_gamma_deg_mm, 5), pick(lang, "deg/mm = γ_max/Y_γmax (1.14)", "град/мм = γ_max/Y_γmax (1.14)"))
-        t.add_row("k_γ рад", _g(s.k_s, 5), pick(lang, "rad/mm (1.15)", "рад/мм (1.15)"))
-        t.add_row("k_ω", _g(s.k_v, 5), pick(lang, "rad/s per mm = k_γ/(k_t·H_V) (1.16)", "рад/(с·мм) = k_γ/(k_t·H_V) (1.16)"))
+        t.add_row(pick(lang, "k_γ deg", "k_γ град"), _g(s.k_gamma_deg_mm, 5), pick(lang, "deg/mm = γ_max/Y_γmax (1.14)", "град/мм = γ_max/Y_γmax (1.14)"))
+        t.add_row(pick(lang, "k_γ rad", "k_γ рад"), _g(s.k_s, 5), pick(lang, "rad/mm = k_γ deg·π/180 (1.15)", "рад/мм = k_γ град·π/180 (1.15)"))
+        t.add_row("k_ω", _g(s.k_v, 5), pick(lang, "rad/s per mm = k_γ rad/(k_t·H_V) (1.16)", "рад/(с·мм) = k_γ рад/(k_t·H_V) (1.16)"))
         t.add_row("k_ε", _g(s.k_a, 5), pick(lang, "rad/s² per mm = k_ω/(k_t·H_a) (1.17)", "рад/(с²·мм) = k_ω/(k_t·H_a) (1.17)"))
-        t.add_row("k_S", _g(s.k_s_b, 5), pick(lang, "m/mm = k_γ·l_BC (1.18)", "м/мм = k_γ·l_BC (1.18)"))
+        t.add_row("k_S", _g(s.k_s_b, 5), pick(lang, "m/mm = k_γ rad·l_BC (1.18)", "м/мм = k_γ рад·l_BC (1.18)"))
         t.add_row("k_V", _g(s.k_v_b, 5), pick(lang, "m/s per mm = k_ω·l_BC (1.18)", "м/(с·мм) = k_ω·l_BC (1.18)"))
         t.add_row("k_a", _g(s.k_a_b, 5), pick(lang, "m/s² per mm = k_ε·l_BC (1.18)", "м/(с²·мм) = k_ε·l_BC (1.18)"))
     else:
