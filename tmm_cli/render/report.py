@@ -14,8 +14,6 @@ from .. import __version__
 from ..variants import Variant
 from .i18n import note_text, pick
 
-SHEET_FIGURES = ("gears_planetary", "gears_assembly", "gears_mesh", "cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle")
-
 
 def _head(v: Variant) -> dict:
     return {"tool": f"tmm {__version__}", "variant": v.number, "input": v.as_input_dict()}
