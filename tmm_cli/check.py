@@ -226,5 +226,6 @@ def check_group(roster, answers_dir, *, variants_file=None, crank_rpm=None, torq
             reports.append(check_one(v, read_answers(found), crank_rpm=job.crank_rpm, torque_nm=job.torque_nm,
                                      rtol_pct=rtol_pct, label=job.label))
         except TmmError as exc:
-            reports.append(CheckReport(label=job.label, variant=0, rtol_pct=rtol_pct, rows=(), error=str(exc)))
+            number = int(job.variant) if job.variant.isdigit() else 0
+            reports.append(CheckReport(label=job.label, variant=number, rtol_pct=rtol_pct, rows=(), error=str(exc)))
     return GroupReport(tuple(reports))

@@ -40,11 +40,12 @@ def print_keys(console, lang: str) -> None:
 def print_check(console, report, lang: str) -> None:
     from rich.table import Table
 
-    t = Table(title=pick(lang, f"Check — {report.label}, variant {report.variant}, tolerance {report.rtol_pct:g} %",
-                         f"Проверка — {report.label}, вариант {report.variant}, допуск {report.rtol_pct:g} %"), header_style="bold")
-    for head in (pick(lang, "Key", "Ключ"), pick(lang, "Expected", "Расчёт"), pick(lang, "Given", "Ответ"),
-                 pick(lang, "Deviation, %", "Отклонение, %"), pick(lang, "Result", "Итог")):
-        t.add_column(head, justify="right")
+    who = "" if report.label == f"variant {report.variant}" else f"{report.label}, "
+    t = Table(title=pick(lang, f"Check — {who}variant {report.variant}, tolerance {report.rtol_pct:g} %",
+                         f"Проверка — {who}вариант {report.variant}, допуск {report.rtol_pct:g} %"), header_style="bold")
+    for i, head in enumerate((pick(lang, "Key", "Ключ"), pick(lang, "Expected", "Расчёт"), pick(lang, "Given", "Ответ"),
+                              pick(lang, "Deviation, %", "Отклонение, %"), pick(lang, "Result", "Итог"))):
+        t.add_column(head, justify="left" if i in (0, 4) else "right")
     for r in report.rows:
         dev = "—" if r.deviation_pct is None else f"{r.deviation_pct:+.2f}"
         t.add_row(r.key, _val(r.expected), _val(r.given), dev, pick(lang, *STATUS[r.status]))
@@ -65,7 +66,7 @@ def print_group(console, group, lang: str) -> None:
         t.add_column(head)
     for rep in group.reports:
         if rep.error:
-            t.add_row(rep.label, "—", "—", "—", f"[red]{rep.error}[/]")
+            t.add_row(rep.label, str(rep.variant or "—"), "—", "—", f"[red]{rep.error}[/]")
             continue
         good = sum(r.status.startswith("pass") for r in rep.rows)
         wrong = ", ".join(r.key for r in rep.rows if not r.status.startswith("pass")) or "—"
