@@ -91,7 +91,7 @@ def test_figures_each_scheme(some):
 
     for n in (1, 2, 3, 4):
         figs = cam_figures(some[n], "ru" if n % 2 else "en")
-        assert set(figs) == {"cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle"}
+        assert set(figs) == {"cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle", "cam_profile_scaled"}
         for name, fig in figs.items():
             assert isinstance(fig, Figure)
             assert str(n) in fig.get_suptitle()

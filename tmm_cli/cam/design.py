@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from ..errors import TmmError
 from ..notes import Note
 from ..variants import Variant
+from .drawing import ProfileDrawing, profile_drawing
 from .motion import LAYOUT_B_MM, LAYOUT_Y_S_MAX_MM, Motion, follower_motion
 from .profile import ROLLER_RULE, Profile, cam_profile
 from .sizing import Sizing, size_cam
@@ -34,6 +35,7 @@ class CamResult:
     sizing: Sizing
     profile: Profile
     notes: tuple[Note, ...]
+    drawing: ProfileDrawing  # scale of the profile drawing, Table 1.1, (1.26)–(1.27)
 
     @property
     def scheme(self) -> int:
@@ -164,8 +166,20 @@ def design_cam(variant: Variant, step_deg: float = 10.0) -> CamResult:
         ccw=variant.ccw,
     )
     profile = cam_profile(motion.program, sizing, rocker=variant.is_rocker, l_bc_m=variant.l_bc_m)
+    drawing = profile_drawing(motion, sizing, profile)
     notes = _notes(variant, motion, sizing, profile)
+    notes.append(
+        Note.make(
+            "cam_drawing_scale" if drawing.fits else "cam_drawing_too_big",
+            "assumption" if drawing.fits else "warning",
+            scale=drawing.scale,
+            k_sk=drawing.k_sk,
+            field_mm=drawing.field_mm,
+            width_mm=round(drawing.extent_mm[0], 1),
+            height_mm=round(drawing.extent_mm[1], 1),
+        )
+    )
     for phase, st in (("rise", motion.table_step_rise_deg), ("return", motion.table_step_return_deg)):
         if st < step:
             notes.append(Note.make(f"cam_step_halved_{phase}", "assumption", step_deg=st))
-    return CamResult(variant=variant, step_deg=step, motion=motion, sizing=sizing, profile=profile, notes=tuple(notes))
+    return CamResult(variant=variant, step_deg=step, motion=motion, sizing=sizing, profile=profile, notes=tuple(notes), drawing=drawing)

@@ -269,8 +269,101 @@ def _pressure_figure(Figure, r: CamResult, lang: str):
     return fig
 
 
+MM_PER_INCH = 25.4
+SCALED_MARGIN_MM = (8.0, 8.0, 22.0, 12.0)  # left, right, bottom (scale bar), top (title) on paper
+SCALED_MIN_WIDTH_MM = 120.0  # room for the 50 mm bar and its labels
+CHECK_BAR_MM = 50.0
+
+
+def scaled_layout(r: CamResult) -> dict:
+    """Paper size [mm] and axes limits [real mm] of the true-to-scale profile (§1.4, Table 1.1).
+
+    The axes fill the figure; 1 mm of paper is k_Sk·1000 mm of the cam on both axes.
+    """
+    d = r.drawing
+    f = d.k_sk * 1000.0  # real mm per paper mm
+    x0, x1, y0, y1 = (c * 1000.0 for c in d.bbox_m)
+    ml, mr, mb, mt = SCALED_MARGIN_MM
+    w_in = (x1 - x0) / f
+    extra = max(0.0, SCALED_MIN_WIDTH_MM - (w_in + ml + mr)) / 2.0
+    ml, mr = ml + extra, mr + extra
+    width = w_in + ml + mr
+    height = (y1 - y0) / f + mb + mt
+    return {
+        "paper_mm": (width, height),
+        "xlim": (x0 - ml * f, x0 - ml * f + width * f),
+        "ylim": (y0 - mb * f, y0 - mb * f + height * f),
+        "real_mm_per_paper_mm": f,
+    }
+
+
+def _scaled_profile_figure(Figure, r: CamResult, lang: str):
+    """The cam at its standard scale: printed at 100 %, 1 mm on paper = k_Sk m of the cam."""
+    from matplotlib.patches import Circle
+
+    v, z, p, d = r.variant, r.sizing, r.profile, r.drawing
+    lay = scaled_layout(r)
+    w_mm, h_mm = lay["paper_mm"]
+    f = lay["real_mm_per_paper_mm"]
+    (xa, xb), (ya, yb) = lay["xlim"], lay["ylim"]
+    fig = Figure(figsize=(w_mm / MM_PER_INCH, h_mm / MM_PER_INCH), layout="none")
+    ax = fig.add_axes((0.0, 0.0, 1.0, 1.0))
+    ax.set_axis_off()
+    k = 1000.0
+    P = p.pitch * k
+    th = np.linspace(0, 2 * math.pi, 721)
+    r0, rp = z.r0_m * k, p.roller_m * k
+    ax.plot(r0 * np.cos(th), r0 * np.sin(th), color="0.5", lw=0.4, ls="--")
+    ax.plot(P[:, 0], P[:, 1], color="0.3", lw=0.4, ls="-.")
+    ax.plot(p.inner[:, 0] * k, p.inner[:, 1] * k, color="k", lw=0.9)
+    if p.outer is not None:
+        ax.plot(p.outer[:, 0] * k, p.outer[:, 1] * k, color="k", lw=0.9)
+    ax.add_patch(Circle(P[0], rp, fill=False, color="k", lw=0.5))
+    c = 3.0 * f  # centre marks 3 mm on paper
+    for q in (np.zeros(2), P[0]):
+        ax.plot([q[0] - c, q[0] + c], [q[1], q[1]], color="k", lw=0.3)
+        ax.plot([q[0], q[0]], [q[1] - c, q[1] + c], color="k", lw=0.3)
+    ax.plot([0, P[0, 0]], [0, P[0, 1]], color="0.3", lw=0.3)
+    if p.pivot_path is not None:  # rocker CB0 at the start of the rise (C may lie off the sheet)
+        q = p.pivot_path[0] * k
+        ax.plot([q[0], P[0, 0]], [q[1], P[0, 1]], color="0.3", lw=0.5)
+        ax.plot(*q, "s", color="0.3", ms=2)
+    else:  # follower axis at B0, offset e from O
+        ax.plot([z.e_m * k, z.e_m * k], [P[0, 1] - 2 * rp, d.bbox_m[3] * k], color="0.3", lw=0.5, ls="-.")
+    ax.text(0, 0, " O", fontsize=7, ha="left", va="top")
+    ax.text(*P[0], " B₀", fontsize=7, ha="left", va="bottom")
+
+    # scale bar: 50 mm on paper, ticks every 10 mm, in the bottom strip
+    bx, by = xa + 8.0 * f, ya + 12.0 * f
+    ax.plot([bx, bx + CHECK_BAR_MM * f], [by, by], color="k", lw=1.0, solid_capstyle="butt")
+    for i in range(0, int(CHECK_BAR_MM) + 1, 10):
+        ax.plot([bx + i * f, bx + i * f], [by, by + (2.0 if i % 50 else 3.0) * f], color="k", lw=0.5)
+    mm = pick(lang, "mm", "мм")
+    ax.text(bx + CHECK_BAR_MM * f / 2, by - 1.5 * f, f"{CHECK_BAR_MM:g} {mm}", fontsize=6, ha="center", va="top")
+    ax.text(bx, by - 6.0 * f, pick(lang, "print at 100 % (no fit to page): the bar must measure 50 mm",
+                                   "печатать в масштабе 100 % (без подгонки): отрезок должен быть 50 мм"), fontsize=5, ha="left", va="top")
+    m_sign = pick(lang, "M", "М")
+    ax.text(bx + (CHECK_BAR_MM + 6.0) * f, by, f"{m_sign} {d.scale}", fontsize=12, weight="bold", ha="left", va="bottom")
+    ax.text(bx + (CHECK_BAR_MM + 6.0) * f, by - 1.5 * f, f"k_Sk = {d.k_sk:g} " + pick(lang, "m/mm", "м/мм"), fontsize=6, ha="left", va="top")
+    dims = f"r₀ = {r0:.2f}, r_р = {rp:.2f}, " + (f"l_OC = {z.l_oc_m * k:.2f}, l_BC = {v.l_bc_m * k:g}" if v.is_rocker else f"e = {z.e_m * k:+.2f}") + f" {mm}"
+    dims += "\n" + (pick(lang, "cam turns counter-clockwise", "кулачок вращается против часовой стрелки") if v.ccw else pick(lang, "cam turns clockwise", "кулачок вращается по часовой стрелке"))
+    fig.suptitle(
+        pick(lang, f"Variant {v.number}: cam profile at {m_sign} {d.scale} (Table 1.1)\n{dims}",
+             f"Вариант {v.number}: профиль кулачка, {m_sign} {d.scale} (табл. 1.1)\n{dims}"),
+        y=1.0 - 1.5 / h_mm, va="top", fontsize=6.5,
+    )
+    ax.set_xlim(xa, xb)
+    ax.set_ylim(ya, yb)
+    ax.set_aspect("equal", adjustable="box")
+    return fig
+
+
 def cam_figures(result: CamResult, lang: str) -> dict:
-    """Figures "cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle" (matplotlib Figure objects)."""
+    """Figures "cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle" and "cam_profile_scaled".
+
+    "cam_profile_scaled" is the profile at its standard scale (Table 1.1): a figure whose page is
+    the drawing itself, so a PDF/SVG printed at 100 % gives M exactly (check bar 50 mm).
+    """
     from matplotlib.figure import Figure
 
     return {
@@ -278,4 +371,5 @@ def cam_figures(result: CamResult, lang: str) -> dict:
         "cam_zone": _zone_figure(Figure, result, lang),
         "cam_profile": _profile_figure(Figure, result, lang),
         "cam_pressure_angle": _pressure_figure(Figure, result, lang),
+        "cam_profile_scaled": _scaled_profile_figure(Figure, result, lang),
     }

@@ -67,6 +67,32 @@ def _follower_geometry(result: CamResult) -> dict:
     return out
 
 
+def _drawing(result: CamResult) -> dict:
+    """The profile drawing scale, Table 1.1, and the sizes at it, (1.26)–(1.27) [mm]."""
+    d = result.drawing
+    w, h = d.extent_mm
+    x0, x1, y0, y1 = d.bbox_m
+    return {
+        "scale": d.scale,
+        "k_sk_m_per_mm": d.k_sk,
+        "k_s_m_per_mm": _f(d.k_s, 10),
+        "k_s_prime_m_per_mm": _f(d.k_s_prime, 10),
+        "k_s_prime_rule": "k_S' = k_S (the sizing of §1.3 drawn in the displacement diagram's scale)",
+        "field_mm": d.field_mm,
+        "fits": d.fits,
+        "extent_mm": [_f(w, 3), _f(h, 3)],
+        "bbox_real_mm": [_mm(x0, 3), _mm(x1, 3), _mm(y0, 3), _mm(y1, 3)],
+        "sizes_mm": {s.name: _f(s.drawn_mm, 3) for s in d.sizes},
+        "sizes_at_k_s_mm": {s.name: _f(s.at_k_s_mm, 3) for s in d.sizes},
+        "sizes_formula": {s.name: s.formula for s in d.sizes},
+        "stroke_is": "S_B,max = gamma_max*l_BC (roller-centre arc, 1.6)" if result.variant.is_rocker else "S_max",
+        "displacements_mm": [
+            {"position": p.index, "phi_deg": _f(p.phi_deg, 3), "y_s_mm": _f(p.y_s_mm, 3), "y_sk_mm": _f(p.y_sk_mm, 3), "chord_mm": _f(p.chord_mm, 3)}
+            for p in d.positions
+        ],
+    }
+
+
 def cam_to_json(result: CamResult, lang: str) -> dict:
     """The JSON object of sheet 3 (no numpy types; mm and degrees)."""
     v, m, z, p = result.variant, result.motion, result.sizing, result.profile
@@ -193,6 +219,7 @@ def cam_to_json(result: CamResult, lang: str) -> dict:
             "y_a_rise_max_mm": _f(sc.y_a_rise_max_mm, 3),
             "y_a_return_max_mm": _f(sc.y_a_return_max_mm, 3),
         },
+        "drawing": _drawing(result),
         "curve_frame": "cam frame at the start of the rise: cam centre at the origin, +y = rise direction at B0",
         "pitch_curve_step_deg": _f(math.degrees(float(p.phi[1] - p.phi[0])), 6),
         "pitch_curve_mm": _curve_mm(p.pitch),

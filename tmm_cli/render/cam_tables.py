@@ -209,6 +209,56 @@ def _psi_table(r: CamResult, lang: str):
     return t
 
 
+_SIZE_NAMES = {
+    "r0": ("r_0", "base radius of T", "радиус теор. профиля"),
+    "e": ("e", "offset", "эксцентриситет"),
+    "l_oc": ("l_OC", "centre distance", "межцентровое расстояние"),
+    "l_bc": ("l_BC", "rocker length", "длина коромысла"),
+    "roller": ("r_р", "roller radius (1.28)", "радиус ролика (1.28)"),
+    "working_min_radius": ("r_0 − r_р", "smallest radius of D1", "наименьший радиус D1"),
+    "far_dwell_radius": ("R_дс", "far-dwell radius of T", "радиус дальнего стояния T"),
+    "stroke": ("S_max", "stroke", "ход толкателя"),
+}
+
+
+def _drawing_table(r: CamResult, lang: str):
+    d, v = r.drawing, r.variant
+    mm = pick(lang, "mm", "мм")
+    t = _table(
+        pick(lang, "Profile drawing scale (Table 1.1), (1.26)–(1.27)", "Масштаб построения профиля (табл. 1.1), (1.26)–(1.27)"),
+        (pick(lang, "Quantity", "Величина"), "left"),
+        (pick(lang, f"Real, {mm}", f"Натур., {mm}"), "right"),
+        (pick(lang, f"At k_S, {mm}", f"При k_S, {mm}"), "right"),
+        (pick(lang, f"At k_Sk, {mm}", f"При k_Sk, {mm}"), "right"),
+        (pick(lang, "Note", "Примечание"), "left"),
+    )
+    w, h = d.extent_mm
+    m_sign = pick(lang, "M", "М")
+    t.add_row(
+        f"{m_sign} {d.scale}", "", "", f"k_Sk = {d.k_sk:g}",
+        pick(lang, f"m/mm; largest for a {d.field_mm:g}×{d.field_mm:g} mm field",
+             f"м/мм; наибольший для поля {d.field_mm:g}×{d.field_mm:g} мм"),
+    )
+    t.add_row(
+        "k_S = k_S′", "", _g(d.k_s, 5), f"k_S/k_Sk = {d.k_s / d.k_sk:.4g}",
+        pick(lang, "m/mm, " + ("k_S_B (1.18)" if v.is_rocker else "(1.11)") + "; k_S′ = k_S (§1.3.1)",
+             "м/мм, " + ("k_S_B (1.18)" if v.is_rocker else "(1.11)") + "; k_S′ = k_S (п. 1.3.1)"),
+    )
+    t.add_row("", "", "y_Si, x_i", "y_Sik, x_ik", "y_Sik = (k_S/k_Sk)·y_Si (1.26); x_ik = (k_S′/k_Sk)·x_i (1.27)")
+    t.add_row(
+        pick(lang, "cam with roller", "габарит с роликом"),
+        f"{d.width_m * 1000:.1f} × {d.height_m * 1000:.1f}", "", f"{w:.1f} × {h:.1f}",
+        (OK if d.fits else BAD) + " " + pick(lang, f"≤ {d.field_mm:g} {mm}", f"≤ {d.field_mm:g} {mm}"),
+    )
+    for s in d.sizes:
+        sym, en, ru = _SIZE_NAMES[s.name]
+        if s.name == "stroke" and v.is_rocker:
+            sym, en, ru = "S_B max", "arc γ_max·l_BC (1.6)", "дуга γ_max·l_BC (1.6)"
+        sign = "+" if s.name == "e" else ""
+        t.add_row(sym, f"{s.length_m * 1000:{sign}.2f}", f"{s.at_k_s_mm:{sign}.2f}", f"{s.drawn_mm:{sign}.2f}", f"({s.formula}) " + pick(lang, en, ru))
+    return t
+
+
 def _checks_table(r: CamResult, lang: str):
     z, p, v, m = r.sizing, r.profile, r.variant, r.motion
     mm = pick(lang, "mm", "мм")
@@ -252,7 +302,7 @@ def _checks_table(r: CamResult, lang: str):
 
 def print_cam(console, result: CamResult, lang: str, *, include_input: bool = True) -> None:
     """Print sheet 3's tables to a rich Console (the shell prints the notes, once, at the end)."""
-    makers = (_motion_table, _maxima_table, _scales_table, _dims_table, _psi_table, _checks_table)
+    makers = (_motion_table, _maxima_table, _scales_table, _dims_table, _psi_table, _drawing_table, _checks_table)
     if include_input:
         makers = (_input_table,) + makers
     for make in makers:

@@ -77,6 +77,14 @@ MESSAGES.update(
             "en": "Drawing scales (1.9)–(1.18) assume b = {b_mm:g} mm for φ_р, Y_Smax = {y_mm:g} mm, H_V = {h_v_mm:g} mm, H_a = {h_a_mm:g} mm (largest round bases keeping ordinates within 60 mm).",
             "ru": "Масштабы (1.9)–(1.18) рассчитаны для b = {b_mm:g} мм на φ_р, Y_Smax = {y_mm:g} мм, H_V = {h_v_mm:g} мм, H_a = {h_a_mm:g} мм (наибольшие круглые базы, при которых ординаты не превышают 60 мм).",
         },
+        "cam_drawing_scale": {
+            "en": "The profile is drawn at M {scale} (k_Sk = {k_sk:g} m/mm, Table 1.1): the largest standard scale at which the cam with its roller ({width_mm:.1f} × {height_mm:.1f} mm on the sheet) fits a {field_mm:g} × {field_mm:g} mm field; the sizing scale k_S′ is taken equal to the diagram scale k_S (§1.3.1), so (1.26) and (1.27) use k_S/k_Sk.",
+            "ru": "Профиль строится в масштабе М {scale} (k_Sk = {k_sk:g} м/мм, табл. 1.1) — наибольшем стандартном масштабе, при котором кулачок с роликом ({width_mm:.1f} × {height_mm:.1f} мм на листе) умещается в поле {field_mm:g} × {field_mm:g} мм; масштаб k_S′ построения основных размеров принят равным масштабу диаграммы k_S (п. 1.3.1), поэтому в (1.26) и (1.27) множитель k_S/k_Sk.",
+        },
+        "cam_drawing_too_big": {
+            "en": "Even at M {scale} (k_Sk = {k_sk:g} m/mm, the smallest scale of Table 1.1) the cam with its roller takes {width_mm:.1f} × {height_mm:.1f} mm, more than the {field_mm:g} × {field_mm:g} mm field.",
+            "ru": "Даже в масштабе М {scale} (k_Sk = {k_sk:g} м/мм, наименьший в табл. 1.1) кулачок с роликом занимает {width_mm:.1f} × {height_mm:.1f} мм — больше поля {field_mm:g} × {field_mm:g} мм.",
+        },
         "cam_step_halved_rise": {
             "en": "The rise is short, so its table step is {step_deg:g}° (§1.2 item 2).",
             "ru": "Участок удаления короткий, шаг таблицы на нём {step_deg:g}° (§1.2, п. 2).",
