@@ -31,6 +31,7 @@ from .planetary import (
     search_designs,
 )
 from .spur import SpurGeometry, design_spur
+from .stiffness import SpurPairStiffness, spur_pair_stiffness
 
 _RATIO_RE = re.compile(r"^\s*(\d+)\s*(?:/\s*(\d+)\s*)?$")
 
@@ -73,7 +74,9 @@ class GearsResult:
     Speeds [rpm]; ``i_spur`` = n_d/|n_k| (required), ``i_planetary`` = n_d/n_cr (required);
     ``planetary`` is the carried design (= ``search.carried``), ``checks`` its five conditions and
     two ratio checks, ``derivation`` the book's hand procedure, ``printed`` the recheck of the
-    book's printed answer when the derivation is the book's own example.
+    book's printed answer when the derivation is the book's own example. ``spur_stiffness`` is
+    the spur pair's mesh stiffness by seed 002 — beyond the course, informative, with its own
+    assumption notes (not in ``notes``).
     """
 
     cam_rpm: float
@@ -103,6 +106,7 @@ class GearsResult:
     crank_rpm_actual: float
     cam_rpm_actual: float
     notes: tuple[Note, ...]
+    spur_stiffness: SpurPairStiffness | None = None  # beyond the course (seed 002), informative
 
 
 def _fmt_teeth(t: tuple[int, ...]) -> str:
@@ -136,9 +140,11 @@ def _check_inputs(n_cam_rpm, crank_rpm, torque_nm, tolerance_pct, planets):
 
 def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: float | None = None,
                  ratio: tuple[int, int] | None = None, tolerance_pct: float = 5.0,
-                 planets: int | None = None) -> GearsResult:
+                 planets: int | None = None, stiffness: bool = True) -> GearsResult:
     """Sheet 4: motor speed (§2.2), ratios, scheme (Fig. 2.4), planetary synthesis (§2.1.3,
-    §2.4/§2.5), spur pair (§2.3), power (§2.6).
+    §2.4/§2.5), spur pair (§2.3), power (§2.6); with ``stiffness`` also the spur pair's mesh
+    stiffness beyond the course (seed 002, :func:`~tmm_cli.gears.stiffness.spur_pair_stiffness`),
+    loaded by the motor torque N/ω_d when ``torque_nm`` is given.
 
     The book's §2.4 example (n_cr = 220 rpm, the fraction 13/4):
 
@@ -270,6 +276,12 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
             notes.append(Note.make("power_above_series", "warning", kw=f"{power.power_kw:.1f}",
                                    top=f"{drive.RATED_POWER_KW[-1]:g}"))
 
+    # beyond the course: mesh stiffness of the spur pair (seed 002), informative
+    spur_stiff = None
+    if stiffness:
+        motor_torque = None if power is None else power.power_kw * 1e3 / drive.omega_rad_s(n_d)
+        spur_stiff = spur_pair_stiffness(spur.z1, spur.z2, spur.m_mm, motor_torque)
+
     sign = 1 if n_cam_rpm > 0 else -1
     directions = Directions(cam=drive.rotation(sign), motor=drive.rotation(-sign), crank=drive.rotation(-sign),
                             i_spur_signed=-spur.i_actual, i_planetary_signed=design.ratio)
@@ -281,4 +293,5 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
         directions=directions, forced_ratio=None if forced is None else (forced.numerator, forced.denominator),
         forced_planets=planets, search=search, planetary=design, checks=checks, derivation=deriv, printed=printed,
         spur=spur, crank_rpm_actual=n_cr_actual, cam_rpm_actual=cam_actual, notes=tuple(notes),
+        spur_stiffness=spur_stiff,
     )

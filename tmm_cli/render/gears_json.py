@@ -64,6 +64,33 @@ def _book(d) -> dict | None:
             "tried": [{"fraction": f, "size": n} for f, n in d.tried]}
 
 
+def _pair(t, scale: float = 1.0, nd: int = 6) -> list[float]:
+    return [_r(v * scale, nd) for v in t]
+
+
+def _stiffness(st, lang: str) -> dict | None:
+    """The spur pair's mesh stiffness (seed 002): beyond the course, informative; lengths in mm."""
+    if st is None:
+        return None
+    s = st.mesh
+    return {
+        "informative": True,
+        "beyond_course": True,
+        "method": "Tarasik (seed 002): variable-section cantilever bending + Nakhatakyan contact, c = c_b*c_H/(c_b + c_H)",
+        "b_w_mm": _r(s.b_w_m * 1e3), "psi_m": st.psi_m, "load": st.load,
+        "torque1_nm": _r(s.torque1_nm), "force_n": _r(s.force_n, 3), "line_load_n_per_mm": _r(s.line_load_n_per_m * 1e-3),
+        "e_pa": s.e_pa, "nu": s.nu,
+        "s_a_mm": _pair(s.s_a_m, 1e3), "s_d_mm": _pair(s.s_d_m, 1e3), "s_b_mm": _pair(s.s_b_m, 1e3),
+        "rho_mm": _pair(s.rho_m, 1e3), "j_d_m4": [float(f"{v:.6e}") for v in s.j_d_m4],
+        "y_bend_um": _pair(s.y_bend_m, 1e6, 9), "y_contact_um": _r(s.y_contact_m * 1e6, 9),
+        "c_bend_nm_per_rad": _r(s.c_bend, 1), "c_contact_nm_per_rad": _r(s.c_contact, 1), "c_nm_per_rad": _r(s.c, 1),
+        "k_bend_n_per_m": _r(s.k_bend, 0), "k_contact_n_per_m": _r(s.k_contact, 0), "k_n_per_m": _r(s.k, 0),
+        "c_spec_n_per_mm_um": {"bend": _r(s.c_spec_bend, 4), "contact": _r(s.c_spec_contact, 4), "mesh": _r(s.c_spec, 4)},
+        "reduced_to": "gear 1 (motor) shaft",
+        "notes": [note_text(n, lang) for n in st.notes],
+    }
+
+
 def gears_to_json(result, lang: str) -> dict:
     """JSON-serialisable dict of a :class:`~tmm_cli.gears.design.GearsResult` (plain types only)."""
     r = result
@@ -133,6 +160,7 @@ def gears_to_json(result, lang: str) -> dict:
             "line_of_action_mm": {"N1N2": _r(sp.n1n2_mm), "P": _r(sp.pole_mm), "P1": _r(sp.p1_mm),
                                   "U1": _r(sp.u1_mm), "U2": _r(sp.u2_mm), "P2": _r(sp.p2_mm)},
             "phi_alpha_deg": [_r(sp.phi_alpha1_deg), _r(sp.phi_alpha2_deg)],
+            "stiffness": _stiffness(getattr(r, "spur_stiffness", None), lang),
         },
         "warnings": [note_text(n, lang) for n in r.notes if n.level == "warning"],
         "assumptions": [note_text(n, lang) for n in r.notes if n.level == "assumption"],

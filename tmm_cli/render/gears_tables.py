@@ -329,9 +329,78 @@ def _print_spur(console, r, lang):
     console.print(e)
 
 
+_SUP = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def _sci(x: float, nd: int = 3) -> str:
+    """4.074·10⁴ style (the paper's way of printing stiffness)."""
+    if x == 0 or not math.isfinite(x):
+        return f"{x:g}"
+    e = math.floor(math.log10(abs(x)))
+    mant = x / 10 ** e
+    if round(abs(mant), nd) >= 10:
+        mant, e = mant / 10, e + 1
+    return f"{mant:.{nd}f}·10{str(e).translate(_SUP)}"
+
+
+def _print_stiffness(console, r, lang):
+    """Beyond the course: the spur pair's mesh stiffness by seed 002 (Tarasik), informative."""
+    st = getattr(r, "spur_stiffness", None)
+    if st is None:
+        return
+    s = st.mesh
+    t = _table(pick(lang, "Mesh stiffness (beyond the course; Tarasik) — informative",
+                    "Жёсткость зацепления (сверх программы курса; Тарасик) — справочно"),
+               pick(lang, "Quantity", "Величина"), pick(lang, "Formula", "Формула"), pick(lang, "Gear 1", "Колесо 1"),
+               pick(lang, "Gear 2", "Колесо 2"), left=(0, 1))
+    mm, um = pick(lang, "mm", "мм"), pick(lang, "μm", "мкм")
+    nmr = pick(lang, "N·m/rad", "Н·м/рад")
+    spec = pick(lang, "N/(mm·μm)", "Н/(мм·мкм)")
+    cb = pick(lang, "c_b", "c_и")
+    rows = [
+        (pick(lang, f"face width b_w, {mm}", f"ширина венца b_w, {mm}"), f"ψ_m·m = {_f(st.psi_m)}·m",
+         _f(s.b_w_m * 1e3, 2), ""),
+        (pick(lang, "moment on gear 1 M1, N·m", "момент на колесе 1 M1, Н·м"),
+         pick(lang, "motor torque N/ω_d" if st.load == "motor" else "nominal (q of the paper)",
+              "момент двигателя N/ω_д" if st.load == "motor" else "условный (q из статьи)"), _f(s.torque1_nm, 2), ""),
+        (pick(lang, "tangential force F, N", "окружная сила F, Н"), "F = M1/r_d1", _f(s.force_n, 1), ""),
+        (pick(lang, "line load q, N/mm", "погонная нагрузка q, Н/мм"), "q = F/b_w", _f(s.line_load_n_per_m * 1e-3, 3), ""),
+        (pick(lang, f"tooth thickness at tip s_a, {mm}", f"толщина зуба на вершине s_a, {mm}"), "(1)–(3)",
+         _f(s.s_a_m[0] * 1e3, 3), _f(s.s_a_m[1] * 1e3, 3)),
+        (pick(lang, f"… at pitch circle s_d, {mm}", f"… на делительной окружности s_d, {mm}"), "(1)",
+         _f(s.s_d_m[0] * 1e3, 3), _f(s.s_d_m[1] * 1e3, 3)),
+        (pick(lang, f"… at base circle s_b, {mm}", f"… на основной окружности s_b, {mm}"), "(1)",
+         _f(s.s_b_m[0] * 1e3, 3), _f(s.s_b_m[1] * 1e3, 3)),
+        (pick(lang, f"involute curvature ρ at pitch circle, {mm}", f"радиус кривизны эвольвенты ρ, {mm}"),
+         "ρ = r_b·tg α_x (17)", _f(s.rho_m[0] * 1e3, 3), _f(s.rho_m[1] * 1e3, 3)),
+        (pick(lang, f"bending deflection y at pitch circle, {um}", f"прогиб зуба y на делит. окружности, {um}"),
+         "(9)–(11)", f"{s.y_bend_m[0] * 1e6:.4g}", f"{s.y_bend_m[1] * 1e6:.4g}"),
+        (pick(lang, f"contact deformation y_H, {um}", f"контактная деформация y_H, {um}"), pick(lang, "Nakhatakyan (16)",
+                                                                                          "Нахатакян (16)"),
+         f"{s.y_contact_m * 1e6:.4g}", ""),
+        (pick(lang, f"bending stiffness {cb}, {nmr}", f"изгибная жёсткость {cb}, {nmr}"),
+         "M1/arctg(Σy/r_d1) (13)–(14)", _sci(s.c_bend), ""),
+        (pick(lang, f"contact stiffness c_H, {nmr}", f"контактная жёсткость c_H, {nmr}"),
+         "M1/arctg(y_H/r_d1) (18)–(19)", _sci(s.c_contact), ""),
+        (pick(lang, f"mesh stiffness c, {nmr}", f"жёсткость зацепления c, {nmr}"),
+         f"{cb}·c_H/({cb} + c_H) (20)", f"[bold]{_sci(s.c)}[/]", ""),
+        (pick(lang, "linear stiffness k = F/(Σy + y_H), N/m", "линейная жёсткость k = F/(Σy + y_H), Н/м"), "",
+         _sci(s.k), ""),
+        (pick(lang, f"specific stiffness {cb}, c_H, c, {spec}", f"удельная жёсткость {cb}, c_H, c, {spec}"),
+         "F/(y·b_w)·10⁻⁹", f"{_f(s.c_spec_bend, 2)}, {_f(s.c_spec_contact, 2)}, {_f(s.c_spec, 2)}", ""),
+    ]
+    for row in rows:
+        t.add_row(*row)
+    console.print(t)
+    from .i18n import note_text
+
+    for n in st.notes:
+        console.print(f"  [dim]• {note_text(n, lang)}[/]")
+
+
 def print_gears(console, result, lang: str) -> None:
     """Sheet 4 tables: motor, ratios, scheme choice, the book's derivation, the search, the five
-    conditions, the ratio checks, the spur pair."""
+    conditions, the ratio checks, the spur pair, and — beyond the course — its mesh stiffness."""
     _print_motor(console, result, lang)
     _print_ratios(console, result, lang)
     _print_schemes(console, result, lang)
@@ -340,3 +409,4 @@ def print_gears(console, result, lang: str) -> None:
     _print_conditions(console, result, lang)
     _print_ratio_checks(console, result, lang)
     _print_spur(console, result, lang)
+    _print_stiffness(console, result, lang)

@@ -126,4 +126,46 @@ MESSAGES: dict[str, dict[str, str]] = {
         "en": "Required power {kw} kW is above the largest rated motor of the series ({top} kW).",
         "ru": "Потребная мощность {kw} кВт больше наибольшей в ряду ({top} кВт).",
     },
+    # mesh stiffness of the spur pair: beyond the course (seed 002, Tarasik)
+    "stiffness_scope": {
+        "en": "Mesh stiffness is beyond the course (V. P. Tarasik's method, seed 002) and only informative: each tooth "
+              "is a cantilever of trapezoidal section (bending, eqs. (1)–(14)), the contact deformation follows "
+              "Nakhatakyan's formula (16), and the turn angles add: c = c_b·c_H/(c_b + c_H) (20); stiffness reduced "
+              "to the motor shaft (gear 1, the driving gear).",
+        "ru": "Жёсткость зацепления — сверх программы курса (методика В. П. Тарасика, источник 002), справочно: зуб — "
+              "консольная балка трапецеидального сечения (изгиб, формулы (1)–(14)), контактная деформация — по "
+              "формуле Нахатакяна (16), углы поворота складываются: c = c_и·c_H/(c_и + c_H) (20); жёсткость "
+              "приведена к валу двигателя (колесо 1, ведущее).",
+    },
+    "stiffness_material": {
+        "en": "Steel, E = {e}·10¹¹ Pa, ν = {nu}: the paper prints neither, these values reproduce its worked example.",
+        "ru": "Сталь, E = {e}·10¹¹ Па, ν = {nu}: в статье они не указаны, эти значения воспроизводят её пример.",
+    },
+    "stiffness_width": {
+        "en": "Face width b_w = ψ_m·m = {psi}·{m} = {bw} mm, with ψ_m = b_w/m = 5 of the paper's example "
+              "(10 mm / 2 mm): the course does not size the face width.",
+        "ru": "Ширина венца b_w = ψ_m·m = {psi}·{m} = {bw} мм, ψ_m = b_w/m = 5 как в примере статьи (10 мм / 2 мм): "
+              "в курсовом проекте ширина венца не определяется.",
+    },
+    "stiffness_load_motor": {
+        "en": "Load: the motor torque T_d = N/ω_d = {t} N·m (power (2.6) at n_d) on gear 1, F = {f} N, "
+              "q = {q} N/mm — an upper bound, since the spur pair drives only the cam; only c_H depends on the load "
+              "(logarithmically), c_b does not.",
+        "ru": "Нагрузка: момент двигателя T_д = N/ω_д = {t} Н·м (мощность (2.6) при n_д) на колесе 1, F = {f} Н, "
+              "q = {q} Н/мм — оценка сверху, простая передача приводит только кулачок; от нагрузки зависит только "
+              "c_H (логарифмически), c_и не зависит.",
+    },
+    "stiffness_load_nominal": {
+        "en": "Load: no moment given (--torque), so the paper's nominal line load q = F/b_w = {q} N/mm is used "
+              "(F = {f} N, M1 = {t} N·m on gear 1); only c_H depends on the load (logarithmically), c_b does not.",
+        "ru": "Нагрузка: момент не задан (--torque), принята погонная нагрузка примера статьи q = F/b_w = {q} Н/мм "
+              "(F = {f} Н, M1 = {t} Н·м на колесе 1); от нагрузки зависит только c_H (логарифмически), c_и не "
+              "зависит.",
+    },
+    "stiffness_multiplier": {
+        "en": "The pair is a multiplier (z1 = {z1} > z2 = {z2}): the paper's pinion is its driving gear, so gear 1 "
+              "takes the pinion's model (loaded at the pitch circle) although it is the larger one.",
+        "ru": "Передача — мультипликатор (z1 = {z1} > z2 = {z2}): шестерня статьи — ведущее колесо, поэтому модель "
+              "шестерни (нагрузка на делительной окружности) применена к колесу 1, хотя оно большее.",
+    },
 }
