@@ -13,17 +13,7 @@ import numpy as np
 import pytest
 
 from tmm_cli.cam.design import design_cam
-
-
-def law_f(law, t):
-    t = np.clip(t, 0.0, 1.0)
-    if law == 1:
-        return np.where(t < 0.5, 2 * t**2, 1 - 2 * (1 - t) ** 2)
-    if law == 2:
-        return 3 * t**2 - 2 * t**3
-    if law == 3:
-        return (1 - np.cos(np.pi * t)) / 2
-    return t - np.sin(2 * np.pi * t) / (2 * np.pi)
+from reference_laws import law_f
 
 
 def stroke_fraction(v, phi_deg):

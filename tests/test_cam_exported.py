@@ -21,22 +21,12 @@ import pytest
 
 from tmm_cli.cam.design import design_cam
 from tmm_cli.render.cam_json import cam_to_json
+from reference_laws import law_f
 
 PRESSURE_TOL_DEG = 0.05  # tangents fitted to points rounded to 1e-4 mm
 FIT_POINTS = 17  # local quartic fit over 17 grid points (4° of cam angle)
 CURVATURE_FIT_POINTS = 33  # 8°: the second derivative needs more smoothing
 RHO_TOL = 0.03  # relative; the smallest radius often sits at a phase end, where the fit is one-sided
-
-
-def law_f(law, t):
-    t = np.clip(t, 0.0, 1.0)
-    if law == 1:
-        return np.where(t < 0.5, 2 * t**2, 1 - 2 * (1 - t) ** 2)
-    if law == 2:
-        return 3 * t**2 - 2 * t**3
-    if law == 3:
-        return (1 - np.cos(np.pi * t)) / 2
-    return t - np.sin(2 * np.pi * t) / (2 * np.pi)
 
 
 def fraction(d, phi_deg):
