@@ -195,3 +195,23 @@ def test_batch_figures_reuse_the_reducer_drawing_only_when_it_is_the_same(tmp_pa
     planetary = {s: (f / "gears_planetary.png").read_bytes() for s, f in folders.items()}
     assert planetary["A"] == planetary["B"] != planetary["C"]
     assert (folders["A"] / "gears_mesh.png").read_bytes() != (folders["B"] / "gears_mesh.png").read_bytes()
+
+
+@pytest.mark.parametrize(
+    "answers, status",
+    [
+        (dict(z_sun=18, z_planet=47, z_ring=112, planets=2), "pass (valid set)"),  # the book's procedure
+        (dict(z_sun=18, z_planet=47, z_ring=112, planets=3), "fail"),  # neighbouring allows 3, assembly not
+        (dict(z_sun=18, z_planet=47, z_ring=113, planets=2), "fail"),  # not coaxial
+        (dict(z_sun=18, z_planet=47, z_ring=112), "fail"),  # incomplete: compared number by number
+        (dict(z_sun=17, z_planet=46, z_ring=109, planets=3), "pass"),  # the carried set
+    ],
+)
+def test_check_accepts_another_valid_reducer(tmp_path, answers, status):
+    """Variant 17 at 95 rpm: the book's hand procedure gives 18/47/112 (k = 2), the search 17/46/109."""
+    f = tmp_path / "a.toml"
+    f.write_text("".join(f"{k} = {v}\n" for k, v in answers.items()))
+    res = run("check", "--variant", 17, "--crank-rpm", 95, "--answers", f, "--json")
+    rows = {r["key"]: r["status"] for r in json.loads(res.output)["rows"]}
+    assert rows["z_sun"] == status
+    assert res.exit_code == (0 if status.startswith("pass") else 1)

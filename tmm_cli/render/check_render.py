@@ -7,6 +7,8 @@ from .i18n import pick
 STATUS = {
     "pass": ("[green]pass[/]", "[green]верно[/]"),
     "pass (book)": ("[green]pass[/] (the book's vertex)", "[green]верно[/] (вершина по пособию)"),
+    "pass (valid set)": ("[green]pass[/] (another set meeting all five conditions)",
+                         "[green]верно[/] (другой набор, удовлетворяющий всем пяти условиям)"),
     "fail": ("[red]FAIL[/]", "[red]НЕВЕРНО[/]"),
     "unknown key": ("[yellow]unknown key[/]", "[yellow]неизвестный ключ[/]"),
     "not computed": ("[yellow]not computed for this variant[/]", "[yellow]не вычисляется для варианта[/]"),
