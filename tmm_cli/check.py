@@ -146,7 +146,7 @@ def read_answers(path: str | Path) -> dict[str, object]:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise TmmError(f"answers file {p} is not valid TOML ({exc}); write lines like r0_mm = 41.2") from None
+        raise TmmError(f"answers file {p} is not valid TOML ({exc}); write lines like r0_mm = 41.2, with a dot for decimals") from None
     return {k: (_number(v, f"answers file {p} ({k})") if not isinstance(v, dict) else v) for k, v in data.items()}
 
 
