@@ -215,3 +215,22 @@ def test_check_accepts_another_valid_reducer(tmp_path, answers, status):
     rows = {r["key"]: r["status"] for r in json.loads(res.output)["rows"]}
     assert rows["z_sun"] == status
     assert res.exit_code == (0 if status.startswith("pass") else 1)
+
+
+def test_check_states_the_assumed_crank_speed_and_reads_semicolon_csv(tmp_path):
+    f = tmp_path / "a.csv"
+    f.write_text("key;value\nr0_mm;\"48,9\"\n")
+    res = run("check", "--variant", 17, "--answers", f, "--json")
+    rep = json.loads(res.output)
+    assert res.exit_code == 0 and rep["rows"][0]["status"] == "pass"
+    assert any("220" in a for a in rep["assumptions"])
+    res = run("check", "--variant", 17, "--crank-rpm", 95, "--answers", f, "--json")
+    assert json.loads(res.output)["assumptions"] == []
+
+
+def test_semicolon_roster(tmp_path):
+    roster = tmp_path / "r.csv"
+    roster.write_text("student;variant;crank_rpm\nIvanov;17;95\n")
+    res = run("batch", "--roster", roster, "--no-plots", "--jobs", 1, "--out", tmp_path / "o", "--report", "none")
+    assert res.exit_code == 0, res.output
+    assert (tmp_path / "o" / "Ivanov" / "variant-17" / "results.json").exists()

@@ -97,7 +97,10 @@ def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float
         text = p.read_text(encoding="utf-8-sig")
     except OSError as exc:
         raise TmmError(f"roster {p} cannot be read ({exc.strerror or exc.__class__.__name__}); check the path") from None
-    reader = csv.DictReader(text.splitlines())
+    from .check import csv_delimiter
+
+    lines = text.splitlines()
+    reader = csv.DictReader(lines, delimiter=csv_delimiter(lines))
     header = [h.strip().lower() for h in (reader.fieldnames or [])]
     missing = [c for c in ("student", "variant") if c not in header]
     if missing:

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .errors import TmmError
+from .render.i18n import note_text
 
 
 @dataclass(frozen=True)
@@ -82,6 +83,7 @@ class CheckReport:
     rtol_pct: float
     rows: tuple[CheckRow, ...]
     error: str = ""
+    notes: tuple = ()  # Note objects the comparison rests on (e.g. the assumed crank speed)
 
     @property
     def passed(self) -> bool:
@@ -94,6 +96,7 @@ class CheckReport:
             "rtol_pct": self.rtol_pct,
             "passed": self.passed,
             "error": self.error or None,
+            "assumptions": [note_text(n, "en") for n in self.notes],
             "rows": [r.__dict__ for r in self.rows],
         }
 
@@ -123,6 +126,12 @@ def _number(raw, where: str):
     return int(value) if value.is_integer() and "." not in text and "e" not in text.lower() else value
 
 
+def csv_delimiter(lines: list[str]) -> str:
+    """',' or ';' (what a spreadsheet saves under a Russian locale), from the first non-empty line."""
+    first = next((ln for ln in lines if ln.strip()), "")
+    return ";" if first.count(";") > first.count(",") else ","
+
+
 def read_answers(path: str | Path) -> dict[str, object]:
     """Read a student's answers: TOML (`r0_mm = 41.2`) or CSV (`key,value` rows)."""
     p = Path(path)
@@ -132,7 +141,8 @@ def read_answers(path: str | Path) -> dict[str, object]:
         raise TmmError(f"answers file {p} cannot be read ({exc.strerror or exc.__class__.__name__}); check the path") from None
     text = raw.decode("utf-8-sig", errors="replace")
     if p.suffix.lower() == ".csv":
-        rows = list(csv.reader(text.splitlines()))
+        lines = text.splitlines()
+        rows = list(csv.reader(lines, delimiter=csv_delimiter(lines)))
         if rows and [c.strip().lower() for c in rows[0][:2]] == ["key", "value"]:
             rows = rows[1:]
         answers = {}
@@ -203,8 +213,10 @@ def check_one(variant, answers: dict, *, crank_rpm=None, torque_nm=None, rtol_pc
     result = run_project(variant, crank_rpm=crank_rpm, torque_nm=torque_nm)
     doc = project_document(result, lang)
     rows = accept_valid_reducer(compare(doc, answers, rtol_pct), answers, result.gears)
+    # the tooth numbers depend on the crank speed: say when the book's 220 rpm was assumed
+    notes = tuple(n for n in result.gears.notes if n.code == "crank_default")
     return CheckReport(label=label or f"variant {variant.number}", variant=variant.number, rtol_pct=rtol_pct,
-                       rows=rows)
+                       rows=rows, notes=notes)
 
 
 STAGE_KEYS = (("z_sun", "z_planet", "z_planet2", "z_ring", "planets"), ("z_sun_2", "z_planet_2", None, "z_ring_2", "planets_2"))

@@ -130,6 +130,12 @@ def _notes(v: Variant, m: Motion, z: Sizing, p: Profile) -> list[Note]:
             )
     elif p.roller_m > ROLLER_TIGHT * p.roller_max_m:
         notes.append(Note.make("cam_roller_tight", roller_mm=_mm(p.roller_m), rho_mm=_mm(p.roller_max_m)))
+    if v.is_rocker:
+        # the cam body (force closure: the working profile D1; groove: its outer wall D2) must
+        # clear the rocker pivot C, or the rocker has to be mounted beside the cam plane
+        body = p.r_far_m + (p.roller_m if z.closure == "form" else -p.roller_m)
+        if z.l_oc_m <= body:
+            notes.append(Note.make(f"cam_pivot_inside_{z.closure}", l_oc_mm=_mm(z.l_oc_m), body_mm=_mm(body)))
     s = m.scales
     notes.append(
         Note.make(

@@ -52,6 +52,10 @@ def print_check(console, report, lang: str) -> None:
         dev = "—" if r.deviation_pct is None else f"{r.deviation_pct:+.2f}"
         t.add_row(r.key, _val(r.expected), _val(r.given), dev, pick(lang, *STATUS[r.status]))
     console.print(t)
+    from .i18n import note_text
+
+    for note in report.notes:
+        console.print(f"[cyan]ℹ[/] {note_text(note, lang)}")
     n_pass = sum(r.status.startswith("pass") for r in report.rows)
     verdict = (pick(lang, "[green]PASSED[/]", "[green]ЗАЧТЕНО[/]") if report.passed
                else pick(lang, "[red]NOT PASSED[/]", "[red]НЕ ЗАЧТЕНО[/]"))

@@ -580,7 +580,7 @@ def _assembly_figure(result, lang):
     for j, (ax, st, ch) in enumerate(zip(axes, d.stages, result.checks.stages)):
         lab = "/".join(map(str, st.teeth))
         title = (pick(lang, f"Stage {j + 1}: ", f"Ступень {j + 1}: ") if n > 1 else "") + \
-            pick(lang, f"{lab}, k = {st.planets} planets", f"{lab}, k = {st.planets} сателлит(ов)")
+            pick(lang, f"{lab}, k = {st.planets} planets", f"{lab}, k = {st.planets} {_satellites_ru(st.planets)}")
         _assembly_stage(ax, st, ch, lang, title)
     k = d.planets
     order = pick(lang, "Assembly order: fit planet 1; turn the carrier by 2β = 360°/k (the sun turns by a whole number "
@@ -590,7 +590,7 @@ def _assembly_figure(result, lang):
                  "повторить.")
     import textwrap
 
-    width = int(14 * (7.2 * n + 1.5))
+    width = int(11 * (7.2 * n + 1.5))  # characters per line that fit the figure at 10.5 pt
     fig.suptitle(pick(lang, "Planets placed at 2β = 360°/k", "Расстановка сателлитов через 2β = 360°/k") + "\n"
                  + "\n".join(textwrap.wrap(order, width)), fontsize=10.5)
     if any(st.z_planet2 is not None for st in d.stages):
@@ -604,6 +604,15 @@ def _assembly_figure(result, lang):
                                                                             "окружность вершин большего сателлита"))],
                    loc="outside lower center", ncol=3, fontsize=9, frameon=False)
     return fig
+
+
+def _satellites_ru(k: int) -> str:
+    """Russian plural: 1 сателлит, 2–4 сателлита, 5+ сателлитов (11–14 too)."""
+    if k % 10 == 1 and k % 100 != 11:
+        return "сателлит"
+    if 2 <= k % 10 <= 4 and not 12 <= k % 100 <= 14:
+        return "сателлита"
+    return "сателлитов"
 
 
 def gears_figures(result, lang: str, names=None) -> dict:

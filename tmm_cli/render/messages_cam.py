@@ -69,6 +69,14 @@ MESSAGES.update(
             "en": "Undercut of the groove's outer side: the roller ({roller_mm:.2f} mm) is not smaller than the smallest concave radius of curvature {rho_mm:.2f} mm (at φ = {phi_deg:g}°). Use a roller below {rho_mm:.2f} mm, or r0 = {r0_fix_mm:.2f} mm with l_OC = {fix_mm:.2f} mm.",
             "ru": "Подрез наружной стороны паза: радиус ролика ({roller_mm:.2f} мм) не меньше наименьшего радиуса кривизны вогнутой части {rho_mm:.2f} мм (при φ = {phi_deg:g}°). Возьмите ролик меньше {rho_mm:.2f} мм или r_0 = {r0_fix_mm:.2f} мм при l_OC = {fix_mm:.2f} мм.",
         },
+        "cam_pivot_inside_force": {
+            "en": "The rocker pivot C (l_OC = {l_oc_mm:.2f} mm) lies inside the circle the cam body sweeps (largest radius of the working profile {body_mm:.2f} mm): mount the rocker beside the cam plane (a cranked rocker) or choose a larger l_OC.",
+            "ru": "Центр качания коромысла C (l_OC = {l_oc_mm:.2f} мм) лежит внутри окружности, которую заметает кулачок (наибольший радиус действительного профиля {body_mm:.2f} мм): коромысло нужно вынести из плоскости кулачка (изогнутое коромысло) или взять большее l_OC.",
+        },
+        "cam_pivot_inside_form": {
+            "en": "The rocker pivot C (l_OC = {l_oc_mm:.2f} mm) lies inside the circle swept by the groove's outer wall (radius {body_mm:.2f} mm, before any wall thickness): the pivot cannot sit in the cam plane; mount the rocker beside it or choose a larger l_OC.",
+            "ru": "Центр качания коромысла C (l_OC = {l_oc_mm:.2f} мм) лежит внутри окружности, которую заметает наружная стенка паза (радиус {body_mm:.2f} мм без учёта толщины стенки): опору нельзя разместить в плоскости кулачка; вынесите коромысло из плоскости или возьмите большее l_OC.",
+        },
         "cam_roller_tight": {
             "en": "The roller ({roller_mm:.2f} mm) is above 80 % of the limiting radius of curvature {rho_mm:.2f} mm: no undercut, but a sharp working profile (high contact stress).",
             "ru": "Радиус ролика ({roller_mm:.2f} мм) больше 80 % предельного радиуса кривизны {rho_mm:.2f} мм: подреза нет, но действительный профиль острый (высокие контактные напряжения).",
