@@ -134,6 +134,28 @@ tolerance_option = click.option("--tolerance", "tolerance_pct", type=float, defa
 planets_option = click.option("--planets", type=int, default=None, metavar="K", help="Force the number of planets.")
 
 
+def title_options(f):
+    """--student, --group, --teacher, --org, --designation: the title block and the note's title page."""
+    helps = {
+        "student": ("TEXT", "Student's name for the title block and the note, e.g. \"Иванов И. И.\" (or in tmm.toml)."),
+        "group": ("TEXT", "Student's group (or in tmm.toml)."),
+        "teacher": ("TEXT", "Teacher's name (or in tmm.toml)."),
+        "org": ("TEXT", "University and department (or in tmm.toml)."),
+        "designation": ("TEXT", "Drawing designation (default: built from the sheet and variant numbers)."),
+    }
+    for name, (metavar, text) in reversed(helps.items()):
+        f = click.option(f"--{name}", f"title_{name}", default=None, metavar=metavar, help=text)(f)
+    return f
+
+
+def _title(kwargs: dict):
+    """Pop the title_* options out of a command's kwargs and merge them with tmm.toml."""
+    from .titleblock import title_fields
+
+    given = {k[len("title_"):]: kwargs.pop(k) for k in list(kwargs) if k.startswith("title_")}
+    return title_fields(given)
+
+
 def _parse_ratio(ratio: str | None):
     if ratio is None:
         return None
@@ -195,9 +217,11 @@ def variants_show(ctx, number, variants_file, lang):
 @no_plots_option
 @json_option
 @step_option
+@title_options
 @lang_option
-def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang):
+def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang, **title_kw):
     """Sheet 3: follower diagrams, main dimensions, cam profile, pressure angle."""
+    title = _title(title_kw)  # noqa: F841 - read by the drawing sheet
     from .cam.design import design_cam
     from .render.cam_json import profile_csv
     from .render.files import ensure_writable_dir
@@ -239,9 +263,11 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang)
 @format_option
 @no_plots_option
 @json_option
+@title_options
 @lang_option
-def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, lang):
+def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, lang, **title_kw):
     """Sheet 4: motor, ratio split, planetary reducer synthesis, spur pair to the cam."""
+    title = _title(title_kw)  # noqa: F841 - read by the drawing sheet
     from .gears.design import design_gears
     from .render.files import ensure_writable_dir
     from .render.report import gears_document
@@ -287,9 +313,11 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 @json_option
 @click.option("--report", "report", type=click.Choice(["md", "pdf"]), default="md", show_default=True, help="Report format written beside the figures.")
 @step_option
+@title_options
 @lang_option
-def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, report, step_deg, lang):
+def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, report, step_deg, lang, **title_kw):
     """The whole project for one variant: sheet 4 then sheet 3, figures, results.json and a report."""
+    title = _title(title_kw)
     from .project import run_project
     from .render.files import ensure_writable_dir
     from .render.report import write_project_folder
@@ -302,7 +330,7 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
         v, crank_rpm=crank_rpm, torque_nm=torque_nm, step_deg=step_deg,
         ratio=_parse_ratio(ratio), tolerance_pct=tolerance_pct, planets=planets,
     )
-    doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report)
+    doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report, title=title)
     if as_json:
         _print_json(doc)
         return
@@ -397,6 +425,14 @@ def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, t
         print_check(console, report, lang)
     return 0 if report.passed else 1
 
+
+# Commands kept in their own modules (each imports only click at start-up) -----------------------
+
+from .commands.linkage import linkage_cmd  # noqa: E402  (needs the names defined above)
+from .commands.planetary import planetary_cmd  # noqa: E402
+
+cli.add_command(linkage_cmd)
+cli.add_command(planetary_cmd)
 
 main = cli
 

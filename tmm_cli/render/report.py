@@ -135,8 +135,11 @@ def _reducer_key(gears, lang: str, fmt: str) -> tuple:
 
 
 def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", plots: bool = True,
-                         report: str | None = "md", figure_cache: dict | None = None):
+                         report: str | None = "md", figure_cache: dict | None = None, title=None):
     """Write results.json, cam_profile.csv, the figures and the report into `folder`, atomically.
+
+    `title` (a :class:`tmm_cli.titleblock.TitleFields`, default empty) fills the drawing sheets'
+    title blocks and the note's title page.
 
     `figure_cache` (a dict the caller keeps between calls, as `tmm batch` does) lets variants
     that share a reducer reuse its two drawings instead of drawing them again.

@@ -1,0 +1,1 @@
+"""Commands kept in their own modules (registered in tmm_cli/cli.py); each imports its core lazily."""
