@@ -1,14 +1,107 @@
-"""`tmm linkage`: kinematics of the slotted-link (Whitworth) quick-return mechanism (seed 003)."""
+"""`tmm linkage`: kinematics of the slotted-link (Whitworth) quick-return mechanism (seed 003).
+
+Only click is imported at module level (``tmm --help`` stays instant); the core and the renderers
+are imported inside the command.
+"""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import click
 
-from ..cli import CONTEXT
+from ..cli import CONTEXT, _emit, _lang, format_option, json_option, lang_option, no_plots_option
 from ..errors import TmmError
+
+FIGURES = ("linkage_mechanism", "linkage_diagrams", "linkage_velocity_plan", "linkage_acceleration_plan")
+DATA_FILES = ("linkage.json", "linkage_curve.csv")
+# exactly the names this command writes: older copies of them are replaced, nothing else is touched
+OWNS = DATA_FILES + tuple(f"{name}.{ext}" for name in FIGURES for ext in ("png", "svg", "pdf"))
+
+
+def _metres(name: str, help_text: str):
+    return click.option(f"--{name}", name, type=float, default=None, metavar="M", help=help_text)
 
 
 @click.command("linkage", context_settings=CONTEXT)
-def linkage_cmd():
-    """Sheet 1: slotted-link (Whitworth) mechanism — positions, velocities, accelerations."""
-    raise TmmError("tmm linkage is not built yet")
+@_metres("r1", "Crank O21A [m].")
+@_metres("h", "The slotted link's pivot O41 lies h below the crank centre O21 [m].")
+@_metres("c", "... and c to the left of it [m] (default 0; negative: to the right).")
+@_metres("r2", "O41B: the point B of the link that drives the rod [m].")
+@_metres("r3", "Rod BC [m].")
+@_metres("b", "The ram's guide is the line y = b [m] (y up from O21).")
+@click.option("--rpm", type=float, default=None, metavar="N", help="Crank speed n21 [rpm] (φ21 grows with time).")
+@click.option("--omega", type=float, default=None, metavar="RAD_S", help="Crank speed ω21 [rad/s], instead of --rpm.")
+@click.option("--eps-crank", "eps_crank", type=float, default=None, metavar="RAD_S2", help="Crank angular acceleration ε21 [rad/s²] (default 0: uniform).")
+@click.option("--positions", "n_positions", type=int, default=None, metavar="N", help="Number of crank positions, from the start of the working stroke (default 12).")
+@click.option("--at", "at_deg", type=float, default=None, metavar="DEG", help="Crank angle φ21 [deg] of the velocity and acceleration plans (default 45, the article's).")
+@click.option("--input", "input_file", type=click.Path(dir_okay=False), default=None, metavar="FILE", help="TOML file with the same keys (r1, h, c, r2, r3, b, rpm, …); options beat it.")
+@click.option("--variant", default=None, metavar="N", help="With --input holding [variants.N] tables: the variant to take.")
+@json_option
+@no_plots_option
+@click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Output folder (default ./tmm-out); files go to DIR/linkage/.")
+@format_option
+@lang_option
+def linkage_cmd(r1, h, c, r2, r3, b, rpm, omega, eps_crank, n_positions, at_deg, input_file, variant, as_json, no_plots, out, fmt, lang):
+    """Sheet 1: slotted-link (Whitworth) mechanism — positions, velocities, accelerations.
+
+    Seed 003's frame: origin at the crank centre O21, x right, y up; φ21 from +y towards +x.
+    Example (a true Whitworth mechanism):
+
+        tmm linkage --r1 0.10 --h 0.04 --c 0 --r2 0.08 --r3 0.30 --b -0.04 --rpm 60
+    """
+    given = {"r1": r1, "h": h, "c": c, "r2": r2, "r3": r3, "b": b, "rpm": rpm, "omega": omega,
+             "eps_crank": eps_crank, "positions": n_positions, "at": at_deg}
+    values = {}
+    if input_file is not None:
+        from ..linkage.inputs import read_input
+
+        values = read_input(input_file, variant)
+    elif variant is not None:
+        raise TmmError("--variant needs --input FILE with [variants.N] tables")
+    values.update({k: v for k, v in given.items() if v is not None})
+    if "rpm" in given and rpm is not None and omega is None:
+        values.pop("omega", None)  # an --rpm on the command line beats an omega in the file
+    if omega is not None and rpm is None:
+        values.pop("rpm", None)
+    missing = [k for k in ("r1", "h", "r2", "r3", "b") if k not in values]
+    if missing:
+        raise TmmError("give " + ", ".join(f"--{k} M" for k in missing) + " (metres; or put them in --input FILE)")
+    if "rpm" in values and "omega" in values:
+        raise TmmError("give the crank speed once: --rpm N or --omega RAD_S, not both")
+    if "rpm" not in values and "omega" not in values:
+        raise TmmError("give the crank speed: --rpm N (or --omega RAD_S)")
+
+    import math
+
+    from ..linkage.analysis import analyse
+    from ..linkage.geometry import make_geometry
+
+    lang = _lang(lang)
+    speed = float(values["rpm"]) * math.pi / 30.0 if "rpm" in values else float(values["omega"])
+    if not (math.isfinite(speed) and speed > 0):
+        which = "--rpm" if "rpm" in values else "--omega"
+        raise TmmError(f"{which} is {values.get('rpm', values.get('omega'))}; give a positive crank speed (φ21 grows with time)")
+    geom = make_geometry(values["r1"], values["h"], values.get("c", 0.0), values["r2"], values["r3"], values["b"])
+    result = analyse(geom, speed, float(values.get("eps_crank", 0.0)), int(values.get("positions", 12)),
+                     float(values.get("at", 45.0)))
+
+    from ..render.files import ensure_writable_dir
+    from ..render.linkage_json import curve_csv, linkage_document
+
+    folder = (Path(out) if out else Path("tmm-out")) / "linkage"
+    ensure_writable_dir(folder.parent)
+    doc = linkage_document(result, lang)
+
+    def figures():
+        from ..render.linkage_figures import linkage_figures
+
+        return linkage_figures(result, lang)
+
+    def show(console):
+        from ..render.linkage_tables import print_linkage
+
+        print_linkage(console, result, lang)
+
+    _emit(folder, {"linkage.json": doc, "linkage_curve.csv": curve_csv(result)}, None if no_plots else figures,
+          fmt, doc if as_json else None, show, result.notes, lang, owns=OWNS)

@@ -82,6 +82,7 @@ class LinkageResult:
     stationary: int  # how many times per turn the ram stops (2 for a sound mechanism)
     positions: tuple[State, ...]
     at: State
+    dead_state: State  # the mechanism at the other dead position (start of the return stroke)
     curve: Curve
     plans: Plans
     residual: float  # largest loop-closure error [m]
@@ -196,6 +197,8 @@ def analyse(g: Geometry, omega: float, eps: float = 0.0, n_positions: int = 12, 
     at_phi = math.radians(at_deg)
     at_state, res = _state_at(g, at_phi, omega, eps)
     residual = max(residual, res)
+    dead_state, res = _state_at(g, other, omega, eps)
+    residual = max(residual, res)
 
     from_start = np.linspace(0.0, TWO_PI, CURVE_POINTS)
     p, _, m = _states(g, start + from_start, omega, eps)
@@ -228,6 +231,6 @@ def analyse(g: Geometry, omega: float, eps: float = 0.0, n_positions: int = 12, 
     return LinkageResult(
         geometry=g, omega=float(omega), eps=float(eps), regime=g.regime, stroke=x_max - x_min, x_min=x_min, x_max=x_max,
         time_ratio=working / ret, working_rad=working, return_rad=ret, dead=(float(_norm(start)), float(_norm(other))),
-        working_direction=direction, stationary=len(roots), positions=tuple(states), at=at_state, curve=curve,
+        working_direction=direction, stationary=len(roots), positions=tuple(states), at=at_state, dead_state=dead_state, curve=curve,
         plans=plans(g, at_phi, omega, eps), residual=residual, rod_angle_max=rod_max, notes=tuple(notes),
     )
