@@ -108,9 +108,7 @@ def _arc(ax, radius: float, start: float, sweep: float, **kw):
 def _mechanism_figure(Figure, r: LinkageResult, lang: str):
     g = r.geometry
     r1 = g.r1 * 1000
-    width = max(r.x_max, g.r1 * 1.7, g.r2 - g.c) * 1000 - min(r.x_min, -g.r1 * 1.7, -g.r2 - g.c) * 1000
-    height = max(g.r1 * 1.7, g.b + 0.1 * g.r1, g.r2 - g.h) * 1000 - min(-g.r1 * 1.7, g.b - 0.6 * g.r1, -g.h - g.r2) * 1000
-    fig = Figure(figsize=(12, min(11.0, max(5.0, 12 * height / width + 1.2))), layout="constrained")
+    fig = Figure(figsize=(12, 8), layout="constrained")
     ax = fig.subplots()
     ax.set_aspect("equal")
     # paths: crank circle, B's path, the ram's path on the guide
@@ -119,8 +117,9 @@ def _mechanism_figure(Figure, r: LinkageResult, lang: str):
     ax.plot(bpath[:, 0], bpath[:, 1], color=GREY, lw=0.8, ls="--")
     xmin, xmax = r.x_min * 1000, r.x_max * 1000
     y_guide = g.b * 1000
-    lo = min(xmin, -g.c * 1000 - g.r2 * 1000, -r1) - 0.15 * r1
-    hi = max(xmax, g.r2 * 1000 - g.c * 1000, r1) + 0.15 * r1
+    lo = min(xmin, float(bpath[:, 0].min()), -r1) - 0.15 * r1
+    hi = max(xmax, float(bpath[:, 0].max()), r1) + 0.15 * r1
+    side = 1.0 if g.b >= 0 else -1.0  # labels and the stroke's dimension go on the side away from the crank
     _guide(ax, r, lo, hi)
     ax.plot([xmin, xmax], [y_guide, y_guide], color="k", lw=3.5, solid_capstyle="butt", zorder=3)
     # the N positions
@@ -156,7 +155,8 @@ def _mechanism_figure(Figure, r: LinkageResult, lang: str):
             rows.append(x)
         else:
             rows[row] = x
-        ax.annotate(str(k), (x, y_guide), xytext=(0, -10 - 9 * row), textcoords="offset points", ha="center", va="top", fontsize=7)
+        ax.annotate(str(k), (x, y_guide), xytext=(0, side * (10 + 9 * row)), textcoords="offset points", ha="center",
+                    va="bottom" if side > 0 else "top", fontsize=7)
     # position 0 (start of the working stroke) bold, the other dead position dashed
     _mechanism(ax, r, r.positions[0], color="k", lw=1.8)
     other = r.dead_state
@@ -172,10 +172,10 @@ def _mechanism_figure(Figure, r: LinkageResult, lang: str):
     for rad, mid in ((1.62 * r1, mid_w), (1.58 * r1, mid_r)):
         ax.plot(rad * math.sin(mid), rad * math.cos(mid), alpha=0.0)  # keep the labels inside the axes
     ax.text(1.45 * r1 * math.sin(mid_w), 1.45 * r1 * math.cos(mid_w),
-            pick(lang, "working stroke", "рабочий ход") + f"\n$\\varphi_{{р.х}}$ = {num(math.degrees(r.working_rad), lang, decimals=1)}°",
+            pick(lang, "working stroke", "рабочий ход") + "\n" + pick(lang, r"$\varphi_w$", r"$\varphi_{р.х}$") + f" = {num(math.degrees(r.working_rad), lang, decimals=1)}°",
             color=C_WORK, ha="center", va="center", fontsize=9)
     ax.text(1.40 * r1 * math.sin(mid_r), 1.40 * r1 * math.cos(mid_r),
-            pick(lang, "return stroke", "холостой ход") + f"\n$\\varphi_{{х.х}}$ = {num(math.degrees(r.return_rad), lang, decimals=1)}°",
+            pick(lang, "return stroke", "холостой ход") + "\n" + pick(lang, r"$\varphi_r$", r"$\varphi_{х.х}$") + f" = {num(math.degrees(r.return_rad), lang, decimals=1)}°",
             color=C_RET, ha="center", va="center", fontsize=9)
     # direction of rotation: φ21 grows (clockwise on the page)
     from matplotlib.patches import FancyArrowPatch
@@ -186,12 +186,13 @@ def _mechanism_figure(Figure, r: LinkageResult, lang: str):
                                  connectionstyle="arc3,rad=-0.35", arrowstyle="-|>", mutation_scale=12, color="k", lw=1.0))
     ax.text(0, rr * 1.25, r"$\omega_{21}$", ha="center", va="bottom", fontsize=11)
     # stroke H dimension above the guide
-    yd = y_guide - 0.45 * r1
+    yd = y_guide + side * (0.25 * r1 + 0.12 * r1 * len(rows))
     ax.annotate("", (xmin, yd), (xmax, yd), arrowprops=dict(arrowstyle="<|-|>", lw=0.8, color="k", shrinkA=0, shrinkB=0))
     for x in (xmin, xmax):
-        ax.plot([x, x], [y_guide, yd - 0.05 * r1], color="k", lw=0.5)
-    ax.text((xmin + xmax) / 2, yd - 0.04 * r1, f"$H$ = {num(r.stroke * 1000, lang, decimals=2)} " + pick(lang, "mm", "мм"),
-            ha="center", va="top", fontsize=10)
+        ax.plot([x, x], [y_guide, yd + side * 0.05 * r1], color="k", lw=0.5)
+    ax.text((xmin + xmax) / 2, yd + side * 0.04 * r1, f"$H$ = {num(r.stroke * 1000, lang, decimals=2)} " + pick(lang, "mm", "мм"),
+            ha="center", va="bottom" if side > 0 else "top", fontsize=10)
+    ax.plot([xmin, xmax], [yd + side * 0.3 * r1] * 2, alpha=0.0)  # room for the text
     regime = pick(lang, "Whitworth mechanism (the link turns fully)", "механизм Витворта (кулиса вращается)") \
         if r.regime == "whitworth" else pick(lang, "crank-shaper (the link swings)", "кулисный механизм с качающейся кулисой")
     ax.set_title(pick(lang, f"Mechanism in {n} positions: {regime}; K = {num(r.time_ratio, lang, decimals=4)}",
@@ -200,6 +201,8 @@ def _mechanism_figure(Figure, r: LinkageResult, lang: str):
     ax.set_ylabel("y, " + pick(lang, "mm", "мм"))
     ax.grid(alpha=0.2)
     ax.margins(0.06)
+    box = ax.dataLim
+    fig.set_size_inches(12, min(12.0, max(5.0, 11 * box.height / max(box.width, 1e-9) + 1.3)))
     return fig
 
 

@@ -9,10 +9,10 @@ from .i18n import pick
 from .numbers import num
 
 
-def _table(title: str, *cols: tuple[str, str]):
+def _table(title: str, *cols: tuple[str, str], min_width: int | None = None):
     from rich.table import Table
 
-    t = Table(title=title, header_style="bold", title_justify="left")
+    t = Table(title=title, header_style="bold", title_justify="left", min_width=min_width)
     for name, justify in cols:
         t.add_column(name, justify=justify, overflow="fold")
     return t
@@ -57,9 +57,9 @@ def _main_table(r: LinkageResult, lang: str):
     t.add_row(pick(lang, "Mechanism", "Механизм"), regime, "√(c² + h²) " + ("<" if r.regime == "whitworth" else ">") + " r1")
     t.add_row(pick(lang, "Stroke H", "Ход ползуна H"), _mm(r.stroke, lang) + " " + mm,
               f"x_C: {_mm(r.x_min, lang)} … {_mm(r.x_max, lang)} {mm}")
-    t.add_row(pick(lang, "Time ratio K", "Коэффициент изменения средней скорости K"), num(r.time_ratio, lang, decimals=6), "K = φ_р.х/φ_х.х")
-    t.add_row(pick(lang, "Working stroke φ_р.х", "Рабочий ход φ_р.х"), num(math.degrees(r.working_rad), lang, decimals=3) + "°", direction)
-    t.add_row(pick(lang, "Return stroke φ_х.х", "Холостой ход φ_х.х"), num(math.degrees(r.return_rad), lang, decimals=3) + "°", "")
+    t.add_row(pick(lang, "Time ratio K", "Коэффициент изменения средней скорости K"), num(r.time_ratio, lang, decimals=6), pick(lang, "K = φ_w/φ_r", "K = φ_р.х/φ_х.х"))
+    t.add_row(pick(lang, "Working stroke φ_w", "Рабочий ход φ_р.х"), num(math.degrees(r.working_rad), lang, decimals=3) + "°", direction)
+    t.add_row(pick(lang, "Return stroke φ_r", "Холостой ход φ_х.х"), num(math.degrees(r.return_rad), lang, decimals=3) + "°", "")
     t.add_row(pick(lang, "Dead positions φ21", "Крайние положения φ21"),
               "; ".join(num(math.degrees(x), lang, decimals=3) + "°" for x in r.dead),
               pick(lang, "start of working / return stroke", "начало рабочего / холостого хода"))
@@ -93,7 +93,7 @@ def _plans_table(r: LinkageResult, lang: str):
     t = _table(pick(lang, f"Velocity and acceleration plans at φ21 = {num(math.degrees(r.at.phi), lang, decimals=2)}°",
                     f"Планы скоростей и ускорений при φ21 = {num(math.degrees(r.at.phi), lang, decimals=2)}°"),
                (pick(lang, "Vector", "Вектор"), "left"), (pick(lang, "On the plan", "На плане"), "left"),
-               (pick(lang, "Magnitude", "Модуль"), "right"))
+               (pick(lang, "Magnitude", "Модуль"), "right"), min_width=64)
     for plan, unit in ((r.plans.velocity, pick(lang, "m/s", "м/с")), (r.plans.acceleration, pick(lang, "m/s²", "м/с²"))):
         for a, b, name in plan.segments:
             t.add_row(name, a + b, num(plan.length(a, b), lang, decimals=4) + " " + unit)
