@@ -64,6 +64,7 @@ def main() -> None:
             ("tmm cam --variant 17 (figures)", TMM + ["cam", "--variant", "17", "--out", str(out)]),
             ("tmm gears --variant 17 --crank-rpm 95 --json --no-plots", TMM + ["gears", "--variant", "17", "--crank-rpm", "95", "--json", "--no-plots", "--out", str(out)]),
             ("tmm project --variant 17 (figures, report)", TMM + ["project", "--variant", "17", "--out", str(out)]),
+            ("tmm linkage (Whitworth, seed 003) --no-plots --json", [PY, "-c", "from tmm_cli.cli import main; main()", "linkage", "--r1", "0.10", "--h", "0.04", "--r2", "0.08", "--r3", "0.30", "--b", "-0.04", "--rpm", "60", "--no-plots", "--json", "--out", str(out)]),
         ]
         print(f"{'command':58s} {'median s':>9s} {'x floor':>8s}")
         for name, cmd in rows:

@@ -1,7 +1,9 @@
 """`tmm linkage`: kinematics of the slotted-link (Whitworth) quick-return mechanism (seed 003).
 
-Only click is imported at module level (``tmm --help`` stays instant); the core and the renderers
-are imported inside the command.
+Only click is imported at module level (``tmm --help`` stays instant); the core, the renderers
+and cli.py's helpers are imported inside the command. Importing ``..cli`` here at module level
+would make ``python -m tmm_cli.cli`` (bench/bench.py) fail on a circular import, so the context
+settings and the shared options are spelled out below exactly as cli.py has them.
 """
 
 from __future__ import annotations
@@ -10,8 +12,13 @@ from pathlib import Path
 
 import click
 
-from ..cli import CONTEXT, _emit, _lang, format_option, json_option, lang_option, no_plots_option
 from ..errors import TmmError
+
+CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}  # = cli.CONTEXT
+json_option = click.option("--json", "as_json", is_flag=True, help="Print only JSON on stdout.")
+no_plots_option = click.option("--no-plots", is_flag=True, help="Do not draw figures (faster).")
+format_option = click.option("--format", "fmt", type=click.Choice(["png", "svg", "pdf"]), default="png", show_default=True, help="Figure file format.")
+lang_option = click.option("--lang", type=click.Choice(["ru", "en"]), default=None, help="Output language (default: from the locale).")
 
 FIGURES = ("linkage_mechanism", "linkage_diagrams", "linkage_velocity_plan", "linkage_acceleration_plan")
 DATA_FILES = ("linkage.json", "linkage_curve.csv")
@@ -74,6 +81,7 @@ def linkage_cmd(r1, h, c, r2, r3, b, rpm, omega, eps_crank, n_positions, at_deg,
 
     import math
 
+    from ..cli import _emit, _lang
     from ..linkage.analysis import analyse
     from ..linkage.geometry import make_geometry
 
