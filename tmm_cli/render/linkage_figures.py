@@ -238,7 +238,7 @@ def _diagrams_figure(Figure, r: LinkageResult, lang: str):
                     ha="center", va="top", fontsize=8, color=C_WORK)
             ax.text((w + 360) / 2, 0.97, pick(lang, "return stroke", "холостой ход"), transform=ax.get_xaxis_transform(),
                     ha="center", va="top", fontsize=8, color=C_RET)
-            ax.text(at_x, 0.03, f" φ = {num(math.degrees(r.at.phi), lang, decimals=1)}°", transform=ax.get_xaxis_transform(),
+            ax.text(at_x, 0.03, f" φ21 = {num(math.degrees(r.at.phi), lang, decimals=1)}°", transform=ax.get_xaxis_transform(),
                     fontsize=8, color=C_AT)
     axes[-1].set_xlim(0, 360)
     axes[-1].set_xticks(np.arange(0, 361, 30))
