@@ -314,7 +314,7 @@ def _plan_figure(Figure, r: LinkageResult, plan, lang: str):
         ax.annotate("", xy=pts[b], xytext=pts[a], zorder=4,
                     arrowprops=dict(arrowstyle="-|>", color=colour, lw=1.4, ls=ls, shrinkA=0, shrinkB=0, mutation_scale=12))
         drawn.append((name, a, b, colour))
-    used = {p for _, a, b, _ in drawn for p in (a, b)} | {"p" if velocity else "π"}
+    used = {p for p in pts if velocity or r.eps != 0.0 or p != "n1"}  # every point, also where vectors vanish
     xy = np.array([pts[p] for p in used])
     centre = xy.mean(axis=0)
     size = float(np.max(np.ptp(xy, axis=0))) or 1.0
