@@ -232,3 +232,25 @@ def test_help_imports_only_click():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip().splitlines()[-1] == "[]"
     assert "--eps-crank" in out and "--input" in out
+
+
+def test_figures_are_figure_objects_with_textbook_labels():
+    from matplotlib.figure import Figure
+
+    from tmm_cli.linkage.analysis import analyse
+    from tmm_cli.linkage.geometry import make_geometry
+    from tmm_cli.render.linkage_figures import linkage_figures
+
+    r = analyse(make_geometry(0.10, 0.04, 0.0, 0.08, 0.30, -0.04), omega=2 * math.pi, eps=3.0)
+    figs = linkage_figures(r, "ru")
+    assert list(figs) == ["linkage_mechanism", "linkage_diagrams", "linkage_velocity_plan", "linkage_acceleration_plan"]
+    assert all(isinstance(f, Figure) for f in figs.values())
+
+    def texts(fig):
+        return {t.get_text() for ax in fig.axes for t in ax.texts} | {ax.get_title() for ax in fig.axes}
+
+    vel, acc = texts(figs["linkage_velocity_plan"]), texts(figs["linkage_acceleration_plan"])
+    assert {"$p$", "$a_2$", "$a_4$", "$b$", "$c$"} <= {s for t in vel for s in t.split(", ")}
+    assert {r"$\pi$", "$n_1$", "$a_2$", "$k$", "$a_4$", "$n_4$", "$b$", "$n_5$", "$c$"} <= {s for t in acc for s in t.split(", ")}
+    assert any("План скоростей" in t for t in vel) and any("План ускорений" in t for t in acc)
+    assert any("$a^{k}_{A_4A_2}$" in t for t in acc)  # the Coriolis acceleration, mathtext subscripts
