@@ -35,7 +35,7 @@ from fractions import Fraction
 
 from ..errors import TmmError
 from ..notes import Note
-from .blocking import Check, PairChecks, check_neighbours, check_pair
+from .blocking import Check, PairChecks, check_neighbours, check_pair, pair_notes
 from .shifted import ALPHA_DEG, C_STAR, HA_STAR, PairGeometry, pair_geometry, shift_sum_for_distance
 
 Z_MIN = 18
@@ -212,24 +212,6 @@ def _velocity(p12: PairGeometry, p34: PairGeometry, da_planet: float) -> AAVeloc
                       ratio=(v12 / r1) / (vc / aw))
 
 
-def _pair_notes(tag: str, pc: PairChecks, teeth: tuple[int, int], m: float) -> list[Note]:
-    notes = []
-    for c in pc.checks:
-        if c.ok:
-            continue
-        z = teeth[c.gear - 1] if c.gear else None
-        if c.code == "eps_alpha":
-            notes.append(Note.make("shift_eps_hard" if c.hard else "shift_eps_low", pair=tag, eps=f"{c.value:.3f}"))
-        elif c.code == "undercut":
-            notes.append(Note.make("shift_undercut", pair=tag, z=z, x=f"{c.value:.3f}", xmin=f"{c.limit:.3f}"))
-        elif c.code == "tip_thickness":
-            notes.append(Note.make("shift_tip_thin", pair=tag, z=z, sa=f"{c.value:.3f}", limit=f"{c.limit:.3f}",
-                                   sam=f"{c.value / m:.3f}"))
-        elif c.code == "interference":
-            notes.append(Note.make("shift_interference", pair=tag, z=z, rho=f"{c.value:.3f}", limit=f"{c.limit:.3f}"))
-    return notes
-
-
 def synthesize(i: Fraction, c: Fraction, planets: int, module_mm: float = 5.0, x1: float = 0.0, x2: float = 0.0,
                z_min: int = Z_MIN, z_max: int = Z_MAX, multiple: int | None = None,
                alpha_deg: float = ALPHA_DEG, ha_star: float = HA_STAR, c_star: float = C_STAR) -> AABarDesign:
@@ -304,7 +286,7 @@ def synthesize(i: Fraction, c: Fraction, planets: int, module_mm: float = 5.0, x
                                "as a zero pair, x1 = x2 = 0, gives the smallest α_w34) or another C")
     ch12, ch34 = check_pair(p12), check_pair(p34)
     nb = check_neighbours(a_w, planets, da_pl)
-    notes += _pair_notes("1-2", ch12, (z1, z2), m) + _pair_notes("3-4", ch34, (z3, z4), m)
+    notes += pair_notes("1-2", ch12, (z1, z2), m) + pair_notes("3-4", ch34, (z3, z4), m)
     if not nb.ok:
         notes.append(Note.make("aa_neighbours", k=planets, da=f"{nb.value:.3f}", limit=f"{nb.limit:.3f}"))
     ratio_check = 1 - Fraction(z2 * z4, z1 * z3)

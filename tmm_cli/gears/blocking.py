@@ -18,6 +18,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..notes import Note
 from .shifted import PairGeometry
 
 SA_MIN_FACTOR = 0.25
@@ -114,3 +115,22 @@ def check_neighbours(a_w_mm: float, planets: int, da_planet_mm: float) -> Check:
     """
     limit = 2 * a_w_mm * math.sin(math.pi / planets) if planets >= 2 else math.inf
     return Check("neighbours", None, da_planet_mm, limit, da_planet_mm < limit - _TOL)
+
+
+def pair_notes(tag: str, pc: PairChecks, teeth: tuple[int, int], m: float) -> list[Note]:
+    """Warnings (:class:`~tmm_cli.notes.Note`) for the failed lines of a pair; ``tag`` names it ("1-2")."""
+    notes = []
+    for c in pc.checks:
+        if c.ok:
+            continue
+        z = teeth[c.gear - 1] if c.gear else None
+        if c.code == "eps_alpha":
+            notes.append(Note.make("shift_eps_hard" if c.hard else "shift_eps_low", pair=tag, eps=f"{c.value:.3f}"))
+        elif c.code == "undercut":
+            notes.append(Note.make("shift_undercut", pair=tag, z=z, x=f"{c.value:.3f}", xmin=f"{c.limit:.3f}"))
+        elif c.code == "tip_thickness":
+            notes.append(Note.make("shift_tip_thin", pair=tag, z=z, sa=f"{c.value:.3f}", limit=f"{c.limit:.3f}",
+                                   sam=f"{c.value / m:.3f}"))
+        elif c.code == "interference":
+            notes.append(Note.make("shift_interference", pair=tag, z=z, rho=f"{c.value:.3f}", limit=f"{c.limit:.3f}"))
+    return notes

@@ -198,7 +198,7 @@ def pair_geometry(z1: int, z2: int, m_mm: float, x1: float, x2: float, alpha_deg
     alpha = math.radians(alpha_deg)
     m = m_mm
     x_sum = x1 + x2
-    alpha_w_deg = working_angle_deg(z1, z2, x_sum, alpha_deg)
+    alpha_w_deg = alpha_deg if x_sum == 0 else working_angle_deg(z1, z2, x_sum, alpha_deg)
     alpha_w = math.radians(alpha_w_deg)
     a = m * (z1 + z2) / 2
     a_w = a * math.cos(alpha) / math.cos(alpha_w)
@@ -273,3 +273,57 @@ def split_shift_sum(z1: int, z2: int, x_sum: float, ha_star: float = HA_STAR) ->
     b1, b2 = auto_shift(z1, z2, ha_star)
     extra = (x_sum - (b1 + b2)) / 2
     return b1 + extra, b2 + extra
+
+
+def parse_shift(text: str) -> tuple[float, float] | str:
+    """``--shift``: "auto" or two numbers "x1,x2" (also "x1;x2" or "x1 x2"; decimals with a dot).
+
+    >>> parse_shift("auto"), parse_shift("0.3,-0.3"), parse_shift(" -0.2 ; 0.5 ")
+    ('auto', (0.3, -0.3), (-0.2, 0.5))
+    """
+    t = (text or "").strip().lower()
+    if t in ("auto", "авто"):
+        return "auto"
+    parts = [p for p in t.replace(";", ",").replace(" ", ",").split(",") if p]
+    try:
+        if len(parts) != 2:
+            raise ValueError
+        x1, x2 = (float(p) for p in parts)
+    except ValueError:
+        raise TmmError(f"cannot read --shift {text!r}: write two shift coefficients with decimal dots, "
+                       "e.g. --shift 0.3,-0.3, or --shift auto") from None
+    if not (math.isfinite(x1) and math.isfinite(x2)):
+        raise TmmError(f"--shift {text!r} must be two finite numbers, e.g. --shift 0.3,-0.3")
+    return x1, x2
+
+
+def resolve_shift(z1: int, z2: int, m_mm: float, shift: tuple[float, float] | str | None = None,
+                  a_w_mm: float | None = None, alpha_deg: float = ALPHA_DEG,
+                  ha_star: float = HA_STAR) -> tuple[float, float, str]:
+    """(x1, x2, rule) from the user's ``--shift`` and ``--aw``; rule is "zero" (the book's default),
+    "given", "auto" (:func:`auto_shift`) or "aw" (x_Σ from a_w, split by :func:`split_shift_sum`).
+
+    >>> resolve_shift(17, 20, 20), resolve_shift(17, 20, 20, "auto")
+    ((0.0, 0.0, 'zero'), (0.0, 0.0, 'auto'))
+    >>> x1, x2, rule = resolve_shift(17, 20, 20, None, 380.0)
+    >>> round(x1, 4), round(x2, 4), rule
+    (0.2734, 0.2734, 'aw')
+    """
+    if a_w_mm is not None:
+        _, xs = shift_sum_for_distance(z1, z2, m_mm, a_w_mm, alpha_deg)
+        if shift is None or shift == "auto":
+            x1, x2 = split_shift_sum(z1, z2, xs, ha_star)
+            return x1, x2, "aw"
+        x1, x2 = shift
+        g = pair_geometry(z1, z2, m_mm, x1, x2, alpha_deg, ha_star)
+        if abs(g.a_w_mm - a_w_mm) > 1e-3:
+            raise TmmError(f"--shift {x1:g},{x2:g} gives a_w = {g.a_w_mm:.3f} mm, not the required --aw {a_w_mm:g}: "
+                           f"give one of them (for a_w = {a_w_mm:g} mm the shift sum must be x1 + x2 = {xs:.4f})")
+        return x1, x2, "given"
+    if shift is None:
+        return 0.0, 0.0, "zero"
+    if shift == "auto":
+        x1, x2 = auto_shift(z1, z2, ha_star)
+        return x1, x2, "auto"
+    x1, x2 = shift
+    return float(x1), float(x2), "given"

@@ -42,9 +42,23 @@ MESSAGES: dict[str, dict[str, str]] = {
         "ru": "Условие соседства не выполнено: окружности вершин сателлитов d_a = {da} мм не помещаются при k = {k}, "
               "2a_w·sin(π/k) = {limit} мм; уменьшите число сателлитов.",
     },
-    "spur_shifted": {
-        "en": "Spur pair with profile shift x1 = {x1}, x2 = {x2} ({rule}): a_w = {aw} mm, α_w = {alpha_w}°.",
-        "ru": "Простая передача со смещением x1 = {x1}, x2 = {x2} ({rule}): a_w = {aw} мм, α_w = {alpha_w}°.",
+    "spur_shifted_given": {
+        "en": "Spur pair with the given profile shifts x1 = {x1}, x2 = {x2} (beyond the book): a_w = {aw} mm, "
+              "α_w = {alpha_w}°.",
+        "ru": "Простая передача с заданными смещениями x1 = {x1}, x2 = {x2} (сверх пособия): a_w = {aw} мм, "
+              "α_w = {alpha_w}°.",
+    },
+    "spur_shifted_auto": {
+        "en": "Spur pair shifted by the rule --shift auto (no undercut, then x1 = −x2 when z1 + z2 ≥ 34, else each gear "
+              "at its limit h_a*(17 − z)/17): x1 = {x1}, x2 = {x2}, a_w = {aw} mm, α_w = {alpha_w}°.",
+        "ru": "Смещения по правилу --shift auto (без подрезания; при z1 + z2 ≥ 34 равносмещённая передача x1 = −x2, "
+              "иначе каждое колесо на пределе h_a*(17 − z)/17): x1 = {x1}, x2 = {x2}, a_w = {aw} мм, α_w = {alpha_w}°.",
+    },
+    "spur_shifted_aw": {
+        "en": "Spur pair at the required centre distance a_w = {aw} mm: α_w = {alpha_w}°, x_Σ split as --shift auto "
+              "plus half the difference to each gear: x1 = {x1}, x2 = {x2}.",
+        "ru": "Простая передача на заданном межосевом расстоянии a_w = {aw} мм: α_w = {alpha_w}°, x_Σ распределена "
+              "как при --shift auto плюс половина разности каждому колесу: x1 = {x1}, x2 = {x2}.",
     },
     "spur_shift_suggest": {
         "en": "Gear z = {z} < 17 is undercut as a zero gear: shift it by x ≥ h_a*(17 − z)/17 = {x}; "
