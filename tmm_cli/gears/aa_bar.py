@@ -282,8 +282,11 @@ def synthesize(i: Fraction, c: Fraction, planets: int, module_mm: float = 5.0, x
         for j in range(2):
             if g.sa_mm[j] <= 0:
                 raise TmmError(f"the shifts make gear {names[j]} (Z = {g.z[j]}, x = {g.x[j]:.3f}) pointed: its tip "
-                               f"thickness would be s_a = {g.sa_mm[j]:.3f} mm ≤ 0; choose smaller shifts (the first pair "
-                               "as a zero pair, x1 = x2 = 0, gives the smallest α_w34) or another C")
+                               f"thickness would be s_a = {g.sa_mm[j]:.3f} mm ≤ 0; "
+                               + ("a larger planet shift --x2 leaves less of x_Σ34 = "
+                                  f"{p34.x_sum:.3f} to wheel 4, a negative first pair (x1 + x2 < 0) lowers "
+                                  "α_w34, or choose a smaller C" if names[j] == "4" else
+                                  "choose a smaller shift for it"))
     ch12, ch34 = check_pair(p12), check_pair(p34)
     nb = check_neighbours(a_w, planets, da_pl)
     notes += pair_notes("1-2", ch12, (z1, z2), m) + pair_notes("3-4", ch34, (z3, z4), m)
