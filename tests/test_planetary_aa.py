@@ -243,3 +243,17 @@ def test_bad_input_one_line_exit_2_no_files(tmp_path, args, words):
     res = run("planetary", *args, "--out", tmp_path)
     assert_one_line_error(res, *words)
     assert not (tmp_path / "planetary").exists()
+
+
+def test_tmm_gears_points_to_tmm_planetary_when_the_zero_reducer_is_poor(tmp_path):
+    from tmm_cli.gears.design import design_gears
+
+    r = design_gears(-1000, 50)  # the zero-gear reducer misses i_pl = 14.4 by −4.8 %
+    hint = next(n for n in r.notes if n.code == "aa_bar_hint").kwargs
+    res = run("planetary", "--ratio", hint["i"], "--c", hint["c"], "--x1", hint["x1"], "--x2", hint["x2"], "--json",
+              "--no-plots", "--out", tmp_path)
+    d = json.loads(res.stdout)
+    assert "/".join(map(str, d["teeth"])) == hint["teeth"]
+    assert all(p["ok"] for p in d["pairs"]) and d["neighbours"]["ok"] and not d["warnings"]
+    assert abs(1 / d["ratio"]["value"] / 14.4 - 1) < 0.005
+    assert not any(n.code == "aa_bar_hint" for n in design_gears(-1000, 220, ratio=(13, 4)).notes)

@@ -336,3 +336,77 @@ def feasible_c_examples(i: Fraction, planets: int, z_min: int = Z_MIN, z_max: in
                 out.append((f, teeth_for(div, fam[0])))
     out.sort(key=lambda e: (e[1][0], max(e[1]), e[0]))
     return tuple(out[:count])
+
+
+@dataclass(frozen=True)
+class ReducerSuggestion:
+    """An AA̅ mechanism driven at its carrier (motor on H, output on sun 1, wheel 4 fixed) that
+    gives a required reducer ratio i_H1 = 1/i more exactly than the zero-gear reducer, with shifts
+    x1 = −x2 (a height-corrected first pair, α_w12 = α, as the seed advises) that pass every line
+    of the blocking contour and the neighbouring condition."""
+
+    i: Fraction  # i_1H^(4); the reducer ratio is 1/i
+    c: Fraction
+    teeth: tuple[int, int, int, int]
+    x1: float
+    x2: float
+    ratio_error_pct: float
+    alpha_w34_deg: float
+
+
+SUGGEST_X2 = (0.0, 0.2, 0.4, 0.6, 0.8, 1.0)
+
+
+def suggest_for_reducer(i_reducer: float, planets: int = 3, tolerance_pct: float = 0.5, z_min: int = Z_MIN,
+                        z_max: int = Z_MAX, max_alpha_w34_deg: float = 30.0,
+                        tries: int = 300) -> ReducerSuggestion | None:
+    """The AA̅ mechanism (seed 000) with the smallest ratio error, then the smallest wheels, for a
+    reducer ratio i_H1 = ``i_reducer`` > 1: i = 1/i_H1 as a fraction with a denominator ≤ 60 within
+    ``tolerance_pct``, C = P/Q (Q ≤ 30) giving α_w34 ≤ 30° (first pair at α), k planets, every wheel
+    within the limits, and a planet shift x2 ∈ {0, 0.2 … 1} (x1 = −x2) with which every blocking
+    line and the neighbouring condition hold. None when nothing fits.
+
+    >>> s = suggest_for_reducer(10.0)
+    >>> s.i, s.c, s.ratio_error_pct, s.teeth, s.x2
+    (Fraction(1, 10), Fraction(22, 21), 0.0, (30, 36, 36, 27), 0.6)
+    >>> suggest_for_reducer(720 / 220) is None  # small ratios need C > 1.085 (α_w34 > 30°)
+    True
+    """
+    if not i_reducer > 1:
+        return None
+    target = 1.0 / i_reducer
+    fracs = set()
+    for b in range(2, 61):
+        for a in (math.floor(target * b), math.ceil(target * b)):
+            if 0 < a < b:
+                f = Fraction(a, b)
+                if abs(1 / float(f) / i_reducer - 1) * 100 <= tolerance_pct + 1e-12:
+                    fracs.add(f)
+    cos_a = math.cos(math.radians(ALPHA_DEG))
+    c_max_angle = Fraction(cos_a / math.cos(math.radians(max_alpha_w34_deg))).limit_denominator(10 ** 6)
+    cands = []
+    for f in fracs:
+        lo, hi = c_range(f)
+        top = min(hi, c_max_angle)
+        err = (1 / float(f) / i_reducer - 1) * 100
+        for q in range(1, 31):
+            for p in range(q + 1, math.ceil(top * q)):
+                c = Fraction(p, q)
+                if c.denominator != q or not lo < c < top:
+                    continue
+                div = divisibility(f, c, planets)
+                fam = family(div, z_min, z_max)
+                if fam:
+                    t = teeth_for(div, fam[0])
+                    cands.append((round(abs(err), 9), max(t), t, f, c, err))
+    cands.sort(key=lambda e: e[:3])
+    for _, _, t, f, c, err in cands[:tries]:
+        for x2 in SUGGEST_X2:
+            try:
+                d = synthesize(f, c, planets, 1.0, -x2, x2, z_min, z_max, None)
+            except TmmError:
+                continue
+            if d.teeth == t and d.checks12.ok and d.checks34.ok and d.neighbours.ok:
+                return ReducerSuggestion(i=f, c=c, teeth=t, x1=-x2 + 0.0, x2=x2, ratio_error_pct=round(err, 9),
+                                         alpha_w34_deg=d.pair34.alpha_w_deg)
+    return None

@@ -109,6 +109,21 @@ class GearsResult:
     spur_stiffness: SpurPairStiffness | None = None  # beyond the course (seed 002), informative
 
 
+def _aa_bar_hint(i_pl: float, err_pct: float) -> list[Note]:
+    """When the zero-gear reducer misses the ratio by 1 % or more, point to `tmm planetary`: the AA̅
+    mechanism with shifted gears (seed 000) driven at its carrier, if one fits more exactly."""
+    if abs(err_pct) < 1.0:
+        return []
+    from .aa_bar import suggest_for_reducer
+
+    s = suggest_for_reducer(i_pl, tolerance_pct=min(0.5, abs(err_pct) / 2))
+    if s is None:
+        return []
+    return [Note.make("aa_bar_hint", "assumption", i=f"{s.i}", c=f"{s.c}", teeth="/".join(map(str, s.teeth)),
+                      err=f"{s.ratio_error_pct:+.2f}", ratio=f"{1 / float(s.i):.4f}", aw34=f"{s.alpha_w34_deg:.2f}",
+                      x1=f"{s.x1:g}", x2=f"{s.x2:g}")]
+
+
 def _spur_shift_notes(spur: SpurGeometry) -> list[Note]:
     """Notes of the shifted spur pair (beyond the book): what was applied, the blocking-contour
     failures, and for z < 17 the shift that removes undercut."""
@@ -269,6 +284,7 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
                                    n=sc.assembly_book_n))
     err = design.ratio_error_pct
     n_cr_actual = n_d / design.ratio
+    notes += _aa_bar_hint(i_pl, err)
     notes.append(Note.make("ratio_error", "warning" if abs(err) >= 1.0 else "assumption", i=f"{design.ratio:.4f}",
                            target=f"{i_pl:.4f}", err=f"{err:+.2f}", tol=f"{tolerance_pct:g}",
                            rpm=f"{n_cr_actual:.1f}", want=f"{n_cr:g}"))

@@ -66,4 +66,12 @@ MESSAGES: dict[str, dict[str, str]] = {
         "ru": "Колесо z = {z} < 17 без смещения подрезается: сместите его на x ≥ h_a*(17 − z)/17 = {x}; "
               "--shift auto даёт x1 = {x1}, x2 = {x2}.",
     },
+    "aa_bar_hint": {
+        "en": "Beyond the book: the planetary mechanism AA̅ with shifted gears (seed 000), driven at its carrier H "
+              "with the output on wheel 1, gives i_H1 = 1/i = {ratio} ({err} %) with Z = {teeth}, k = 3: "
+              "tmm planetary --ratio {i} --c {c} --x1 {x1} --x2 {x2} (α_w34 = {aw34}°; every blocking-contour line holds).",
+        "ru": "Сверх пособия: планетарный механизм AA̅ со смещёнными колёсами (статья 000) с входом на водило H и "
+              "выходом на колесо 1 даёт i_H1 = 1/i = {ratio} ({err} %) при Z = {teeth}, k = 3: "
+              "tmm planetary --ratio {i} --c {c} --x1 {x1} --x2 {x2} (α_w34 = {aw34}°; блокирующий контур соблюдён).",
+    },
 }
