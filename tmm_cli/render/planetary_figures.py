@@ -112,18 +112,18 @@ def _mechanism_figure(d, lang):
     _scheme(ax0, d, lang)
     _front(ax1, d, lang)
     a12, a34 = d.alpha_w_deg
-    fig.suptitle(pick(lang, f"Planetary mechanism AA̅ (seed 000): i = {d.i}, C = {d.c}; α_w12 = "
-                            f"{num(a12, lang, decimals=3)}°, α_w34 = {num(a34, lang, decimals=3)}°; x = "
+    fig.suptitle(pick(lang, f"Planetary mechanism AA̅ (seed 000): i = {d.i}, C = {d.c}; $\\alpha_{{w12}}$ = "
+                            f"{num(a12, lang, decimals=3)}°, $\\alpha_{{w34}}$ = {num(a34, lang, decimals=3)}°; x = "
                             + ", ".join(num(v, lang, decimals=3, minus='−') for v in d.x),
-                      f"Планетарный механизм AA̅ (статья 000): i = {d.i}, C = {d.c}; α_w12 = "
-                      f"{num(a12, lang, decimals=3)}°, α_w34 = {num(a34, lang, decimals=3)}°; x = "
+                      f"Планетарный механизм AA̅ (статья 000): i = {d.i}, C = {d.c}; $\\alpha_{{w12}}$ = "
+                      f"{num(a12, lang, decimals=3)}°, $\\alpha_{{w34}}$ = {num(a34, lang, decimals=3)}°; x = "
                       + "; ".join(num(v, lang, decimals=3, minus='−') for v in d.x)), fontsize=11)
     handles = [
-        Line2D([], [], color=C_SUN, label=pick(lang, "sun 1: working circle d_w1", "колесо 1: начальная d_w1")),
-        Line2D([], [], color=C_PLANET, label=pick(lang, "planet: d_w2 (mesh 1-2)", "сателлит: d_w2 (пара 1–2)")),
-        Line2D([], [], color=C_PLANET, ls="--", label=pick(lang, "planet: d_w3 (mesh 3-4)", "сателлит: d_w3 (пара 3–4)")),
-        Line2D([], [], color=C_WHEEL4, ls="--", label=pick(lang, "wheel 4 (fixed): d_w4", "колесо 4 (неподвижное): d_w4")),
-        Line2D([], [], color="0.3", ls=":", label=pick(lang, "tip circles d_a", "окружности вершин d_a")),
+        Line2D([], [], color=C_SUN, label=pick(lang, "sun 1: working circle $d_{w1}$", "колесо 1: начальная $d_{w1}$")),
+        Line2D([], [], color=C_PLANET, label=pick(lang, "planet: $d_{w2}$ (mesh 1-2)", "сателлит: $d_{w2}$ (пара 1–2)")),
+        Line2D([], [], color=C_PLANET, ls="--", label=pick(lang, "planet: $d_{w3}$ (mesh 3-4)", "сателлит: $d_{w3}$ (пара 3–4)")),
+        Line2D([], [], color=C_WHEEL4, ls="--", label=pick(lang, "wheel 4 (fixed): $d_{w4}$", "колесо 4 (неподвижное): $d_{w4}$")),
+        Line2D([], [], color="0.3", ls=":", label=pick(lang, "tip circles $d_a$", "окружности вершин $d_a$")),
         Line2D([], [], color=C_CARRIER, lw=2, label=pick(lang, "carrier H", "водило H")),
     ]
     fig.legend(handles=handles, loc="outside lower center", ncol=3, fontsize=9, frameon=False)
@@ -146,9 +146,9 @@ def _velocity_figure(d, lang):
     for vx, ry in ((v.v_p12, v.r_w1_mm), (v.v_c, v.a_w_mm)):
         ax.annotate("", (vx, ry), xytext=(0, ry), arrowprops=dict(arrowstyle="-|>", color="0.35", lw=0.8,
                                                                   shrinkA=0, shrinkB=0))
-    for vx, ry, name in ((0.0, v.r_w4_mm, "P34"), (v.v_p12, v.r_w1_mm, "P12"), (v.v_c, v.a_w_mm, "C")):
+    for vx, ry, name in ((0.0, v.r_w4_mm, "$P_{34}$"), (v.v_p12, v.r_w1_mm, "$P_{12}$"), (v.v_c, v.a_w_mm, "C")):
         ax.plot(vx, ry, "o", color="k", ms=3.5)
-        ax.annotate(name, (vx, ry), xytext=(6, -12 if name == "P34" else 3), textcoords="offset points", fontsize=10)
+        ax.annotate(name, (vx, ry), xytext=(6, -12 if name == "$P_{34}$" else 3), textcoords="offset points", fontsize=10)
     ax.annotate("1", (0.5 * v.v_p12, 0.5 * v.r_w1_mm), xytext=(6, 0), textcoords="offset points", color=C_SUN,
                 fontsize=11, fontweight="bold")
     ax.annotate("2 = 3", (slope * (r_hi - v.r_w4_mm) * 0.85, v.r_w4_mm + (r_hi - v.r_w4_mm) * 0.85), xytext=(6, 0),
@@ -158,25 +158,25 @@ def _velocity_figure(d, lang):
     r_arc = 0.45 * v.r_w1_mm
     ax.add_patch(Arc((0, 0), 2 * r_arc, 2 * r_arc, theta1=90 - v.phi_1_deg, theta2=90, color=C_SUN, lw=1))
     ax.add_patch(Arc((0, 0), 1.4 * r_arc, 1.4 * r_arc, theta1=90 - v.phi_h_deg, theta2=90, color=C_CARRIER, lw=1))
-    ax.annotate("φ1", (0, r_arc), xytext=(-4, 0), textcoords="offset points", fontsize=9, color=C_SUN, ha="right")
-    ax.annotate("φ_H", (0, 0.7 * r_arc), xytext=(-4, 0), textcoords="offset points", fontsize=9, color=C_CARRIER,
+    ax.annotate(r"$\varphi_1$", (0, r_arc), xytext=(-4, 0), textcoords="offset points", fontsize=9, color=C_SUN, ha="right")
+    ax.annotate(r"$\varphi_H$", (0, 0.7 * r_arc), xytext=(-4, 0), textcoords="offset points", fontsize=9, color=C_CARRIER,
                 ha="right")
     ax.axvline(0, color="k", lw=0.8)
     ax.axhline(0, color="0.5", lw=0.7, ls=(0, (10, 3, 2, 3)))
     up = v.r_w1_mm >= v.r_w4_mm
-    for r, name, va in ((v.r_w1_mm, "r_w1", "bottom" if up else "top"), (v.r_w4_mm, "r_w4", "top" if up else "bottom"),
-                        (v.a_w_mm, "a_w", "center")):
+    for r, name, va in ((v.r_w1_mm, "$r_{w1}$", "bottom" if up else "top"),
+                        (v.r_w4_mm, "$r_{w4}$", "top" if up else "bottom"), (v.a_w_mm, "$a_w$", "center")):
         ax.axhline(r, color="0.8", lw=0.5)
         ax.annotate(f"{name} = {num(r, lang, decimals=2)}", (0, r), xytext=(-6, 0), textcoords="offset points",
                     fontsize=8, ha="right", va=va, color="0.3")
     ax.set_aspect("equal", adjustable="datalim")
     ax.plot([-0.35 * v.v_c, 1.3 * max(v.v_c, slope * (r_hi - v.r_w4_mm))], [0, 0], alpha=0)  # x data extent
     ax.set_xticks([])
-    ax.set_xlabel(pick(lang, "linear velocity (ω_H = 1 rad/s, mm/s)", "линейная скорость (ω_H = 1 рад/с, мм/с)"))
+    ax.set_xlabel(pick(lang, r"linear velocity ($\omega_H$ = 1 rad/s, mm/s)", r"линейная скорость ($\omega_H$ = 1 рад/с, мм/с)"))
     ax.set_ylabel(pick(lang, "radius, mm", "радиус, мм"))
-    ax.set_title(pick(lang, f"Velocity picture: i = tg φ1/tg φ_H = {num(v.ratio, lang, decimals=6)} "
+    ax.set_title(pick(lang, r"Velocity picture: $i = \tan\varphi_1/\tan\varphi_H$ = " + f"{num(v.ratio, lang, decimals=6)} "
                             f"(1 − Z2·Z4/(Z1·Z3) = {d.ratio_check})",
-                      f"План скоростей: i = tg φ1/tg φ_H = {num(v.ratio, lang, decimals=6)} "
+                      r"План скоростей: $i = \mathrm{tg}\,\varphi_1/\mathrm{tg}\,\varphi_H$ = " + f"{num(v.ratio, lang, decimals=6)} "
                       f"(1 − Z2·Z4/(Z1·Z3) = {d.ratio_check})"), fontsize=10)
     return fig
 
