@@ -257,3 +257,13 @@ def test_tmm_gears_points_to_tmm_planetary_when_the_zero_reducer_is_poor(tmp_pat
     assert all(p["ok"] for p in d["pairs"]) and d["neighbours"]["ok"] and not d["warnings"]
     assert abs(1 / d["ratio"]["value"] / 14.4 - 1) < 0.005
     assert not any(n.code == "aa_bar_hint" for n in design_gears(-1000, 220, ratio=(13, 4)).notes)
+
+
+def test_the_printed_simplified_z2_formula_is_wrong():
+    """The seed prints Z2 = Z1·(Ac(B − A) − Bc)/(Bc − Ac) after simplifying (1); it drops a factor B.
+    For its own example it would give Z2 = −6270, not 48; equation (1) itself gives 48."""
+    a, b, ac, bc, z1 = 1, 10, 26, 25, 30
+    printed = Fraction(z1 * (ac * (b - a) - bc), bc - ac)
+    i, c = Fraction(a, b), Fraction(ac, bc)
+    general = z1 * (c - c * i - 1) / (1 - c)
+    assert printed == -6270 and general == 48
