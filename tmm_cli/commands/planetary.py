@@ -32,6 +32,8 @@ def planetary_cmd(ratio, c_text, planets, module_mm, x1, x2, z_min, z_max, multi
     Tooth numbers from the ratio i and C = cos α_w12/cos α_w34, the common centre distance,
     the working angles and shifts of both stages, the blocking-contour checks, the velocity
     picture and a figure of the mechanism. Example (the seed's):
+
+    \b
     tmm planetary --ratio 1/10 --c 26/25 --planets 3 --module 5 --x1 -0.4 --x2 0.4
     """
     from pathlib import Path
