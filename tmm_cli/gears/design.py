@@ -298,11 +298,12 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
                            target=f"{i_spur:.4f}", err=f"{(spur.i_actual / i_spur - 1) * 100:+.2f}",
                            rpm=f"{cam_actual:.1f}", want=f"{abs(n_cam_rpm):g}"))
     zmin = min(spur.z1, spur.z2)
-    if zmin < spur.z_min_undercut and not spur.shifted:
+    zero_pair = spur.x1 == 0 and spur.x2 == 0  # also --shift auto for two gears of 17 teeth or more
+    if zmin < spur.z_min_undercut and zero_pair:
         notes.append(Note.make("undercut", "warning", z=zmin, zmin=f"{spur.z_min_undercut:.2f}",
                                x=f"{(spur.z_min_undercut - zmin) / spur.z_min_undercut:.4f}"))
     notes += _spur_shift_notes(spur)
-    if spur.eps_alpha < 1.2 and not spur.shifted:  # a shifted pair has its own blocking-contour notes
+    if spur.eps_alpha < 1.2 and zero_pair:  # a shifted pair has its own blocking-contour notes
         notes.append(Note.make("eps_low", "warning", eps=f"{spur.eps_alpha:.3f}"))
 
     # power
@@ -318,7 +319,7 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
 
     # beyond the course: mesh stiffness of the spur pair (seed 002), informative
     spur_stiff = None
-    if stiffness and not spur.shifted:  # seed 002's model is for zero gears
+    if stiffness and zero_pair:  # seed 002's model is for zero gears
         motor_torque = None if power is None else power.power_kw * 1e3 / drive.omega_rad_s(n_d)
         spur_stiff = spur_pair_stiffness(spur.z1, spur.z2, spur.m_mm, motor_torque)
 
