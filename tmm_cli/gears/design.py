@@ -109,6 +109,42 @@ class GearsResult:
     spur_stiffness: SpurPairStiffness | None = None  # beyond the course (seed 002), informative
 
 
+def _aa_bar_hint(i_pl: float, err_pct: float) -> list[Note]:
+    """When the zero-gear reducer misses the ratio by 1 % or more, point to `tmm planetary`: the AA̅
+    mechanism with shifted gears (seed 000) driven at its carrier, if one fits more exactly."""
+    if abs(err_pct) < 1.0:
+        return []
+    from .aa_bar import suggest_for_reducer
+
+    s = suggest_for_reducer(i_pl, tolerance_pct=min(0.5, abs(err_pct) / 2))
+    if s is None:
+        return []
+    return [Note.make("aa_bar_hint", "assumption", i=f"{s.i}", c=f"{s.c}", teeth="/".join(map(str, s.teeth)),
+                      err=f"{s.ratio_error_pct:+.2f}", ratio=f"{1 / float(s.i):.4f}", aw34=f"{s.alpha_w34_deg:.2f}",
+                      x1=f"{s.x1:g}", x2=f"{s.x2:g}")]
+
+
+def _spur_shift_notes(spur: SpurGeometry) -> list[Note]:
+    """Notes of the shifted spur pair (beyond the book): what was applied, the blocking-contour
+    failures, and for z < 17 the shift that removes undercut."""
+    from .blocking import pair_notes
+    from .shifted import Z_UNDERCUT, auto_shift, x_min_undercut
+
+    notes: list[Note] = []
+    if spur.shifted:
+        notes.append(Note.make(f"spur_shifted_{spur.shift_rule}", "assumption", x1=f"{spur.x1:.4f}",
+                               x2=f"{spur.x2:.4f}", aw=f"{spur.a_w_mm:.3f}", alpha_w=f"{spur.alpha_w_deg:.3f}"))
+        notes += pair_notes("z1-z2", spur.blocking, (spur.z1, spur.z2), spur.m_mm)
+    else:
+        for z in (spur.z1, spur.z2):
+            if z < Z_UNDERCUT:
+                x1, x2 = auto_shift(spur.z1, spur.z2, spur.ha_star)
+                notes.append(Note.make("spur_shift_suggest", "warning", z=z, x=f"{x_min_undercut(z, spur.ha_star):.4f}",
+                                       x1=f"{x1:.4f}", x2=f"{x2:.4f}"))
+                break
+    return notes
+
+
 def _fmt_teeth(t: tuple[int, ...]) -> str:
     return "/".join(str(v) for v in t)
 
@@ -140,11 +176,13 @@ def _check_inputs(n_cam_rpm, crank_rpm, torque_nm, tolerance_pct, planets):
 
 def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: float | None = None,
                  ratio: tuple[int, int] | None = None, tolerance_pct: float = 5.0,
-                 planets: int | None = None, stiffness: bool = True) -> GearsResult:
+                 planets: int | None = None, stiffness: bool = True, shift=None,
+                 a_w_mm: float | None = None) -> GearsResult:
     """Sheet 4: motor speed (§2.2), ratios, scheme (Fig. 2.4), planetary synthesis (§2.1.3,
     §2.4/§2.5), spur pair (§2.3), power (§2.6); with ``stiffness`` also the spur pair's mesh
     stiffness beyond the course (seed 002, :func:`~tmm_cli.gears.stiffness.spur_pair_stiffness`),
-    loaded by the motor torque N/ω_d when ``torque_nm`` is given.
+    loaded by the motor torque N/ω_d when ``torque_nm`` is given. ``shift`` ("auto" or (x1, x2)) and
+    ``a_w_mm`` shift the spur pair (beyond the book, gears/shifted.py); the default is the book's zero pair.
 
     The book's §2.4 example (n_cr = 220 rpm, the fraction 13/4):
 
@@ -246,12 +284,13 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
                                    n=sc.assembly_book_n))
     err = design.ratio_error_pct
     n_cr_actual = n_d / design.ratio
+    notes += _aa_bar_hint(i_pl, err)
     notes.append(Note.make("ratio_error", "warning" if abs(err) >= 1.0 else "assumption", i=f"{design.ratio:.4f}",
                            target=f"{i_pl:.4f}", err=f"{err:+.2f}", tol=f"{tolerance_pct:g}",
                            rpm=f"{n_cr_actual:.1f}", want=f"{n_cr:g}"))
 
     # spur pair
-    spur = design_spur(n_d, n_cam_rpm)
+    spur = design_spur(n_d, n_cam_rpm, shift=shift, a_w_mm=a_w_mm)
     cam_actual = n_d * spur.z1 / spur.z2
     if spur.multiplier:
         notes.append(Note.make("spur_multiplier", "assumption", z1=spur.z1, z2=spur.z2))
@@ -259,10 +298,12 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
                            target=f"{i_spur:.4f}", err=f"{(spur.i_actual / i_spur - 1) * 100:+.2f}",
                            rpm=f"{cam_actual:.1f}", want=f"{abs(n_cam_rpm):g}"))
     zmin = min(spur.z1, spur.z2)
-    if zmin < spur.z_min_undercut:
+    zero_pair = spur.x1 == 0 and spur.x2 == 0  # also --shift auto for two gears of 17 teeth or more
+    if zmin < spur.z_min_undercut and zero_pair:
         notes.append(Note.make("undercut", "warning", z=zmin, zmin=f"{spur.z_min_undercut:.2f}",
                                x=f"{(spur.z_min_undercut - zmin) / spur.z_min_undercut:.4f}"))
-    if spur.eps_alpha < 1.2:
+    notes += _spur_shift_notes(spur)
+    if spur.eps_alpha < 1.2 and zero_pair:  # a shifted pair has its own blocking-contour notes
         notes.append(Note.make("eps_low", "warning", eps=f"{spur.eps_alpha:.3f}"))
 
     # power
@@ -278,7 +319,7 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
 
     # beyond the course: mesh stiffness of the spur pair (seed 002), informative
     spur_stiff = None
-    if stiffness:
+    if stiffness and zero_pair:  # seed 002's model is for zero gears
         motor_torque = None if power is None else power.power_kw * 1e3 / drive.omega_rad_s(n_d)
         spur_stiff = spur_pair_stiffness(spur.z1, spur.z2, spur.m_mm, motor_torque)
 

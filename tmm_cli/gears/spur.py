@@ -1,4 +1,5 @@
-"""The spur pair from the motor to the cam: zero gears of §2.3 (sheet 4, lower field).
+"""The spur pair from the motor to the cam: zero gears of §2.3 (sheet 4, lower field), and —
+beyond the book — the same pair with profile shifts x1, x2 (``--shift``, ``--aw``; gears/shifted.py).
 
 Fixed for every variant (§2.1.1, §2.3): m = 20 mm, α = 20°, h_a* = 1, c* = 0.25, x1 = x2 = 0.
 Lengths are in millimetres (``_mm``) because the book's items are drawn at that scale; angles in
@@ -10,6 +11,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from fractions import Fraction
+
+from ..errors import TmmError
 
 M_MM = 20.0
 ALPHA_DEG = 20.0
@@ -122,6 +125,18 @@ class SpurGeometry:
     single_zone_mm: float  # U2U1
     double_zone_mm: float  # P1U2 (= U1P2)
     z_min_undercut: float
+    # profile shift (beyond the book; zero pair by default). a_mm above is the reference distance
+    # m(z1 + z2)/2; the gears run at a_w_mm (= a_mm for x1 + x2 = 0).
+    x1: float = 0.0
+    x2: float = 0.0
+    shift_rule: str = "zero"  # "zero" | "given" | "auto" | "aw"
+    a_w_mm: float = 0.0
+    pair: object = None  # tmm_cli.gears.shifted.PairGeometry (d_w, s, s_w, s_a, y, Δy …)
+    blocking: object = None  # tmm_cli.gears.blocking.PairChecks
+
+    @property
+    def shifted(self) -> bool:
+        return self.shift_rule != "zero"
 
     @property
     def multiplier(self) -> bool:
@@ -129,11 +144,14 @@ class SpurGeometry:
 
 
 def spur_geometry(z1: int, z2: int, i_d: float | None = None, m_mm: float = M_MM,
-                  alpha_deg: float = ALPHA_DEG, ha_star: float = HA_STAR, c_star: float = C_STAR) -> SpurGeometry:
-    """All items 3–11 of §2.3 for a zero pair, plus ε_α computed from the geometry.
+                  alpha_deg: float = ALPHA_DEG, ha_star: float = HA_STAR, c_star: float = C_STAR,
+                  x1: float = 0.0, x2: float = 0.0, shift_rule: str | None = None) -> SpurGeometry:
+    """All items 3–11 of §2.3, plus ε_α computed from the geometry; with x1, x2 the shifted pair
+    (α_w, a_w, Δy, d_a, d_f by gears/shifted.py, the checks of gears/blocking.py).
 
-    ε_α = (√(r_a1² − r_b1²) + √(r_a2² − r_b2²) − a·sin α_w)/p_b (the active line P1P2 over the base
-    pitch, Fig. 2.3); φ_α = ε_α·τ (§2.3, note).
+    ε_α = (√(r_a1² − r_b1²) + √(r_a2² − r_b2²) − a_w·sin α_w)/p_b (the active line P1P2 over the base
+    pitch, Fig. 2.3); φ_α = ε_α·τ (§2.3, note). Item 11 checks a_w = d_a1/2 + d_f2/2 + C and
+    d_a − d_f = 2h with h = (2h_a* + c* − Δy)m (Δy = 0 for a zero pair).
 
     The book's example z1 = 17, z2 = 20, m = 20 mm:
 
@@ -146,37 +164,48 @@ def spur_geometry(z1: int, z2: int, i_d: float | None = None, m_mm: float = M_MM
     (45.0, 40.0, 5.0, 21.176, 18.0, True)
     >>> round(g.eps_alpha, 3)
     1.536
+
+    Shifted to run at a_w = 380 mm (x1 = x2 = 0.2734):
+
+    >>> h = spur_geometry(17, 20, x1=0.2734, x2=0.2734)
+    >>> round(h.a_w_mm, 2), round(h.alpha_w_deg, 3), h.check_ok, round(h.eps_alpha, 3)
+    (380.0, 23.799, True, 1.364)
     """
+    from .blocking import check_pair
+    from .shifted import pair_geometry
+
+    pg = pair_geometry(z1, z2, m_mm, x1, x2, alpha_deg, ha_star, c_star)
+    for j, z in enumerate((z1, z2)):
+        if pg.sa_mm[j] <= 0:
+            raise TmmError(f"the shift x{j + 1} = {pg.x[j]:g} makes gear {j + 1} (z = {z}) pointed: its tip thickness "
+                           f"would be s_a = {pg.sa_mm[j]:.3f} mm ≤ 0; choose a smaller shift (s_a ≥ 0.25·m = "
+                           f"{0.25 * m_mm:g} mm is the limit) or --shift auto")
     alpha = math.radians(alpha_deg)
     m = m_mm
-    d1, d2 = m * z1, m * z2
-    db1, db2 = d1 * math.cos(alpha), d2 * math.cos(alpha)
-    da1, da2 = d1 + 2 * ha_star * m, d2 + 2 * ha_star * m
-    df1, df2 = d1 - 2 * (ha_star + c_star) * m, d2 - 2 * (ha_star + c_star) * m
+    d1, d2 = pg.d_mm
+    db1, db2 = pg.db_mm
+    da1, da2 = pg.da_mm
+    df1, df2 = pg.df_mm
     a = m * (z1 + z2) / 2
+    a_w = pg.a_w_mm
     p = math.pi * m
     pb = p * math.cos(alpha)
     s = e = math.pi * m / 2
     tau1, tau2 = 360.0 / z1, 360.0 / z2
-    h = (2 * ha_star + c_star) * m
-    hd = 2 * ha_star * m
+    h = (2 * ha_star + c_star - pg.dy) * m
+    hd = (2 * ha_star - pg.dy) * m
     c = c_star * m
-    chk_pitch = (d1 + d2) / 2
+    chk_pitch = (pg.dw_mm[0] + pg.dw_mm[1]) / 2
     chk_12 = da1 / 2 + df2 / 2 + c
     chk_21 = da2 / 2 + df1 / 2 + c
     chk_h1, chk_h2 = da1 - df1, da2 - df2
-    tol = 1e-9 * max(a, 1.0)
-    ok = (abs(chk_pitch - a) < tol and abs(chk_12 - a) < tol and abs(chk_21 - a) < tol
+    tol = 1e-9 * max(a_w, 1.0)
+    ok = (abs(chk_pitch - a_w) < tol and abs(chk_12 - a_w) < tol and abs(chk_21 - a_w) < tol
           and abs(chk_h1 - 2 * h) < tol and abs(chk_h2 - 2 * h) < tol)
-    # line of action (zero gears: α_w = α, a_w = a)
-    alpha_w = alpha
-    rb1, rb2, ra1, ra2 = db1 / 2, db2 / 2, da1 / 2, da2 / 2
-    n1n2 = a * math.sin(alpha_w)
-    pole = rb1 * math.tan(alpha_w)
-    p2 = math.sqrt(ra1 * ra1 - rb1 * rb1)  # from N1: tip circle of gear 1 ends the contact
-    p1 = n1n2 - math.sqrt(ra2 * ra2 - rb2 * rb2)  # tip circle of gear 2 starts it
-    g = p2 - p1
-    eps = g / pb
+    rb1, rb2 = db1 / 2, db2 / 2
+    g = pg.g_alpha_mm
+    eps = pg.eps_alpha
+    rule = shift_rule or ("zero" if x1 == 0 and x2 == 0 else "given")
     return SpurGeometry(
         z1=z1, z2=z2, m_mm=m, alpha_deg=alpha_deg, ha_star=ha_star, c_star=c_star,
         i_d=float(i_d) if i_d is not None else z2 / z1, i_actual=z2 / z1,
@@ -185,21 +214,28 @@ def spur_geometry(z1: int, z2: int, i_d: float | None = None, m_mm: float = M_MM
         fillet_mm=FILLET_RADIUS_FACTOR * m,
         check_a_pitch_mm=chk_pitch, check_a_12_mm=chk_12, check_a_21_mm=chk_21,
         check_2h_1_mm=chk_h1, check_2h_2_mm=chk_h2, check_ok=ok,
-        alpha_w_deg=math.degrees(alpha_w), n1n2_mm=n1n2, pole_mm=pole, p1_mm=p1, p2_mm=p2,
-        u1_mm=p1 + pb, u2_mm=p2 - pb, g_alpha_mm=g, eps_alpha=eps,
+        alpha_w_deg=pg.alpha_w_deg, n1n2_mm=pg.n1n2_mm, pole_mm=pg.pole_mm, p1_mm=pg.p1_mm, p2_mm=pg.p2_mm,
+        u1_mm=pg.p1_mm + pb, u2_mm=pg.p2_mm - pb, g_alpha_mm=g, eps_alpha=eps,
         phi_alpha1_deg=eps * tau1, phi_alpha2_deg=eps * tau2,
         phi_alpha1_geom_deg=math.degrees(g / rb1), phi_alpha2_geom_deg=math.degrees(g / rb2),
         single_zone_mm=max(0.0, 2 * pb - g), double_zone_mm=max(0.0, g - pb),
         z_min_undercut=z_min_undercut(alpha_deg, ha_star),
+        x1=float(x1), x2=float(x2), shift_rule=rule, a_w_mm=a_w, pair=pg, blocking=check_pair(pg),
     )
 
 
-def design_spur(n_motor_rpm: float, n_cam_rpm: float) -> SpurGeometry:
-    """§2.3 from the speeds: tooth numbers (items 1–2), then the geometry (items 3–11).
+def design_spur(n_motor_rpm: float, n_cam_rpm: float, shift=None, a_w_mm: float | None = None) -> SpurGeometry:
+    """§2.3 from the speeds: tooth numbers (items 1–2), then the geometry (items 3–11); ``shift``
+    ("auto" or (x1, x2)) and ``a_w_mm`` as in :func:`~tmm_cli.gears.shifted.resolve_shift`.
 
     >>> g = design_spur(720, 600)
-    >>> (g.z1, g.z2, g.i_d)
-    (17, 20, 1.2)
+    >>> (g.z1, g.z2, g.i_d, g.shift_rule)
+    (17, 20, 1.2, 'zero')
+    >>> round(design_spur(720, 600, a_w_mm=380.0).x1, 4)
+    0.2734
     """
+    from .shifted import resolve_shift
+
     z1, z2 = spur_teeth(n_motor_rpm, n_cam_rpm)
-    return spur_geometry(z1, z2, i_d=n_motor_rpm / abs(n_cam_rpm))
+    x1, x2, rule = resolve_shift(z1, z2, M_MM, shift, a_w_mm, ALPHA_DEG, HA_STAR)
+    return spur_geometry(z1, z2, i_d=n_motor_rpm / abs(n_cam_rpm), x1=x1, x2=x2, shift_rule=rule)

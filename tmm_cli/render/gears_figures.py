@@ -34,16 +34,17 @@ def _flank_half_angle(r: np.ndarray, rb: float, psi: float) -> np.ndarray:
 
 
 def tooth_outline(z: int, m: float, ha: float = 1.0, c: float = 0.25, fillet: float = 0.38,
-                  alpha_deg: float = 20.0, n: int = 40) -> np.ndarray:
-    """One tooth of a zero gear (x = 0), centred on the +x axis, from the middle of the space
+                  alpha_deg: float = 20.0, n: int = 40, x: float = 0.0, ra: float | None = None) -> np.ndarray:
+    """One tooth of a gear, centred on the +x axis, from the middle of the space
     below it to the middle of the space above it: root arc, fillet of radius 0.38·m (§2.1.1),
-    flank (involute above the base circle, radial below it), tip arc, and back. Returns (N, 2)."""
+    flank (involute above the base circle, radial below it), tip arc, and back. Returns (N, 2).
+    A shifted gear (beyond the book) takes its shift ``x`` and its real tip radius ``ra``."""
     r = m * z / 2
     rb = r * math.cos(math.radians(alpha_deg))
-    ra = r + ha * m
-    rf = r - (ha + c) * m
+    ra = r + ha * m if ra is None else ra
+    rf = r - (ha + c - x) * m
     rho = fillet * m
-    psi = math.pi / (2 * z)
+    psi = (math.pi / 2 + 2 * x * math.tan(math.radians(alpha_deg))) / z
     alpha = math.radians(alpha_deg)
     inv_a = math.tan(alpha) - alpha
 
@@ -111,6 +112,20 @@ def gear_outline(z: int, m: float, centre=(0.0, 0.0), rot: float = 0.0, **kw) ->
 # the mesh
 
 
+def _shift_kw(g, idx: int) -> dict:
+    """tooth_outline's shift and real tip radius for gear ``idx`` of a shifted pair ({} for the zero pair)."""
+    if not getattr(g, "shifted", False):
+        return {}
+    return {"x": (g.x1, g.x2)[idx - 1], "ra": (g.da1_mm, g.da2_mm)[idx - 1] / 2}
+
+
+def _shift_title(g) -> str:
+    """", x1 = …, x2 = …, a_w = …" for a shifted pair (beyond the book), "" for the zero pair."""
+    if not getattr(g, "shifted", False):
+        return ""
+    return f"\nx1 = {g.x1:.4g}, x2 = {g.x2:.4g}, a_w = {g.a_w_mm:.5g}, α_w = {g.alpha_w_deg:.4g}°"
+
+
 def _mesh_geometry(g, motor_sense: str = "cw"):
     """Centres, pole, the unit vector u of the line of action from N1 to N2, N1, and s ↦ point.
 
@@ -119,9 +134,9 @@ def _mesh_geometry(g, motor_sense: str = "cw"):
     so contact runs P1 → P2 (from gear 2's tip circle to gear 1's). Gear 1 turning clockwise
     (top moving right) gives the line rising to the right; counter-clockwise, its mirror image.
     """
-    a = g.a_mm
+    a = g.a_w_mm or g.a_mm  # the working centre distance (= a for the book's zero pair)
     al = math.radians(g.alpha_w_deg)
-    r1, r2 = g.d1_mm / 2, g.d2_mm / 2
+    r1 = g.d1_mm / 2 * math.cos(math.radians(g.alpha_deg)) / math.cos(al)  # working radius (= r1 when zero)
     o1, o2 = np.array([0.0, 0.0]), np.array([0.0, a])
     p = np.array([0.0, r1])
     sx = 1.0 if motor_sense == "cw" else -1.0
@@ -162,8 +177,8 @@ def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
     m = g.m_mm
     # gear 1 tooth on the line of centres at P; gear 2 a space there
     rot1, rot2 = math.pi / 2, -math.pi / 2 + math.pi / g.z2
-    g1 = gear_outline(g.z1, m, o1, rot=rot1)
-    g2 = gear_outline(g.z2, m, o2, rot=rot2)
+    g1 = gear_outline(g.z1, m, o1, rot=rot1, **_shift_kw(g, 1))
+    g2 = gear_outline(g.z2, m, o2, rot=rot2, **_shift_kw(g, 2))
     # add_artist, not fill(): fill() updates the data limits vertex by vertex through Bezier
     # extrema (0.4 s per gear); the outlines plotted beside them set the limits anyway
     ax.add_artist(Polygon(g1, closed=True, color=C_SUN, alpha=0.18, lw=0))
@@ -176,6 +191,10 @@ def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
                                               (o2, C_PLANET, g.d2_mm, g.db2_mm, g.da2_mm, g.df2_mm, 2)):
         for (name, ls, lw), dia in zip(styles, (d, db, da, df)):
             ax.plot(centre[0] + dia / 2 * np.cos(t), centre[1] + dia / 2 * np.sin(t), ls=ls, lw=lw, color=col, alpha=0.8)
+        if getattr(g, "shifted", False):  # the working circle d_w of a shifted pair (beyond the book)
+            dw = g.pair.dw_mm[idx - 1]
+            ax.plot(centre[0] + dw / 2 * np.cos(t), centre[1] + dw / 2 * np.sin(t), ls=(0, (1, 2)), lw=1.0, color="k",
+                    alpha=0.6)
         ax.plot(*centre, "o", color=col, ms=4)
         ax.annotate(f"O{idx}", centre, xytext=(6, 4), textcoords="offset points", color=col, fontsize=10)
     ax.plot([o1[0], o2[0]], [o1[1], o2[1]], color="0.4", lw=0.7, ls=(0, (8, 3, 2, 3)))
@@ -209,7 +228,7 @@ def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
         ax.add_patch(Arc(tuple(p), 2 * rr, 2 * rr, theta1=th0, theta2=th1, color="k", lw=0.9))
         ax.plot([p[0], p[0] + sx * 1.3 * rr], [p[1], p[1]], color="k", lw=0.7, ls="--")
         mid = math.radians(g.alpha_w_deg / 2)
-        ax.annotate(f"α_w = {g.alpha_w_deg:.0f}°", (p[0] + sx * rr * math.cos(mid), p[1] + rr * math.sin(mid)),
+        ax.annotate(f"α_w = {g.alpha_w_deg:.4g}°", (p[0] + sx * rr * math.cos(mid), p[1] + rr * math.sin(mid)),
                     xytext=(sx * 10, -3), textcoords="offset points", fontsize=fs, ha="left" if sx > 0 else "right",
                     bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
         # the active profile parts (double line in the book): radii of P1 from O1 and P2 from O2
@@ -249,10 +268,10 @@ def _mesh_figure(result, lang):
     _draw_mesh(ax1, g, lang, zoom=True, motor_sense=dirs.motor)
     # senses of rotation: motor (gear 1) and cam (gear 2), opposite in an external mesh
     _rotation_arrow(ax0, (0.0, 0.0), 0.45 * g.d1_mm / 2, dirs.motor, 235.0, C_SUN, "ω1")
-    _rotation_arrow(ax0, (0.0, g.a_mm), 0.45 * g.d2_mm / 2, dirs.cam, 55.0, C_PLANET, "ω2")
-    ax0.set_title(pick(lang, f"Spur pair z1 = {g.z1}, z2 = {g.z2}, m = {g.m_mm:g} mm, a = {g.a_mm:g} mm\n"
+    _rotation_arrow(ax0, (0.0, g.a_w_mm or g.a_mm), 0.45 * g.d2_mm / 2, dirs.cam, 55.0, C_PLANET, "ω2")
+    ax0.set_title(pick(lang, f"Spur pair z1 = {g.z1}, z2 = {g.z2}, m = {g.m_mm:g} mm, a = {g.a_mm:g} mm{_shift_title(g)}\n"
                              f"ω1: motor ({_sense_text(dirs.motor, lang)}), ω2: cam ({_sense_text(dirs.cam, lang)})",
-                       f"Зубчатая передача z1 = {g.z1}, z2 = {g.z2}, m = {g.m_mm:g} мм, a = {g.a_mm:g} мм\n"
+                       f"Зубчатая передача z1 = {g.z1}, z2 = {g.z2}, m = {g.m_mm:g} мм, a = {g.a_mm:g} мм{_shift_title(g)}\n"
                        f"ω1: двигатель ({_sense_text(dirs.motor, lang)}), ω2: кулачок ({_sense_text(dirs.cam, lang)})"),
                   fontsize=10.5)
     ax1.set_title(pick(lang, f"Mesh zone: ε_α = P1P2/p_b = {g.g_alpha_mm:.1f}/{g.pb_mm:.2f} = {g.eps_alpha:.3f};  "

@@ -91,6 +91,16 @@ def _stiffness(st, lang: str) -> dict | None:
     }
 
 
+def _spur_shift(sp) -> dict:
+    """Profile-shift keys of the spur pair (beyond the book; a zero pair by default): x1, x2, a_w_mm,
+    alpha_w_deg beside the other spur keys, and the full shifted geometry with its blocking-contour checks."""
+    from .planetary_json import pair_to_json
+
+    return {"x1": _r(sp.x1), "x2": _r(sp.x2), "a_w_mm": _r(sp.a_w_mm), "alpha_w_deg": _r(sp.alpha_w_deg),
+            "shift_rule": sp.shift_rule,
+            "shifted": pair_to_json(sp.pair, sp.blocking) if sp.pair is not None else None}
+
+
 def gears_to_json(result, lang: str) -> dict:
     """JSON-serialisable dict of a :class:`~tmm_cli.gears.design.GearsResult` (plain types only)."""
     r = result
@@ -161,6 +171,7 @@ def gears_to_json(result, lang: str) -> dict:
                                   "U1": _r(sp.u1_mm), "U2": _r(sp.u2_mm), "P2": _r(sp.p2_mm)},
             "phi_alpha_deg": [_r(sp.phi_alpha1_deg), _r(sp.phi_alpha2_deg)],
             "stiffness": _stiffness(getattr(r, "spur_stiffness", None), lang),
+            **_spur_shift(sp),
         },
         "warnings": [note_text(n, lang) for n in r.notes if n.level == "warning"],
         "assumptions": [note_text(n, lang) for n in r.notes if n.level == "assumption"],

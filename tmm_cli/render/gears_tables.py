@@ -274,30 +274,56 @@ def _print_ratio_checks(console, r, lang):
     console.print(t)
 
 
+def _shift_text(g) -> str:
+    """"x1 = x2 = 0" for the book's zero pair, else the shifts (beyond the book)."""
+    if not getattr(g, "shifted", False):
+        return "x1 = x2 = 0"
+    return f"x1 = {_f(g.x1, 4)}, x2 = {_f(g.x2, 4)}, a_w = {_f(g.a_w_mm, 3)}"
+
+
+def _print_spur_shift(console, r, lang):
+    """The shifted spur pair (beyond the book): its geometry and the blocking-contour checks."""
+    g = r.spur
+    if not getattr(g, "shifted", False):
+        return
+    from .planetary_tables import checks_table, pair_table
+
+    console.print(pair_table(g.pair, ("1", "2"), lang, pick(lang, "Spur pair with profile shift (beyond the book)",
+                                                             "Простая передача со смещением (сверх пособия)")))
+    console.print(checks_table(g.blocking, ("1", "2"), (g.z1, g.z2), g.m_mm, lang,
+                               pick(lang, "Blocking contour of the spur pair", "Блокирующий контур простой передачи")))
+
+
 def _print_spur(console, r, lang):
     g = r.spur
     t = _table(pick(lang, f"Spur pair (§2.3): z1 = {g.z1}, z2 = {g.z2}, m = {_f(g.m_mm)} mm, α = {_f(g.alpha_deg)}°, "
-                          f"h_a* = {_f(g.ha_star)}, c* = {_f(g.c_star)}, x1 = x2 = 0",
+                          f"h_a* = {_f(g.ha_star)}, c* = {_f(g.c_star)}, {_shift_text(g)}",
                     f"Простая передача (п. 2.3): z1 = {g.z1}, z2 = {g.z2}, m = {_f(g.m_mm)} мм, α = {_f(g.alpha_deg)}°, "
-                    f"h_a* = {_f(g.ha_star)}, c* = {_f(g.c_star)}, x1 = x2 = 0"),
+                    f"h_a* = {_f(g.ha_star)}, c* = {_f(g.c_star)}, {_shift_text(g)}"),
                pick(lang, "Item", "Пункт"), pick(lang, "Formula", "Формула"), pick(lang, "Gear 1", "Колесо 1"),
                pick(lang, "Gear 2", "Колесо 2"), left=(0, 1))
     mm = pick(lang, "mm", "мм")
+    sh = getattr(g, "shifted", False)
     rows = [
         ("2", pick(lang, "teeth", "числа зубьев"),
          "z1 = 17" if g.z1 == 17 else pick(lang, "z1 = round(17/i_d)", "z1 = округл.(17/i_д)"), str(g.z1), str(g.z2)),
         ("3", pick(lang, f"pitch diameter, {mm}", f"делительный диаметр, {mm}"), "d = m·z", _f(g.d1_mm, 2), _f(g.d2_mm, 2)),
         ("3", pick(lang, f"base diameter, {mm}", f"основной диаметр, {mm}"), "d_b = d·cos α", _f(g.db1_mm, 2), _f(g.db2_mm, 2)),
-        ("3", pick(lang, f"tip diameter, {mm}", f"диаметр вершин, {mm}"), "d_a = d + 2h_a*·m", _f(g.da1_mm, 2), _f(g.da2_mm, 2)),
-        ("3", pick(lang, f"root diameter, {mm}", f"диаметр впадин, {mm}"), "d_f = d − 2(h_a* + c*)m", _f(g.df1_mm, 2), _f(g.df2_mm, 2)),
-        ("4", pick(lang, f"centre distance, {mm}", f"межосевое расстояние, {mm}"), "a = m(z1 + z2)/2", _f(g.a_mm, 2), ""),
+        ("3", pick(lang, f"tip diameter, {mm}", f"диаметр вершин, {mm}"), "d_a = d + 2(h_a* + x − Δy)m" if sh else "d_a = d + 2h_a*·m", _f(g.da1_mm, 2), _f(g.da2_mm, 2)),
+        ("3", pick(lang, f"root diameter, {mm}", f"диаметр впадин, {mm}"), "d_f = d − 2(h_a* + c* − x)m" if sh else "d_f = d − 2(h_a* + c*)m", _f(g.df1_mm, 2), _f(g.df2_mm, 2)),
+        ("4", pick(lang, f"{'reference ' if sh else ''}centre distance, {mm}",
+                    f"{'делительное ' if sh else ''}межосевое расстояние, {mm}"), "a = m(z1 + z2)/2", _f(g.a_mm, 2), ""),
+    ] + ([("4", pick(lang, f"working centre distance, {mm}", f"межосевое расстояние, {mm}"), "a_w = a·cos α/cos α_w",
+           _f(g.a_w_mm, 3), "")] if sh else []) + [
         ("5", pick(lang, f"pitch / base pitch, {mm}", f"шаг / основной шаг, {mm}"), "p = π·m;  p_b = p·cos α",
          _f(g.p_mm, 3), _f(g.pb_mm, 3)),
         ("6", pick(lang, f"tooth thickness = space, {mm}", f"толщина зуба = ширина впадины, {mm}"), "s = e = π·m/2",
-         _f(g.s_mm, 3), _f(g.e_mm, 3)),
+         _f(g.s_mm, 3), _f(g.e_mm, 3)) if not sh else
+        ("6", pick(lang, f"tooth thickness, {mm}", f"толщина зуба, {mm}"), "s = m(π/2 + 2x·tg α)",
+         _f(g.pair.s_mm[0], 3), _f(g.pair.s_mm[1], 3)),
         ("7", pick(lang, "angular pitch, °", "угловой шаг, °"), "τ = 360/z", _f(g.tau1_deg, 3), _f(g.tau2_deg, 3)),
-        ("8", pick(lang, f"tooth height, {mm}", f"высота зуба, {mm}"), "h = (2h_a* + c*)m", _f(g.h_mm, 2), ""),
-        ("9", pick(lang, f"depth of engagement, {mm}", f"глубина захода, {mm}"), "h_d = 2h_a*·m", _f(g.hd_mm, 2), ""),
+        ("8", pick(lang, f"tooth height, {mm}", f"высота зуба, {mm}"), "h = (2h_a* + c* − Δy)m" if sh else "h = (2h_a* + c*)m", _f(g.h_mm, 2), ""),
+        ("9", pick(lang, f"depth of engagement, {mm}", f"глубина захода, {mm}"), "h_d = (2h_a* − Δy)m" if sh else "h_d = 2h_a*·m", _f(g.hd_mm, 2), ""),
         ("10", pick(lang, f"clearance, {mm}", f"радиальный зазор, {mm}"), "C = c*·m", _f(g.c_mm, 2), ""),
         ("", pick(lang, f"root fillet radius, {mm}", f"радиус переходной кривой, {mm}"), "0.38·m", _f(g.fillet_mm, 2), ""),
     ]
@@ -306,8 +332,8 @@ def _print_spur(console, r, lang):
     console.print(t)
     c = _table(pick(lang, "Check, item 11", "Проверка, пункт 11"), pick(lang, "Expression", "Выражение"),
                pick(lang, "Value, mm", "Значение, мм"), "")
-    a = g.a_mm
-    c.add_row("(d1 + d2)/2", _f(g.check_a_pitch_mm, 3), _ok(abs(g.check_a_pitch_mm - a) < 1e-6))
+    a = g.a_w_mm or g.a_mm  # the working centre distance (= a for a zero pair)
+    c.add_row("(d1 + d2)/2" if not getattr(g, "shifted", False) else "(d_w1 + d_w2)/2", _f(g.check_a_pitch_mm, 3), _ok(abs(g.check_a_pitch_mm - a) < 1e-6))
     c.add_row("d_a1/2 + d_f2/2 + C", _f(g.check_a_12_mm, 3), _ok(abs(g.check_a_12_mm - a) < 1e-6))
     c.add_row("d_a2/2 + d_f1/2 + C", _f(g.check_a_21_mm, 3), _ok(abs(g.check_a_21_mm - a) < 1e-6))
     c.add_row("d_a1 − d_f1 = 2h", f"{_f(g.check_2h_1_mm, 3)} = {_f(2 * g.h_mm, 3)}", _ok(abs(g.check_2h_1_mm - 2 * g.h_mm) < 1e-6))
@@ -409,4 +435,5 @@ def print_gears(console, result, lang: str) -> None:
     _print_conditions(console, result, lang)
     _print_ratio_checks(console, result, lang)
     _print_spur(console, result, lang)
+    _print_spur_shift(console, result, lang)
     _print_stiffness(console, result, lang)

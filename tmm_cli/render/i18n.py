@@ -30,7 +30,7 @@ def pick(lang: str, en: str, ru: str) -> str:
 
 def _catalogue() -> dict[str, dict[str, str]]:
     merged: dict[str, dict[str, str]] = {}
-    for mod in ("messages_cam", "messages_gears", "messages_project", "messages_linkage"):
+    for mod in ("messages_cam", "messages_gears", "messages_project", "messages_linkage", "messages_shifted"):
         try:
             module = __import__(f"tmm_cli.render.{mod}", fromlist=["MESSAGES"])
         except ImportError:
