@@ -24,8 +24,14 @@ class TmmGroup(click.Group):
     def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True, **extra):
         if not standalone_mode:
             return super().main(args, prog_name, complete_var, standalone_mode, **extra)
+        import warnings
+
+        from .interrupt import handle_signals
+
         try:
-            rv = super().main(args, prog_name or "tmm", complete_var, False, **extra)
+            with handle_signals(), warnings.catch_warnings():
+                warnings.simplefilter("ignore", RuntimeWarning)  # numpy's overflow chatter is never shown
+                rv = super().main(args, prog_name or "tmm", complete_var, False, **extra)
         except TmmError as exc:
             _fail(str(exc))
         except click.exceptions.Abort:
@@ -33,9 +39,9 @@ class TmmGroup(click.Group):
             sys.exit(1)
         except click.ClickException as exc:
             _fail(exc.format_message())
-        except KeyboardInterrupt:
-            click.echo("tmm: interrupted", err=True)
-            sys.exit(130)
+        except KeyboardInterrupt as exc:  # Ctrl-C (130) or SIGTERM (143), see interrupt.py
+            click.echo(f"tmm: {getattr(exc, 'message', '') or 'interrupted'}", err=True)
+            sys.exit(getattr(exc, "exit_code", 130))
         except Exception as exc:  # a bug: one line, not a traceback, unless TMM_DEBUG is set
             if os.environ.get("TMM_DEBUG"):
                 raise
@@ -78,7 +84,9 @@ def _out_folder(out: str | None, number: int) -> Path:
 
 
 def _print_json(obj) -> None:
-    click.echo(json.dumps(obj, ensure_ascii=False, indent=2))
+    from .render.files import json_text
+
+    click.echo(json_text(obj))  # strict JSON: never a bare NaN or Infinity
 
 
 def _print_notes(console, notes, lang: str) -> None:
@@ -355,27 +363,32 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
 @click.option("--jobs", "-j", type=int, default=None, metavar="N", help="Parallel worker processes (default: number of cores).")
 @no_plots_option
 @click.option("--report", "report", type=click.Choice(["md", "pdf", "none"]), default="md", show_default=True, help="Per-variant report format.")
+@click.option("--csv-locale", type=click.Choice(["ru", "en"]), default=None, help="summary.csv for a Russian (';', decimal comma) or English spreadsheet (default: from --lang).")
 @lang_option
-def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, fmt, jobs, no_plots, report, lang):
+def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, fmt, jobs, no_plots, report, csv_locale, lang):
     """Teachers: run many variants or a class roster in parallel and write summary.csv."""
     from .batch import jobs_from_roster, jobs_from_spec, run_batch
-    from .render.batch_render import print_batch
+    from .render.batch_render import print_batch, print_batch_intro
+    from .render.files import ensure_writable_dir
 
     lang = _lang(lang)
     if (variants_spec is None) == (roster is None):
         raise TmmError("give exactly one of --variants (e.g. 1-68) or --roster FILE")
-    if jobs is not None and jobs < 1:
-        raise TmmError(f"--jobs is {jobs}; give 1 or more worker processes")
-    if variants_spec is not None:
-        rows, bad = jobs_from_spec(variants_spec, crank_rpm, torque_nm), []
+    out_dir = ensure_writable_dir(Path(out) if out else Path("tmm-out"))
+    console = _console(lang)
+    if variants_spec is not None:  # the whole list is checked against the table before any work
+        rows, bad = jobs_from_spec(variants_spec, crank_rpm, torque_nm, variants_file), []
+        print_batch_intro(console, lang, default_crank=crank_rpm is None)
     else:
-        rows, bad = jobs_from_roster(roster, crank_rpm, torque_nm)
-    out_dir = Path(out) if out else Path("tmm-out")
+        plan = jobs_from_roster(roster, crank_rpm, torque_nm, variants_file)
+        rows, bad = plan.jobs, plan.bad
+        print_batch_intro(console, lang, roster=plan)
     summary = run_batch(
         rows, bad, out_dir, variants_file=variants_file, lang=lang, fmt=fmt,
         plots=not no_plots, report=None if report == "none" else report, jobs_n=jobs, progress=True,
+        csv_locale=csv_locale,
     )
-    print_batch(_console(lang), summary, out_dir, lang)
+    print_batch(console, summary, out_dir, lang)
     return 1 if summary.failed else 0
 
 
@@ -433,6 +446,11 @@ from .commands.planetary import planetary_cmd  # noqa: E402
 
 cli.add_command(linkage_cmd)
 cli.add_command(planetary_cmd)
+
+# Limits on every number a user gives (docs/limits.md): ranges set on the options by name
+from .limits import apply_option_limits  # noqa: E402
+
+apply_option_limits(cli)
 
 main = cli
 

@@ -68,3 +68,61 @@ def check_int_range(value, lo: int, hi: int, what: str) -> int:
         text = str(value) if abs(value) < 10**30 else f"a {len(str(abs(value)))}-digit number"
         raise TmmError(f"{what} is {text}; give a whole number from {lo} to {hi}")
     return value
+
+
+# the command-line options -------------------------------------------------------------------------
+
+import click  # noqa: E402  (light; cli.py imports it anyway)
+
+
+class Range(click.ParamType):
+    """A click type: a finite number within [lo, hi] (a whole number when `integer`).
+
+    Unlike click.FloatRange it refuses nan and inf, and an integer too large for a float.
+    """
+
+    name = "number"
+
+    def __init__(self, lo, hi, integer: bool = False):
+        self.lo, self.hi, self.integer = lo, hi, integer
+
+    def convert(self, value, param, ctx):
+        if value is None:
+            return None
+        if self.integer:
+            try:
+                x = value if isinstance(value, int) and not isinstance(value, bool) else int(str(value).strip())
+            except ValueError:
+                self.fail(f"'{str(value)[:30]}' is not a whole number; give one from {self.lo} to {self.hi}", param, ctx)
+            if not self.lo <= x <= self.hi:
+                shown = str(x) if abs(x) < 10**15 else f"a {len(str(abs(x)))}-digit number"
+                self.fail(f"{shown} is out of range; give a whole number from {self.lo} to {self.hi} (docs/limits.md)", param, ctx)
+            return x
+        try:
+            x = float(str(value).strip().replace(",", ".")) if not isinstance(value, (int, float)) else float(value)
+        except (ValueError, OverflowError):
+            self.fail(f"'{str(value)[:30]}' is not a number; give one from {self.lo:g} to {self.hi:g}", param, ctx)
+        if not math.isfinite(x) or not self.lo <= x <= self.hi:
+            shown = f"{x:g}" if math.isfinite(x) else str(value)[:30]
+            self.fail(f"{shown} is out of range; give a number from {self.lo:g} to {self.hi:g} (docs/limits.md)", param, ctx)
+        return x
+
+
+OPTION_LIMITS = {
+    "crank_rpm": Range(*CRANK_RPM),
+    "torque_nm": Range(*TORQUE_NM),
+    "tolerance_pct": Range(*TOLERANCE_PCT),
+    "step_deg": Range(*STEP_DEG),
+    "planets": Range(*PLANETS, integer=True),
+    "rtol_pct": Range(*RTOL_PCT),
+    "jobs": Range(*JOBS, integer=True),
+}
+
+
+def apply_option_limits(command) -> None:
+    """Give every option of `command` (and its sub-commands) named in OPTION_LIMITS its range."""
+    for p in getattr(command, "params", ()):
+        if isinstance(p, click.Option) and p.name in OPTION_LIMITS:
+            p.type = OPTION_LIMITS[p.name]
+    for sub in getattr(command, "commands", {}).values():
+        apply_option_limits(sub)
