@@ -405,11 +405,14 @@ def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, f
 @torque_option
 @click.option("--rtol", "rtol_pct", type=float, default=3.0, show_default=True, metavar="PCT", help="Tolerance for graphical quantities [%].")
 @click.option("--keys", "show_keys", is_flag=True, help="List the answer keys and exit.")
+@click.option("--sheet", "sheet", type=click.Choice(["3", "4", "all"]), default="all", show_default=True, help="Which sheet's required keys a student must give.")
+@click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Group check: folder for check.csv and check.md (default ./tmm-out).")
+@click.option("--csv-locale", type=click.Choice(["ru", "en"]), default=None, help="check.csv for a Russian (';', decimal comma) or English spreadsheet (default: from --lang).")
 @json_option
 @lang_option
-def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, torque_nm, rtol_pct, show_keys, as_json, lang):
+def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, torque_nm, rtol_pct, show_keys, sheet, out, csv_locale, as_json, lang):
     """Teachers: check a student's numbers against the computed ones."""
-    from .check import check_group, check_one, read_answers
+    from .check import SHEETS, check_group, check_one, read_answers
     from .render.check_render import print_check, print_group, print_keys
 
     lang = _lang(lang)
@@ -417,21 +420,34 @@ def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, t
     if show_keys:
         print_keys(console, lang)
         return 0
-    if rtol_pct <= 0:
-        raise TmmError(f"--rtol is {rtol_pct:g}; give a positive tolerance in percent")
+    sheets = SHEETS if sheet == "all" else (sheet,)
     if roster is not None or answers_dir is not None:
         if roster is None or answers_dir is None:
             raise TmmError("group check needs both --roster FILE and --answers-dir DIR")
-        group = check_group(roster, answers_dir, variants_file=variants_file, crank_rpm=crank_rpm, torque_nm=torque_nm, rtol_pct=rtol_pct)
+        from .render.check_render import group_csv, group_markdown
+        from .render.files import ensure_writable_dir, write_owned
+
+        out_dir = ensure_writable_dir(Path(out) if out else Path("tmm-out"))
+        group = check_group(roster, answers_dir, variants_file=variants_file, crank_rpm=crank_rpm, torque_nm=torque_nm,
+                            rtol_pct=rtol_pct, sheets=sheets)
+        write_owned(out_dir, "check.csv", group_csv(group, lang, csv_locale or lang))
+        write_owned(out_dir, "check.md", group_markdown(group, lang, rtol_pct, sheets).encode("utf-8"))
         if as_json:
             _print_json(group.to_json())
         else:
+            from rich.markup import escape
+
+            from .render.i18n import pick
+
+            console.print("[cyan]ℹ[/] " + escape(pick(lang, f"Roster {roster}: read as {group.roster_encoding}.",
+                                                         f"Список {roster}: кодировка {group.roster_encoding}.")))
             print_group(console, group, lang)
+            _print_files(console, out_dir, ["check.csv", "check.md"], lang)
         return 0 if group.all_passed else 1
     if variant is None or answers is None:
         raise TmmError("give --variant N and --answers FILE (or --roster FILE with --answers-dir DIR)")
     v = _variant(variant, variants_file)
-    report = check_one(v, read_answers(answers), crank_rpm=crank_rpm, torque_nm=torque_nm, rtol_pct=rtol_pct)
+    report = check_one(v, read_answers(answers), crank_rpm=crank_rpm, torque_nm=torque_nm, rtol_pct=rtol_pct, sheets=sheets)
     if as_json:
         _print_json(report.to_json())
     else:
