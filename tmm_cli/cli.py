@@ -26,7 +26,7 @@ class TmmGroup(click.Group):
             return super().main(args, prog_name, complete_var, standalone_mode, **extra)
         import warnings
 
-        from .interrupt import handle_signals
+        from .interrupt import Stopped, handle_signals
 
         try:
             with handle_signals(), warnings.catch_warnings():
@@ -39,6 +39,9 @@ class TmmGroup(click.Group):
             sys.exit(1)
         except click.ClickException as exc:
             _fail(exc.format_message())
+        except Stopped as exc:  # Ctrl-C (130) or SIGTERM (143) during a command, see interrupt.py
+            click.echo(f"tmm: {exc.message}", err=True)
+            sys.exit(exc.exit_code)
         except KeyboardInterrupt as exc:  # Ctrl-C (130) or SIGTERM (143), see interrupt.py
             click.echo(f"tmm: {getattr(exc, 'message', '') or 'interrupted'}", err=True)
             sys.exit(getattr(exc, "exit_code", 130))
@@ -48,6 +51,14 @@ class TmmGroup(click.Group):
             click.echo(f"tmm: internal error: {exc.__class__.__name__}: {exc} (run with TMM_DEBUG=1 for details)", err=True)
             sys.exit(1)
         sys.exit(rv if isinstance(rv, int) else 0)
+
+    def invoke(self, ctx):
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt as exc:  # past click's Abort ("Aborted!", exit 1): exit 130 / 143
+            from .interrupt import Stopped
+
+            raise Stopped(exc) from None
 
 
 def _fail(message: str) -> None:

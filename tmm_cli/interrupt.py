@@ -61,3 +61,13 @@ def worker_init() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, _worker_exit)
     warnings.simplefilter("ignore", RuntimeWarning)
+
+
+class Stopped(Exception):
+    """An :class:`Interrupted` (or plain KeyboardInterrupt) carried past click, which would turn
+    it into "Aborted!" with exit status 1."""
+
+    def __init__(self, exc: BaseException):
+        super().__init__(str(exc))
+        self.message = getattr(exc, "message", "") or "interrupted"
+        self.exit_code = getattr(exc, "exit_code", 130)
