@@ -248,11 +248,7 @@ def test_hostile_toml_answers(tmp_path, content, words):
 
 def test_a_50_mb_answers_file_is_refused_at_once(tmp_path):
     f = tmp_path / "a.csv"
-    with open(f, "w") as fh:
-        fh.write("key,value\n")
-        line = "unknown_key_%07d,1\n"
-        for i in range(2_500_000):
-            fh.write(line % i)
+    f.write_text("key,value\n" + "unknown_key_0000001,1\n" * 2_500_000)
     assert f.stat().st_size > 50e6
     res = run("check", "--variant", 17, "--answers", f)
     one_line_error(res, "limit")
