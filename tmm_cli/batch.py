@@ -426,18 +426,22 @@ def prepare_out_dir(out_dir: Path, jobs: list[BatchJob]) -> None:
 
 
 def _cleanup_after_stop(out_dir: Path, jobs: list[BatchJob], done: set[int]) -> None:
-    """After the workers were stopped: their staging folders and the empty folders they made."""
-    from .render.files import remove_stale_staging
+    """After the workers were stopped: their staging folders, and the folders of rows whose result
+    never reached the summary (a worker killed while moving its files in, or just after), so the
+    summary describes exactly the folders beside it."""
+    from .render.files import remove_stale_staging, remove_written_tree
 
     parents = {out_dir} | {(out_dir / j.folder).parent for j in jobs}
     for p in parents:
         remove_stale_staging(p, only_dead=True)
     for i, j in enumerate(jobs):
-        if i not in done and "/" in j.folder:
-            try:
-                os.rmdir(out_dir / j.folder.split("/")[0])
-            except OSError:
-                pass
+        if i not in done:
+            remove_written_tree(out_dir, j.folder)
+            if "/" in j.folder:
+                try:
+                    os.rmdir(out_dir / j.folder.split("/")[0])
+                except OSError:
+                    pass
 
 
 def _stop_pool(pool) -> None:
