@@ -191,7 +191,7 @@ def _table(path, rows):
 @pytest.mark.parametrize(
     "over, words",
     [
-        (dict(n_cam_rpm="1e308"), ["n_cam_rpm", "100 to 5000"]),
+        (dict(n_cam_rpm="1e308"), ["n_cam_rpm", "300 to 5000"]),
         (dict(n_cam_rpm="1e-9"), ["n_cam_rpm"]),
         (dict(s_max_m="1e308"), ["s_max_m"]),
         (dict(scheme="3", s_max_m="", gamma_max_deg="20", l_bc_m="1e300"), ["l_bc_m"]),
@@ -307,3 +307,40 @@ def test_csv_cells_never_start_a_formula_nor_split_a_row(text):
     assert not cell[:1] in ("=", "+", "-", "@", "\t", "\r")
     assert not any(ch in cell for ch in "\n\r\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029\x00")
     assert len(data.splitlines()) == 2  # even str.splitlines (which splits on U+2028, FF …)
+
+
+# any bytes: a result or one TmmError, never another exception --------------------------------------
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.binary(max_size=300) | st.text(max_size=200).map(lambda t: t.encode("utf-8")))
+def test_any_bytes_as_answers_or_roster(tmp_path_factory, data):
+    from tmm_cli.batch import jobs_from_roster
+    from tmm_cli.check import read_answers
+    from tmm_cli.errors import TmmError
+
+    d = tmp_path_factory.mktemp("fuzz")
+    for name in ("a.toml", "a.csv"):
+        (d / name).write_bytes(data)
+        try:
+            answers = read_answers(d / name)
+        except TmmError as exc:
+            assert "\n" not in str(exc)
+        else:
+            assert all(isinstance(v, (int, float)) and math.isfinite(v) for v in answers.values())
+    (d / "r.csv").write_bytes(b"student,variant\n" + data)
+    try:
+        plan = jobs_from_roster(d / "r.csv", None, None)
+    except TmmError:
+        pass
+    else:
+        for job in plan.jobs:
+            assert "/" not in job.folder.split("/variant-")[0]
+
+
+def test_roster_over_the_row_limit(tmp_path):
+    roster = tmp_path / "r.csv"
+    roster.write_text("student,variant\n" + "".join(f"S{i},17\n" for i in range(1001)))
+    res = run("batch", "--roster", roster, "--out", tmp_path / "o")
+    one_line_error(res, "1000")
+    assert not (tmp_path / "o").exists()

@@ -87,3 +87,18 @@ def test_project_stops_on_sigterm_and_leaves_no_staging(tmp_path):
     assert err.decode().strip().splitlines() == ["tmm: interrupted"]
     assert [q for q in (tmp_path / "o").rglob("*") if ".tmp-" in q.name] == []
     assert not (tmp_path / "o" / "variant-17").exists()
+
+
+def test_two_batches_never_write_into_one_folder_at_once(tmp_path):
+    out = tmp_path / "o"
+    a = _start(["batch", "--variants", "1-6", "--no-plots", "--jobs", 1, "--out", out, "--report", "none"], tmp_path)
+    assert _wait_for(lambda: (out / ".tmm-files.json").exists() or a.poll() is not None)
+    b = subprocess.run(TMM + ["batch", "--variants", "7", "--no-plots", "--out", str(out)], capture_output=True, text=True,
+                       cwd=tmp_path)
+    a.communicate(timeout=120)
+    if a.returncode is not None and b.returncode == 0:
+        pytest.skip("the first batch finished before the second started")
+    assert b.returncode == 2 and "another tmm batch" in b.stderr and len(b.stderr.strip().splitlines()) == 1
+    assert a.returncode == 0
+    rows = list(csv.DictReader((out / "summary.csv").open(encoding="utf-8")))
+    assert [r["variant"] for r in rows] == [str(n) for n in range(1, 7)]

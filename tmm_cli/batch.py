@@ -483,7 +483,25 @@ def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_
         from .variants import load_table
 
         load_table(variants_file)
-    prepare_out_dir(out_dir, jobs)
+    from .render.files import lock_dir, make_dirs
+
+    created = make_dirs(out_dir)
+    try:
+        with lock_dir(out_dir, wait=False, what="tmm batch"):  # two batches never mix one folder
+            prepare_out_dir(out_dir, jobs)
+            return _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale)
+    except TmmError:
+        from .render.files import remove_empty_dirs
+
+        remove_empty_dirs(created)
+        raise
+
+
+def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale) -> BatchSummary:
+    import signal
+
+    from .interrupt import Interrupted
+
     n_workers = max(1, min(jobs_n or os.cpu_count() or 1, len(jobs) or 1))
     args = (str(out_dir), variants_file, lang, fmt, plots, report)
     results: dict[int, dict] = {}

@@ -22,7 +22,7 @@ RTOL_PCT = (0.01, 50.0)  # tmm check tolerance [%]; default 3
 JOBS = (1, 64)  # batch worker processes
 
 # Table 1.2 rows (--variants-file) -----------------------------------------------------------
-N_CAM_RPM = (100.0, 5000.0)  # |n_k| [rpm]; Table 1.2 has 700…2500
+N_CAM_RPM = (300.0, 5000.0)  # |n_k| [rpm]; Table 1.2 has 700…2500 (below 300 the spur pair outgrows 160 teeth)
 S_MAX_M = (0.001, 1.0)  # stroke S_max [m]; Table 1.2 has 0.02…0.25
 L_BC_M = (0.005, 2.0)  # rocker length l_BC [m]; Table 1.2 has 0.05…0.3
 

@@ -99,6 +99,31 @@ def _is_real_file(p: Path) -> bool:
         return False
 
 
+@contextmanager
+def lock_dir(folder: Path, wait: bool = True, what: str = "tmm"):
+    """Hold an exclusive lock on the folder itself (flock on its descriptor; no lock file).
+
+    With `wait` False a folder another run holds gives a TmmError at once. Where the system has
+    no flock (Windows) the block runs unlocked.
+    """
+    try:
+        import fcntl
+    except ImportError:  # pragma: no cover - Windows
+        yield
+        return
+    fd = os.open(folder, os.O_RDONLY)
+    try:
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | (0 if wait else fcntl.LOCK_NB))
+        except BlockingIOError:
+            raise TmmError(f"another {what} is writing into {folder}; wait for it to finish or choose another --out") from None
+        except OSError:
+            pass  # a file system without locks: go on unlocked
+        yield
+    finally:
+        os.close(fd)
+
+
 # the manifest ------------------------------------------------------------------------------------
 
 
@@ -219,22 +244,14 @@ def staged_dir(target: Path, owns: tuple[str, ...] = ()) -> Iterator[Path]:
         (tmp / STAGING_MARK).write_text(f"{os.getpid()}\n")
         yield tmp
         fresh = {item.name for item in tmp.iterdir()} - {STAGING_MARK}
-        old = read_manifest(target) if _is_real_dir(target) else {"files": set(), "dirs": set()}
-        _refuse_foreign(target, fresh, old["files"])
         try:
             if not os.path.lexists(target):
                 target.mkdir()
                 created.append(target)
-            stale = {n for n in old["files"] - fresh if any(fnmatch.fnmatchcase(n, pat) for pat in owns)}
-            write_manifest(target, old["files"] | fresh, old["dirs"])  # a crash below leaves a true superset
-            for name in sorted(fresh):
-                os.replace(tmp / name, target / name)
-            for name in stale:
-                if _is_real_file(target / name):
-                    (target / name).unlink()
-            write_manifest(target, (old["files"] - stale) | fresh, old["dirs"])
         except OSError as exc:
-            raise TmmError(f"cannot write into {target} ({exc.strerror}); choose a writable folder with --out") from None
+            raise TmmError(f"cannot create {target} ({exc.strerror}); choose a writable folder with --out") from None
+        with lock_dir(target):  # two runs into one folder: one commits after the other
+            _commit(tmp, target, fresh, owns)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         remove_empty_dirs(created)
@@ -242,6 +259,25 @@ def staged_dir(target: Path, owns: tuple[str, ...] = ()) -> Iterator[Path]:
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
         _ACTIVE.discard(str(tmp))
+
+
+def _commit(tmp: Path, target: Path, fresh: set[str], owns) -> None:
+    """Move the staged files into `target` and drop this program's stale files (manifest ∩ owns)."""
+    if not _is_real_dir(target):
+        raise TmmError(f"{target} is not a real folder; choose another --out")
+    old = read_manifest(target)
+    _refuse_foreign(target, fresh, old["files"])
+    try:
+        stale = {n for n in old["files"] - fresh if any(fnmatch.fnmatchcase(n, pat) for pat in owns)}
+        write_manifest(target, old["files"] | fresh, old["dirs"])  # a crash below leaves a true superset
+        for name in sorted(fresh):
+            os.replace(tmp / name, target / name)
+        for name in stale:
+            if _is_real_file(target / name):
+                (target / name).unlink()
+        write_manifest(target, (old["files"] - stale) | fresh, old["dirs"])
+    except OSError as exc:
+        raise TmmError(f"cannot write into {target} ({exc.strerror}); choose a writable folder with --out") from None
 
 
 def write_owned(folder: Path, name: str, data: bytes) -> Path:
