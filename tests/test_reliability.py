@@ -344,3 +344,20 @@ def test_roster_over_the_row_limit(tmp_path):
     res = run("batch", "--roster", roster, "--out", tmp_path / "o")
     one_line_error(res, "1000")
     assert not (tmp_path / "o").exists()
+
+
+def test_docs_limits_agree_with_limits_py():
+    """docs/limits.md states every limit with the value tmm_cli/limits.py enforces."""
+    from tmm_cli import limits
+
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "limits.md").read_text(encoding="utf-8")
+    rows = {ln.rsplit("|", 2)[1].strip(" `"): ln for ln in doc.splitlines()
+            if ln.startswith("| ") and ln.rsplit("|", 2)[1].strip().startswith("`")}
+    names = [n for n in dir(limits) if n.isupper() and n != "OPTION_LIMITS"]
+    assert sorted(rows) == sorted(names)
+    for name in names:
+        value = getattr(limits, name)
+        cell = rows[name].split("|")[2]
+        for v in (value if isinstance(value, tuple) else (value,)):
+            text = str(v) if isinstance(v, int) else f"{v:g}"
+            assert text in cell.replace(" ", ""), (name, v, cell)

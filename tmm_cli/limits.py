@@ -37,7 +37,6 @@ VARIANT_SPEC_CHARS = 1000  # length of a --variants list
 VARIANT_SPEC_COUNT = 1000  # variants in one batch
 NAME_CHARS = 100  # a student's name as shown (longer is refused in its roster row)
 FILE_NAME_CHARS = 64  # a student's name as a file or folder name (cut to this length)
-TEXT_CELL_CHARS = 200  # any other text cell read from a file
 
 
 def check_range(value, lo, hi, what: str, hint: str = "") -> float:
