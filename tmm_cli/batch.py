@@ -128,6 +128,7 @@ class BatchJob:
     folder: str = ""  # relative to the output folder: variant-17 or Ivanov/variant-17
     group: str = ""
     fname: str = ""  # the student's file name (names.file_name), '' for a --variants run
+    line: int = 0  # the roster line (rows are reported in roster order)
 
 
 @dataclass(frozen=True)
@@ -289,11 +290,12 @@ def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float
                                f"(names differing only in case or punctuation share one file); make the names differ")
             seen[key] = (lineno, student)
         except TmmError as exc:
-            bad.append(_failure_row(BatchJob(label=label, variant=variant, group=group), f"roster line {lineno}: {exc}"))
+            bad.append(_failure_row(BatchJob(label=label, variant=variant, group=group, line=lineno),
+                                    f"roster line {lineno}: {exc}"))
             continue
         n = int(variant)
         jobs.append(BatchJob(label=student, variant=str(n), crank_rpm=crank, torque_nm=torque,
-                             folder=f"{fname}/variant-{n:02d}", group=group, fname=fname))
+                             folder=f"{fname}/variant-{n:02d}", group=group, fname=fname, line=lineno))
     return Roster(jobs, bad, Path(path), src.encoding_name, delimiter(src.text))
 
 
@@ -302,7 +304,8 @@ def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float
 
 def _failure_row(job: BatchJob, reason: str, status: str = "failed") -> dict:
     row = {c: "" for c in SUMMARY_COLUMNS}
-    row.update(student=job.label, group=job.group, variant=job.variant, status=status, error=reason, warnings=())
+    row.update(student=job.label, group=job.group, variant=job.variant, status=status, error=reason, warnings=(),
+               line=job.line)
     return row
 
 
@@ -348,6 +351,7 @@ def summary_row(job: BatchJob, doc: dict, folder: str, codes=()) -> dict:
         "warnings": flags,
         "folder": folder,
         "error": "",
+        "line": job.line,
     }
     return row
 
@@ -553,6 +557,7 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
         if bar is not None:
             bar.stop()
     rows = list(bad) + [results.get(i) or _failure_row(job, "", status="not run") for i, job in enumerate(jobs)]
+    rows.sort(key=lambda r: r.get("line") or 0)  # roster order (stable: --variants rows keep theirs)
     write_summary_csv(out_dir / "summary.csv", rows, lang, csv_locale)
     failed = tuple(r for r in rows if r["status"] != "ok")
     not_run = sum(r["status"] == "not run" for r in rows)

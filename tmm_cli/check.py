@@ -338,18 +338,20 @@ def check_group(roster, answers_dir, *, variants_file=None, crank_rpm=None, torq
     if not d.is_dir():
         raise TmmError(f"answers folder {d} does not exist; give the folder with one file per student")
     plan = jobs_from_roster(roster, crank_rpm, torque_nm, variants_file)
-    reports = [CheckReport(label=b["student"], variant=int(b["variant"]) if str(b["variant"]).isdigit() else 0,
-                           rtol_pct=rtol_pct, rows=(), error=b["error"], group=b.get("group", "")) for b in plan.bad]
+    reports = [(b["line"], CheckReport(label=b["student"], variant=int(b["variant"]) if str(b["variant"]).isdigit() else 0,
+                                       rtol_pct=rtol_pct, rows=(), error=b["error"], group=b.get("group", "")))
+               for b in plan.bad]
     for job in plan.jobs:
         try:
             v = get_variant(job.variant, variants_file)
             found = answers_file(d, job.fname)
             if found is None:
                 raise TmmError(f"no answers file {job.fname}.toml or {job.fname}.csv in {d}")
-            reports.append(check_one(v, read_answers(found), crank_rpm=job.crank_rpm, torque_nm=job.torque_nm,
-                                     rtol_pct=rtol_pct, label=job.label, sheets=sheets, group=job.group))
+            reports.append((job.line, check_one(v, read_answers(found), crank_rpm=job.crank_rpm, torque_nm=job.torque_nm,
+                                                rtol_pct=rtol_pct, label=job.label, sheets=sheets, group=job.group)))
         except TmmError as exc:
             number = int(job.variant) if job.variant.isdigit() else 0
-            reports.append(CheckReport(label=job.label, variant=number, rtol_pct=rtol_pct, rows=(), error=str(exc),
-                                       group=job.group))
-    return GroupReport(tuple(reports), plan.encoding, plan.delimiter)
+            reports.append((job.line, CheckReport(label=job.label, variant=number, rtol_pct=rtol_pct, rows=(),
+                                                  error=str(exc), group=job.group)))
+    reports.sort(key=lambda lr: lr[0])  # roster order
+    return GroupReport(tuple(r for _, r in reports), plan.encoding, plan.delimiter)
