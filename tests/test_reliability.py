@@ -57,13 +57,18 @@ def test_project_keeps_the_users_files_in_its_folder(tmp_path):
     assert set(written) | set(mine) | {MANIFEST} == {p.name for p in folder.iterdir()}
 
 
-def test_cam_into_the_current_folder_keeps_cam_notes(tmp_path):
+def test_cam_into_the_current_folder_keeps_cam_notes(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
     (tmp_path / "variant-17").mkdir()
     (tmp_path / "variant-17" / "cam_notes.txt").write_text("mine")
-    res = run("cam", "--variant", 17, "--out", tmp_path, "--no-plots")
-    assert res.exit_code == 0
-    res = run("cam", "--variant", 17, "--out", tmp_path, "--no-plots")
+    (tmp_path / "cam_thesis.txt").write_text("mine too")
+    for args in ((), ("--no-plots",)):
+        res = run("cam", "--variant", 17, "--out", ".", *args)
+        assert res.exit_code == 0, res.stderr
     assert (tmp_path / "variant-17" / "cam_notes.txt").read_text() == "mine"
+    assert (tmp_path / "cam_thesis.txt").read_text() == "mine too"
+    assert not any(p.name.startswith("cam_") and p.suffix == ".png" for p in (tmp_path / "variant-17").iterdir())
+    assert no_staging_left(tmp_path)
 
 
 def test_a_file_tmm_did_not_write_is_never_overwritten(tmp_path):

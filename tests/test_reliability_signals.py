@@ -44,6 +44,9 @@ def _group_gone(pgid) -> bool:
                                                 (signal.SIGINT, 130, False)])
 def test_batch_stops_at_once(tmp_path, sig, code, to_group):
     out = tmp_path / "o"
+    # an earlier complete run into the same folder: its folders must not outlive the next run
+    first = _start(["batch", "--variants", "41-42", "--jobs", 1, "--out", out, "--no-plots", "--report", "none"], tmp_path)
+    assert first.wait(timeout=120) == 0 and (out / "variant-42" / "results.json").is_file()
     p = _start(["batch", "--variants", "1-40", "--jobs", 2, "--out", out, "--no-plots", "--report", "md"], tmp_path)
     # wait until at least one row is done and others are under way
     assert _wait_for(lambda: len(list(out.glob("variant-*/results.json"))) >= 3 or p.poll() is not None)
