@@ -429,7 +429,7 @@ def prepare_out_dir(out_dir: Path, jobs: list[BatchJob]) -> None:
     write_manifest(out_dir, files, {j.folder for j in jobs})
 
 
-def _cleanup_after_stop(out_dir: Path, jobs: list[BatchJob], done: set[int]) -> None:
+def _cleanup_after_stop(out_dir: Path, jobs: list[BatchJob], done: set[int], dead_pids=()) -> None:
     """After the workers were stopped: their staging folders, and the folders of rows whose result
     never reached the summary (a worker killed while moving its files in, or just after), so the
     summary describes exactly the folders beside it."""
@@ -437,7 +437,7 @@ def _cleanup_after_stop(out_dir: Path, jobs: list[BatchJob], done: set[int]) -> 
 
     parents = {out_dir} | {(out_dir / j.folder).parent for j in jobs}
     for p in parents:
-        remove_stale_staging(p, only_dead=True)
+        remove_stale_staging(p, only_dead=True, dead_pids=set(dead_pids))
     for i, j in enumerate(jobs):
         if i not in done:
             remove_written_tree(out_dir, j.folder)
@@ -448,11 +448,12 @@ def _cleanup_after_stop(out_dir: Path, jobs: list[BatchJob], done: set[int]) -> 
                     pass
 
 
-def _stop_pool(pool) -> None:
-    """Stop the worker processes now: SIGTERM (they remove their staging folder), then SIGKILL."""
+def _stop_pool(pool) -> list[int]:
+    """Stop the worker processes now: SIGTERM (they remove their staging folder), then SIGKILL;
+    returns their pids."""
     import time
 
-    procs = list(getattr(pool, "_processes", {}).values())
+    procs = list((getattr(pool, "_processes", None) or {}).values())
     for p in procs:
         try:
             p.terminate()
@@ -466,6 +467,7 @@ def _stop_pool(pool) -> None:
             p.kill()
             p.join(1.0)
     pool.shutdown(wait=False, cancel_futures=True)
+    return [p.pid for p in procs]
 
 
 def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_file: str | None = None,
@@ -547,9 +549,8 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
         stopped = exc
         old = {s: signal.signal(s, signal.SIG_IGN) for s in (signal.SIGINT, signal.SIGTERM)}
         try:
-            if pool is not None:
-                _stop_pool(pool)
-            _cleanup_after_stop(out_dir, jobs, set(results))
+            pids = _stop_pool(pool) if pool is not None else []
+            _cleanup_after_stop(out_dir, jobs, set(results), pids)
         finally:
             for s, h in old.items():
                 signal.signal(s, h)

@@ -170,7 +170,12 @@ def _refuse_foreign(target: Path, names, manifest: set[str]) -> None:
 # staging -----------------------------------------------------------------------------------------
 
 
+STALE_AFTER_S = 24 * 3600  # a staging folder this old is stale whoever wrote it
+
+
 def _pid_alive(pid: int) -> bool:
+    if os.name == "nt":  # os.kill(pid, 0) would terminate the process on Windows: trust the age alone
+        return True
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
@@ -185,8 +190,11 @@ def is_our_staging(p: Path) -> bool:
     return p.name.startswith(".") and ".tmp-" in p.name and _is_real_dir(p) and _is_real_file(p / STAGING_MARK)
 
 
-def remove_stale_staging(parent: Path, only_dead: bool = True) -> list[Path]:
-    """Remove staging folders of ours in `parent` whose writer is gone (or all of ours)."""
+def remove_stale_staging(parent: Path, only_dead: bool = True, dead_pids=()) -> list[Path]:
+    """Remove staging folders of ours in `parent` whose writer is gone (a dead pid, one of
+    `dead_pids`, or older than a day), or all of ours when `only_dead` is False."""
+    import time
+
     removed = []
     try:
         entries = list(Path(parent).iterdir())
@@ -199,7 +207,11 @@ def remove_stale_staging(parent: Path, only_dead: bool = True) -> list[Path]:
             pid = int((p / STAGING_MARK).read_text().split()[0])
         except (OSError, ValueError, IndexError):
             pid = -1
-        if only_dead and pid > 0 and pid != os.getpid() and _pid_alive(pid):
+        try:
+            old_enough = time.time() - os.lstat(p / STAGING_MARK).st_mtime > STALE_AFTER_S
+        except OSError:
+            old_enough = False
+        if only_dead and pid > 0 and pid != os.getpid() and pid not in dead_pids and not old_enough and _pid_alive(pid):
             continue
         if pid == os.getpid() and str(p) in _ACTIVE and only_dead:
             continue
