@@ -3,7 +3,6 @@ the CLI, asserting the exit status, the one stderr line and the files left behin
 
 import json
 import math
-import os
 from pathlib import Path
 
 import pytest

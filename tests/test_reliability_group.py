@@ -4,7 +4,6 @@ foreign file; the summaries neutralise formulas; names map to files by one share
 import csv
 import io
 import json
-from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
@@ -155,3 +154,13 @@ def test_a_foreign_summary_csv_is_refused_before_any_work(tmp_path):
     assert res.exit_code == 2 and "summary.csv" in res.stderr and len(res.stderr.strip().splitlines()) == 1
     assert sorted(p.name for p in out.iterdir()) == ["summary.csv"]
     assert (out / "summary.csv").read_text() == "my marks"
+
+
+def test_a_foreign_check_csv_is_refused_before_any_work(tmp_path):
+    out = tmp_path / "o"
+    out.mkdir()
+    (out / "check.md").write_text("my notes")
+    (tmp_path / "r.csv").write_text("student,variant\nA,17\n")
+    res = run("check", "--roster", tmp_path / "r.csv", "--answers-dir", tmp_path, "--out", out)
+    assert res.exit_code == 2 and "check.md" in res.stderr and len(res.stderr.strip().splitlines()) == 1
+    assert sorted(p.name for p in out.iterdir()) == ["check.md"] and (out / "check.md").read_text() == "my notes"

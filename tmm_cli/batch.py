@@ -415,11 +415,11 @@ def write_summary_csv(path: Path, rows: list[dict], lang: str = "en", csv_locale
 def prepare_out_dir(out_dir: Path, jobs: list[BatchJob]) -> None:
     """Before any work: refuse a foreign summary.csv, remove the folders of the previous batch
     run (only the files tmm wrote) and the old summary, record the folders this run will write."""
-    from .render.files import _refuse_foreign, make_dirs, read_manifest, remove_written_tree, write_manifest
+    from .render.files import refuse_foreign, make_dirs, read_manifest, remove_written_tree, write_manifest
 
     make_dirs(out_dir)
     man = read_manifest(out_dir)
-    _refuse_foreign(out_dir, ["summary.csv"], man["files"])
+    refuse_foreign(out_dir, ["summary.csv"], man["files"])
     for rel in sorted(man["dirs"]):
         remove_written_tree(out_dir, rel)
     files = set(man["files"])
@@ -479,10 +479,6 @@ def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_
     summary of the finished rows is written with the rest marked "not run", and Interrupted is
     raised again with a message saying so.
     """
-    import signal
-
-    from .interrupt import Interrupted
-
     csv_locale = csv_locale or lang
     out_dir = Path(out_dir)
     if variants_file is not None:  # fail once, early, on a broken table rather than in every row

@@ -436,9 +436,11 @@ def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, t
         if roster is None or answers_dir is None:
             raise TmmError("group check needs both --roster FILE and --answers-dir DIR")
         from .render.check_render import group_csv, group_markdown
-        from .render.files import ensure_writable_dir, write_owned
+        from .render.files import ensure_writable_dir, read_manifest, refuse_foreign, write_owned
 
         out_dir = ensure_writable_dir(Path(out) if out else Path("tmm-out"))
+        if out_dir.is_dir():  # a check.csv of the teacher's own is refused before any work
+            refuse_foreign(out_dir, ["check.csv", "check.md"], read_manifest(out_dir)["files"])
         group = check_group(roster, answers_dir, variants_file=variants_file, crank_rpm=crank_rpm, torque_nm=torque_nm,
                             rtol_pct=rtol_pct, sheets=sheets)
         write_owned(out_dir, "check.csv", group_csv(group, lang, csv_locale or lang))

@@ -159,7 +159,7 @@ def write_manifest(folder: Path, files=(), dirs=()) -> None:
     os.replace(tmp, folder / MANIFEST)
 
 
-def _refuse_foreign(target: Path, names, manifest: set[str]) -> None:
+def refuse_foreign(target: Path, names, manifest: set[str]) -> None:
     for name in sorted(names):
         dst = target / name
         if os.path.lexists(dst) and (name not in manifest or not _is_real_file(dst)):
@@ -278,7 +278,7 @@ def _commit(tmp: Path, target: Path, fresh: set[str], owns) -> None:
     if not _is_real_dir(target):
         raise TmmError(f"{target} is not a real folder; choose another --out")
     old = read_manifest(target)
-    _refuse_foreign(target, fresh, old["files"])
+    refuse_foreign(target, fresh, old["files"])
     try:
         stale = {n for n in old["files"] - fresh if any(fnmatch.fnmatchcase(n, pat) for pat in owns)}
         write_manifest(target, old["files"] | fresh, old["dirs"])  # a crash below leaves a true superset
@@ -302,7 +302,7 @@ def write_owned(folder: Path, name: str, data: bytes) -> Path:
         raise TmmError(f"{folder} is a symbolic link; tmm writes only into real folders: choose another --out")
     make_dirs(folder)
     man = read_manifest(folder)
-    _refuse_foreign(folder, [name], man["files"])
+    refuse_foreign(folder, [name], man["files"])
     tmp = folder / f".{name}.tmp-{os.getpid()}"
     try:
         write_manifest(folder, man["files"] | {name}, man["dirs"])
