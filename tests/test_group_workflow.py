@@ -127,3 +127,11 @@ def test_answers_in_cp1251_and_utf16(tmp_path):
         res = run("check", "--variant", 17, "--answers", f, "--sheet", 3, "--json")
         assert res.exit_code == 0, (enc, res.stderr)
         assert json.loads(res.output)["passed"]
+
+
+def test_roster_rows_without_crank_speed_are_counted_once(tmp_path):
+    roster = tmp_path / "r.csv"
+    roster.write_text("student,variant,crank_rpm\nA,1,95\nB,2,\nC,3,\n")
+    res = run("batch", "--roster", roster, "--no-plots", "--jobs", 1, "--report", "none", "--out", tmp_path / "o", "--lang", "ru")
+    assert res.exit_code == 0, res.stderr
+    assert sum("2 строки без n_кр" in ln for ln in res.output.splitlines()) == 1

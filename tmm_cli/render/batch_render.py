@@ -26,8 +26,21 @@ def print_batch_intro(console, lang: str, *, roster=None, default_crank: bool = 
         sep = pick(lang, "';'", "«;»") if roster.delimiter == ";" else pick(lang, "','", "«,»")
         console.print("[cyan]ℹ[/] " + escape(pick(lang, f"Roster {roster.path}: read as {roster.encoding}, separator {sep}.",
                                                      f"Список {roster.path}: кодировка {roster.encoding}, разделитель {sep}.")))
+    from ..gears.drive import DEFAULT_CRANK_RPM
+
+    if roster is not None and roster.jobs and any(j.crank_rpm is None for j in roster.jobs):
+        from .numbers import plural
+
+        n = sum(j.crank_rpm is None for j in roster.jobs)
+        if n == len(roster.jobs):
+            default_crank = True
+        else:
+            rows = plural(n, lang, {"one": "row", "other": "rows"} if lang != "ru" else
+                          {"one": "строка", "few": "строки", "many": "строк", "other": "строки"})
+            console.print("[cyan]ℹ[/] " + pick(
+                lang, f"{rows} without crank_rpm use the book's crank speed n_cr = {DEFAULT_CRANK_RPM:g} rpm (§2.4).",
+                f"{rows} без n_кр: принята частота вращения кривошипа по пособию n_кр = {DEFAULT_CRANK_RPM:g} об/мин (п. 2.4)."))
     if default_crank:
-        from ..gears.drive import DEFAULT_CRANK_RPM
 
         console.print("[cyan]ℹ[/] " + pick(
             lang, f"Every row uses the book's crank speed n_cr = {DEFAULT_CRANK_RPM:g} rpm (§2.4); give --crank-rpm "
