@@ -365,3 +365,23 @@ def test_docs_limits_agree_with_limits_py():
         for v in (value if isinstance(value, tuple) else (value,)):
             text = str(v) if isinstance(v, int) else f"{v:g}"
             assert text in cell.replace(" ", ""), (name, v, cell)
+
+
+NUMBERS = st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.integers(-10**25, 10**25),
+                    st.sampled_from(["1e308", "-0", "1e-9", "0x10", "1,5", "", " ", "nan", "9" * 400]))
+
+
+@settings(max_examples=20, deadline=None)
+@given(crank=NUMBERS | st.floats(0.5, 3500), torque=NUMBERS | st.floats(0, 2e5), tol=NUMBERS | st.floats(0, 25),
+       planets=NUMBERS | st.integers(0, 14))
+def test_any_numbers_give_a_design_or_one_line(tmp_path_factory, crank, torque, tol, planets):
+    out = tmp_path_factory.mktemp("n")
+    res = run("gears", "--variant", 17, "--json", "--no-plots", "--out", out, "--crank-rpm", crank, "--torque", torque,
+              "--tolerance", tol, "--planets", planets)
+    assert res.exit_code in (0, 2), (res.exit_code, res.stderr)
+    if res.exit_code == 0:
+        doc = json.loads(res.output, parse_constant=lambda c: pytest.fail(f"bare {c}"))
+        assert doc["gears"]["spur"]["z2"] < 1000
+    else:
+        assert len(res.stderr.strip().splitlines()) == 1 and "internal error" not in res.stderr
+        assert tree(out) == []
