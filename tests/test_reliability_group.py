@@ -164,3 +164,18 @@ def test_a_foreign_check_csv_is_refused_before_any_work(tmp_path):
     res = run("check", "--roster", tmp_path / "r.csv", "--answers-dir", tmp_path, "--out", out)
     assert res.exit_code == 2 and "check.md" in res.stderr and len(res.stderr.strip().splitlines()) == 1
     assert sorted(p.name for p in out.iterdir()) == ["check.md"] and (out / "check.md").read_text() == "my notes"
+
+
+def test_answers_file_found_whatever_its_case_or_normal_form(tmp_path, answers17):
+    import unicodedata
+
+    nfd = unicodedata.normalize("NFD", "Йодов")  # macOS keeps file names decomposed
+    res, by = _group(tmp_path, "student,variant,crank_rpm\nIvanov,17,95\nЙодов,17,95\n",
+                     {"ivanov.TOML": answers17, f"{nfd}.toml": answers17})
+    assert by["Ivanov"]["passed"] and by["Йодов"]["passed"]
+
+
+def test_an_empty_roster_is_one_line(tmp_path):
+    (tmp_path / "r.csv").write_text("student,variant\n\n")
+    res = run("check", "--roster", tmp_path / "r.csv", "--answers-dir", tmp_path, "--out", tmp_path / "o")
+    assert res.exit_code == 2 and "no students" in res.stderr and not (tmp_path / "o").exists()

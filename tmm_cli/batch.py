@@ -296,6 +296,8 @@ def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float
         n = int(variant)
         jobs.append(BatchJob(label=student, variant=str(n), crank_rpm=crank, torque_nm=torque,
                              folder=f"{fname}/variant-{n:02d}", group=group, fname=fname, line=lineno))
+    if not jobs and not bad:
+        raise TmmError(f"roster {path} has a header but no students; add one row per student")
     return Roster(jobs, bad, Path(path), src.encoding_name, delimiter(src.text))
 
 

@@ -313,11 +313,24 @@ def answers_file(answers_dir: Path, fname: str) -> Path | None:
     that is a symbolic link or resolves outside `answers_dir` is refused, so the check never
     reads a file outside the folder the teacher named.
     """
+    from .names import collision_key
+
     root = Path(answers_dir).resolve()
+    by_key = None
     for ext in (".toml", ".csv"):
         cand = Path(answers_dir) / f"{fname}{ext}"
         if not os.path.lexists(cand):
-            continue
+            if by_key is None:  # Ivanov.toml saved as ivanov.TOML: accept one file that differs only in case
+                by_key = {}
+                with os.scandir(answers_dir) as it:
+                    for i, entry in enumerate(it):
+                        if i >= 10000:
+                            break
+                        by_key.setdefault(collision_key(entry.name), []).append(entry.name)
+            same = by_key.get(collision_key(cand.name), [])
+            if len(same) != 1:
+                continue
+            cand = Path(answers_dir) / same[0]
         if os.path.islink(cand) or cand.resolve().parent != root:
             raise TmmError(f"answers file {cand.name} is a link or lies outside {answers_dir}; "
                            f"put the student's own file there")
