@@ -359,6 +359,7 @@ def summary_row(job: BatchJob, doc: dict, folder: str, codes=()) -> dict:
 
 
 _FIGURE_CACHE: dict = {}  # per worker process: reducer drawings shared by rows with one crank speed
+_FIGURE_CACHE_SIZE = 8  # drawings of this many reducers kept (a roster of 1000 crank speeds stays small)
 
 
 def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, fmt: str, plots: bool, report: str | None) -> dict:
@@ -375,6 +376,8 @@ def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, f
         title = TitleFields(student=job.label, group=job.group) if job.fname else None
         doc, _ = write_project_folder(result, folder, lang, fmt=fmt, plots=plots, report=report,
                                       figure_cache=_FIGURE_CACHE, title=title)
+        while len(_FIGURE_CACHE) > _FIGURE_CACHE_SIZE:
+            _FIGURE_CACHE.pop(next(iter(_FIGURE_CACHE)))
         codes = [n.code for n in result.notes if n.level == "warning"]
         return summary_row(job, doc, str(folder), codes)
     except TmmError as exc:
@@ -545,7 +548,10 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
             pool.shutdown(wait=True)
     except KeyboardInterrupt as exc:
         stopped = exc
-        old = {s: signal.signal(s, signal.SIG_IGN) for s in (signal.SIGINT, signal.SIGTERM)}
+        try:  # a second Ctrl-C must not cut the clean-up short
+            old = {s: signal.signal(s, signal.SIG_IGN) for s in (signal.SIGINT, signal.SIGTERM)}
+        except ValueError:  # not the main thread
+            old = {}
         try:
             pids = _stop_pool(pool) if pool is not None else []
             _cleanup_after_stop(out_dir, jobs, set(results), pids)
