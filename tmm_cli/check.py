@@ -8,8 +8,9 @@ angles …) within a relative tolerance, 3 % by default.
 
 from __future__ import annotations
 
-import csv
 import math
+import os
+import re
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -70,6 +71,17 @@ ANSWER_KEYS: tuple[AnswerKey, ...] = (
 )
 KEYS_BY_NAME = {k.key: k for k in ANSWER_KEYS}
 
+# The keys a student must give for each sheet (those the variant computes: z_planet2 only for
+# scheme 2, the stage-2 keys only for a two-stage reducer, e_mm for a translating follower,
+# l_oc_mm for a rocker). A missing required key fails the check.
+REQUIRED = {
+    "4": ("n_motor_rpm", "z_sun", "z_planet", "z_planet2", "z_ring", "planets",
+          "z_sun_2", "z_planet_2", "z_ring_2", "planets_2", "z1", "z2", "eps_alpha"),
+    "3": ("r0_mm", "e_mm", "l_oc_mm"),
+}
+SHEETS = ("3", "4")
+_KEY = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,39}")
+
 
 @dataclass(frozen=True)
 class CheckRow:
@@ -77,7 +89,7 @@ class CheckRow:
     expected: object
     given: object
     deviation_pct: float | None
-    status: str  # "pass", "pass (book)", "fail", "unknown key", "not computed"
+    status: str  # "pass", "pass (book)", "pass (valid set)", "fail", "missing", "unknown key", "not computed"
 
 
 @dataclass(frozen=True)
@@ -88,10 +100,16 @@ class CheckReport:
     rows: tuple[CheckRow, ...]
     error: str = ""
     notes: tuple = ()  # Note objects the comparison rests on (e.g. the assumed crank speed)
+    required: tuple[str, ...] = ()  # the keys this variant requires (see REQUIRED)
+    group: str = ""
 
     @property
     def passed(self) -> bool:
         return not self.error and bool(self.rows) and all(r.status.startswith("pass") for r in self.rows)
+
+    @property
+    def missing(self) -> tuple[str, ...]:
+        return tuple(r.key for r in self.rows if r.status == "missing")
 
     def to_json(self) -> dict:
         return {
@@ -100,6 +118,8 @@ class CheckReport:
             "rtol_pct": self.rtol_pct,
             "passed": self.passed,
             "error": self.error or None,
+            "required": list(self.required),
+            "missing": list(self.missing),
             "assumptions": [note_text(n, "en") for n in self.notes],
             "rows": [r.__dict__ for r in self.rows],
         }
@@ -108,6 +128,8 @@ class CheckReport:
 @dataclass(frozen=True)
 class GroupReport:
     reports: tuple[CheckReport, ...] = field(default=())
+    roster_encoding: str = ""
+    roster_delimiter: str = ","
 
     @property
     def all_passed(self) -> bool:
@@ -117,51 +139,68 @@ class GroupReport:
         return {"all_passed": self.all_passed, "students": [r.to_json() for r in self.reports]}
 
 
-def _number(raw, where: str):
-    if isinstance(raw, bool):
-        raise TmmError(f"{where}: '{raw}' is not a number")
-    if isinstance(raw, (int, float)):
-        return raw
-    text = str(raw).strip().replace(",", ".")
-    try:
-        value = float(text)
-    except ValueError:
-        raise TmmError(f"{where}: '{raw}' is not a number; write a plain number") from None
-    return int(value) if value.is_integer() and "." not in text and "e" not in text.lower() else value
-
-
 def csv_delimiter(lines: list[str]) -> str:
     """',' or ';' (what a spreadsheet saves under a Russian locale), from the first non-empty line."""
-    first = next((ln for ln in lines if ln.strip()), "")
-    return ";" if first.count(";") > first.count(",") else ","
+    from .tabular import delimiter
+
+    return delimiter("\n".join(lines))
+
+
+def _answer_key(raw: str, where: str) -> str:
+    key = raw.strip()
+    if not _KEY.fullmatch(key):
+        raise TmmError(f"{where}: the key is not a name like r0_mm (letters, digits, '_'); see `tmm check --keys`")
+    return key
 
 
 def read_answers(path: str | Path) -> dict[str, object]:
-    """Read a student's answers: TOML (`r0_mm = 41.2`) or CSV (`key,value` rows)."""
+    """Read a student's answers: TOML (`r0_mm = 41.2`) or CSV (`key,value` rows, ',' or ';').
+
+    UTF-8, UTF-16 or cp1251; at most ANSWERS_BYTES and ANSWERS_ROWS keys; a key twice, a value that
+    is not a finite number, or a nested table is an error. Errors name the line and the key,
+    never the content of the file.
+    """
+    from .limits import ANSWERS_BYTES, ANSWERS_ROWS
+    from .tabular import parse_number, read_text, rows
+
     p = Path(path)
-    try:
-        raw = p.read_bytes()
-    except OSError as exc:
-        raise TmmError(f"answers file {p} cannot be read ({exc.strerror or exc.__class__.__name__}); check the path") from None
-    text = raw.decode("utf-8-sig", errors="replace")
+    src = read_text(p, f"answers file {p.name}", ANSWERS_BYTES)
+    what = f"answers file {p.name}"
     if p.suffix.lower() == ".csv":
-        lines = text.splitlines()
-        rows = list(csv.reader(lines, delimiter=csv_delimiter(lines)))
-        if rows and [c.strip().lower() for c in rows[0][:2]] == ["key", "value"]:
-            rows = rows[1:]
-        answers = {}
-        for i, r in enumerate(rows, start=1):
-            if not r or not "".join(r).strip():
+        lines = rows(src.text, ANSWERS_ROWS, what)
+        answers: dict[str, object] = {}
+        first_line: dict[str, int] = {}
+        header_done = False
+        for i, r in enumerate(lines, start=1):
+            if not r:
                 continue
+            if not header_done:
+                header_done = True
+                if [c.strip().lower() for c in r[:2]] in (["key", "value"], ["ключ", "значение"]):
+                    continue
             if len(r) < 2:
-                raise TmmError(f"answers file {p} line {i}: expected key,value")
-            answers[r[0].strip()] = _number(r[1], f"answers file {p} line {i} ({r[0].strip()})")
+                raise TmmError(f"{what} line {i}: expected key,value")
+            key = _answer_key(r[0], f"{what} line {i}")
+            if key in answers:
+                raise TmmError(f"{what} line {i}: key {key} appears twice (first on line {first_line[key]}); keep one")
+            answers[key] = parse_number(r[1], f"{what} line {i} ({key})")
+            first_line[key] = i
         return answers
     try:
-        data = tomllib.loads(text)
+        data = tomllib.loads(src.text)
     except tomllib.TOMLDecodeError as exc:
-        raise TmmError(f"answers file {p} is not valid TOML ({exc}); write lines like r0_mm = 41.2, with a dot for decimals") from None
-    return {k: (_number(v, f"answers file {p} ({k})") if not isinstance(v, dict) else v) for k, v in data.items()}
+        raise TmmError(f"{what} is not valid TOML ({exc}); write lines like r0_mm = 41.2, with a dot for decimals") from None
+    except (RecursionError, ValueError, MemoryError):
+        raise TmmError(f"{what} is not valid TOML (too deeply nested or a number too long); write lines like r0_mm = 41.2") from None
+    if len(data) > ANSWERS_ROWS:
+        raise TmmError(f"{what} has {len(data)} keys, over the limit of {ANSWERS_ROWS}; write only the answers")
+    answers = {}
+    for k, v in data.items():
+        key = _answer_key(k, what)
+        if isinstance(v, (dict, list)):
+            raise TmmError(f"{what} ({key}): write a plain number, not a table or list")
+        answers[key] = parse_number(v, f"{what} ({key})")
+    return answers
 
 
 def _lookup(doc: dict, path: tuple):
@@ -174,8 +213,14 @@ def _lookup(doc: dict, path: tuple):
     return cur
 
 
-def compare(doc: dict, answers: dict, rtol_pct: float) -> tuple[CheckRow, ...]:
-    """Compare answers with a project JSON document; one row per given key, unknown keys flagged."""
+def required_keys(doc: dict, sheets=SHEETS) -> tuple[str, ...]:
+    """The keys required for `sheets` that this variant computes (see REQUIRED)."""
+    return tuple(k for sheet in sorted(sheets) for k in REQUIRED[sheet] if _lookup(doc, KEYS_BY_NAME[k].path) is not None)
+
+
+def compare(doc: dict, answers: dict, rtol_pct: float, required=()) -> tuple[CheckRow, ...]:
+    """Compare answers with a project JSON document: one row per given key (unknown keys flagged),
+    then one "missing" row per required key not given."""
     rows = []
     for key, given in answers.items():
         spec = KEYS_BY_NAME.get(key)
@@ -196,7 +241,10 @@ def compare(doc: dict, answers: dict, rtol_pct: float) -> tuple[CheckRow, ...]:
         book = _lookup(doc, spec.book_path) if spec.book_path else None
         if status == "fail" and book is not None and abs(_deviation_pct(doc, spec, book, given)) <= rtol_pct + 1e-9:
             status = "pass (book)"  # the student followed the book's two-line construction
-        rows.append(CheckRow(key, expected, given, dev, status))
+        rows.append(CheckRow(key, expected, given, None if not math.isfinite(dev) else dev, status))
+    for key in required:
+        if key not in answers:
+            rows.append(CheckRow(key, _lookup(doc, KEYS_BY_NAME[key].path), None, None, "missing"))
     return tuple(rows)
 
 
@@ -207,20 +255,25 @@ def _deviation_pct(doc: dict, spec: AnswerKey, expected, given) -> float:
     return 100.0 * diff / scale if scale > 0 else (0.0 if diff == 0 else math.inf)
 
 
-def check_one(variant, answers: dict, *, crank_rpm=None, torque_nm=None, rtol_pct: float = 3.0, label: str = "", lang: str = "en") -> CheckReport:
-    """Run the project for the variant and compare the answers with it."""
+def check_one(variant, answers: dict, *, crank_rpm=None, torque_nm=None, rtol_pct: float = 3.0, label: str = "",
+              lang: str = "en", sheets=SHEETS, group: str = "") -> CheckReport:
+    """Run the project for the variant and compare the answers with it; the keys `sheets`
+    require (REQUIRED) and the student omitted fail as "missing"."""
+    from .limits import RTOL_PCT, check_range
     from .project import run_project
     from .render.report import project_document
 
+    rtol_pct = check_range(rtol_pct, *RTOL_PCT, "--rtol", " per cent")
     if not answers:
         raise TmmError("the answers file has no values; write lines like r0_mm = 41.2 (see `tmm check --keys`)")
     result = run_project(variant, crank_rpm=crank_rpm, torque_nm=torque_nm)
     doc = project_document(result, lang)
-    rows = accept_valid_reducer(compare(doc, answers, rtol_pct), answers, result.gears)
+    required = required_keys(doc, sheets)
+    rows = accept_valid_reducer(compare(doc, answers, rtol_pct, required), answers, result.gears)
     # the tooth numbers depend on the crank speed: say when the book's 220 rpm was assumed
     notes = tuple(n for n in result.gears.notes if n.code == "crank_default")
     return CheckReport(label=label or f"variant {variant.number}", variant=variant.number, rtol_pct=rtol_pct,
-                       rows=rows, notes=notes)
+                       rows=rows, notes=notes, required=required, group=group)
 
 
 STAGE_KEYS = (("z_sun", "z_planet", "z_planet2", "z_ring", "planets"), ("z_sun_2", "z_planet_2", None, "z_ring_2", "planets_2"))
@@ -257,26 +310,65 @@ def accept_valid_reducer(rows: tuple[CheckRow, ...], answers: dict, gears) -> tu
                  if r.key in used and r.status == "fail" else r for r in rows)
 
 
-def check_group(roster, answers_dir, *, variants_file=None, crank_rpm=None, torque_nm=None, rtol_pct: float = 3.0) -> GroupReport:
-    """Check every student of a roster against STUDENT.toml / STUDENT.csv in `answers_dir`."""
+def answers_file(answers_dir: Path, fname: str) -> Path | None:
+    """The student's answers file ``<fname>.toml`` or ``<fname>.csv`` inside `answers_dir`, or None.
+
+    `fname` comes from :func:`tmm_cli.names.file_name` (one path component, no '..'); a candidate
+    that is a symbolic link or resolves outside `answers_dir` is refused, so the check never
+    reads a file outside the folder the teacher named.
+    """
+    from .names import collision_key
+
+    root = Path(answers_dir).resolve()
+    by_key = None
+    for ext in (".toml", ".csv"):
+        cand = Path(answers_dir) / f"{fname}{ext}"
+        if not os.path.lexists(cand):
+            if by_key is None:  # Ivanov.toml saved as ivanov.TOML: accept one file that differs only in case
+                by_key = {}
+                with os.scandir(answers_dir) as it:
+                    for i, entry in enumerate(it):
+                        if i >= 10000:
+                            break
+                        by_key.setdefault(collision_key(entry.name), []).append(entry.name)
+            same = by_key.get(collision_key(cand.name), [])
+            if len(same) != 1:
+                continue
+            cand = Path(answers_dir) / same[0]
+        if os.path.islink(cand) or cand.resolve().parent != root:
+            raise TmmError(f"answers file {cand.name} is a link or lies outside {answers_dir}; "
+                           f"put the student's own file there")
+        if not cand.is_file():
+            raise TmmError(f"answers file {cand.name} is not a regular file")
+        return cand
+    return None
+
+
+def check_group(roster, answers_dir, *, variants_file=None, crank_rpm=None, torque_nm=None, rtol_pct: float = 3.0,
+                sheets=SHEETS) -> GroupReport:
+    """Check every student of a roster against ``<file name>.toml`` / ``.csv`` in `answers_dir`
+    (the name-to-file rule of :func:`tmm_cli.names.file_name`, as `tmm batch` names folders)."""
     from .batch import jobs_from_roster
     from .variants import get_variant
 
     d = Path(answers_dir)
     if not d.is_dir():
         raise TmmError(f"answers folder {d} does not exist; give the folder with one file per student")
-    jobs, bad = jobs_from_roster(roster, crank_rpm, torque_nm)
-    reports = [CheckReport(label=b["student"], variant=0, rtol_pct=rtol_pct, rows=(), error=b["error"]) for b in bad]
-    for job in jobs:
+    plan = jobs_from_roster(roster, crank_rpm, torque_nm, variants_file)
+    reports = [(b["line"], CheckReport(label=b["student"], variant=int(b["variant"]) if str(b["variant"]).isdigit() else 0,
+                                       rtol_pct=rtol_pct, rows=(), error=b["error"], group=b.get("group", "")))
+               for b in plan.bad]
+    for job in plan.jobs:
         try:
             v = get_variant(job.variant, variants_file)
-            candidates = [d / f"{job.label}.toml", d / f"{job.label}.csv", d / f"{job.folder}.toml", d / f"{job.folder}.csv"]
-            found = next((c for c in candidates if c.is_file()), None)
+            found = answers_file(d, job.fname)
             if found is None:
-                raise TmmError(f"no answers file {job.label}.toml or .csv in {d}")
-            reports.append(check_one(v, read_answers(found), crank_rpm=job.crank_rpm, torque_nm=job.torque_nm,
-                                     rtol_pct=rtol_pct, label=job.label))
+                raise TmmError(f"no answers file {job.fname}.toml or {job.fname}.csv in {d}")
+            reports.append((job.line, check_one(v, read_answers(found), crank_rpm=job.crank_rpm, torque_nm=job.torque_nm,
+                                                rtol_pct=rtol_pct, label=job.label, sheets=sheets, group=job.group)))
         except TmmError as exc:
             number = int(job.variant) if job.variant.isdigit() else 0
-            reports.append(CheckReport(label=job.label, variant=number, rtol_pct=rtol_pct, rows=(), error=str(exc)))
-    return GroupReport(tuple(reports))
+            reports.append((job.line, CheckReport(label=job.label, variant=number, rtol_pct=rtol_pct, rows=(),
+                                                  error=str(exc), group=job.group)))
+    reports.sort(key=lambda lr: lr[0])  # roster order
+    return GroupReport(tuple(r for _, r in reports), plan.encoding, plan.delimiter)

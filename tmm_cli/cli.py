@@ -29,8 +29,14 @@ class TmmGroup(click.Group):
     def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True, **extra):
         if not standalone_mode:
             return super().main(args, prog_name, complete_var, standalone_mode, **extra)
+        import warnings
+
+        from .interrupt import Stopped, handle_signals
+
         try:
-            rv = super().main(args, prog_name or "tmm", complete_var, False, **extra)
+            with handle_signals(), warnings.catch_warnings():
+                warnings.simplefilter("ignore", RuntimeWarning)  # numpy's overflow chatter is never shown
+                rv = super().main(args, prog_name or "tmm", complete_var, False, **extra)
         except TmmError as exc:
             _fail(str(exc))
         except click.exceptions.Abort:
@@ -38,15 +44,26 @@ class TmmGroup(click.Group):
             sys.exit(1)
         except click.ClickException as exc:
             _fail(exc.format_message())
-        except KeyboardInterrupt:
-            click.echo("tmm: interrupted", err=True)
-            sys.exit(130)
+        except Stopped as exc:  # Ctrl-C (130) or SIGTERM (143) during a command, see interrupt.py
+            click.echo(f"tmm: {exc.message}", err=True)
+            sys.exit(exc.exit_code)
+        except KeyboardInterrupt as exc:  # Ctrl-C (130) or SIGTERM (143), see interrupt.py
+            click.echo(f"tmm: {getattr(exc, 'message', '') or 'interrupted'}", err=True)
+            sys.exit(getattr(exc, "exit_code", 130))
         except Exception as exc:  # a bug: one line, not a traceback, unless TMM_DEBUG is set
             if os.environ.get("TMM_DEBUG"):
                 raise
             click.echo(f"tmm: internal error: {exc.__class__.__name__}: {exc} (run with TMM_DEBUG=1 for details)", err=True)
             sys.exit(1)
         sys.exit(rv if isinstance(rv, int) else 0)
+
+    def invoke(self, ctx):
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt as exc:  # past click's Abort ("Aborted!", exit 1): exit 130 / 143
+            from .interrupt import Stopped
+
+            raise Stopped(exc) from None
 
 
 def _fail(message: str) -> None:
@@ -83,7 +100,9 @@ def _out_folder(out: str | None, number: int) -> Path:
 
 
 def _print_json(obj) -> None:
-    click.echo(json.dumps(obj, ensure_ascii=False, indent=2))
+    from .render.files import json_text
+
+    click.echo(json_text(obj))  # strict JSON: never a bare NaN or Infinity
 
 
 def _print_notes(console, notes, lang: str) -> None:
@@ -375,27 +394,32 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
 @click.option("--jobs", "-j", type=int, default=None, metavar="N", help="Parallel worker processes (default: number of cores).")
 @no_plots_option
 @click.option("--report", "report", type=click.Choice(["md", "pdf", "none"]), default="md", show_default=True, help="Per-variant report format.")
+@click.option("--csv-locale", type=click.Choice(["ru", "en"]), default=None, help="summary.csv for a Russian (';', decimal comma) or English spreadsheet (default: from --lang).")
 @lang_option
-def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, fmt, jobs, no_plots, report, lang):
+def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, fmt, jobs, no_plots, report, csv_locale, lang):
     """Teachers: run many variants or a class roster in parallel and write summary.csv."""
     from .batch import jobs_from_roster, jobs_from_spec, run_batch
-    from .render.batch_render import print_batch
+    from .render.batch_render import print_batch, print_batch_intro
+    from .render.files import ensure_writable_dir
 
     lang = _lang(lang)
     if (variants_spec is None) == (roster is None):
         raise TmmError("give exactly one of --variants (e.g. 1-68) or --roster FILE")
-    if jobs is not None and jobs < 1:
-        raise TmmError(f"--jobs is {jobs}; give 1 or more worker processes")
-    if variants_spec is not None:
-        rows, bad = jobs_from_spec(variants_spec, crank_rpm, torque_nm), []
+    out_dir = ensure_writable_dir(Path(out) if out else Path("tmm-out"))
+    console = _console(lang)
+    if variants_spec is not None:  # the whole list is checked against the table before any work
+        rows, bad = jobs_from_spec(variants_spec, crank_rpm, torque_nm, variants_file), []
+        print_batch_intro(console, lang, default_crank=crank_rpm is None)
     else:
-        rows, bad = jobs_from_roster(roster, crank_rpm, torque_nm)
-    out_dir = Path(out) if out else Path("tmm-out")
+        plan = jobs_from_roster(roster, crank_rpm, torque_nm, variants_file)
+        rows, bad = plan.jobs, plan.bad
+        print_batch_intro(console, lang, roster=plan)
     summary = run_batch(
         rows, bad, out_dir, variants_file=variants_file, lang=lang, fmt=fmt,
         plots=not no_plots, report=None if report == "none" else report, jobs_n=jobs, progress=True,
+        csv_locale=csv_locale,
     )
-    print_batch(_console(lang), summary, out_dir, lang)
+    print_batch(console, summary, out_dir, lang)
     return 1 if summary.failed else 0
 
 
@@ -412,11 +436,14 @@ def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, f
 @torque_option
 @click.option("--rtol", "rtol_pct", type=float, default=3.0, show_default=True, metavar="PCT", help="Tolerance for graphical quantities [%].")
 @click.option("--keys", "show_keys", is_flag=True, help="List the answer keys and exit.")
+@click.option("--sheet", "sheet", type=click.Choice(["3", "4", "all"]), default="all", show_default=True, help="Which sheet's required keys a student must give.")
+@click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Group check: folder for check.csv and check.md (default ./tmm-out).")
+@click.option("--csv-locale", type=click.Choice(["ru", "en"]), default=None, help="check.csv for a Russian (';', decimal comma) or English spreadsheet (default: from --lang).")
 @json_option
 @lang_option
-def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, torque_nm, rtol_pct, show_keys, as_json, lang):
+def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, torque_nm, rtol_pct, show_keys, sheet, out, csv_locale, as_json, lang):
     """Teachers: check a student's numbers against the computed ones."""
-    from .check import check_group, check_one, read_answers
+    from .check import SHEETS, check_group, check_one, read_answers
     from .render.check_render import print_check, print_group, print_keys
 
     lang = _lang(lang)
@@ -424,21 +451,36 @@ def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, t
     if show_keys:
         print_keys(console, lang)
         return 0
-    if rtol_pct <= 0:
-        raise TmmError(f"--rtol is {rtol_pct:g}; give a positive tolerance in percent")
+    sheets = SHEETS if sheet == "all" else (sheet,)
     if roster is not None or answers_dir is not None:
         if roster is None or answers_dir is None:
             raise TmmError("group check needs both --roster FILE and --answers-dir DIR")
-        group = check_group(roster, answers_dir, variants_file=variants_file, crank_rpm=crank_rpm, torque_nm=torque_nm, rtol_pct=rtol_pct)
+        from .render.check_render import group_csv, group_markdown
+        from .render.files import ensure_writable_dir, read_manifest, refuse_foreign, write_owned
+
+        out_dir = ensure_writable_dir(Path(out) if out else Path("tmm-out"))
+        if out_dir.is_dir():  # a check.csv of the teacher's own is refused before any work
+            refuse_foreign(out_dir, ["check.csv", "check.md"], read_manifest(out_dir)["files"])
+        group = check_group(roster, answers_dir, variants_file=variants_file, crank_rpm=crank_rpm, torque_nm=torque_nm,
+                            rtol_pct=rtol_pct, sheets=sheets)
+        write_owned(out_dir, "check.csv", group_csv(group, lang, csv_locale or lang))
+        write_owned(out_dir, "check.md", group_markdown(group, lang, rtol_pct, sheets).encode("utf-8"))
         if as_json:
             _print_json(group.to_json())
         else:
+            from rich.markup import escape
+
+            from .render.i18n import pick
+
+            console.print("[cyan]ℹ[/] " + escape(pick(lang, f"Roster {roster}: read as {group.roster_encoding}.",
+                                                         f"Список {roster}: кодировка {group.roster_encoding}.")))
             print_group(console, group, lang)
+            _print_files(console, out_dir, ["check.csv", "check.md"], lang)
         return 0 if group.all_passed else 1
     if variant is None or answers is None:
         raise TmmError("give --variant N and --answers FILE (or --roster FILE with --answers-dir DIR)")
     v = _variant(variant, variants_file)
-    report = check_one(v, read_answers(answers), crank_rpm=crank_rpm, torque_nm=torque_nm, rtol_pct=rtol_pct)
+    report = check_one(v, read_answers(answers), crank_rpm=crank_rpm, torque_nm=torque_nm, rtol_pct=rtol_pct, sheets=sheets)
     if as_json:
         _print_json(report.to_json())
     else:
@@ -453,6 +495,11 @@ from .commands.planetary import planetary_cmd  # noqa: E402
 
 cli.add_command(linkage_cmd)
 cli.add_command(planetary_cmd)
+
+# Limits on every number a user gives (docs/limits.md): ranges set on the options by name
+from .limits import apply_option_limits  # noqa: E402
+
+apply_option_limits(cli)
 
 main = cli
 

@@ -14,6 +14,7 @@ from importlib import resources
 from pathlib import Path
 
 from .errors import TmmError
+from .limits import L_BC_M, N_CAM_RPM, S_MAX_M, VARIANTS_FILE_BYTES, VARIANTS_ROWS
 
 COLUMNS = (
     "variant",
@@ -138,6 +139,9 @@ def parse_row(row: dict, where: str) -> Variant:
     n_k = _require(_num(row, "n_cam_rpm", where), "n_cam_rpm", where)
     if n_k == 0:
         raise TmmError(f"{where}: n_cam_rpm is 0; give the cam speed (negative = clockwise)")
+    if not N_CAM_RPM[0] <= abs(n_k) <= N_CAM_RPM[1]:
+        raise TmmError(f"{where}: n_cam_rpm is {n_k:g}; give a cam speed of {N_CAM_RPM[0]:g} to {N_CAM_RPM[1]:g} rpm "
+                       f"either way (negative = clockwise; docs/limits.md)")
     l_bc = _num(row, "l_bc_m", where)
     s_max = _num(row, "s_max_m", where)
     gamma = _num(row, "gamma_max_deg", where)
@@ -146,6 +150,8 @@ def parse_row(row: dict, where: str) -> Variant:
             raise TmmError(f"{where}: scheme {scheme} is a rocker; fill in l_bc_m")
         if l_bc <= 0:
             raise TmmError(f"{where}: l_bc_m is {l_bc:g}; the rocker length must be positive")
+        if not L_BC_M[0] <= l_bc <= L_BC_M[1]:
+            raise TmmError(f"{where}: l_bc_m is {l_bc:g}; give a rocker length of {L_BC_M[0]:g} to {L_BC_M[1]:g} m (docs/limits.md)")
         if s_max is not None:
             raise TmmError(f"{where}: scheme {scheme} is a rocker; give gamma_max_deg, leave s_max_m empty")
         stroke = _require(gamma, "gamma_max_deg", where)
@@ -159,6 +165,8 @@ def parse_row(row: dict, where: str) -> Variant:
         stroke = _require(s_max, "s_max_m", where)
         if stroke <= 0:
             raise TmmError(f"{where}: s_max_m is {stroke:g}; the stroke must be positive")
+        if not S_MAX_M[0] <= stroke <= S_MAX_M[1]:
+            raise TmmError(f"{where}: s_max_m is {stroke:g}; give a stroke of {S_MAX_M[0]:g} to {S_MAX_M[1]:g} m (docs/limits.md)")
     phases = {}
     for field in ("phi_rise_deg", "phi_far_dwell_deg", "phi_return_deg"):
         phases[field] = _require(_num(row, field, where), field, where)
@@ -188,7 +196,9 @@ def parse_row(row: dict, where: str) -> Variant:
 
 def parse_table(text: str, source: str) -> dict[int, Variant]:
     """Parse a whole Table 1.2 CSV text; `source` names the file in errors."""
-    reader = csv.DictReader(text.splitlines())
+    import io
+
+    reader = csv.DictReader(io.StringIO(text, newline=""))
     header = [h.strip() for h in (reader.fieldnames or [])]
     missing = [c for c in COLUMNS if c not in header]
     if missing:
@@ -197,6 +207,8 @@ def parse_table(text: str, source: str) -> dict[int, Variant]:
         )
     table: dict[int, Variant] = {}
     for lineno, row in enumerate(reader, start=2):
+        if len(table) >= VARIANTS_ROWS:
+            raise TmmError(f"{source}: more than {VARIANTS_ROWS} variants, over the limit; split the table (docs/limits.md)")
         row = {(k or "").strip(): v for k, v in row.items()}
         if not any((v or "").strip() for v in row.values() if isinstance(v, str)):
             continue
@@ -218,14 +230,29 @@ def load_table(path: str | Path | None = None) -> dict[int, Variant]:
     """Load Table 1.2 (the book's, or a teacher's file of the same format)."""
     if path is None:
         return parse_table(default_table_text(), "Table 1.2")
+    from .tabular import read_text
+
     p = Path(path)
+    key = _file_key(p)
+    if key is not None and key in _LOADED:
+        return _LOADED[key]
+    text = read_text(p, f"variants file {p}", VARIANTS_FILE_BYTES).text
+    table = parse_table(text, str(p))
+    if key is not None:
+        _LOADED.clear()
+        _LOADED[key] = table
+    return table
+
+
+_LOADED: dict = {}  # the last --variants-file parsed, by (path, size, mtime): a batch reads it once per process
+
+
+def _file_key(p: Path):
     try:
-        text = p.read_text(encoding="utf-8-sig")
-    except FileNotFoundError:
-        raise TmmError(f"variants file {p} does not exist; check the path") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise TmmError(f"variants file {p} cannot be read ({exc.__class__.__name__}); check the file") from None
-    return parse_table(text, str(p))
+        st = p.stat()
+    except OSError:
+        return None
+    return (str(p.resolve()), st.st_size, st.st_mtime_ns)
 
 
 def get_variant(number: int | str, path: str | Path | None = None) -> Variant:

@@ -12,7 +12,13 @@ STATUS = {
     "fail": ("[red]FAIL[/]", "[red]НЕВЕРНО[/]"),
     "unknown key": ("[yellow]unknown key[/]", "[yellow]неизвестный ключ[/]"),
     "not computed": ("[yellow]not computed for this variant[/]", "[yellow]не вычисляется для варианта[/]"),
+    "missing": ("[red]missing[/] (required)", "[red]нет ответа[/] (обязательный)"),
 }
+# the per-key verdict in check.csv / check.md and the group table
+SHORT = {"pass": ("pass", "верно"), "pass (book)": ("pass (book)", "верно (пособие)"),
+         "pass (valid set)": ("pass (valid set)", "верно (другой набор)"), "fail": ("FAIL", "НЕВЕРНО"),
+         "unknown key": ("unknown key", "неизвестный ключ"), "not computed": ("not computed", "не вычисляется"),
+         "missing": ("missing", "нет ответа")}
 
 
 def _val(v) -> str:
@@ -31,10 +37,22 @@ def print_keys(console, lang: str) -> None:
     t = Table(title=pick(lang, "Answer keys for `tmm check`", "Ключи ответов для `tmm check`"), header_style="bold")
     t.add_column(pick(lang, "Key", "Ключ"))
     t.add_column(pick(lang, "Compared", "Сравнение"))
+    t.add_column(pick(lang, "Required", "Обязателен"))
     t.add_column(pick(lang, "Meaning", "Смысл"))
+    from ..check import REQUIRED
+
     for k in ANSWER_KEYS:
-        t.add_row(k.key, pick(lang, "exact", "точно") if k.kind == "int" else pick(lang, "within tolerance", "с допуском"), pick(lang, k.en, k.ru))
+        sheet = next((s for s, keys in REQUIRED.items() if k.key in keys), "")
+        req = pick(lang, f"sheet {sheet}", f"лист {sheet}") if sheet else "—"
+        t.add_row(k.key, pick(lang, "exact", "точно") if k.kind == "int" else pick(lang, "within tolerance", "с допуском"),
+                  req, pick(lang, k.en, k.ru))
     console.print(t)
+    console.print(pick(lang, "A required key is needed when the variant computes it (z_planet2: scheme 2; *_2: a two-stage "
+                             "reducer; e_mm: translating follower; l_oc_mm: rocker); a missing one fails the check. "
+                             "--sheet 3 or --sheet 4 checks one sheet.",
+                       "Обязательный ключ нужен, если он вычисляется для варианта (z_planet2 — схема 2; *_2 — двухступенчатый "
+                       "редуктор; e_mm — поступательный толкатель; l_oc_mm — коромысло); без него проверка не пройдена. "
+                       "--sheet 3 или --sheet 4 проверяет один лист."))
     console.print(pick(lang, "TOML example:  r0_mm = 41.5   z_sun = 40   eps_alpha = 1.58",
                        "Пример TOML:  r0_mm = 41.5   z_sun = 40   eps_alpha = 1.58"))
 
@@ -63,19 +81,87 @@ def print_check(console, report, lang: str) -> None:
                        f"Итог: {verdict} (верно {n_pass} из {len(report.rows)})"))
 
 
+def _keys_of(group) -> list[str]:
+    """The keys of the group's columns: the answer keys in `tmm check --keys` order, then others."""
+    from ..check import ANSWER_KEYS
+
+    seen = {r.key for rep in group.reports for r in rep.rows}
+    order = [k.key for k in ANSWER_KEYS if k.key in seen]
+    return order + sorted(seen - set(order))
+
+
+def _verdict(rep, lang: str) -> str:
+    if rep.error:
+        return pick(lang, "error", "ошибка")
+    return pick(lang, "passed", "зачтено") if rep.passed else pick(lang, "not passed", "не зачтено")
+
+
+def group_table(group, lang: str) -> tuple[list[str], list[list]]:
+    """The rows of check.csv / check.md: one per student, the verdict and pass/fail per key."""
+    keys = _keys_of(group)
+    header = [pick(lang, "student", "студент"), pick(lang, "group", "группа"), pick(lang, "variant", "вариант"),
+              pick(lang, "verdict", "итог"), pick(lang, "correct", "верно"), pick(lang, "of", "из")] + keys + [
+              pick(lang, "missing", "нет ответа"), pick(lang, "error", "ошибка")]
+    body = []
+    for rep in group.reports:
+        by = {r.key: r.status for r in rep.rows}
+        good = sum(r.status.startswith("pass") for r in rep.rows)
+        body.append([rep.label, rep.group, rep.variant or "", _verdict(rep, lang), good if not rep.error else "",
+                     len(rep.rows) if not rep.error else ""]
+                    + [pick(lang, *SHORT[by[k]]) if k in by else "" for k in keys]
+                    + [" ".join(rep.missing), rep.error])
+    return header, body
+
+
+def group_csv(group, lang: str, csv_locale: str) -> bytes:
+    """check.csv: ';' and a BOM for a Russian spreadsheet, ',' for an English one; no formulas."""
+    from ..tabular import csv_encoding, csv_text
+
+    header, body = group_table(group, lang)
+    return csv_text(header, body, {2, 4, 5}, csv_locale).encode(csv_encoding(csv_locale))
+
+
+def _md_cell(v) -> str:
+    from ..tabular import safe_cell
+
+    return safe_cell(v).replace("|", "\\|").replace("*", "\\*").replace("_", "\\_").replace("`", "\\`") \
+        .replace("<", "&lt;").replace(">", "&gt;").replace("[", "\\[")
+
+
+def group_markdown(group, lang: str, rtol_pct: float, sheets) -> str:
+    """check.md: the group's verdicts as a Markdown table, readable as it is and in any viewer."""
+    from .numbers import num
+
+    header, body = group_table(group, lang)
+    n_pass = sum(rep.passed for rep in group.reports)
+    title = pick(lang, "Group check", "Проверка группы")
+    lines = [f"# {title}", "",
+             pick(lang, f"Tolerance {num(rtol_pct, lang)} %, sheets {', '.join(sorted(sheets))}; passed {n_pass} of {len(group.reports)}.",
+                  f"Допуск {num(rtol_pct, lang)} %, листы {', '.join(sorted(sheets))}; зачтено {n_pass} из {len(group.reports)}."), ""]
+    if group.roster_encoding:
+        lines += [pick(lang, f"Roster read as {group.roster_encoding}.", f"Список прочитан в кодировке {group.roster_encoding}."), ""]
+    lines.append("| " + " | ".join(_md_cell(h) for h in header) + " |")
+    lines.append("|" + "---|" * len(header))
+    for row in body:
+        lines.append("| " + " | ".join(_md_cell(v) for v in row) + " |")
+    return "\n".join(lines) + "\n"
+
+
 def print_group(console, group, lang: str) -> None:
+    from rich.markup import escape
     from rich.table import Table
 
     t = Table(title=pick(lang, "Group check", "Проверка группы"), header_style="bold")
     for head in (pick(lang, "Student", "Студент"), pick(lang, "Variant", "Вариант"), pick(lang, "Correct", "Верно"),
-                 pick(lang, "Wrong", "Неверно"), pick(lang, "Verdict", "Итог")):
+                 pick(lang, "Wrong or missing", "Неверно или нет ответа"), pick(lang, "Verdict", "Итог")):
         t.add_column(head)
     for rep in group.reports:
         if rep.error:
-            t.add_row(rep.label, str(rep.variant or "—"), "—", "—", f"[red]{rep.error}[/]")
+            t.add_row(escape(rep.label), str(rep.variant or "—"), "—", "—", f"[red]{escape(rep.error)}[/]")
             continue
         good = sum(r.status.startswith("pass") for r in rep.rows)
-        wrong = ", ".join(r.key for r in rep.rows if not r.status.startswith("pass")) or "—"
+        wrong = ", ".join(r.key + (pick(lang, " (missing)", " (нет)") if r.status == "missing" else "")
+                          for r in rep.rows if not r.status.startswith("pass")) or "—"
         verdict = pick(lang, "[green]passed[/]", "[green]зачтено[/]") if rep.passed else pick(lang, "[red]not passed[/]", "[red]не зачтено[/]")
-        t.add_row(rep.label, str(rep.variant), f"{good}/{len(rep.rows)}", wrong, verdict)
+        t.add_row(escape(rep.label), str(rep.variant), f"{good}/{len(rep.rows)}", escape(wrong), verdict)
     console.print(t)

@@ -1,0 +1,107 @@
+"""Issue 7: Ctrl-C and SIGTERM during `tmm batch --jobs 2` and `tmm project` stop at once (a
+liveness bound, not a benchmark), leave no temporary folder and no orphaned worker, write the
+summary of what finished marked incomplete, and exit 130 / 143."""
+
+import csv
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+
+TMM = [sys.executable, "-c", "from tmm_cli.cli import main; main()"]
+
+
+def _start(args, cwd):
+    env = dict(os.environ, MPLBACKEND="Agg", LANG="en_US.UTF-8", LC_ALL="")
+    return subprocess.Popen(TMM + [str(a) for a in args], cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            start_new_session=True, env=env)
+
+
+def _wait_for(predicate, timeout=120.0):
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        if predicate():
+            return True
+        time.sleep(0.05)
+    return False
+
+
+def _group_gone(pgid) -> bool:
+    try:
+        os.killpg(pgid, 0)
+    except ProcessLookupError:
+        return True
+    return False
+
+
+@pytest.mark.parametrize("sig, code, to_group", [(signal.SIGINT, 130, True), (signal.SIGTERM, 143, False),
+                                                (signal.SIGINT, 130, False)])
+def test_batch_stops_at_once(tmp_path, sig, code, to_group):
+    out = tmp_path / "o"
+    # an earlier complete run into the same folder: its folders must not outlive the next run
+    first = _start(["batch", "--variants", "41-42", "--jobs", 1, "--out", out, "--no-plots", "--report", "none"], tmp_path)
+    assert first.wait(timeout=120) == 0 and (out / "variant-42" / "results.json").is_file()
+    p = _start(["batch", "--variants", "1-40", "--jobs", 2, "--out", out, "--no-plots", "--report", "md"], tmp_path)
+    # wait until at least one row is done and others are under way
+    assert _wait_for(lambda: len(list(out.glob("variant-*/results.json"))) >= 3 or p.poll() is not None)
+    assert p.poll() is None, p.communicate()
+    t0 = time.monotonic()
+    (os.killpg if to_group else os.kill)(p.pid, sig)  # Ctrl-C in a terminal signals the whole group
+    _, err = p.communicate(timeout=60)
+    elapsed = time.monotonic() - t0
+    assert p.returncode == code, err
+    print(f"stopped in {elapsed:.2f} s")
+    assert elapsed < 10, elapsed  # liveness: the workers were stopped, not waited for
+    lines = err.decode().strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("tmm: interrupted:") and "not run" in lines[0], lines
+    assert _wait_for(lambda: _group_gone(p.pid), 5), "a worker process outlived the batch"
+    left = [q for q in out.rglob("*") if ".tmp-" in q.name]
+    assert left == []
+    rows = list(csv.DictReader((out / "summary.csv").open(encoding="utf-8")))
+    assert len(rows) == 40
+    done = {r["variant"] for r in rows if r["status"] == "ok"}
+    not_run = [r for r in rows if r["status"].startswith("not run")]
+    assert done and not_run
+    # the summary describes exactly the folders beside it
+    folders = {q.name for q in out.iterdir() if q.is_dir()}
+    assert folders == {f"variant-{int(v):02d}" for v in done}
+    for r in rows:
+        if r["status"] == "ok":
+            assert (Path(r["folder"]) / "results.json").is_file() and (Path(r["folder"]) / "report.md").is_file()
+
+
+def test_project_stops_on_sigterm_and_leaves_no_staging(tmp_path):
+    p = _start(["project", "--variant", 17, "--out", tmp_path / "o", "--report", "md"], tmp_path)
+    # figures are being drawn into the staging folder
+    assert _wait_for(lambda: any(".tmp-" in q.name for q in (tmp_path / "o").glob(".*")) or p.poll() is not None)
+    t0 = time.monotonic()
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate(timeout=60)
+    if p.returncode == 0:
+        pytest.skip("the run finished before the signal")
+    assert p.returncode == 143, err
+    assert time.monotonic() - t0 < 10
+    assert err.decode().strip().splitlines() == ["tmm: interrupted"]
+    assert [q for q in (tmp_path / "o").rglob("*") if ".tmp-" in q.name] == []
+    assert not (tmp_path / "o" / "variant-17").exists()
+
+
+def test_two_batches_never_write_into_one_folder_at_once(tmp_path):
+    out = tmp_path / "o"
+    a = _start(["batch", "--variants", "1-6", "--no-plots", "--jobs", 1, "--out", out, "--report", "none"], tmp_path)
+    assert _wait_for(lambda: (out / ".tmm-files.json").exists() or a.poll() is not None)
+    b = subprocess.run(TMM + ["batch", "--variants", "7", "--no-plots", "--out", str(out)], capture_output=True, text=True,
+                       cwd=tmp_path)
+    a.communicate(timeout=120)
+    if a.returncode is not None and b.returncode == 0:
+        pytest.skip("the first batch finished before the second started")
+    assert b.returncode == 2 and "another tmm batch" in b.stderr and len(b.stderr.strip().splitlines()) == 1
+    assert a.returncode == 0
+    rows = list(csv.DictReader((out / "summary.csv").open(encoding="utf-8")))
+    assert [r["variant"] for r in rows] == [str(n) for n in range(1, 7)]

@@ -1,0 +1,127 @@
+"""Every size and number a user controls has a limit, here, in one place (docs/limits.md).
+
+A value outside its limit is refused before any work with one line naming the limit, so no input
+can make `tmm` run for minutes, eat the memory, or print an absurd machine (a spur gear with 10¹³
+teeth). The numbers are generous for the course project: Table 1.2 and the book's examples lie
+well inside every range.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .errors import TmmError
+
+# numbers given on the command line or in a roster --------------------------------------------
+CRANK_RPM = (1.0, 3000.0)  # n_кр [rpm]; the book's 220, rosters 60…140
+TORQUE_NM = (0.0, 1.0e5)  # mean reduced moment M [N·m] from sheet 2
+TOLERANCE_PCT = (0.01, 20.0)  # allowed planetary ratio error [%]; the book's 5
+STEP_DEG = (0.5, 30.0)  # cam table step [deg]; the book's 10
+PLANETS = (1, 12)  # forced number of planets
+RTOL_PCT = (0.01, 50.0)  # tmm check tolerance [%]; default 3
+JOBS = (1, 64)  # batch worker processes
+
+# Table 1.2 rows (--variants-file) -----------------------------------------------------------
+N_CAM_RPM = (300.0, 5000.0)  # |n_k| [rpm]; Table 1.2 has 700…2500 (below 300 the spur pair outgrows 160 teeth)
+S_MAX_M = (0.001, 1.0)  # stroke S_max [m]; Table 1.2 has 0.02…0.25
+L_BC_M = (0.005, 2.0)  # rocker length l_BC [m]; Table 1.2 has 0.05…0.3
+
+# files and lists ------------------------------------------------------------------------------
+VARIANTS_FILE_BYTES = 1 << 20  # 1 MiB
+VARIANTS_ROWS = 1000  # rows of a --variants-file (Table 1.2 has 68)
+ROSTER_BYTES = 1 << 20  # 1 MiB
+ROSTER_ROWS = 1000  # students in one roster
+ANSWERS_BYTES = 64 << 10  # 64 KiB per answers file
+ANSWERS_ROWS = 200  # lines with a key in one answers file
+VARIANT_SPEC_CHARS = 1000  # length of a --variants list
+VARIANT_SPEC_COUNT = 1000  # variants in one batch
+NAME_CHARS = 100  # a student's name as shown (longer is refused in its roster row)
+FILE_NAME_CHARS = 64  # a student's name as a file or folder name (cut to this length)
+
+
+def check_range(value, lo, hi, what: str, hint: str = "") -> float:
+    """`value` as a finite float within [lo, hi]; TmmError naming `what` and the range otherwise.
+
+    >>> check_range(95, *CRANK_RPM, "--crank-rpm")
+    95.0
+    >>> check_range(float("nan"), 0, 1, "--rtol")
+    Traceback (most recent call last):
+    tmm_cli.errors.TmmError: --rtol is nan; give a finite number from 0 to 1
+    """
+    try:
+        x = float(value)
+    except (TypeError, ValueError, OverflowError):
+        raise TmmError(f"{what} is '{value}', not a number; give a number from {lo:g} to {hi:g}{hint}") from None
+    if not math.isfinite(x):
+        raise TmmError(f"{what} is {value}; give a finite number from {lo:g} to {hi:g}{hint}")
+    if not lo <= x <= hi:
+        raise TmmError(f"{what} is {x:g}; give a number from {lo:g} to {hi:g}{hint}")
+    return x
+
+
+def check_int_range(value, lo: int, hi: int, what: str) -> int:
+    """`value` as an int within [lo, hi] (no float conversion, so 10²⁰ is refused, not overflowed)."""
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise TmmError(f"{what} is '{value}'; give a whole number from {lo} to {hi}")
+    if not lo <= value <= hi:
+        text = str(value) if abs(value) < 10**30 else f"a {len(str(abs(value)))}-digit number"
+        raise TmmError(f"{what} is {text}; give a whole number from {lo} to {hi}")
+    return value
+
+
+# the command-line options -------------------------------------------------------------------------
+
+import click  # noqa: E402  (light; cli.py imports it anyway)
+
+
+class Range(click.ParamType):
+    """A click type: a finite number within [lo, hi] (a whole number when `integer`).
+
+    Unlike click.FloatRange it refuses nan and inf, and an integer too large for a float.
+    """
+
+    name = "number"
+
+    def __init__(self, lo, hi, integer: bool = False):
+        self.lo, self.hi, self.integer = lo, hi, integer
+
+    def convert(self, value, param, ctx):
+        if value is None:
+            return None
+        if self.integer:
+            try:
+                x = value if isinstance(value, int) and not isinstance(value, bool) else int(str(value).strip())
+            except ValueError:
+                self.fail(f"'{str(value)[:30]}' is not a whole number; give one from {self.lo} to {self.hi}", param, ctx)
+            if not self.lo <= x <= self.hi:
+                shown = str(x) if abs(x) < 10**15 else f"a {len(str(abs(x)))}-digit number"
+                self.fail(f"{shown} is out of range; give a whole number from {self.lo} to {self.hi} (docs/limits.md)", param, ctx)
+            return x
+        try:
+            x = float(str(value).strip().replace(",", ".")) if not isinstance(value, (int, float)) else float(value)
+        except (ValueError, OverflowError):
+            self.fail(f"'{str(value)[:30]}' is not a number; give one from {self.lo:g} to {self.hi:g}", param, ctx)
+        if not math.isfinite(x) or not self.lo <= x <= self.hi:
+            shown = f"{x:g}" if math.isfinite(x) else str(value)[:30]
+            self.fail(f"{shown} is out of range; give a number from {self.lo:g} to {self.hi:g} (docs/limits.md)", param, ctx)
+        return x
+
+
+OPTION_LIMITS = {
+    "crank_rpm": Range(*CRANK_RPM),
+    "torque_nm": Range(*TORQUE_NM),
+    "tolerance_pct": Range(*TOLERANCE_PCT),
+    "step_deg": Range(*STEP_DEG),
+    "planets": Range(*PLANETS, integer=True),
+    "rtol_pct": Range(*RTOL_PCT),
+    "jobs": Range(*JOBS, integer=True),
+}
+
+
+def apply_option_limits(command) -> None:
+    """Give every option of `command` (and its sub-commands) named in OPTION_LIMITS its range."""
+    for p in getattr(command, "params", ()):
+        if isinstance(p, click.Option) and p.name in OPTION_LIMITS:
+            p.type = OPTION_LIMITS[p.name]
+    for sub in getattr(command, "commands", {}).values():
+        apply_option_limits(sub)
