@@ -11,6 +11,7 @@ import io
 import math
 
 from ..cam.design import CamResult
+from ..cam.profile import ROLLER_LIMIT
 from .i18n import note_text
 from .variants_tables import law_words, scheme_words
 
@@ -152,7 +153,10 @@ def cam_to_json(result: CamResult, lang: str) -> dict:
         "swing": z.swing,
         "r0_other_swing_mm": _mm(z.r0_other_swing_m),
         "roller_mm": _mm(p.roller_m),
-        "roller_rule": "0.2*r0 (1.28)",
+        "roller_rule": {"book": "0.2*r0 (1.28)", "limited": "0.8*rho_min (0.2*r0 would undercut or exceed 0.8*rho_min)", "student": "student (--roller)"}[p.roller_rule],
+        "roller_rule_applied": p.roller_rule,
+        "roller_book_mm": _mm(p.roller_book_m),
+        "roller_limit_share": ROLLER_LIMIT,
         "roller_max_mm": _mm(p.roller_max_m),
         "pressure_angle_max_deg": {"rise": _f(z.nu_rise_max_deg, 4), "return": _f(z.nu_return_max_deg, 4)},
         "pressure_angle_design_deg": _f(z.nu_design_deg, 4),
@@ -226,8 +230,46 @@ def cam_to_json(result: CamResult, lang: str) -> dict:
         "follower_in_curve_frame": _follower_geometry(result),
         "working_profile_mm": _curve_mm(p.inner),
         "groove_outer_profile_mm": _curve_mm(p.outer),
+        "design_source": result.source,
+        "student_choice": _choice(result),
+        "program_design": _own(result),
+        "pivot_move": result.pivot_move,
+        "checks": _checks(result),
         "warnings": warnings,
         "assumptions": assumptions,
+    }
+
+
+def _choice(result: CamResult) -> dict | None:
+    """The student's overrides as given (mm), or None for the program's own design."""
+    c = result.choice
+    if c is None or not c.given:
+        return None
+    return {"r0_mm": c.r0_mm, "offset_mm": c.offset_mm, "l_oc_mm": c.l_oc_mm, "swing": c.swing, "roller_mm": c.roller_mm,
+            "options": c.options}
+
+
+def _own(result: CamResult) -> dict | None:
+    """The program's own sizing beside the student's choice (mm), or None."""
+    z = result.own
+    if z is None:
+        return None
+    return {"r0_mm": _mm(z.r0_m), "e_mm": _mm(z.e_m), "l_oc_mm": _mm(z.l_oc_m), "swing": z.swing,
+            "pressure_angle_max_deg": {"rise": _f(z.nu_rise_max_deg, 4), "return": _f(z.nu_return_max_deg, 4)}}
+
+
+def _checks(result: CamResult) -> dict | None:
+    """The carried design's conditions: ν on every constrained phase, undercut, pivot."""
+    ch = result.checks
+    if ch is None:
+        return None
+    return {
+        "pressure_angle_ok": {"rise": ch.nu_rise_ok, "return": ch.nu_return_ok},
+        "return_limited": ch.return_limited,
+        "undercut_ok": ch.undercut_ok,
+        "pivot_ok": ch.pivot_ok,
+        "pivot_body_radius_mm": _mm(ch.body_m),
+        "all_ok": ch.ok,
     }
 
 
