@@ -264,3 +264,20 @@ def test_undercut_verdict_from_the_curve(exported):
         assert d["undercut"] == (d["roller_mm"] >= d["roller_max_mm"]), n
         if abs(d["roller_mm"] / limit - 1.0) > RHO_TOL:  # the curve alone decides
             assert d["undercut"] == (d["roller_mm"] >= limit), n
+        # issue 8: the carried cam never undercuts — the roller is below the curve's own limit
+        assert d["roller_mm"] < limit * (1 - RHO_TOL), f"variant {n}: roller {d['roller_mm']} mm vs ρ_lim {limit:.3f} mm"
+        assert d["undercut"] is False and d["checks"]["undercut_ok"] is True, n
+
+
+def test_rocker_pivot_clear_of_the_exported_profile(exported):
+    """Issue 8: the rocker's pivot lies outside every point of the cam body — the working profile
+    (spring) or the groove's outer wall — taken from the exported curves alone."""
+    for n, d in exported.items():
+        if d["follower"] != "rocker":
+            assert d["checks"]["pivot_ok"] is None
+            continue
+        wall = d["groove_outer_profile_mm"] if d["closure"] == "form" else d["working_profile_mm"]
+        body = np.hypot(*np.array(wall, dtype=float).T).max()
+        pivot = math.hypot(*d["follower_in_curve_frame"]["pivot_mm"])
+        assert pivot > body, f"variant {n}: pivot at {pivot:.2f} mm inside the cam's sweep {body:.2f} mm"
+        assert d["checks"]["pivot_ok"] is True and d["checks"]["all_ok"] is True, n
