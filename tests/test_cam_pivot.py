@@ -41,3 +41,24 @@ def test_student_swing_over_the_pivot_is_reported():
     d = cam_to_json(cam, "en")
     assert d["swing"] == "same" and d["checks"]["pivot_ok"] is False
     assert any(n.code == "cam_fail_pivot_force" for n in cam.notes)
+
+
+def test_zone_scan_fallback_finds_the_nearest_allowed_centre():
+    """The fallback that moves a centre off the pivot (used when neither swing clears it; no Table
+    1.2 variant needs it): with the condition |O| ≥ 1.25·r0 the scan returns a zone point on that
+    circle, inside the pressure-angle zone."""
+    import numpy as np
+
+    from tmm_cli.cam.sizing import _inside, nearest_centre_where
+
+    v = load_table()[3]
+    cam = design_cam(v)
+    z = cam.sizing
+    target = 1.25 * z.r0_m
+    o = nearest_centre_where(z, lambda pts: np.hypot(*np.atleast_2d(pts).T) >= target)
+    assert o is not None
+    assert np.hypot(*o) == pytest.approx(target, rel=1e-6)
+    assert _inside(z.polygon_canonical, o[None])[0]
+    # nothing closer than r0 can be found: the zone's nearest point is the carried centre
+    o2 = nearest_centre_where(z, lambda pts: np.ones(len(np.atleast_2d(pts)), bool))
+    assert np.hypot(*o2) == pytest.approx(z.r0_m, rel=2e-3)
