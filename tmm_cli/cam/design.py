@@ -112,6 +112,20 @@ class CamChecks:
         return self.nu_rise_ok and self.nu_return_ok and self.undercut_ok and self.pivot_ok is not False
 
 
+@dataclass(frozen=True)
+class BookRollerFix:
+    """Where the book's 0.2·r0 roller would undercut: the smallest cam of the same zone that keeps
+    it (certified, :mod:`tmm_cli.cam.book_roller`), as the options that carry it [m]."""
+
+    r0_m: float
+    e_m: float | None
+    l_oc_m: float | None
+    centre: tuple[float, float]  # zone frame
+    certified: bool
+    rel_tol: float
+    cells: int
+
+
 @dataclass(frozen=True, eq=False)
 class CamResult:
     """Everything sheet 3 needs, in SI (m, rad, s); mm/deg only in names that say so."""
@@ -127,6 +141,8 @@ class CamResult:
     choice: CamChoice | None = None  # the student's overrides (None: the program's own design)
     own: Sizing | None = None  # the program's own sizing, when the student's choice replaced it
     pivot_move: str | None = None  # "swing" | "centre": moved off the rocker pivot (program design)
+    book_roller_fix: BookRollerFix | None = None  # the smallest cam keeping the book's 0.2·r0 roller
+
 
     @property
     def scheme(self) -> int:
@@ -470,8 +486,17 @@ def design_cam(variant: Variant, step_deg: float = 10.0, choice: CamChoice | Non
         profile = cam_profile(program, sizing, rocker=rocker, l_bc_m=variant.l_bc_m,
                               roller_m=None if choice.roller_mm is None else choice.roller_mm / 1000.0)
     checks = _checks(variant, sizing, profile)
+    fix = _book_roller_fix(variant, program, sizing, profile)
     drawing = profile_drawing(motion, sizing, profile)
     notes = _notes(variant, motion, sizing, profile, checks, choice=choice, own=own, own_roller_m=own_roller, move=move)
+    if fix is not None:
+        geo = "rocker" if rocker else "offset"
+        r0_up = _mm_up(fix.r0_m)
+        notes.append(Note.make(f"cam_book_roller_fix_{geo}", "assumption", r0_mm=r0_up,
+                               roller_mm=math.floor(ROLLER_RULE * r0_up * 100.0 + 1e-9) / 100.0,
+                               geo_mm=_mm(fix.l_oc_m if rocker else fix.e_m), swing=sizing.swing or "",
+                               tol_pct=round(fix.rel_tol * 100, 2), book_mm=_mm(profile.roller_book_m),
+                               proven="" if fix.certified else "?"))
     notes.append(
         Note.make(
             "cam_drawing_scale" if drawing.fits else "cam_drawing_too_big",
@@ -487,4 +512,27 @@ def design_cam(variant: Variant, step_deg: float = 10.0, choice: CamChoice | Non
         if st < step:
             notes.append(Note.make(f"cam_step_halved_{phase}", "assumption", step_deg=st))
     return CamResult(variant=variant, step_deg=step, motion=motion, sizing=sizing, profile=profile, notes=tuple(notes),
-                     drawing=drawing, checks=checks, choice=choice, own=own, pivot_move=pivot_move)
+                     drawing=drawing, checks=checks, choice=choice, own=own, pivot_move=pivot_move,
+                     book_roller_fix=fix)
+
+
+def _mm_up(x: float) -> float:
+    """Millimetres rounded up to 0.01 mm (a suggested r0 must not fall below the proven bound)."""
+    return math.ceil(x * 1000.0 * 100.0 - 1e-9) / 100.0
+
+
+def _book_roller_fix(v: Variant, program, z: Sizing, p: Profile) -> BookRollerFix | None:
+    """When the book's 0.2·r0 roller would undercut the carried cam: the smallest cam of the same
+    pressure-angle zone (same swing) that keeps it, moved out by the search's 0.1 % so the options
+    shown reproduce a working cam."""
+    if p.roller_book_m < p.roller_max_m:
+        return None
+    from .book_roller import smallest_r0_for_roller
+
+    f = smallest_r0_for_roller(program, z, rocker=v.is_rocker, l_bc_m=v.l_bc_m, ratio=ROLLER_RULE)
+    if f is None:
+        return None
+    o = np.asarray(f.centre_canonical) * (1.0 + f.rel_tol)
+    moved = place_centre(z, program, o, l_bc_m=v.l_bc_m, origin="student")
+    return BookRollerFix(r0_m=moved.r0_m, e_m=moved.e_m, l_oc_m=moved.l_oc_m, centre=moved.centre,
+                         certified=f.certified, rel_tol=f.rel_tol, cells=f.cells)

@@ -27,7 +27,8 @@ course texts (e.g. Artobolevsky, *Theory of Mechanisms and Machines*, the roller
 r_р ≤ 0.8·ρ_min; the same share below which the program stops calling a roller "tight"): the
 working profile keeps a radius of curvature ρ − r_р ≥ 0.2·ρ_min instead of a near-cusp, which a
 larger cam at the same 0.2·r0 roller would have right at its limit. The book's 0.2·r0 is reported
-beside it.
+beside it, and where it would undercut, :mod:`tmm_cli.cam.book_roller` gives the other way out —
+the smallest cam of the zone that keeps it, with a certificate that no smaller one does.
 """
 
 from __future__ import annotations

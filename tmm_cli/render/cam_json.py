@@ -171,9 +171,7 @@ def cam_to_json(result: CamResult, lang: str) -> dict:
         "rho_min_at_deg": _f(p.phi_rho_min_convex_deg, 2),
         "rho_min_concave_mm": _mm(p.rho_min_concave_m),
         "undercut": p.undercut,
-        "undercut_fix": None
-        if p.r0_for_rule_m is None
-        else {"r0_mm": _mm(p.r0_for_rule_m), "e_mm": _mm(p.fix_e_m), "l_oc_mm": _mm(p.fix_l_oc_m), "centre_mm": _pt_mm(p.fix_centre)},
+        "undercut_fix": _fix(result),
         "far_dwell_radius_mm": _mm(p.r_far_m),
         "working_profile_min_radius_mm": _mm(p.working_min_radius_m),
         "centre_mm": _pt_mm(z.centre),
@@ -238,6 +236,16 @@ def cam_to_json(result: CamResult, lang: str) -> dict:
         "warnings": warnings,
         "assumptions": assumptions,
     }
+
+
+def _fix(result: CamResult) -> dict | None:
+    """Where the book's 0.2·r0 roller would undercut: the smallest cam keeping it (certified)."""
+    f = result.book_roller_fix
+    if f is None:
+        return None
+    return {"r0_mm": _mm(f.r0_m), "e_mm": _mm(f.e_m), "l_oc_mm": _mm(f.l_oc_m), "centre_mm": _pt_mm(f.centre),
+            "roller_rule": "0.2*r0 (1.28)", "certified": f.certified, "rel_tol": f.rel_tol, "cells": f.cells,
+            "meaning": "smallest r0 in the pressure-angle zone at which the book's roller does not undercut"}
 
 
 def _choice(result: CamResult) -> dict | None:

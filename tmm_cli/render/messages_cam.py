@@ -179,5 +179,13 @@ MESSAGES.update(
             "en": "Remark: the stroke S_max = {s_mm:.0f} mm is unusually long (Table 1.2's strokes are 20…130 mm, here r0 = {r0_mm:.0f} mm); the program computes with it as given — check the value in your copy of the table (a misprint such as 0.025 m is possible).",
             "ru": "Замечание: ход толкателя S_max = {s_mm:.0f} мм необычно велик (в табл. 1.2 ходы 20…130 мм, здесь r_0 = {r0_mm:.0f} мм); программа считает с заданным значением — сверьте его со своим экземпляром таблицы (возможна опечатка, например 0,025 м).",
         },
+            "cam_book_roller_fix_offset": {
+            "en": "To keep the book's roller 0.2·r0 ({book_mm:.2f} mm would undercut here) the cam must grow to r0 = {r0_mm:.2f} mm with e = {geo_mm:.2f} mm: the smallest such cam in the pressure-angle zone, every smaller centre (by more than {tol_pct:g} %) proven to undercut{proven}; --r0 {r0_mm:.2f} --offset {geo_mm:.2f} --roller {roller_mm:.2f} carries it.",
+            "ru": "Чтобы сохранить ролик 0,2·r_0 по пособию (здесь {book_mm:.2f} мм дал бы подрез), кулачок нужно увеличить до r_0 = {r0_mm:.2f} мм при e = {geo_mm:.2f} мм: это наименьший такой кулачок в зоне допустимого положения центра, для всех меньших (более чем на {tol_pct:g} %) подрез доказан{proven}; его даёт --r0 {r0_mm:.2f} --offset {geo_mm:.2f} --roller {roller_mm:.2f}.",
+        },
+        "cam_book_roller_fix_rocker": {
+            "en": "To keep the book's roller 0.2·r0 ({book_mm:.2f} mm would undercut here) the cam must grow to r0 = {r0_mm:.2f} mm with l_OC = {geo_mm:.2f} mm: the smallest such cam in the pressure-angle zone, every smaller centre (by more than {tol_pct:g} %) proven to undercut{proven}; --r0 {r0_mm:.2f} --l-oc {geo_mm:.2f} --swing {swing} --roller {roller_mm:.2f} carries it.",
+            "ru": "Чтобы сохранить ролик 0,2·r_0 по пособию (здесь {book_mm:.2f} мм дал бы подрез), кулачок нужно увеличить до r_0 = {r0_mm:.2f} мм при l_OC = {geo_mm:.2f} мм: это наименьший такой кулачок в зоне допустимого положения центра, для всех меньших (более чем на {tol_pct:g} %) подрез доказан{proven}; его даёт --r0 {r0_mm:.2f} --l-oc {geo_mm:.2f} --swing {swing} --roller {roller_mm:.2f}.",
+        },
     }
 )
