@@ -118,3 +118,15 @@ def test_ratio_error_remark_over_3_pct():
     assert any(n.code == "ratio_error_large" for n in r.notes)
     r = design_gears(-1000, 140)
     assert not any(n.code == "ratio_error_large" for n in r.notes)
+
+
+def test_the_cam_does_not_depend_on_the_crank_speed(table):
+    """So the cam checks of test_cam_exported.py (all 68 variants) hold for every n_cr."""
+    from tmm_cli.project import run_project
+    from tmm_cli.render.cam_json import cam_to_json
+
+    v = table[3]
+    docs = [cam_to_json(run_project(v, crank_rpm=n).cam, "en") for n in (30, 333, 960)]
+    for d in docs[1:]:
+        assert d["pitch_curve_mm"] == docs[0]["pitch_curve_mm"] and d["roller_mm"] == docs[0]["roller_mm"]
+    assert docs[0]["checks"]["all_ok"] is True
