@@ -163,7 +163,7 @@ def _dims_table(r: CamResult, lang: str):
     t = _table(
         pick(lang, "Main dimensions (1.19)–(1.25), roller (1.28)", "Основные размеры (1.19)–(1.25), ролик (1.28)"),
         (pick(lang, "Quantity", "Величина"), "left"),
-        (pick(lang, "Chosen (exact zone)", "Принято (точная зона)"), "right"),
+        (pick(lang, "Chosen (exact zone)", "Принято (точная зона)") if r.source == "program" else pick(lang, "Your choice", "Ваш выбор"), "right"),
         (pick(lang, "Book's vertex", "Вершина по пособию"), "right"),
         (pick(lang, "Note", "Примечание"), "left"),
     )
