@@ -4,7 +4,6 @@ the independent checker of tests/reference_gears.py — nothing of tmm_cli.gears
 producing the JSON. The cam does not depend on the crank speed (Table 1.2 gives n_k); its checks
 from the exported curve are in test_cam_exported.py (all 68 variants)."""
 
-import math
 
 import pytest
 from hypothesis import given, settings

@@ -19,7 +19,7 @@ def required_ratio(n_cr):
 
 # ---------------------------------------------------------------- independent checker (tests/reference_gears.py)
 
-from reference_gears import max_planets, neighbours_fit, planet_fits, stage_ok, willis  # noqa: E402,F401
+from reference_gears import max_planets, planet_fits, stage_ok, willis  # noqa: E402
 
 
 def recheck(result, tol=5.0):
