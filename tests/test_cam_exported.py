@@ -139,7 +139,7 @@ def test_json_carries_the_follower_geometry(exported):
             assert math.dist(g["pivot_mm"], g["b0_mm"]) == pytest.approx(d["l_bc_mm"], abs=2e-4)
             assert g["rocker_turns_on_rise"] in ("ccw", "cw")
             assert (g["rocker_turns_on_rise"] == d["rotation"]) == (d["swing"] == "same"), n
-            if d["closure"] == "force":  # METHOD: the smaller r0 is the rocker turning with the cam
+            if d["closure"] == "force" and d["pivot_move"] is None:  # METHOD: the smaller r0 turns with the cam
                 assert d["swing"] == "same", n
         else:
             assert g["pivot_mm"] is None and g["axis_point_mm"] == [d["e_mm"], 0.0]
@@ -255,10 +255,29 @@ def test_undercut_verdict_from_the_curve(exported):
             concave = -rho[rho < 0].max()
             assert concave == pytest.approx(d["rho_min_concave_mm"], rel=RHO_TOL), n
             limit = min(limit, concave)
-        assert d["roller_mm"] == pytest.approx(0.2 * d["r0_mm"], abs=1e-3)  # (1.28)
+        # (1.28) 0.2·r0, limited to 0.8·ρ_lim (issue 8): the curve's own limit decides
+        assert d["roller_book_mm"] == pytest.approx(0.2 * d["r0_mm"], abs=1e-3)
+        assert d["roller_mm"] == pytest.approx(min(0.2 * d["r0_mm"], 0.8 * limit), rel=RHO_TOL), n
         assert d["roller_max_mm"] == pytest.approx(limit, rel=RHO_TOL), n
         exact = min(d["rho_min_mm"], d["rho_min_concave_mm"]) if d["closure"] == "form" and d["rho_min_concave_mm"] else d["rho_min_mm"]
         assert d["roller_max_mm"] == pytest.approx(exact, abs=1e-3), n
         assert d["undercut"] == (d["roller_mm"] >= d["roller_max_mm"]), n
         if abs(d["roller_mm"] / limit - 1.0) > RHO_TOL:  # the curve alone decides
             assert d["undercut"] == (d["roller_mm"] >= limit), n
+        # issue 8: the carried cam never undercuts — the roller is below the curve's own limit
+        assert d["roller_mm"] < limit * (1 - RHO_TOL), f"variant {n}: roller {d['roller_mm']} mm vs ρ_lim {limit:.3f} mm"
+        assert d["undercut"] is False and d["checks"]["undercut_ok"] is True, n
+
+
+def test_rocker_pivot_clear_of_the_exported_profile(exported):
+    """Issue 8: the rocker's pivot lies outside every point of the cam body — the working profile
+    (spring) or the groove's outer wall — taken from the exported curves alone."""
+    for n, d in exported.items():
+        if d["follower"] != "rocker":
+            assert d["checks"]["pivot_ok"] is None
+            continue
+        wall = d["groove_outer_profile_mm"] if d["closure"] == "form" else d["working_profile_mm"]
+        body = np.hypot(*np.array(wall, dtype=float).T).max()
+        pivot = math.hypot(*d["follower_in_curve_frame"]["pivot_mm"])
+        assert pivot > body, f"variant {n}: pivot at {pivot:.2f} mm inside the cam's sweep {body:.2f} mm"
+        assert d["checks"]["pivot_ok"] is True and d["checks"]["all_ok"] is True, n

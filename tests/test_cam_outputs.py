@@ -44,11 +44,17 @@ def test_json_all_variants_serialisable(table):
 def test_json_warnings_name_the_undercut(some):
     from tmm_cli.render.cam_json import cam_to_json
 
-    d = cam_to_json(some[19], "en")
-    assert d["undercut"] is True
-    assert any("Undercut" in w for w in d["warnings"])
-    d = cam_to_json(some[19], "ru")
-    assert any("Подрез" in w for w in d["warnings"])
+    from tmm_cli.cam.design import CamChoice, design_cam
+
+    # issue 8: the carried roller never undercuts; the book's 0.2·r0 given as the student's --roller does
+    assert cam_to_json(some[19], "en")["undercut"] is False
+    book = round(some[19].profile.roller_book_m * 1000, 2)
+    r = design_cam(some[19].variant, choice=CamChoice(roller_mm=book))
+    d = cam_to_json(r, "en")
+    assert d["undercut"] is True and d["checks"]["undercut_ok"] is False
+    assert any("undercut" in w for w in d["warnings"])
+    d = cam_to_json(r, "ru")
+    assert any("подрез" in w for w in d["warnings"])
 
 
 def test_profile_csv(some):

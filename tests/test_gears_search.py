@@ -16,52 +16,9 @@ def required_ratio(n_cr):
     return n_d, n_d / n_cr
 
 
-# ---------------------------------------------------------------- independent checker
+# ---------------------------------------------------------------- independent checker (tests/reference_gears.py)
 
-
-def planet_fits(k, zk, zc, zc2, zn):
-    """Can a second planet be placed 360°/k after the first, sun and ring standing still?
-
-    Tooth phases (in pitches): the sun at the contact direction u (turns) is at z_k·u, the planet c
-    there at z_c·(u + ½ − v) (v its orientation); in an external mesh their sum is fixed. The ring
-    at u is at z_n·u, the planet c′ at z_c′·(u − v); in an internal mesh their difference is fixed.
-    c and c′ are one rigid block. Searching the planet's orientation over the z_c solutions of the
-    first condition, the second must hold too. (For k planets equally spaced, planet j is j times
-    the first step.)"""
-    u = Fraction(1, k)
-    for m in range(zc):
-        dv = ((zk + zc) * u + m) / zc  # z_c·dv ≡ (z_k + z_c)·u (mod 1)
-        if (zc2 * dv - (zc2 - zn) * u).denominator == 1:
-            return True
-    return False
-
-
-def neighbours_fit(k, zk, zc, zc2):
-    """Tip circles of the larger planet on adjacent carrier positions do not touch (m = 1)."""
-    a = (zk + zc) / 2
-    d_tip = max(zc, zc2) + 2
-    c0 = (a, 0.0)
-    c1 = (a * math.cos(2 * math.pi / k), a * math.sin(2 * math.pi / k))
-    return k == 1 or math.dist(c0, c1) > d_tip + 1e-9
-
-
-def stage_ok(zk, zc, zc2, zn, k, double):
-    coaxial = zk + zc == zn - zc2
-    table22 = zk >= 17 and zn >= 85 and zn - zc2 >= 8 and (zc >= 17 and zc2 >= 20 if double else zc >= 20)
-    return coaxial and table22 and neighbours_fit(k, zk, zc, zc2) and planet_fits(k, zk, zc, zc2, zn)
-
-
-def willis(zk, zc, zc2, zn):
-    """Willis: (ω_k − ω_H)/(ω_n − ω_H) = −z_c·z_n/(z_k·z_c′) with ω_n = 0."""
-    return 1 + Fraction(zc * zn, zk * zc2)
-
-
-def max_planets(zk, zc, zc2, zn):
-    best = 1
-    for k in range(2, 41):
-        if neighbours_fit(k, zk, zc, zc2) and planet_fits(k, zk, zc, zc2, zn):
-            best = k
-    return best
+from reference_gears import max_planets, planet_fits, stage_ok, willis  # noqa: E402
 
 
 def recheck(result, tol=5.0):
@@ -96,8 +53,9 @@ def test_every_crank_speed_30_to_960_gives_a_valid_design():
 # ---------------------------------------------------------------- brute force, written separately
 
 
-def brute_single(i_req, tol, double):
-    """Smallest max(z_k + 2z_c, z_n) with ≥ 3 planets if any (else any), by direct enumeration."""
+def brute_single(i_req, tol, double, with_list=False):
+    """Smallest max(z_k + 2z_c, z_n) with ≥ 3 planets if any (else any), by direct enumeration;
+    with_list: also every candidate (size, zk, zc, zc2, zn) of that planets pool."""
     lo, hi = i_req * (1 - tol / 100), i_req * (1 + tol / 100)
     cands = []
     for zk in range(17, 201):
@@ -122,13 +80,19 @@ def brute_single(i_req, tol, double):
                 if lo - 1e-12 <= r <= hi + 1e-12:
                     cands.append((max(zk + 2 * zc, zn), zk, zc, zc2, zn))
     cands.sort()
+    if with_list:
+        pool = [c for c in cands if c[0] <= cands[0][0] + 12 and max_planets(*c[1:]) >= 3]
+        if pool:
+            return pool[0][0], True, pool
+        return cands[0][0], False, cands
     for size, zk, zc, zc2, zn in cands:
         if max_planets(zk, zc, zc2, zn) >= 3:
             return size, True
     return (cands[0][0], False) if cands else (None, False)
 
 
-def brute_two(i_req, tol):
+def brute_two(i_req, tol, stage_range=(3.0, 8.0)):
+    """Smallest two-stage size with ≥ 3 planets, each stage's ratio within Fig. 2.4's 3…8."""
     lo, hi = i_req * (1 - tol / 100), i_req * (1 + tol / 100)
     sets = []
     for zk in range(17, 201):
@@ -136,7 +100,7 @@ def brute_two(i_req, tol):
             zn = zk + 2 * zc
             if zn > 200:
                 break
-            if zn >= 85:
+            if zn >= 85 and stage_range[0] <= 1 + zn / zk <= stage_range[1]:
                 sets.append((zn, 1 + zn / zk, (zk, zc, zn)))
     sets.sort()
     good3 = {}
@@ -167,18 +131,52 @@ SAMPLE_11 = [30, 36, 44]
 
 @pytest.mark.parametrize("n_cr", SAMPLE_1 + SAMPLE_2)
 def test_no_smaller_reducer_by_brute_force(n_cr):
-    r = design_gears(1000, n_cr)
+    """--select smallest (the pre-issue-8 rule) carries the smallest reducer."""
+    r = design_gears(1000, n_cr, select="smallest")
     size, has3 = brute_single(r.i_planetary, 5.0, double=r.scheme == "2")
     assert r.planetary.size == size
     assert (r.planetary.planets >= 3) == has3
 
 
+@pytest.mark.parametrize("n_cr", SAMPLE_1 + SAMPLE_2)
+def test_accurate_choice_by_brute_force(n_cr):
+    """The default rule (issue 8): the most accurate ratio among the sets at most one tooth larger
+    than the smallest (≥ 3 planets when any set takes 3)."""
+    r = design_gears(1000, n_cr)
+    smin, has3, pool = brute_single(r.i_planetary, 5.0, double=r.scheme == "2", with_list=True)
+    near = [c for c in pool if c[0] <= smin + 1]
+    best = min(abs(float(willis(*c[1:])) / r.i_planetary - 1) for c in near)
+    recheck(r)
+    assert r.planetary.size <= smin + 1
+    assert abs(r.planetary.ratio / r.i_planetary - 1) == pytest.approx(best, abs=1e-12)
+    assert (r.planetary.planets >= 3) == has3
+
+
 @pytest.mark.parametrize("n_cr", SAMPLE_11)
 def test_no_smaller_two_stage_reducer_by_brute_force(n_cr):
-    r = design_gears(1000, n_cr)
+    r = design_gears(1000, n_cr, select="smallest")
     assert r.scheme == "1+1"
     assert r.planetary.planets >= 3
     assert r.planetary.size == brute_two(r.i_planetary, 5.0)
+    assert all(3.0 <= s.ratio <= 8.0 for s in r.planetary.stages)
+
+
+@pytest.mark.parametrize("n_cr", SAMPLE_11 + [40])
+def test_two_stage_accurate_and_within_range_by_brute_force(n_cr):
+    """Two stages: each within 3…8 (Fig. 2.4), the most accurate pair within one tooth of the smallest."""
+    r = design_gears(1000, n_cr)
+    smin = brute_two(r.i_planetary, 5.0)
+    lo, hi = r.i_planetary * 0.95, r.i_planetary * 1.05
+    sets = [(zk, zc, zk + 2 * zc) for zk in range(17, smin + 2) for zc in range(20, 100)
+            if 85 <= zk + 2 * zc <= smin + 1 and 3.0 <= 1 + (zk + 2 * zc) / zk <= 8.0]
+    sets = [t for t in sets if max_planets(t[0], t[1], t[1], t[2]) >= 3]
+    best = min(abs((1 + a[2] / a[0]) * (1 + b[2] / b[0]) / r.i_planetary - 1)
+               for a in sets for b in sets if lo <= (1 + a[2] / a[0]) * (1 + b[2] / b[0]) <= hi)
+    recheck(r)
+    assert all(3.0 <= s.ratio <= 8.0 for s in r.planetary.stages)
+    assert r.planetary.size <= smin + 1
+    assert abs(r.planetary.ratio / r.i_planetary - 1) == pytest.approx(best, abs=1e-12)
+    assert any(n.code == "two_stage_range_ok" for n in r.notes)
 
 
 def test_forced_planets_are_honoured():

@@ -54,7 +54,7 @@ def test_json_acceptance(tmp_path):
     steps = np.diff([p["phi_deg"] for p in doc["positions"]]) % 360
     assert np.allclose(steps, 30.0)
     assert doc["closure_residual_m"] < 1e-12
-    assert sorted(p.name for p in (tmp_path / "linkage").iterdir()) == ["linkage.json", "linkage_curve.csv"]
+    assert sorted(p.name for p in (tmp_path / "linkage").iterdir() if not p.name.startswith(".")) == ["linkage.json", "linkage_curve.csv"]
     assert json.loads((tmp_path / "linkage" / "linkage.json").read_text(encoding="utf-8")) == doc
 
 

@@ -166,6 +166,29 @@ def _parse_shift(shift: str | None):
     from .gears.shifted import parse_shift
 
     return parse_shift(shift)
+select_option = click.option("--select", "select", type=click.Choice(["accurate", "smallest"]), default="accurate", show_default=True,
+                             help="Which reducer to carry: the most accurate ratio among sets at most one tooth larger than the smallest, or the smallest.")
+
+
+def cam_choice_options(f):
+    """The student's say over the cam (issue 8): --r0, --offset, --l-oc, --swing, --roller."""
+    for args, kw in reversed((
+        (("--r0", "cam_r0"), dict(type=float, metavar="MM", help="Your base radius r0 of the pitch curve [mm] (checked, not replaced).")),
+        (("--offset", "cam_offset"), dict(type=float, metavar="MM", help="Your offset e of a translating follower [mm] (e > 0: axis right of the cam centre).")),
+        (("--l-oc", "cam_l_oc"), dict(type=float, metavar="MM", help="Your distance l_OC from the cam centre to the rocker pivot [mm].")),
+        (("--swing", "cam_swing"), dict(type=click.Choice(["same", "opposite"]), help="Rocker turns on the rise the same way as the cam or opposite.")),
+        (("--roller", "cam_roller"), dict(type=float, metavar="MM", help="Your roller radius [mm] (default: 0.2·r0, at most 0.8·ρ_min).")),
+    )):
+        f = click.option(*args, default=None, **kw)(f)
+    return f
+
+
+def _cam_choice(kw: dict):
+    from .cam.design import CamChoice
+
+    c = CamChoice(kw.pop("cam_r0", None), kw.pop("cam_offset", None), kw.pop("cam_l_oc", None),
+                  kw.pop("cam_swing", None), kw.pop("cam_roller", None))
+    return c if c.given else None
 
 
 def title_options(f):
@@ -251,10 +274,12 @@ def variants_show(ctx, number, variants_file, lang):
 @no_plots_option
 @json_option
 @step_option
+@cam_choice_options
 @title_options
 @lang_option
 def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang, **title_kw):
     """Sheet 3: follower diagrams, main dimensions, cam profile, pressure angle."""
+    choice = _cam_choice(title_kw)
     title = _title(title_kw)  # noqa: F841 - read by the drawing sheet
     from .cam.design import design_cam
     from .render.cam_json import profile_csv
@@ -265,7 +290,7 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang,
     v = _variant(variant, variants_file)
     folder = _out_folder(out, v.number)
     ensure_writable_dir(folder.parent)
-    result = design_cam(v, step_deg=step_deg)
+    result = design_cam(v, step_deg=step_deg, choice=choice)
     doc = cam_document(v, result, lang)
 
     def figures():
@@ -295,13 +320,14 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang,
 @planets_option
 @shift_option
 @aw_option
+@select_option
 @out_option
 @format_option
 @no_plots_option
 @json_option
 @title_options
 @lang_option
-def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, out, fmt, no_plots, as_json, lang, **title_kw):
+def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, select, out, fmt, no_plots, as_json, lang, **title_kw):
     """Sheet 4: motor, ratio split, planetary reducer synthesis, spur pair to the cam."""
     title = _title(title_kw)  # noqa: F841 - read by the drawing sheet
     from .gears.design import design_gears
@@ -314,7 +340,7 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
     ensure_writable_dir(folder.parent)
     result = design_gears(
         v.n_cam_rpm, crank_rpm=crank_rpm, torque_nm=torque_nm, ratio=_parse_ratio(ratio),
-        tolerance_pct=tolerance_pct, planets=planets, shift=_parse_shift(shift), a_w_mm=a_w_mm,
+        tolerance_pct=tolerance_pct, planets=planets, shift=_parse_shift(shift), a_w_mm=a_w_mm, select=select,
     )
     doc = gears_document(v, result, lang)
 
@@ -345,16 +371,19 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 @planets_option
 @shift_option
 @aw_option
+@select_option
 @out_option
 @format_option
 @no_plots_option
 @json_option
 @click.option("--report", "report", type=click.Choice(["md", "pdf"]), default="md", show_default=True, help="Report format written beside the figures.")
 @step_option
+@cam_choice_options
 @title_options
 @lang_option
-def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, out, fmt, no_plots, as_json, report, step_deg, lang, **title_kw):
+def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, select, out, fmt, no_plots, as_json, report, step_deg, lang, **title_kw):
     """The whole project for one variant: sheet 4 then sheet 3, figures, results.json and a report."""
+    choice = _cam_choice(title_kw)
     title = _title(title_kw)
     from .project import run_project
     from .render.files import ensure_writable_dir
@@ -367,7 +396,7 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
     result = run_project(
         v, crank_rpm=crank_rpm, torque_nm=torque_nm, step_deg=step_deg,
         ratio=_parse_ratio(ratio), tolerance_pct=tolerance_pct, planets=planets,
-        shift=_parse_shift(shift), a_w_mm=a_w_mm,
+        shift=_parse_shift(shift), a_w_mm=a_w_mm, select=select, cam_choice=choice,
     )
     doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report, title=title)
     if as_json:

@@ -39,8 +39,13 @@ def run_project(
     planets: int | None = None,
     shift=None,
     a_w_mm: float | None = None,
+    select: str = "accurate",
+    cam_choice=None,
 ) -> ProjectResult:
-    """Run sheet 4 (motor, ratios, planetary reducer, spur pair) and sheet 3 (cam) for a variant."""
+    """Run sheet 4 (motor, ratios, planetary reducer, spur pair) and sheet 3 (cam) for a variant.
+
+    `select`: the reducer rule ("accurate" or "smallest", :func:`~tmm_cli.gears.design.design_gears`);
+    `cam_choice`: the student's cam overrides (:class:`~tmm_cli.cam.design.CamChoice`) or None."""
     from .cam.design import design_cam
     from .gears.design import design_gears
 
@@ -53,6 +58,7 @@ def run_project(
         planets=planets,
         shift=shift,
         a_w_mm=a_w_mm,
+        select=select,
     )
-    cam = design_cam(variant, step_deg=step_deg)
+    cam = design_cam(variant, step_deg=step_deg, choice=cam_choice)
     return ProjectResult(variant=variant, gears=gears, cam=cam)

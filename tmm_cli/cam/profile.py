@@ -16,6 +16,19 @@ The working profile is the envelope of the roller circles: the inner one for for
 both (the groove) for form closure. A roller of radius r works on a convex stretch only while
 r < ρ_min there (else the envelope self-intersects: undercut); for a groove the outer envelope
 also needs r < |ρ| on the concave stretches.
+
+Roller rule (METHOD.md sheet 3 item 3; one rule, stated in the output). The book takes
+r_р = 0.2·r0 (1.28) and says it is acceptable "in most cases" (§1.4); for a few variants (3, 7, 11,
+19) it is not smaller than the pitch curve's ρ_min and the profile undercuts. The program keeps the
+pressure-angle r0 (the main result of §1.3) and limits the roller instead:
+r_р = min(0.2·r0, 0.8·ρ_lim), ρ_lim = the smallest convex radius of curvature of the pitch curve
+(groove: the smallest concave one too). 0.8·ρ_min is the usual upper bound of the roller in Russian
+course texts (e.g. Artobolevsky, *Theory of Mechanisms and Machines*, the roller condition
+r_р ≤ 0.8·ρ_min; the same share below which the program stops calling a roller "tight"): the
+working profile keeps a radius of curvature ρ − r_р ≥ 0.2·ρ_min instead of a near-cusp, which a
+larger cam at the same 0.2·r0 roller would have right at its limit. The book's 0.2·r0 is reported
+beside it, and where it would undercut, :mod:`tmm_cli.cam.book_roller` gives the other way out —
+the smallest cam of the zone that keeps it, with a certificate that no smaller one does.
 """
 
 from __future__ import annotations
@@ -26,9 +39,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from .motion import DENSE_STEP_DEG, CamProgram
-from .sizing import Sizing, _constrained_phis, _half_planes, follower_state, rot90
+from .sizing import Sizing, follower_state, rot90
 
 ROLLER_RULE = 0.2  # r_p = 0.2·r0, (1.28)
+ROLLER_LIMIT = 0.8  # the carried roller is at most this share of ρ_lim (no undercut, no near-cusp)
 FINE_STEP_DEG = 0.05  # grid for the curvature minimum
 
 
@@ -98,17 +112,18 @@ class Profile:
     radius: np.ndarray  # |P| [m]
     rho: np.ndarray  # signed radius of curvature of the pitch curve [m]
     nu_deg: np.ndarray  # pressure angle over the turn [deg]
-    roller_m: float  # r_p = 0.2·r0 (1.28)
+    roller_m: float  # carried roller radius: min(0.2·r0, 0.8·ρ_lim), or the student's
     rho_min_convex_m: float
     phi_rho_min_convex_deg: float
     rho_min_concave_m: float | None  # None: the pitch curve has no concave stretch
     phi_rho_min_concave_deg: float | None
     roller_max_m: float  # the roller must be smaller than this (cusp limit)
     undercut: bool
-    r0_for_rule_m: float | None  # smallest r0 of a feasible centre at which 0.2·r0 stops undercutting
-    fix_centre: tuple[float, float] | None  # that centre, zone frame (B0 at the origin) [m]
-    fix_e_m: float | None  # its offset e (translating)
-    fix_l_oc_m: float | None  # its l_OC (rocker)
+    # kept for readers of the old fields: always None now (the roller rule carries no larger cam)
+    r0_for_rule_m: float | None
+    fix_centre: tuple[float, float] | None
+    fix_e_m: float | None
+    fix_l_oc_m: float | None
     psi_rise_deg: float
     psi_far_deg: float
     psi_return_deg: float
@@ -118,6 +133,8 @@ class Profile:
     working_min_radius_m: float  # r0 − r_p: smallest radius of the working profile D1
     nu_rise_max_deg: float
     nu_return_max_deg: float
+    roller_book_m: float = 0.0  # the book's 0.2·r0 (1.28), shown beside the carried roller
+    roller_rule: str = "book"  # "book" (0.2·r0 works), "limited" (0.8·ρ_lim), "student" (--roller)
 
     @property
     def psi_working_deg(self) -> float:
@@ -156,48 +173,26 @@ def _limit(closure: str, rc: float, rv: float | None) -> float:
     return min(rc, rv) if (closure == "form" and rv is not None) else rc
 
 
-def _r0_for_rule(program, sizing: Sizing, rocker, l_bc_m, ratio) -> tuple[float, np.ndarray] | None:
-    """Smallest |O B0| of a feasible centre for which a roller ratio·r0 no longer undercuts.
+def carried_roller(r0_m: float, rho_limit_m: float) -> tuple[float, str]:
+    """The roller radius the program carries [m] and its rule: the book's 0.2·r0 (1.28) unless it
+    exceeds 0.8·ρ_lim (then the roller is limited to 0.8·ρ_lim; see the module docstring).
 
-    Rays from B0 fanning ±60° about the chosen centre's direction; on each ray the feasible
-    stretch is exact (the same wedges as the sizing), and the roller condition is bisected on it.
+    >>> r, rule = carried_roller(0.050, 0.040)  # 0.2·50 = 10 mm < 0.8·40 = 32 mm
+    >>> round(r * 1000, 2), rule
+    (10.0, 'book')
+    >>> r, rule = carried_roller(0.04316, 0.00735)  # variant 3: 8.63 mm would undercut ρ_min 7.35 mm
+    >>> round(r * 1000, 2), rule
+    (5.88, 'limited')
     """
-    phis, _ = _constrained_phis(program, sizing.closure, 0.5)
-    st = follower_state(program, phis, rocker=rocker, l_bc_m=l_bc_m, sigma=sizing.sigma)
-    a, c = _half_planes(st, math.radians(sizing.nu_design_deg))
-    o = np.asarray(sizing.centre_canonical)
-    base = math.atan2(o[1], o[0])
-    r0 = sizing.r0_m
-
-    def ok(centre) -> bool:
-        rc, _, rv, _ = _rho_extremes(program, centre, rocker, l_bc_m, sizing.sigma, step_deg=0.1)
-        return ratio * float(np.hypot(*centre)) < _limit(sizing.closure, rc, rv)
-
-    best, best_d = None, None
-    for ang in base + np.radians(np.linspace(-60.0, 60.0, 25)):
-        d = np.array([math.cos(ang), math.sin(ang)])
-        ad = a @ d
-        with np.errstate(divide="ignore", invalid="ignore"):
-            lo = max([0.0] + list((c / ad)[ad < 0]))
-            hi = min([8.0 * r0] + list((c / ad)[ad > 0]))
-        if best is not None:
-            hi = min(hi, best)
-        if hi <= lo or not ok(hi * d):
-            continue
-        if ok(lo * d):
-            best, best_d = lo, d
-            continue
-        for _ in range(14):
-            mid = 0.5 * (lo + hi)
-            lo, hi = (lo, mid) if ok(mid * d) else (mid, hi)
-        best, best_d = hi, d
-    if best is None:
-        return None
-    return float(best) * 1.001, best_d * float(best) * 1.001
+    book = ROLLER_RULE * r0_m
+    cap = ROLLER_LIMIT * rho_limit_m
+    return (book, "book") if book <= cap else (cap, "limited")
 
 
-def cam_profile(program: CamProgram, sizing: Sizing, *, rocker: bool, l_bc_m: float | None, roller_ratio: float = ROLLER_RULE) -> Profile:
+def cam_profile(program: CamProgram, sizing: Sizing, *, rocker: bool, l_bc_m: float | None, roller_m: float | None = None) -> Profile:
     """Pitch curve, roller envelopes, ψ angles (1.1)–(1.4), curvature and undercut check, §1.4.
+
+    `roller_m`: the student's roller [m]; None carries :func:`carried_roller`.
 
     >>> from tmm_cli.cam.sizing import size_cam
     >>> p = CamProgram(law=4, stroke=0.03, phi_rise=math.radians(90), phi_far=0.5, phi_return=math.radians(90))
@@ -219,7 +214,12 @@ def cam_profile(program: CamProgram, sizing: Sizing, *, rocker: bool, l_bc_m: fl
     t_hat = t_cam / np.hypot(t_cam[:, 0], t_cam[:, 1])[:, None]
     n_out = rot90(t_hat)  # the curve runs clockwise round O in the canonical frame
     n_out[-1] = n_out[0]
-    r_p = roller_ratio * sizing.r0_m
+    rc, rc_phi, rv, rv_phi = _rho_extremes(program, o, rocker, l_bc_m, sg)
+    limit = _limit(sizing.closure, rc, rv)
+    if roller_m is None:
+        r_p, rule = carried_roller(sizing.r0_m, limit)
+    else:
+        r_p, rule = float(roller_m), "student"
     inner = p - r_p * n_out
     outer = p + r_p * n_out if sizing.closure == "form" else None
     axis = _rotate(pc.u, -phi)
@@ -228,12 +228,8 @@ def cam_profile(program: CamProgram, sizing: Sizing, *, rocker: bool, l_bc_m: fl
     nu = pressure_angle_deg(pc.q1, pc.u)
     nu[-1] = nu[0]
 
-    rc, rc_phi, rv, rv_phi = _rho_extremes(program, o, rocker, l_bc_m, sg)
-    limit = _limit(sizing.closure, rc, rv)
     undercut = r_p >= limit
-    fix = _r0_for_rule(program, sizing, rocker, l_bc_m, roller_ratio) if undercut else None
     mirror = np.array([1.0, 1.0]) if sizing.ccw else np.array([-1.0, 1.0])
-    fix_c = None if fix is None else (float(fix[1][0] * mirror[0]), float(fix[1][1]))
 
     # profile angles: polar angle of the pitch curve swept (against the rotation) over each phase
     segs = [(0.0, program.phi_rise), (program.phi_rise, program.return_start), (program.return_start, program.phi_working)]
@@ -273,10 +269,10 @@ def cam_profile(program: CamProgram, sizing: Sizing, *, rocker: bool, l_bc_m: fl
         phi_rho_min_concave_deg=rv_phi,
         roller_max_m=limit,
         undercut=bool(undercut),
-        r0_for_rule_m=None if fix is None else fix[0],
-        fix_centre=fix_c,
-        fix_e_m=None if (fix_c is None or rocker) else -fix_c[0],
-        fix_l_oc_m=None if (fix_c is None or not rocker) else math.dist(fix_c, sizing.pivot),
+        r0_for_rule_m=None,  # the larger-cam alternative is no longer carried (roller rule above)
+        fix_centre=None,
+        fix_e_m=None,
+        fix_l_oc_m=None,
         psi_rise_deg=psi_deg[0],
         psi_far_deg=psi_deg[1],
         psi_return_deg=psi_deg[2],
@@ -286,4 +282,6 @@ def cam_profile(program: CamProgram, sizing: Sizing, *, rocker: bool, l_bc_m: fl
         working_min_radius_m=sizing.r0_m - r_p,
         nu_rise_max_deg=nu_max_on(0.0, program.phi_rise),
         nu_return_max_deg=nu_max_on(program.return_start, program.phi_return),
+        roller_book_m=ROLLER_RULE * sizing.r0_m,
+        roller_rule=rule,
     )

@@ -301,11 +301,18 @@ class Sizing:
     book_nu_rise_max_deg: float
     book_nu_return_max_deg: float
     zone: Zone
+    origin: str = "minimum"  # "minimum" (smallest r0), "pivot" (moved to clear the pivot), "student"
+    r0_min_m: float | None = None  # the smallest r0 of this swing direction (when origin != "minimum")
 
     @property
     def centre_canonical(self) -> tuple[float, float]:
         x, y = self.centre
         return (x, y) if self.ccw else (-x, y)
+
+    @property
+    def polygon_canonical(self) -> np.ndarray:
+        """The feasible zone (clipped to the solver's square) in the canonical frame [m]."""
+        return self.zone.polygon * (np.array([1.0, 1.0]) if self.ccw else np.array([-1.0, 1.0]))
 
 
 def _book_line(st: FollowerState, idx: np.ndarray, nu: float, name: str, through_b0: bool = False) -> tuple[np.ndarray, float, BookLine]:
@@ -428,3 +435,160 @@ def size_cam(
         book_nu_return_max_deg=bk_b,
         zone=zone,
     )
+
+
+# ----------------------------------------------------------------------------------------------
+# another centre: the student's, or one that clears the rocker pivot
+
+
+def achieved_deg(centre_canonical, program: CamProgram, *, rocker: bool, l_bc_m: float | None, sigma: int) -> tuple[float, float]:
+    """Largest pressure angle [deg] on the rise and on the return for a cam centre given in the
+    canonical frame (0.05° grid, the cone measure of the theorem on the cam centre, (1.19)).
+
+    >>> p = CamProgram(law=2, stroke=0.05, phi_rise=1.0, phi_far=0.3, phi_return=1.0)
+    >>> nu_r, nu_b = achieved_deg((0.0, -0.1), p, rocker=False, l_bc_m=None, sigma=1)
+    >>> round(nu_r, 2) == round(nu_b, 2)  # a central follower: the same law both ways
+    True
+    """
+    return _achieved(np.asarray(centre_canonical, dtype=float), program, rocker, l_bc_m, sigma)
+
+
+def far_point_canonical(program: CamProgram, *, rocker: bool, l_bc_m: float | None, sigma: int) -> np.ndarray:
+    """The roller centre at the far dwell (largest pitch-curve radius) in the canonical frame [m]."""
+    return follower_state(program, [program.phi_rise], rocker=rocker, l_bc_m=l_bc_m, sigma=sigma).b[0]
+
+
+def place_centre(z: Sizing, program: CamProgram, centre_canonical, *, l_bc_m: float | None, origin: str) -> Sizing:
+    """The same construction with the cam centre moved to `centre_canonical` [m]: r0, e or l_OC
+    and the achieved pressure angles recomputed; the zone and the book's vertex are kept."""
+    from dataclasses import replace
+
+    o = np.asarray(centre_canonical, dtype=float)
+    nu_r, nu_b = _achieved(o, program, z.rocker, l_bc_m, z.sigma)
+    cz = (float(o[0]) if z.ccw else -float(o[0]), float(o[1]))
+    return replace(
+        z,
+        centre=cz,
+        r0_m=float(math.hypot(*o)),
+        e_m=None if z.rocker else -cz[0],
+        l_oc_m=math.dist(cz, z.pivot) if z.rocker else None,
+        nu_rise_max_deg=nu_r,
+        nu_return_max_deg=nu_b,
+        origin=origin,
+        r0_min_m=z.r0_m if z.origin == "minimum" else z.r0_min_m,
+    )
+
+
+def _inside(poly: np.ndarray, pts: np.ndarray) -> np.ndarray:
+    """Points inside (or on) a convex polygon, either orientation."""
+    e = np.roll(poly, -1, axis=0) - poly
+    cr = e[:, 0][None] * (pts[:, 1][:, None] - poly[:, 1][None]) - e[:, 1][None] * (pts[:, 0][:, None] - poly[:, 0][None])
+    tol = 1e-12 * float(np.abs(poly).max())
+    return (cr >= -tol).all(axis=1) | (cr <= tol).all(axis=1)
+
+
+def _ray_interval(poly: np.ndarray, d: np.ndarray) -> tuple[float, float] | None:
+    """The stretch [t0, t1] of the ray t·d (t ≥ 0) inside a convex polygon, exactly."""
+    nxt = np.roll(poly, -1, axis=0)
+    lo, hi = 0.0, math.inf
+    area = float(np.sum(poly[:, 0] * nxt[:, 1] - nxt[:, 0] * poly[:, 1]))
+    sgn = 1.0 if area > 0 else -1.0
+    for a, b in zip(poly, nxt):
+        edge = b - a
+        # inside: sgn·(edge × (t·d − a)) ≥ 0  →  t·(edge × d) ≥ edge × a
+        k = sgn * (edge[0] * d[1] - edge[1] * d[0])
+        c = sgn * (edge[0] * a[1] - edge[1] * a[0])
+        if abs(k) < 1e-300:
+            if c > 0:
+                return None
+            continue
+        if k > 0:
+            lo = max(lo, c / k)
+        else:
+            hi = min(hi, c / k)
+    return (lo, hi) if hi >= lo else None
+
+
+def centre_on_offset_line(z: Sizing, e_m: float) -> np.ndarray | None:
+    """Translating follower: the centre with offset e [m] nearest to B0 inside the zone (canonical
+    frame), or None when the line x = −e (zone frame) misses the zone."""
+    x = -e_m if z.ccw else e_m
+    poly = z.polygon_canonical
+    nxt = np.roll(poly, -1, axis=0)
+    ys = []
+    for a, b in zip(poly, nxt):
+        if (a[0] - x) * (b[0] - x) <= 0 and a[0] != b[0]:
+            t = (x - a[0]) / (b[0] - a[0])
+            ys.append(a[1] + t * (b[1] - a[1]))
+        elif a[0] == x:
+            ys.append(a[1])
+    if not ys:
+        return None
+    y0, y1 = min(ys), max(ys)
+    y = min(max(0.0, y0), y1)  # the point of [y0, y1] nearest to B0's y = 0
+    return np.array([x, y])
+
+
+def centre_on_pivot_circle(z: Sizing, l_oc_m: float, samples: int = 7200) -> np.ndarray | None:
+    """Rocker: the centre at distance l_OC [m] from the pivot nearest to B0 inside the zone
+    (canonical frame), or None when that circle misses the zone (sampled every 0.05°)."""
+    c = np.array(z.pivot, dtype=float) * (np.array([1.0, 1.0]) if z.ccw else np.array([-1.0, 1.0]))
+    t = np.linspace(0.0, 2.0 * math.pi, samples, endpoint=False)
+    pts = c + l_oc_m * np.stack([np.cos(t), np.sin(t)], axis=-1)
+    ok = _inside(z.polygon_canonical, pts)
+    if not ok.any():
+        return None
+    r = np.hypot(pts[:, 0], pts[:, 1])
+    return pts[int(np.argmin(np.where(ok, r, np.inf)))]
+
+
+def centre_from_r0_l_oc(z: Sizing, r0_m: float, l_oc_m: float) -> np.ndarray:
+    """Rocker: the centre with |O B0| = r0 and |O C| = l_OC (canonical frame), on the same side
+    of the line B0C as the program's centre. Raises TmmError when the two circles do not meet."""
+    l = float(math.dist((0.0, 0.0), z.pivot))  # = l_BC
+    if not abs(l - r0_m) < l_oc_m < l + r0_m:
+        raise TmmError(
+            f"no cam centre has r0 = {r0_m * 1000:g} mm and l_OC = {l_oc_m * 1000:g} mm with l_BC = {l * 1000:g} mm: "
+            f"l_OC must lie between |l_BC − r0| = {abs(l - r0_m) * 1000:g} mm and l_BC + r0 = {(l + r0_m) * 1000:g} mm"
+        )
+    cx = -z.sigma * l  # C = (cx, 0) in the canonical frame
+    x = (r0_m**2 - l_oc_m**2 + cx**2) / (2.0 * cx)
+    y = math.sqrt(max(r0_m**2 - x**2, 0.0))
+    side = -1.0 if z.centre_canonical[1] <= 0 else 1.0
+    return np.array([x, side * y])
+
+
+def nearest_centre_where(z: Sizing, ok, *, n_dir: int = 1441, n_t: int = 400) -> np.ndarray | None:
+    """The zone's centre nearest to B0 among those where `ok(points) -> bool array` holds
+    (canonical frame), or None. A polar scan: rays from B0 every (span/1440) of the zone's angular
+    span, each cut exactly by the zone and sampled at n_t points, then the first good sample
+    bisected. Used only to move a centre off the rocker's pivot (no minimality is claimed)."""
+    poly = z.polygon_canonical
+    ang = np.arctan2(poly[:, 1], poly[:, 0])
+    base = math.atan2(*np.asarray(z.centre_canonical)[::-1])
+    rel = np.angle(np.exp(1j * (ang - base)))
+    best = None
+    for th in base + np.linspace(rel.min(), rel.max(), n_dir):
+        d = np.array([math.cos(th), math.sin(th)])
+        iv = _ray_interval(poly, d)
+        if iv is None:
+            continue
+        t0, t1 = iv
+        if best is not None:
+            t1 = min(t1, best[0])
+        if t1 <= t0:
+            continue
+        ts = np.linspace(t0, t1, n_t)
+        good = ok(ts[:, None] * d)
+        if not good.any():
+            continue
+        j = int(np.argmax(good))
+        hi = ts[j]
+        if j > 0:
+            lo = ts[j - 1]
+            for _ in range(30):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (lo, mid) if ok((mid * d)[None])[0] else (mid, hi)
+        if best is None or hi < best[0]:
+            best = (hi, hi * d)
+    return None if best is None else best[1]

@@ -16,6 +16,9 @@ from ..notes import Note
 from . import drive
 from .drive import SCHEMES, MotorPower, SchemeInfo
 from .planetary import (
+    SELECT_RULES,
+    SELECT_SLACK,
+    STAGE_RANGE_1,
     Z_MAX,
     BookDerivation,
     DesignChecks,
@@ -154,6 +157,24 @@ def design_teeth_text(design: PlanetaryDesign) -> str:
     return " + ".join(_fmt_teeth(s.teeth) for s in design.stages)
 
 
+RATIO_REMARK_PCT = 3.0  # a carried ratio error above 3 % gets a sanity remark (legal within 5 %)
+
+
+def _selection_notes(search: SearchResult, design: PlanetaryDesign) -> list[Note]:
+    """The selection rule in words: which set is carried and the smallest beside it."""
+    sm = search.smallest or design
+    if search.select == "smallest":
+        return [Note.make("select_smallest", "assumption", teeth=design_teeth_text(design), size=design.size,
+                          slack=SELECT_SLACK)]
+    if sm == design:
+        return [Note.make("select_accurate_same", "assumption", teeth=design_teeth_text(design), size=design.size,
+                          err=f"{design.ratio_error_pct:+.2f}", slack=SELECT_SLACK)]
+    return [Note.make("select_accurate_other", "assumption", teeth=design_teeth_text(design), size=design.size,
+                      err=f"{design.ratio_error_pct:+.2f}", k=design.planets, s_teeth=design_teeth_text(sm),
+                      s_size=sm.size, s_err=f"{sm.ratio_error_pct:+.2f}", s_k=sm.planets, slack=SELECT_SLACK,
+                      n=search.n_sets, zmax=Z_MAX)]
+
+
 def _check_inputs(n_cam_rpm, crank_rpm, torque_nm, tolerance_pct, planets):
     try:
         cam = float(n_cam_rpm)
@@ -177,12 +198,14 @@ def _check_inputs(n_cam_rpm, crank_rpm, torque_nm, tolerance_pct, planets):
 def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: float | None = None,
                  ratio: tuple[int, int] | None = None, tolerance_pct: float = 5.0,
                  planets: int | None = None, stiffness: bool = True, shift=None,
-                 a_w_mm: float | None = None) -> GearsResult:
+                 a_w_mm: float | None = None, select: str = "accurate") -> GearsResult:
     """Sheet 4: motor speed (§2.2), ratios, scheme (Fig. 2.4), planetary synthesis (§2.1.3,
     §2.4/§2.5), spur pair (§2.3), power (§2.6); with ``stiffness`` also the spur pair's mesh
     stiffness beyond the course (seed 002, :func:`~tmm_cli.gears.stiffness.spur_pair_stiffness`),
     loaded by the motor torque N/ω_d when ``torque_nm`` is given. ``shift`` ("auto" or (x1, x2)) and
     ``a_w_mm`` shift the spur pair (beyond the book, gears/shifted.py); the default is the book's zero pair.
+    ``select``: "accurate" (default: the most accurate ratio among the sets at most one tooth larger
+    than the smallest) or "smallest" (the smallest reducer).
 
     The book's §2.4 example (n_cr = 220 rpm, the fraction 13/4):
 
@@ -191,6 +214,8 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
     (720, '1', (40, 25, 90), 5)
     """
     _check_inputs(n_cam_rpm, crank_rpm, torque_nm, tolerance_pct, planets)
+    if select not in SELECT_RULES:
+        raise TmmError(f"selection rule '{select}' is unknown; use --select accurate or --select smallest")
     notes: list[Note] = []
     assumed = crank_rpm is None
     n_cr = float(drive.DEFAULT_CRANK_RPM if assumed else crank_rpm)
@@ -220,7 +245,7 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
             raise TmmError(f"the forced ratio {p}/{q} must be greater than 1 for a reducer, e.g. --ratio 13/4")
 
     try:
-        search = search_designs(scheme, i_pl, tolerance_pct, forced, planets)
+        search = search_designs(scheme, i_pl, tolerance_pct, forced, planets, select=select)
     except _NoCandidates:
         if forced is not None:
             raise TmmError(f"no tooth numbers of scheme {scheme} with at most {Z_MAX} teeth (Table 2.2 kept) give "
@@ -263,16 +288,25 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
         bt = " + ".join(_fmt_teeth(s.chosen.teeth) for s in deriv.stages)
         code = "book_vs_search_same" if deriv.size == design.size else (
             "book_vs_search_smaller" if design.size < deriv.size else "book_vs_search_book_smaller")
+        if design.size > deriv.size and (search.smallest or design).size <= deriv.size:
+            code = "book_vs_search_accurate"  # the search has one as small; the carried one is more accurate
         notes.append(Note.make(code, "assumption", book=bt, book_size=deriv.size, found=design_teeth_text(design),
                                size=design.size))
 
     # the carried design
-    notes.append(Note.make(f"carried_{search.rule}", "assumption", teeth=design_teeth_text(design), size=design.size,
-                           k=design.planets, n=search.n_sets, zmax=Z_MAX,
-                           any_teeth=design_teeth_text(search.smallest_any), any_size=search.smallest_any.size,
-                           any_k=search.smallest_any.planets))
+    if search.select == "smallest" or (search.smallest or design) == design:  # else select_accurate_other says it
+        notes.append(Note.make(f"carried_{search.rule}", "assumption", teeth=design_teeth_text(design), size=design.size,
+                               k=design.planets, n=search.n_sets, zmax=Z_MAX,
+                               any_teeth=design_teeth_text(search.smallest_any), any_size=search.smallest_any.size,
+                               any_k=search.smallest_any.planets))
+    notes.extend(_selection_notes(search, design))
     if scheme == "1+1":
         notes.append(Note.make("two_stage_order", "assumption"))
+        r1, r2 = (s.ratio for s in design.stages)
+        lo_r, hi_r = STAGE_RANGE_1
+        code = "two_stage_range_ok" if search.stage_range_ok else "two_stage_range_outside"
+        notes.append(Note.make(code, "assumption" if search.stage_range_ok else "warning", i1=f"{r1:.3f}",
+                               i2=f"{r2:.3f}", lo=f"{lo_r:g}", hi=f"{hi_r:g}"))
     if forced is not None:
         notes.append(Note.make("forced_ratio", "assumption", fraction=f"{forced}", value=f"{float(forced):.4g}"))
     if design.planets < 3:
@@ -288,6 +322,10 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
     notes.append(Note.make("ratio_error", "warning" if abs(err) >= 1.0 else "assumption", i=f"{design.ratio:.4f}",
                            target=f"{i_pl:.4f}", err=f"{err:+.2f}", tol=f"{tolerance_pct:g}",
                            rpm=f"{n_cr_actual:.1f}", want=f"{n_cr:g}"))
+
+    if abs(err) > RATIO_REMARK_PCT:
+        notes.append(Note.make("ratio_error_large", "warning", err=f"{err:+.2f}", limit=f"{RATIO_REMARK_PCT:g}",
+                               rpm=f"{n_cr_actual:.1f}", want=f"{n_cr:g}"))
 
     # spur pair
     spur = design_spur(n_d, n_cam_rpm, shift=shift, a_w_mm=a_w_mm)

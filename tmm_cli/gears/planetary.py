@@ -35,6 +35,9 @@ Z_EXT_INT = 20  # external gear in an internal mesh
 Z_RING = 85  # internal gear
 Z_DIFF = 8  # internal minus external
 REL_EPS = 1e-12
+SELECT_SLACK = 1  # "accurate": compare the sets at most this many teeth larger than the smallest
+SELECT_RULES = ("accurate", "smallest")
+STAGE_RANGE_1 = (3.0, 8.0)  # Fig. 2.4, scheme 1: the ratio range of one single-row stage
 
 
 # ----------------------------------------------------------------------------------------------
@@ -453,6 +456,9 @@ class SearchResult:
     smallest_any: PlanetaryDesign  # smallest regardless of planets (max planets it admits)
     alternatives: tuple[PlanetaryDesign, ...]
     rule: str
+    select: str = "smallest"  # "accurate" | "smallest": which of the planets-rule pool is carried
+    smallest: PlanetaryDesign | None = None  # the smallest of that pool (the carried one under "smallest")
+    stage_range_ok: bool | None = None  # two stages: every stage within Fig. 2.4's 3…8 (None: one stage)
 
 
 def _window(target: float, tol_pct: float, forced: Fraction | None) -> tuple[float, float]:
@@ -481,7 +487,7 @@ def _order_single(tab: _Table, idx: np.ndarray, k: np.ndarray, target: float) ->
 
 
 def _search_single(scheme: str, target: float, tol_pct: float, forced: Fraction | None, planets: int | None,
-                   n_alt: int) -> SearchResult:
+                   n_alt: int, select: str = "smallest") -> SearchResult:
     double = scheme == "2"
     tab = scheme2_table() if double else scheme1_table()
     idx = _single_candidates(tab, target, tol_pct, forced)
@@ -502,13 +508,30 @@ def _search_single(scheme: str, target: float, tol_pct: float, forced: Fraction 
         pool, kpool, rule = idx, kb, "smallest_no3"
     order = _order_single(tab, pool, kpool, target)
     designs = [PlanetaryDesign(scheme, (_stage_from(tab, pool[j], kpool[j], double),), target) for j in order[:n_alt]]
-    carried = designs[0]
+    smallest = designs[0]
+    carried = smallest
+    if select == "accurate":
+        j = _most_accurate(tab.size[pool], np.abs(tab.ratio[pool] / target - 1.0), kpool, tab.total[pool])
+        carried = PlanetaryDesign(scheme, (_stage_from(tab, pool[j], kpool[j], double),), target)
     alts = list(designs)
-    if smallest_any.size < carried.size and smallest_any not in alts:
-        alts.append(smallest_any)
+    for extra in (carried, smallest_any):
+        if extra not in alts and (extra is carried or smallest_any.size < carried.size):
+            alts.append(extra)
     alts.sort(key=lambda d: (d.size, abs(d.ratio_error_pct), -d.planets))
     return SearchResult(scheme, target, tol_pct, forced, planets, Z_MAX, int(idx.size), carried, smallest_any,
-                        tuple(alts), rule)
+                        tuple(alts), rule, select, smallest)
+
+
+def _most_accurate(size: np.ndarray, err: np.ndarray, k: np.ndarray, total: np.ndarray) -> int:
+    """Index of the "accurate" choice: among the sets at most SELECT_SLACK teeth larger than the
+    smallest, the smallest ratio error; ties by size, more planets, fewer teeth in all.
+
+    >>> _most_accurate(np.array([86, 87, 90]), np.array([0.0455, 0.0, 0.0]), np.array([4, 4, 5]), np.array([1, 1, 1]))
+    1
+    """
+    near = size <= size.min() + SELECT_SLACK
+    errq = np.where(near, np.round(err, 12), np.inf)
+    return int(np.lexsort((total, -k, size, errq))[0])
 
 
 class _NoCandidates(Exception):
@@ -578,7 +601,10 @@ def _min_pair_size(tab: _Table, pool: np.ndarray, lo: float, hi: float) -> int |
 
 
 def _pair_designs(tab: _Table, pool: np.ndarray, kpool_of: dict | np.ndarray, target: float, tol_pct: float,
-                  forced: Fraction | None, n_alt: int, margin: int = 6) -> list[PlanetaryDesign]:
+                  forced: Fraction | None, n_alt: int, margin: int = 6,
+                  select: str = "smallest") -> list[PlanetaryDesign]:
+    """Stage pairs within tolerance, smallest first ("smallest"), or led by the most accurate pair
+    at most SELECT_SLACK teeth larger than the smallest ("accurate", then the rest smallest first)."""
     lo, hi = _window(target, tol_pct, forced)
     cap = Z_MAX if forced is not None else _min_pair_size(tab, pool, lo, hi)
     if cap is None:
@@ -595,42 +621,59 @@ def _pair_designs(tab: _Table, pool: np.ndarray, kpool_of: dict | np.ndarray, ta
     split = np.round(np.abs(tab.log_ratio[a] - tab.log_ratio[b]), 12)
     kmin = np.minimum(ka, kb)
     order = np.lexsort((tab.total[a] + tab.total[b], split, -kmin, err, size))
+    picks = list(order[:n_alt])
+    if select == "accurate":
+        near = size <= size.min() + SELECT_SLACK
+        first = int(np.lexsort((tab.total[a] + tab.total[b], split, -kmin, size, np.where(near, err, np.inf)))[0])
+        picks = [first] + [j for j in picks if j != first][: n_alt - 1]
     out = []
-    for j in order[:n_alt]:
+    for j in picks:
         out.append(PlanetaryDesign("1+1", (_stage_from(tab, a[j], ka[j], False), _stage_from(tab, b[j], kb[j], False)),
                                    target))
     return out
 
 
-def _search_two(target: float, tol_pct: float, forced: Fraction | None, planets: int | None, n_alt: int) -> SearchResult:
+def _search_two(target: float, tol_pct: float, forced: Fraction | None, planets: int | None, n_alt: int,
+                select: str = "smallest") -> SearchResult:
+    """Two scheme-1 stages; each stage kept within Fig. 2.4's range 3…8 when any pair allows it
+    (``stage_range_ok``), else the whole table is searched."""
     tab = scheme1_table()
-    allidx = np.arange(tab.zk.size)
-    kall = _kbest(tab, allidx)
+    every = np.arange(tab.zk.size)
+    kall = _kbest(tab, every)
+    lo_r, hi_r = STAGE_RANGE_1
+    in_range = every[(tab.ratio >= lo_r * (1 - REL_EPS)) & (tab.ratio <= hi_r * (1 + REL_EPS))]
+    range_ok = True
+    allidx = in_range
     any_designs = _pair_designs(tab, allidx, kall, target, tol_pct, forced, 1)
+    if not any_designs:
+        range_ok, allidx = False, every
+        any_designs = _pair_designs(tab, allidx, kall, target, tol_pct, forced, 1)
     if not any_designs:
         raise _NoCandidates("1+1")
     smallest_any = any_designs[0]
     if planets is not None:
         adm = _admits(tab, allidx, planets)
-        kp = np.where(adm, planets, 0)
-        designs = _pair_designs(tab, allidx[adm], kp, target, tol_pct, forced, n_alt)
+        kp = np.where(_admits(tab, every, planets), planets, 0)
+        designs = _pair_designs(tab, allidx[adm], kp, target, tol_pct, forced, n_alt, select=select)
         if not designs:
             raise _NoPlanets(smallest_any.planets)
         rule = "forced_planets"
     else:
-        designs = _pair_designs(tab, allidx[kall >= 3], kall, target, tol_pct, forced, n_alt)
+        designs = _pair_designs(tab, allidx[kall[allidx] >= 3], kall, target, tol_pct, forced, n_alt, select=select)
         rule = "smallest_3plus"
         if not designs:
-            designs = _pair_designs(tab, allidx, kall, target, tol_pct, forced, n_alt)
+            designs = _pair_designs(tab, allidx, kall, target, tol_pct, forced, n_alt, select=select)
             rule = "smallest_no3"
     carried = designs[0]
+    smallest = min(designs, key=lambda d: (d.size, abs(d.ratio_error_pct), -d.planets))
     alts = list(designs)
     if smallest_any.size < carried.size and smallest_any not in alts:
         alts.append(smallest_any)
     alts.sort(key=lambda d: (d.size, abs(d.ratio_error_pct), -d.planets))
     lo, hi = _window(target, tol_pct, forced)
     n = _count_pairs(tab, lo, hi) if forced is None else len(designs)
-    return SearchResult("1+1", target, tol_pct, forced, planets, Z_MAX, n, carried, smallest_any, tuple(alts), rule)
+    return SearchResult("1+1", target, tol_pct, forced, planets, Z_MAX, n, carried, smallest_any, tuple(alts), rule,
+                        select, smallest, range_ok)
 
 
 def closest_ratio(scheme: str, target: float) -> PlanetaryDesign:
@@ -654,9 +697,16 @@ def closest_ratio(scheme: str, target: float) -> PlanetaryDesign:
 
 
 def search_designs(scheme: str, target: float, tol_pct: float = 5.0, forced: Fraction | None = None,
-                   planets: int | None = None, n_alt: int = 6) -> SearchResult:
+                   planets: int | None = None, n_alt: int = 6, select: str = "smallest") -> SearchResult:
     """Exhaustive search over all tooth sets of the scheme within Z_MAX (conditions 1, 2, 5 by
-    construction and filter), planets by 3 and 4; carries the smallest by max(Γ1, Γ2).
+    construction and filter), planets by 3 and 4. ``select="smallest"`` carries the smallest by
+    max(Γ1, Γ2); ``select="accurate"`` (the program's default, :func:`design_gears`) carries the most
+    accurate ratio among the sets at most one tooth (SELECT_SLACK) larger than the smallest — a
+    teacher trades one tooth of size for an exact ratio, not 4.5 % of ratio for one tooth.
+
+    >>> r = search_designs("1", 720 / 140, select="accurate")  # i = 36/7 (variant 3 at 140 rpm)
+    >>> r.carried.stages[0].teeth, r.carried.planets, r.smallest.stages[0].teeth
+    ((21, 33, 87), 4, (22, 32, 86))
 
     Raises the internal exceptions ``_NoCandidates`` / ``_NoPlanets``; :func:`design_gears`
     turns them into messages.
@@ -665,9 +715,11 @@ def search_designs(scheme: str, target: float, tol_pct: float = 5.0, forced: Fra
     >>> r.carried.stages[0], r.rule
     (Stage(z_sun=40, z_planet=25, z_planet2=None, z_ring=90, planets=5), 'smallest_3plus')
     """
+    if select not in SELECT_RULES:
+        raise TmmError(f"selection rule '{select}' is unknown; use 'accurate' or 'smallest'")
     if scheme == "1+1":
-        return _search_two(target, tol_pct, forced, planets, n_alt)
-    return _search_single(scheme, target, tol_pct, forced, planets, n_alt)
+        return _search_two(target, tol_pct, forced, planets, n_alt, select)
+    return _search_single(scheme, target, tol_pct, forced, planets, n_alt, select)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -830,8 +882,10 @@ def _book_planets(scheme: str, fraction: Fraction, red: Fraction, r1, r2, rows, 
 class BookDerivation:
     """The book's procedure, for the fraction(s) it starts from.
 
-    ``fraction_rule``: "forced" (the user's fraction), "simple" (of the simple fractions with a
-    denominator ≤ 10 within tolerance, the one whose procedure gives the smallest reducer).
+    ``fraction_rule``: "forced" (the user's fraction), "exact" (i_pl itself is a fraction with a
+    denominator ≤ 10, e.g. 36/7 or 12/1: the book starts from it), "simple" (of the simple
+    fractions with a denominator ≤ 10 within tolerance, the one whose procedure gives the smallest
+    reducer).
     ``tried``: (fraction as text, size) for every simple fraction tried ("f1·f2" for two stages).
     """
 
@@ -883,10 +937,15 @@ def book_derivation(scheme: str, target: float, tol_pct: float, forced: Fraction
     >>> d.stages[0].chosen.teeth, d.fraction_rule
     ((40, 25, 90), 'forced')
     """
+    exact = exact_fraction(target)
     if scheme in ("1", "2"):
         if forced is not None:
             st = _book_one(scheme, forced)
             return BookDerivation(scheme, "forced", (st,), ((str(forced), st.chosen.size),)) if st else None
+        if exact is not None:  # i itself is a simple fraction (36/7, 12/1): the book starts from it
+            st = _book_one(scheme, exact)
+            if st is not None:
+                return BookDerivation(scheme, "exact", (st,), ((str(exact), st.chosen.size),))
         tried, best = [], None
         for f in simple_fractions(target, tol_pct):
             st = _book_one(scheme, f)
@@ -900,8 +959,28 @@ def book_derivation(scheme: str, target: float, tol_pct: float, forced: Fraction
             return None
         return BookDerivation(scheme, "simple", (best[1],), tuple(tried))
     # two stages
-    total = forced if forced is not None else None
-    root = math.sqrt(float(forced) if forced is not None else target)
+    total = forced if forced is not None else exact
+    if total is not None and forced is None:
+        d = _book_two(target, tol_pct, total)
+        if d is not None:
+            return BookDerivation("1+1", "exact", d[0], d[1])
+    return None if (d := _book_two(target, tol_pct, forced)) is None else BookDerivation(
+        "1+1", "forced" if forced is not None else "simple", d[0], d[1])
+
+
+def exact_fraction(target: float, max_den: int = 10) -> Fraction | None:
+    """i as a fraction with a denominator ≤ max_den when it is one (to 1e-12), else None.
+
+    >>> exact_fraction(720 / 140), exact_fraction(720 / 60), exact_fraction(720 / 220)
+    (Fraction(36, 7), Fraction(12, 1), None)
+    """
+    f = Fraction(target).limit_denominator(max_den)
+    return f if abs(float(f) - target) <= 1e-12 * target else None
+
+
+def _book_two(target: float, tol_pct: float, total: Fraction | None):
+    """§2.4 twice (stage 1 near √i, stage 2 the rest); with ``total`` the product is exactly it."""
+    root = math.sqrt(float(total) if total is not None else target)
     tol_half = tol_pct / 2
     tried, best = [], None
     for f1 in simple_fractions(root, tol_half):
@@ -927,8 +1006,7 @@ def book_derivation(scheme: str, target: float, tol_pct: float, forced: Fraction
     if best is None:
         return None
     stages = tuple(sorted(best[1], key=lambda s: -s.fraction))
-    return BookDerivation("1+1", "forced" if forced is not None else "simple", stages,
-                          tuple(sorted(tried, key=lambda t: t[1])[:12]))
+    return stages, tuple(sorted(tried, key=lambda t: t[1])[:12])
 
 
 # ----------------------------------------------------------------------------------------------

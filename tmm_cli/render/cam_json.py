@@ -11,6 +11,7 @@ import io
 import math
 
 from ..cam.design import CamResult
+from ..cam.profile import ROLLER_LIMIT
 from .i18n import note_text
 from .variants_tables import law_words, scheme_words
 
@@ -152,7 +153,10 @@ def cam_to_json(result: CamResult, lang: str) -> dict:
         "swing": z.swing,
         "r0_other_swing_mm": _mm(z.r0_other_swing_m),
         "roller_mm": _mm(p.roller_m),
-        "roller_rule": "0.2*r0 (1.28)",
+        "roller_rule": {"book": "0.2*r0 (1.28)", "limited": "0.8*rho_min (0.2*r0 would undercut or exceed 0.8*rho_min)", "student": "student (--roller)"}[p.roller_rule],
+        "roller_rule_applied": p.roller_rule,
+        "roller_book_mm": _mm(p.roller_book_m),
+        "roller_limit_share": ROLLER_LIMIT,
         "roller_max_mm": _mm(p.roller_max_m),
         "pressure_angle_max_deg": {"rise": _f(z.nu_rise_max_deg, 4), "return": _f(z.nu_return_max_deg, 4)},
         "pressure_angle_design_deg": _f(z.nu_design_deg, 4),
@@ -167,9 +171,7 @@ def cam_to_json(result: CamResult, lang: str) -> dict:
         "rho_min_at_deg": _f(p.phi_rho_min_convex_deg, 2),
         "rho_min_concave_mm": _mm(p.rho_min_concave_m),
         "undercut": p.undercut,
-        "undercut_fix": None
-        if p.r0_for_rule_m is None
-        else {"r0_mm": _mm(p.r0_for_rule_m), "e_mm": _mm(p.fix_e_m), "l_oc_mm": _mm(p.fix_l_oc_m), "centre_mm": _pt_mm(p.fix_centre)},
+        "undercut_fix": _fix(result),
         "far_dwell_radius_mm": _mm(p.r_far_m),
         "working_profile_min_radius_mm": _mm(p.working_min_radius_m),
         "centre_mm": _pt_mm(z.centre),
@@ -226,8 +228,56 @@ def cam_to_json(result: CamResult, lang: str) -> dict:
         "follower_in_curve_frame": _follower_geometry(result),
         "working_profile_mm": _curve_mm(p.inner),
         "groove_outer_profile_mm": _curve_mm(p.outer),
+        "design_source": result.source,
+        "student_choice": _choice(result),
+        "program_design": _own(result),
+        "pivot_move": result.pivot_move,
+        "checks": _checks(result),
         "warnings": warnings,
         "assumptions": assumptions,
+    }
+
+
+def _fix(result: CamResult) -> dict | None:
+    """Where the book's 0.2·r0 roller would undercut: the smallest cam keeping it (certified)."""
+    f = result.book_roller_fix
+    if f is None:
+        return None
+    return {"r0_mm": _mm(f.r0_m), "e_mm": _mm(f.e_m), "l_oc_mm": _mm(f.l_oc_m), "centre_mm": _pt_mm(f.centre),
+            "roller_rule": "0.2*r0 (1.28)", "certified": f.certified, "rel_tol": f.rel_tol, "cells": f.cells,
+            "meaning": "smallest r0 in the pressure-angle zone at which the book's roller does not undercut"}
+
+
+def _choice(result: CamResult) -> dict | None:
+    """The student's overrides as given (mm), or None for the program's own design."""
+    c = result.choice
+    if c is None or not c.given:
+        return None
+    return {"r0_mm": c.r0_mm, "offset_mm": c.offset_mm, "l_oc_mm": c.l_oc_mm, "swing": c.swing, "roller_mm": c.roller_mm,
+            "options": c.options}
+
+
+def _own(result: CamResult) -> dict | None:
+    """The program's own sizing beside the student's choice (mm), or None."""
+    z = result.own
+    if z is None:
+        return None
+    return {"r0_mm": _mm(z.r0_m), "e_mm": _mm(z.e_m), "l_oc_mm": _mm(z.l_oc_m), "swing": z.swing,
+            "pressure_angle_max_deg": {"rise": _f(z.nu_rise_max_deg, 4), "return": _f(z.nu_return_max_deg, 4)}}
+
+
+def _checks(result: CamResult) -> dict | None:
+    """The carried design's conditions: ν on every constrained phase, undercut, pivot."""
+    ch = result.checks
+    if ch is None:
+        return None
+    return {
+        "pressure_angle_ok": {"rise": ch.nu_rise_ok, "return": ch.nu_return_ok},
+        "return_limited": ch.return_limited,
+        "undercut_ok": ch.undercut_ok,
+        "pivot_ok": ch.pivot_ok,
+        "pivot_body_radius_mm": _mm(ch.body_m),
+        "all_ok": ch.ok,
     }
 
 

@@ -163,7 +163,7 @@ def _dims_table(r: CamResult, lang: str):
     t = _table(
         pick(lang, "Main dimensions (1.19)–(1.25), roller (1.28)", "Основные размеры (1.19)–(1.25), ролик (1.28)"),
         (pick(lang, "Quantity", "Величина"), "left"),
-        (pick(lang, "Chosen (exact zone)", "Принято (точная зона)"), "right"),
+        (pick(lang, "Chosen (exact zone)", "Принято (точная зона)") if r.source == "program" else pick(lang, "Your choice", "Ваш выбор"), "right"),
         (pick(lang, "Book's vertex", "Вершина по пособию"), "right"),
         (pick(lang, "Note", "Примечание"), "left"),
     )
@@ -172,7 +172,8 @@ def _dims_table(r: CamResult, lang: str):
         t.add_row("l_OC", f"{z.l_oc_m * 1000:.2f} {mm}", f"{z.book_l_oc_m * 1000:.2f} {mm}", pick(lang, "cam centre to rocker pivot", "межцентровое расстояние"))
         t.add_row("l_BC", f"{v.l_bc_m * 1000:.2f} {mm}", "", pick(lang, "given", "задано"))
         sw = pick(lang, "same way as the cam", "в ту же сторону, что и кулачок") if z.swing == "same" else pick(lang, "opposite to the cam", "против вращения кулачка")
-        t.add_row(pick(lang, "swing on rise", "качание при удалении"), sw, "", pick(lang, f"other swing: r_0 = {z.r0_other_swing_m * 1000:.2f} mm", f"другое направление: r_0 = {z.r0_other_swing_m * 1000:.2f} мм"))
+        other = "" if z.r0_other_swing_m is None else pick(lang, f"other swing: r_0 = {z.r0_other_swing_m * 1000:.2f} mm", f"другое направление: r_0 = {z.r0_other_swing_m * 1000:.2f} мм")
+        t.add_row(pick(lang, "swing on rise", "качание при удалении"), sw, "", other)
     else:
         t.add_row("e", f"{z.e_m * 1000:+.2f} {mm}", f"{z.book_e_m * 1000:+.2f} {mm}", pick(lang, "e > 0: follower axis right of O (follower above the cam)", "e > 0: ось толкателя правее O (толкатель над кулачком)"))
     t.add_row(
@@ -187,7 +188,9 @@ def _dims_table(r: CamResult, lang: str):
         f"{z.book_nu_return_max_deg:.2f}°",
         pick(lang, "not limited (spring)", "не ограничивается (пружина)") if z.closure == "force" else f"ν_max = {v.nu_max_deg:g}°",
     )
-    t.add_row("r_р", f"{p.roller_m * 1000:.2f} {mm}", "", "0.2·r_0 (1.28)")
+    rule = {"book": "0.2·r_0 (1.28)", "limited": pick(lang, "0.8·ρ_min (0.2·r_0 too large)", "0,8·ρ_min (0,2·r_0 велик)"),
+            "student": pick(lang, "your --roller", "ваш --roller")}.get(p.roller_rule, "")
+    t.add_row("r_р", f"{p.roller_m * 1000:.2f} {mm}", f"{p.roller_book_m * 1000:.2f} {mm}", rule)
     t.add_row("r_0 − r_р", f"{p.working_min_radius_m * 1000:.2f} {mm}", "", pick(lang, "smallest radius of the working profile", "наименьший радиус действительного профиля"))
     t.add_row(pick(lang, "far-dwell radius", "радиус дальнего стояния"), f"{p.r_far_m * 1000:.2f} {mm}", "", pick(lang, "pitch curve", "теоретический профиль"))
     return t
@@ -288,6 +291,10 @@ def _checks_table(r: CamResult, lang: str):
     if p.undercut and p.r0_for_rule_m is not None:
         fix = f"l_OC = {p.fix_l_oc_m * 1000:.2f} {mm}" if v.is_rocker else f"e = {p.fix_e_m * 1000:+.2f} {mm}"
         t.add_row("→", pick(lang, "fix: larger cam", "исправление: больший кулачок"), f"r_0 = {p.r0_for_rule_m * 1000:.2f} {mm}, {fix}")
+    ch = r.checks
+    if ch is not None and ch.pivot_ok is not None:
+        t.add_row(OK if ch.pivot_ok else BAD, pick(lang, "pivot C outside the cam's sweep", "опора C вне кулачка"),
+                  f"l_OC = {ch.l_oc_m * 1000:.2f} {mm} {'>' if ch.pivot_ok else '≤'} {ch.body_m * 1000:.2f} {mm}")
     conv = f"ρ_min {pick(lang, 'convex', 'выпукл.')} = {p.rho_min_convex_m * 1000:.2f} {mm}"
     if p.rho_min_concave_m is not None:
         conv += f"; {pick(lang, 'concave', 'вогнут.')} = {p.rho_min_concave_m * 1000:.2f} {mm}"

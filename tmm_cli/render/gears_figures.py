@@ -418,7 +418,9 @@ def _velocity(ax, result, lang, ylim):
             groups.append([vx, ry, [name]])
     for vx, ry, names in groups:
         ax.plot(vx, ry, "o", color="k", ms=3.5)
-        ax.annotate(" = ".join(names), (vx, ry), xytext=(5, 3), textcoords="offset points", fontsize=9)
+        left = names == ["B2"]  # the two rings can differ by one tooth: B2 left of the axis, B1 right
+        ax.annotate(" = ".join(names), (vx, ry), xytext=(-5, 3) if left else (5, 3), textcoords="offset points",
+                    fontsize=9, ha="right" if left else "left")
     s0, sl = v.stages[0], v.stages[-1]
     from matplotlib.patches import Arc
 

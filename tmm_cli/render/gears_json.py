@@ -143,6 +143,12 @@ def gears_to_json(result, lang: str) -> dict:
             "candidates": r.search.n_sets,
             "alternatives": [{**_design(a), "carried": a == d} for a in r.search.alternatives],
             "smallest_any": _design(r.search.smallest_any),
+            "select": r.search.select,
+            "select_rule": ("the most accurate ratio among the sets at most 1 tooth larger than the smallest"
+                            if r.search.select == "accurate" else "the smallest reducer"),
+            "smallest": None if r.search.smallest is None else _design(r.search.smallest),
+            "stage_range": [3.0, 8.0] if r.scheme == "1+1" else None,
+            "stage_range_ok": r.search.stage_range_ok,
         },
         "checks": {
             "ok": ch.ok,

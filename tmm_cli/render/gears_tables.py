@@ -165,6 +165,9 @@ def _print_book(console, r, lang):
     rule = pick(lang, "the fraction given by the user", "дробь задана пользователем") if d.fraction_rule == "forced" else \
         pick(lang, "of the simple fractions (denominator ≤ 10) within tolerance, the one giving the smallest reducer",
              "из простых дробей (знаменатель ≤ 10) в пределах допуска — дающая наименьший редуктор")
+    if d.fraction_rule == "exact":
+        rule = pick(lang, "i_pl is itself a simple fraction, so the procedure starts from it (exact ratio)",
+                    "i_пл само является простой дробью — расчёт начинается с неё (точное передаточное отношение)")
     console.print(f"[bold]{pick(lang, 'The book’s hand procedure', 'Ручная методика пособия')} ({sec})[/] — {rule}")
     if d.fraction_rule == "simple" and len(d.tried) > 1:
         tried = ", ".join(f"{f}→{n}" for f, n in sorted(d.tried, key=lambda x: x[1])[:10])
@@ -192,6 +195,9 @@ def _print_search(console, r, lang):
         "smallest_no3": pick(lang, "none takes 3 planets: the smallest", "k ≥ 3 невозможно: наименьший"),
         "forced_planets": pick(lang, f"smallest taking k = {s.forced_planets}", f"наименьший с k = {s.forced_planets}"),
     }[s.rule]
+    if getattr(s, "select", "smallest") == "accurate":
+        rule += pick(lang, ", then the most accurate ratio within one tooth of it",
+                     ", затем самое точное отношение при габарите не более чем на 1 зуб больше")
     title = pick(lang, f"Exhaustive search: {s.n_sets} candidates within ±{_f(s.tolerance_pct)} %, "
                        f"every wheel ≤ {s.z_max} teeth; size = max(Γ1, Γ2) = max(z_k + 2z_c, z_n); rule: {rule}",
                  f"Полный перебор: {s.n_sets} вариантов в пределах ±{_f(s.tolerance_pct)} %, все колёса ≤ {s.z_max} "

@@ -103,3 +103,89 @@ MESSAGES.update(
         },
     }
 )
+
+# issue 8: the roller rule, the pivot move, the student's choice and its failed checks, sanity remarks
+MESSAGES.update(
+    {
+        "cam_swing_same_given": {
+            "en": "The rocker turns the same way as the cam during the rise (your --swing same); the smallest cam for it has r0 = {r0_mm:.2f} mm.",
+            "ru": "Коромысло при удалении поворачивается в ту же сторону, что и кулачок (ваш --swing same); наименьший кулачок для этого r_0 = {r0_mm:.2f} мм.",
+        },
+        "cam_swing_opposite_given": {
+            "en": "The rocker turns opposite to the cam during the rise (your --swing opposite); the smallest cam for it has r0 = {r0_mm:.2f} mm.",
+            "ru": "Коромысло при удалении поворачивается навстречу вращению кулачка (ваш --swing opposite); наименьший кулачок для этого r_0 = {r0_mm:.2f} мм.",
+        },
+        "cam_pivot_moved_swing": {
+            "en": "With the smallest cam (the other swing direction, r0 = {r0_before_mm:.2f} mm) the rocker pivot C (l_OC = {l_oc_before_mm:.2f} mm) would lie inside the circle the cam sweeps ({body_before_mm:.2f} mm); the program carries the other swing direction instead: r0 = {r0_mm:.2f} mm, l_OC = {l_oc_mm:.2f} mm > {body_mm:.2f} mm, ν ≤ ν_max kept.",
+            "ru": "У наименьшего кулачка (при другом направлении качания, r_0 = {r0_before_mm:.2f} мм) центр качания коромысла C (l_OC = {l_oc_before_mm:.2f} мм) оказался бы внутри окружности, которую заметает кулачок ({body_before_mm:.2f} мм); поэтому принято обратное направление качания: r_0 = {r0_mm:.2f} мм, l_OC = {l_oc_mm:.2f} мм > {body_mm:.2f} мм, условие ν ≤ ν_max сохранено.",
+        },
+        "cam_pivot_moved_centre": {
+            "en": "With the smallest cam (r0 = {r0_before_mm:.2f} mm) the rocker pivot C (l_OC = {l_oc_before_mm:.2f} mm) would lie inside the circle the cam sweeps ({body_before_mm:.2f} mm), and so would it with the other swing; the program carries the zone's centre nearest to B0 that clears it: r0 = {r0_mm:.2f} mm, l_OC = {l_oc_mm:.2f} mm > {body_mm:.2f} mm, ν ≤ ν_max kept.",
+            "ru": "У наименьшего кулачка (r_0 = {r0_before_mm:.2f} мм) центр качания коромысла C (l_OC = {l_oc_before_mm:.2f} мм) оказался бы внутри окружности, которую заметает кулачок ({body_before_mm:.2f} мм), и при обратном качании тоже; принят ближайший к B_0 центр зоны, при котором C вне кулачка: r_0 = {r0_mm:.2f} мм, l_OC = {l_oc_mm:.2f} мм > {body_mm:.2f} мм, условие ν ≤ ν_max сохранено.",
+        },
+        "cam_student_offset": {
+            "en": "Your choice is carried ({options}): r0 = {r0_mm:.2f} mm, e = {geo_mm:.2f} mm. The program's own design: r0 = {own_r0_mm:.2f} mm, e = {own_geo_mm:.2f} mm (the smallest r0 with ν ≤ ν_max; the book's vertex: {book_r0_mm:.2f} mm).",
+            "ru": "Принят ваш выбор ({options}): r_0 = {r0_mm:.2f} мм, e = {geo_mm:.2f} мм. Собственный расчёт программы: r_0 = {own_r0_mm:.2f} мм, e = {own_geo_mm:.2f} мм (наименьший r_0 при ν ≤ ν_max; по точке пересечения прямых пособия — {book_r0_mm:.2f} мм).",
+        },
+        "cam_student_rocker": {
+            "en": "Your choice is carried ({options}): r0 = {r0_mm:.2f} mm, l_OC = {geo_mm:.2f} mm. The program's own design: r0 = {own_r0_mm:.2f} mm, l_OC = {own_geo_mm:.2f} mm (the smallest r0 with ν ≤ ν_max; the book's vertex: {book_r0_mm:.2f} mm).",
+            "ru": "Принят ваш выбор ({options}): r_0 = {r0_mm:.2f} мм, l_OC = {geo_mm:.2f} мм. Собственный расчёт программы: r_0 = {own_r0_mm:.2f} мм, l_OC = {own_geo_mm:.2f} мм (наименьший r_0 при ν ≤ ν_max; по точке пересечения прямых пособия — {book_r0_mm:.2f} мм).",
+        },
+        "cam_fail_nu_rise": {
+            "en": "FAILS the pressure-angle condition (1.19) on the rise: ν reaches {nu_deg:.2f}° > ν_max = {nu_max_deg:g}°. The cam is drawn anyway; move the centre into the zone (the smallest r0 is {r0_min_mm:.2f} mm).",
+            "ru": "НЕ ВЫПОЛНЕНО условие по углу давления (1.19) на участке удаления: ν достигает {nu_deg:.2f}° > ν_max = {nu_max_deg:g}°. Кулачок построен, но центр нужно перенести в зону допустимого положения (наименьший r_0 = {r0_min_mm:.2f} мм).",
+        },
+        "cam_fail_nu_return": {
+            "en": "FAILS the pressure-angle condition (1.19) on the return (a groove drives the return too): ν reaches {nu_deg:.2f}° > ν_max = {nu_max_deg:g}°. The cam is drawn anyway; move the centre into the zone (the smallest r0 is {r0_min_mm:.2f} mm).",
+            "ru": "НЕ ВЫПОЛНЕНО условие по углу давления (1.19) на участке возвращения (паз ведёт толкатель и при возвращении): ν достигает {nu_deg:.2f}° > ν_max = {nu_max_deg:g}°. Кулачок построен, но центр нужно перенести в зону допустимого положения (наименьший r_0 = {r0_min_mm:.2f} мм).",
+        },
+        "cam_roller_limited_undercut": {
+            "en": "Roller radius r_roller = {share:g}·ρ_min = {roller_mm:.2f} mm: the book's 0.2·r0 = {book_mm:.2f} mm (1.28) is not smaller than the pitch curve's smallest radius of curvature ρ_min = {rho_mm:.2f} mm (at φ = {phi_deg:g}°) and would undercut the profile. Rule: r0 is kept, the roller is limited to {share:g}·ρ_min (r_roller ≤ 0.8·ρ_min, the usual roller condition); the working profile's smallest radius is r0 − r_roller = {working_min_mm:.2f} mm.",
+            "ru": "Радиус ролика r_р = {share:g}·ρ_min = {roller_mm:.2f} мм: по пособию 0,2·r_0 = {book_mm:.2f} мм (1.28) не меньше наименьшего радиуса кривизны теоретического профиля ρ_min = {rho_mm:.2f} мм (при φ = {phi_deg:g}°), профиль был бы подрезан. Правило: r_0 сохраняется, радиус ролика ограничивается величиной {share:g}·ρ_min (обычное условие r_р ≤ 0,8·ρ_min); наименьший радиус действительного профиля r_0 − r_р = {working_min_mm:.2f} мм.",
+        },
+        "cam_roller_limited_tight": {
+            "en": "Roller radius r_roller = {share:g}·ρ_min = {roller_mm:.2f} mm: the book's 0.2·r0 = {book_mm:.2f} mm (1.28) does not undercut, but exceeds {share:g} of the smallest radius of curvature ρ_min = {rho_mm:.2f} mm (at φ = {phi_deg:g}°), a nearly sharp working profile. Rule: r0 is kept, the roller is limited to {share:g}·ρ_min (the usual roller condition r_roller ≤ 0.8·ρ_min); r0 − r_roller = {working_min_mm:.2f} mm.",
+            "ru": "Радиус ролика r_р = {share:g}·ρ_min = {roller_mm:.2f} мм: по пособию 0,2·r_0 = {book_mm:.2f} мм (1.28) подреза не даёт, но превышает {share:g} наименьшего радиуса кривизны ρ_min = {rho_mm:.2f} мм (при φ = {phi_deg:g}°) — действительный профиль почти острый. Правило: r_0 сохраняется, радиус ролика ограничивается величиной {share:g}·ρ_min (обычное условие r_р ≤ 0,8·ρ_min); r_0 − r_р = {working_min_mm:.2f} мм.",
+        },
+        "cam_roller_student": {
+            "en": "Roller radius r_roller = {roller_mm:.2f} mm (your --roller; the book's 0.2·r0 = {book_mm:.2f} mm, the program's rule would take {own_mm:.2f} mm, the limit 0.8·ρ_min = {limit_mm:.2f} mm); r0 − r_roller = {working_min_mm:.2f} mm.",
+            "ru": "Радиус ролика r_р = {roller_mm:.2f} мм (ваш --roller; по пособию 0,2·r_0 = {book_mm:.2f} мм, по правилу программы {own_mm:.2f} мм, предел 0,8·ρ_min = {limit_mm:.2f} мм); r_0 − r_р = {working_min_mm:.2f} мм.",
+        },
+        "cam_fail_undercut_convex": {
+            "en": "FAILS the undercut condition: the roller ({roller_mm:.2f} mm) is not smaller than the pitch curve's smallest convex radius of curvature {rho_mm:.2f} mm (at φ = {phi_deg:g}°); the working profile has a cusp. Take a roller of at most {limit_mm:.2f} mm (0.8·ρ_min) or a larger r0.",
+            "ru": "НЕ ВЫПОЛНЕНО условие отсутствия подреза: радиус ролика ({roller_mm:.2f} мм) не меньше наименьшего радиуса кривизны выпуклой части теоретического профиля {rho_mm:.2f} мм (при φ = {phi_deg:g}°), на действительном профиле острие. Возьмите ролик не больше {limit_mm:.2f} мм (0,8·ρ_min) или увеличьте r_0.",
+        },
+        "cam_fail_undercut_concave": {
+            "en": "FAILS the undercut condition on the groove's outer side: the roller ({roller_mm:.2f} mm) is not smaller than the smallest concave radius of curvature {rho_mm:.2f} mm (at φ = {phi_deg:g}°). Take a roller of at most {limit_mm:.2f} mm (0.8·ρ_min) or a larger r0.",
+            "ru": "НЕ ВЫПОЛНЕНО условие отсутствия подреза наружной стороны паза: радиус ролика ({roller_mm:.2f} мм) не меньше наименьшего радиуса кривизны вогнутой части {rho_mm:.2f} мм (при φ = {phi_deg:g}°). Возьмите ролик не больше {limit_mm:.2f} мм (0,8·ρ_min) или увеличьте r_0.",
+        },
+        "cam_fail_pivot_force": {
+            "en": "FAILS the pivot condition: the rocker pivot C (l_OC = {l_oc_mm:.2f} mm) lies inside the circle the cam body sweeps (largest radius of the working profile {body_mm:.2f} mm); choose a larger l_OC or the other --swing.",
+            "ru": "НЕ ВЫПОЛНЕНО условие размещения опоры: центр качания коромысла C (l_OC = {l_oc_mm:.2f} мм) лежит внутри окружности, которую заметает кулачок (наибольший радиус действительного профиля {body_mm:.2f} мм); увеличьте l_OC или выберите другое --swing.",
+        },
+        "cam_fail_pivot_form": {
+            "en": "FAILS the pivot condition: the rocker pivot C (l_OC = {l_oc_mm:.2f} mm) lies inside the circle swept by the groove's outer wall (radius {body_mm:.2f} mm, before any wall thickness); choose a larger l_OC or the other --swing.",
+            "ru": "НЕ ВЫПОЛНЕНО условие размещения опоры: центр качания коромысла C (l_OC = {l_oc_mm:.2f} мм) лежит внутри окружности, которую заметает наружная стенка паза (радиус {body_mm:.2f} мм без толщины стенки); увеличьте l_OC или выберите другое --swing.",
+        },
+        "cam_small_vs_rocker": {
+            "en": "Remark: the cam is much smaller than its follower: r0 = {r0_mm:.2f} mm against l_BC = {l_bc_mm:.0f} mm ({ratio:g} times, under a quarter). It meets ν ≤ ν_max, but such a cam is hard to make and the rocker's bearing takes large forces; a larger r0 (--r0) is a sensible choice for the drawing.",
+            "ru": "Замечание: кулачок много меньше толкателя: r_0 = {r0_mm:.2f} мм при l_BC = {l_bc_mm:.0f} мм (в {ratio:g} раза, меньше четверти). Условие ν ≤ ν_max выполнено, но такой кулачок трудно изготовить, а опора коромысла сильно нагружена; для чертежа разумно взять больший r_0 (--r0).",
+        },
+        "cam_roller_small": {
+            "en": "Remark: the roller radius {roller_mm:.2f} mm is under {min_mm:g} mm, smaller than any practical roller bearing; a larger r0 (--r0) allows a larger roller.",
+            "ru": "Замечание: радиус ролика {roller_mm:.2f} мм меньше {min_mm:g} мм — меньше любого реального роликового подшипника; больший r_0 (--r0) позволит взять больший ролик.",
+        },
+        "cam_stroke_long": {
+            "en": "Remark: the stroke S_max = {s_mm:.0f} mm is unusually long (Table 1.2's strokes are 20…130 mm, here r0 = {r0_mm:.0f} mm); the program computes with it as given — check the value in your copy of the table (a misprint such as 0.025 m is possible).",
+            "ru": "Замечание: ход толкателя S_max = {s_mm:.0f} мм необычно велик (в табл. 1.2 ходы 20…130 мм, здесь r_0 = {r0_mm:.0f} мм); программа считает с заданным значением — сверьте его со своим экземпляром таблицы (возможна опечатка, например 0,025 м).",
+        },
+            "cam_book_roller_fix_offset": {
+            "en": "To keep the book's roller 0.2·r0 ({book_mm:.2f} mm would undercut here) the cam must grow to r0 = {r0_mm:.2f} mm with e = {geo_mm:.2f} mm: the smallest such cam in the pressure-angle zone, every smaller centre (by more than {tol_pct:g} %) proven to undercut{proven}; --r0 {r0_mm:.2f} --offset {geo_mm:.2f} --roller {roller_mm:.2f} carries it.",
+            "ru": "Чтобы сохранить ролик 0,2·r_0 по пособию (здесь {book_mm:.2f} мм дал бы подрез), кулачок нужно увеличить до r_0 = {r0_mm:.2f} мм при e = {geo_mm:.2f} мм: это наименьший такой кулачок в зоне допустимого положения центра, для всех меньших (более чем на {tol_pct:g} %) подрез доказан{proven}; его даёт --r0 {r0_mm:.2f} --offset {geo_mm:.2f} --roller {roller_mm:.2f}.",
+        },
+        "cam_book_roller_fix_rocker": {
+            "en": "To keep the book's roller 0.2·r0 ({book_mm:.2f} mm would undercut here) the cam must grow to r0 = {r0_mm:.2f} mm with l_OC = {geo_mm:.2f} mm: the smallest such cam in the pressure-angle zone, every smaller centre (by more than {tol_pct:g} %) proven to undercut{proven}; --r0 {r0_mm:.2f} --l-oc {geo_mm:.2f} --swing {swing} --roller {roller_mm:.2f} carries it.",
+            "ru": "Чтобы сохранить ролик 0,2·r_0 по пособию (здесь {book_mm:.2f} мм дал бы подрез), кулачок нужно увеличить до r_0 = {r0_mm:.2f} мм при l_OC = {geo_mm:.2f} мм: это наименьший такой кулачок в зоне допустимого положения центра, для всех меньших (более чем на {tol_pct:g} %) подрез доказан{proven}; его даёт --r0 {r0_mm:.2f} --l-oc {geo_mm:.2f} --swing {swing} --roller {roller_mm:.2f}.",
+        },
+    }
+)

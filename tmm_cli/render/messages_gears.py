@@ -168,4 +168,54 @@ MESSAGES: dict[str, dict[str, str]] = {
         "ru": "Передача — мультипликатор (z1 = {z1} > z2 = {z2}): шестерня статьи — ведущее колесо, поэтому модель "
               "шестерни (нагрузка на делительной окружности) применена к колесу 1, хотя оно большее.",
     },
+    # issue 8: the selection rule, the two-stage range, sanity remark
+    "book_vs_search_accurate": {
+        "en": "The book's procedure gives {book} (size {book_size}); the carried {found} (size {size}) is at most one "
+              "tooth larger than the smallest set found and has the more accurate ratio (selection rule above).",
+        "ru": "Методика пособия даёт {book} (габарит {book_size}); принятый {found} (габарит {size}) не более чем на "
+              "один зуб больше наименьшего найденного и точнее по передаточному отношению (правило выбора выше).",
+    },
+    "select_accurate_same": {
+        "en": "Selection rule (--select accurate): among the sets within tolerance, those at most {slack} tooth larger "
+              "than the smallest are compared and the most accurate ratio is carried; here the smallest, {teeth} "
+              "(size {size}, {err} %), is also the most accurate.",
+        "ru": "Правило выбора (--select accurate): из наборов в пределах допуска сравниваются те, что не более чем на "
+              "{slack} зуб больше наименьшего, и принимается самый точный по передаточному отношению; здесь "
+              "наименьший {teeth} (габарит {size}, {err} %) и есть самый точный.",
+    },
+    "select_accurate_other": {
+        "en": "Carried: {teeth}, k = {k} (size {size}, ratio error {err} %) — selection rule (--select accurate): among "
+              "the {n} tooth sets within tolerance (every wheel ≤ {zmax} teeth), those at most {slack} tooth larger "
+              "than the smallest are compared and the most accurate ratio is carried. The smallest is {s_teeth}, "
+              "k = {s_k} (size {s_size}, {s_err} %); --select smallest carries that one.",
+        "ru": "Принят {teeth}, k = {k} (габарит {size}, ошибка передаточного отношения {err} %) — правило выбора "
+              "(--select accurate): из {n} наборов в пределах допуска (все колёса ≤ {zmax} зубьев) сравниваются те, "
+              "что не более чем на {slack} зуб больше наименьшего, и принимается самый точный. Наименьший — "
+              "{s_teeth}, k = {s_k} (габарит {s_size}, {s_err} %); его даёт --select smallest.",
+    },
+    "select_smallest": {
+        "en": "Selection rule (--select smallest): the smallest reducer is carried, {teeth} (size {size}), whatever "
+              "its ratio error within tolerance (the default --select accurate compares the sets up to {slack} tooth "
+              "larger and takes the most accurate ratio).",
+        "ru": "Правило выбора (--select smallest): принят наименьший редуктор {teeth} (габарит {size}) при любой "
+              "ошибке в пределах допуска (по умолчанию, --select accurate, сравниваются наборы до {slack} зуба больше "
+              "и принимается самый точный).",
+    },
+    "two_stage_range_ok": {
+        "en": "Both stages lie within the single-row range {lo}…{hi} of Fig. 2.4: i1 = {i1}, i2 = {i2}.",
+        "ru": "Обе ступени лежат в диапазоне однорядной схемы {lo}…{hi} (рис. 2.4): i1 = {i1}, i2 = {i2}.",
+    },
+    "two_stage_range_outside": {
+        "en": "No pair of single-row stages within tolerance keeps both stages within Fig. 2.4's range {lo}…{hi}; "
+              "the carried stages have i1 = {i1}, i2 = {i2}.",
+        "ru": "Ни одна пара однорядных ступеней в пределах допуска не укладывается в диапазон {lo}…{hi} (рис. 2.4); "
+              "у принятых ступеней i1 = {i1}, i2 = {i2}.",
+    },
+    "ratio_error_large": {
+        "en": "Remark: the ratio error {err} % is over {limit} % (legal within the tolerance, but the crank turns at "
+              "{rpm} rpm instead of {want}); a narrower --tolerance or --select accurate finds a closer set if one exists.",
+        "ru": "Замечание: ошибка передаточного отношения {err} % больше {limit} % (в пределах допуска, но кривошип "
+              "вращается с {rpm} об/мин вместо {want}); более узкий --tolerance или --select accurate найдут более "
+              "точный набор, если он есть.",
+    },
 }

@@ -74,7 +74,8 @@ def print_notes(console, notes, lang: str) -> None:
     assumptions = [n for n in notes if n.level == "assumption"]
     warnings = [n for n in notes if n.level == "warning"]
     lines = [f"[cyan]ℹ[/] {note_text(n, lang)}" for n in assumptions]
-    lines += [f"[yellow]⚠[/] {note_text(n, lang)}" for n in warnings]
+    lines += [f"[bold red]✖ {note_text(n, lang)}[/]" if "_fail_" in n.code else f"[yellow]⚠[/] {note_text(n, lang)}"
+              for n in warnings]  # "_fail_": a condition the carried (student's) design breaks
     title = pick(lang, f"Assumptions ({len(assumptions)}) and warnings ({len(warnings)})",
                  f"Допущения ({len(assumptions)}) и предупреждения ({len(warnings)})")
     console.print(Panel("\n".join(lines), title=title, expand=False))
