@@ -311,13 +311,21 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 @format_option
 @no_plots_option
 @json_option
-@click.option("--report", "report", type=click.Choice(["md", "pdf"]), default="md", show_default=True, help="Report format written beside the figures.")
+@click.option("--report", "report", type=click.Choice(["md", "pdf"]), default="pdf", show_default=True,
+              help="pdf: the explanatory note (note.pdf and its source note.typ); md: report.md.")
+@click.option("--note-template", "note_template", type=click.Path(dir_okay=False), default=None, metavar="FILE",
+              help="A typst style file replacing the note's (see docs/note.md).")
 @step_option
 @title_options
 @lang_option
-def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, report, step_deg, lang, **title_kw):
-    """The whole project for one variant: sheet 4 then sheet 3, figures, results.json and a report."""
+def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, report, note_template, step_deg, lang, **title_kw):
+    """The whole project for one variant: sheet 4 then sheet 3, figures, results.json and the note."""
     title = _title(title_kw)
+    template = None
+    if note_template is not None:
+        from .render.note import read_template
+
+        template = read_template(note_template)
     from .project import run_project
     from .render.files import ensure_writable_dir
     from .render.report import write_project_folder
@@ -330,7 +338,8 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
         v, crank_rpm=crank_rpm, torque_nm=torque_nm, step_deg=step_deg,
         ratio=_parse_ratio(ratio), tolerance_pct=tolerance_pct, planets=planets,
     )
-    doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report, title=title)
+    doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report, title=title,
+                                        note_template=template)
     if as_json:
         _print_json(doc)
         return

@@ -60,8 +60,8 @@ def cam_section(c: Ctx) -> None:
               align="left, center, left", widths=["auto", "auto", "1fr"])
     doc.p(t("The working angle of the cam and the near-dwell angle:", "Рабочий угол кулачка и угол ближнего стояния:"))
     doc.formula(f'φ_"р" = φ_"у" + φ_"дс" + φ_"в" = {q(v.phi_rise_deg)} + {q(v.phi_far_dwell_deg)} + '
-                f'{q(v.phi_return_deg)} = {q(v.phi_working_deg)} degree', "1.3")
-    doc.formula(f'φ_"бс" = 360 degree - φ_"р" = 360 degree - {q(v.phi_working_deg)} degree = {q(v.phi_near_dwell_deg)} degree', None)
+                f'{q(v.phi_return_deg)} = {c.qd(v.phi_working_deg)}', "1.3")
+    doc.formula(f'φ_"бс" = 360 degree - φ_"р" = "360°" - {c.qd(v.phi_working_deg)} = {c.qd(v.phi_near_dwell_deg)}', None)
     doc.p(t("The angular speed of the cam and the time of one turn:", "Угловая скорость кулачка и время одного оборота:"))
     doc.formula(f"ω_k = (π |n_k|)/30 = (π dot {q(abs(v.n_cam_rpm))})/30 = {q(m.omega, sig=5)} {c.u(t('rad/s', 'рад/с'))}", "1.5")
     doc.formula(f"T = 60/(|n_k|) = 60/{q(abs(v.n_cam_rpm))} = {q(m.period_s, sig=4)} {c.u(t('s', 'с'))}", None)
@@ -209,10 +209,11 @@ def cam_section(c: Ctx) -> None:
               [t("Quantity", "Величина"), t("Exact zone (taken)", "Точная зона (принято)"),
                t("Textbook's vertex", "Построение пособия")], rows)
     diff = (z.book_r0_m / z.r0_m - 1) * 100
-    doc.p(t(f"The textbook's construction gives an r0 larger by {n(diff, decimals=2)} %; "
-            f"the allowed angle is $ν_max = {q(v.nu_max_deg)}°$.",
-            f"Построение пособия даёт $r_0$ больше на {n(diff, decimals=2)} %; допустимый угол давления "
-            f"$ν_max = {q(v.nu_max_deg)}°$."))
+    if abs(diff) < 0.005:
+        doc.p(t("The textbook's construction gives the same point here.", "Построение пособия здесь даёт ту же точку."))
+    else:
+        doc.p(t(f"The textbook's construction gives $r_0$ larger by {n(diff, decimals=2)} %.",
+                f"Построение пособия даёт $r_0$ больше на {n(diff, decimals=2)} %."))
     c.fig("cam_zone", t("Zone of the cam centre", "Зона допустимого расположения центра вращения кулачка"))
 
     # 1.5 profile -------------------------------------------------------------------------------
@@ -243,9 +244,9 @@ def cam_section(c: Ctx) -> None:
             "by (1.1), (1.2) and (1.4):",
             "Профильные углы отличаются от фазовых при смещённом толкателе и у коромысла; по (1.1), (1.2), (1.4):"))
     doc.formula(f'ψ_"у" + ψ_"дс" + ψ_"в" + ψ_"бс" = {q(p.psi_rise_deg, decimals=2)} + {q(abs(p.psi_far_deg), decimals=2)} + '
-                f'{q(p.psi_return_deg, decimals=2)} + {q(p.psi_near_deg, decimals=2)} = 360 degree', "1.1")
-    doc.formula(f'ψ_"р" = ψ_"у" + ψ_"дс" + ψ_"в" = {q(p.psi_working_deg, decimals=2)} degree', "1.2")
-    doc.formula(f'ψ_"р" = φ_"р" = {q(v.phi_working_deg)} degree', "1.4")
+                f'{q(p.psi_return_deg, decimals=2)} + {q(p.psi_near_deg, decimals=2)} = "360°"', "1.1")
+    doc.formula(f'ψ_"р" = ψ_"у" + ψ_"дс" + ψ_"в" = {c.qd(p.psi_working_deg, decimals=2)}', "1.2")
+    doc.formula(f'ψ_"р" = φ_"р" = {c.qd(v.phi_working_deg)}', "1.4")
     doc.p(t("The roller radius by (1.28):", "Радиус ролика — по (1.28):"))
     doc.formula(f'r_"р" = {q(0.2)} r_0 = {q(0.2)} dot {q(z.r0_m * 1000, decimals=2)} = {q(p.roller_m * 1000, decimals=2)} {c.u(mm)}', "1.28")
     doc.p(t(f"Here $r_0$ is the base radius of the pitch profile; the smallest radius of the working profile is "

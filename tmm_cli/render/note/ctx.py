@@ -31,6 +31,17 @@ class Ctx:
         """A number inside typst math (a string, so that the decimal comma gets no space)."""
         return '"' + self.n(x, **kw) + '"'
 
+    def qd(self, x, **kw) -> str:
+        """An angle in degrees inside typst math."""
+        return '"' + self.n(x, **kw) + '°"'
+
+    def planets(self, k: int) -> str:
+        """"4 сателлита" / "4 planets"."""
+        from ..numbers import plural
+
+        return plural(k, self.lang, {"one": "planet", "other": "planets"} if self.lang != "ru"
+                      else {"one": "сателлит", "few": "сателлита", "many": "сателлитов"})
+
     @staticmethod
     def u(unit: str) -> str:
         """A unit after a value inside typst math."""

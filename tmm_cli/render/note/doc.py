@@ -41,6 +41,33 @@ def typst_string(text: str) -> str:
     return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
+def inline_slashes(math: str) -> str:
+    """Inline math keeps a/b on the line: every / outside strings becomes \\/.
+
+    >>> print(inline_slashes('a/b + "°/мм"'))
+    a\\/b + "°/мм"
+    """
+    out, quoted = [], False
+    for i, ch in enumerate(math):
+        if ch == '"' and (i == 0 or math[i - 1] != "\\"):
+            quoted = not quoted
+        if ch == "/" and not quoted and (i == 0 or math[i - 1] != "\\"):
+            out.append("\\/")
+        else:
+            out.append(ch)
+    return "".join(out)
+
+
+def split_long(math: str, limit: int = 72) -> str:
+    """A display formula too wide for the line breaks into lines at its "; quad" joints."""
+    if "; quad" in math and len(math_to_text(math, html=False)) > limit:
+        return math.replace("; quad ", " \\ ")
+    return math
+
+
+_NBSP = re.compile(r"(рис\.|табл\.|п\.|§|Fig\.|Table|Figure|рисунке|рисунок|таблице|таблица) ")
+
+
 # --- math (typst subset) to Markdown text ------------------------------------------------------
 
 _WORDS = {"thin": " ", "space": " ", "quad": "  ", "dot": "·", "times": "×", "approx": "≈", "thick": " ",
@@ -183,9 +210,10 @@ class Doc:
         out = []
         for part in parts:
             if part.startswith("$") and part.endswith("$") and len(part) >= 2:
-                out.append(part)
+                out.append(inline_slashes(part))
                 continue
             first = not out
+            part = _NBSP.sub("\\1\u00a0", part)
             pieces = _REF.split(part)
             # split gives [text, kind, name, text, kind, name, ...]
             for k in range(0, len(pieces), 3):
@@ -222,7 +250,7 @@ class Doc:
             elif kind == "f":
                 _, math, number = b
                 num = typst_string(number) if number else "none"
-                lines += [f"#formula($ {math} $, {num})", ""]
+                lines += [f"#formula($ {split_long(math)} $, {num})", ""]
             elif kind == "where":
                 lines += [f"#where[{self._inline_typst(b[1])}]", ""]
             elif kind == "list":

@@ -163,7 +163,7 @@ def gears_section(c: Ctx) -> None:
             "smallest_no3": t("the smallest reducer (no set within the tolerance takes three planets)",
                               "наименьший редуктор (ни один набор в пределах допуска не допускает трёх сателлитов)"),
             "forced_planets": t(f"the smallest reducer taking {s.forced_planets} planets",
-                                f"наименьший редуктор, допускающий {s.forced_planets} сателлита(ов)")}[s.rule]
+                                f"наименьший редуктор, допускающий {c.planets(s.forced_planets or 0)}")}[s.rule]
     design = g.planetary
     book_size = der.size if der is not None else None
     cmp = ""
@@ -266,7 +266,8 @@ def _book_planets(c: Ctx, st) -> None:
     ks = ", ".join(str(k) for k in st.assembly_ks[:6]) + (" …" if len(st.assembly_ks) > 6 else "")
     doc.p(t("The possible numbers of planets by the assembly condition (2.4):",
             "Теоретически возможные числа сателлитов по условию сборки (2.4):"))
-    doc.formula(f"(z_k i^n_(k H))/k c = ({zk} dot {_fr(st.fraction)})/k c = {st.assembly_n}/({st.assembly_c} k) c; "
+    den = "k" if st.assembly_c == 1 else f"{st.assembly_c} k"
+    doc.formula(f"(z_k i^n_(k H))/k c = ({zk} dot {_fr(st.fraction)})/k c = {st.assembly_n}/({den}) c; "
                 f"quad k = {ks}", "2.4")
     doc.p(t("The limit by the neighbouring condition (2.5), computed exactly:",
             "Граничное число сателлитов по условию соседства (2.5), вычисленное точно:"))
@@ -288,8 +289,9 @@ def _conditions(c: Ctx) -> None:
     doc.h(2, t("Conditions of synthesis for the reducer taken", "Проверка условий синтеза принятого редуктора"))
     doc.p(t("1. The ratio (within the textbook's ±5 % unless another tolerance was set):",
             "1. Условие обеспечения передаточного отношения (с точностью, принятой в пособии, ±5 %):"))
-    doc.formula(f'i = {_fr(ch.ratio_fraction)} = {q(ch.ratio, decimals=4)}; quad δ = (i/i_"{pl}" - 1) dot 100 % = '
-                f'({q(ch.ratio, decimals=4)}/{q(ch.target, decimals=4)} - 1) dot 100 % = {q(ch.ratio_error_pct, decimals=2)} %',
+    doc.formula(f'i = {_fr(ch.ratio_fraction)} = {q(ch.ratio, decimals=4)}', None)
+    doc.formula(f'δ = (i/i_"{pl}" - 1) dot 100 % = '
+                f'({q(ch.ratio, decimals=4)}/{q(ch.target, decimals=4)} - 1) dot 100 % = {q(ch.ratio_error_pct, decimals=2)} % ',
                 None)
     multi = len(ch.stages) > 1
     for j, sc in enumerate(ch.stages, 1):
@@ -323,10 +325,10 @@ def _conditions(c: Ctx) -> None:
         ok = sc.ok
         doc.p(t(f"All conditions hold{'' if ok else ' except those marked in the warnings'}; the assembly admits "
                 f"$k = {', '.join(map(str, sc.assembly_ks_exact[:6]))}$ …, with the neighbouring condition "
-                f"$k <= {sc.neighbour_limit}$, so $k = {k}$ planets are taken.",
+                f"$k <= {sc.neighbour_limit}$, so {c.planets(k)} are taken.",
                 f"Все условия {'выполняются' if ok else 'выполняются, кроме отмеченных в предупреждениях'}; условие "
                 f"сборки допускает $k = {', '.join(map(str, sc.assembly_ks_exact[:6]))}$ …, условие соседства — "
-                f"$k <= {sc.neighbour_limit}$; принято $k = {k}$ сателлита(ов)."))
+                f"$k <= {sc.neighbour_limit}$; принято {c.planets(k)}."))
 
 
 def _sym(symbol: str) -> str:
@@ -339,8 +341,9 @@ def _ratio_checks(c: Ctx) -> None:
     doc, t, q = c.doc, c.t, c.q
     ch = g.checks
     doc.h(2, t("Checking the ratio", "Проверка передаточного отношения"))
-    doc.p(t("Analytically by (2.1) (a = 1 external mesh; for a single row $z'_c = z_c$):",
-            "Аналитически по формуле (2.1) (a = 1 внешнее зацепление; для однорядного механизма $z'_c = z_c$):"))
+    doc.p(t("Analytically by (2.1), where $a = 1$ is the number of external meshes (for a single row $z'_c = z_c$):",
+            "Аналитически по формуле (2.1), где $a = 1$ — число внешних зацеплений (для однорядного механизма "
+            "$z'_c = z_c$):"))
     for j, (st, val) in enumerate(zip(g.planetary.stages, ch.ratio_formula_21), 1):
         zc2 = st.zc2
         idx = f"_{j}" if len(g.planetary.stages) > 1 else ""
@@ -355,7 +358,7 @@ def _ratio_checks(c: Ctx) -> None:
             "Графоаналитически по картинам скоростей (2.3): передаточное отношение равно отношению тангенсов углов "
             f"наклона линий распределения скоростей центрального колеса и водила (рисунок {{fig:gears_planetary}}):"))
     for j, s in enumerate(v.stages, 1):
-        doc.formula(f'i = ("tg" φ_k)/("tg" φ_H) = ("tg" {q(s.phi_k_deg, decimals=2)} degree)/("tg" {q(s.phi_h_deg, decimals=2)} degree) = '
+        doc.formula(f'i = ("tg" φ_k)/("tg" φ_H) = ("tg" {c.qd(s.phi_k_deg, decimals=2)})/("tg" {c.qd(s.phi_h_deg, decimals=2)}) = '
                     f"{q(s.ratio, decimals=4)}", "2.3")
     doc.p(t("and on the angular-velocity picture by the segments cut by the rays of the sun and of the carrier:",
             "и по плану угловых скоростей — отношением отрезков, отсекаемых лучами центрального колеса и водила:"))
@@ -402,8 +405,8 @@ def _spur(c: Ctx) -> None:
     doc.formula(f"a = m(z_1 + z_2)/2 = {m_} dot ({sp.z1} + {sp.z2})/2 = {q(sp.a_mm, decimals=2)} {mmu}", None)
     doc.formula(f"p = π m = {q(sp.p_mm, decimals=3)} {mmu}; quad p_b = p cos α = {q(sp.pb_mm, decimals=3)} {mmu}; quad "
                 f"s = e = (π m)/2 = {q(sp.s_mm, decimals=3)} {mmu}", None)
-    doc.formula(f"τ_1 = 360 degree/z_1 = 360 degree/{sp.z1} = {q(sp.tau1_deg, decimals=3)} degree; quad "
-                f"τ_2 = 360 degree/{sp.z2} = {q(sp.tau2_deg, decimals=3)} degree", None)
+    doc.formula(f'τ_1 = (360 degree)/z_1 = "360°"/{sp.z1} = {c.qd(sp.tau1_deg, decimals=3)}; quad '
+                f'τ_2 = "360°"/{sp.z2} = {c.qd(sp.tau2_deg, decimals=3)}', None)
     doc.formula(f"h = (2 h^*_a + c^*) m = {q(sp.h_mm, decimals=2)} {mmu}; quad h_d = 2 h^*_a m = {q(sp.hd_mm, decimals=2)} {mmu}; "
                 f"quad C = c^* m = {q(sp.c_mm, decimals=2)} {mmu}", None)
     doc.p(t("11. Check:", "11. Проверка:"))
@@ -425,8 +428,8 @@ def _spur(c: Ctx) -> None:
             "отнесённая к основному шагу), а не измеряется на чертеже:"))
     doc.formula(f"g_α = sqrt(r_(a 1)^2 - r_(b 1)^2) + sqrt(r_(a 2)^2 - r_(b 2)^2) - a sin α = {q(sp.g_alpha_mm, decimals=2)} {mmu}; "
                 f"quad ε_α = g_α/p_b = {q(sp.g_alpha_mm, decimals=2)}/{q(sp.pb_mm, decimals=3)} = {q(sp.eps_alpha, decimals=3)}", None)
-    doc.formula(f"φ_(α 1) = ε_α τ_1 = {q(sp.phi_alpha1_deg, decimals=2)} degree; quad φ_(α 2) = ε_α τ_2 = "
-                f"{q(sp.phi_alpha2_deg, decimals=2)} degree", None)
+    doc.formula(f"φ_(α 1) = ε_α τ_1 = {c.qd(sp.phi_alpha1_deg, decimals=2)}; quad φ_(α 2) = ε_α τ_2 = "
+                f"{c.qd(sp.phi_alpha2_deg, decimals=2)}", None)
     eps = sp.eps_alpha
     share = (eps - 1) * 100
     doc.p(t(f"On the line of action the two double-pair zones $P_1 U_2 = U_1 P_2 = {q(sp.double_zone_mm, decimals=2)}$ mm "

@@ -30,9 +30,23 @@ _FOR_NOTE = {
 
 _HINT = re.compile(r"\s*\((?:[^()]*?)--[a-z][^()]*\)")
 _FLAG = re.compile(r"--([a-z][a-z-]*)")
-_SYMBOL = re.compile(r"(?<![A-Za-zА-Яа-яёα-ωΑ-Ω0-9])([A-Za-zА-Яа-яα-ωΑ-Ω])_([A-Za-zА-Яа-яёα-ω0-9′]+(?:\.[A-Za-zа-я]+)*)(\*?)")
-# a decimal point in a number, not in a section, table, figure or equation reference
-_DECIMAL = re.compile(r"(?<!п\. )(?<!§)(?<!табл\. )(?<!рис\. )(?<!Table )(?<!Fig\. )(?<![\d.(])(\d+)\.(\d+)(?![\d.)])")
+_SYMBOL = re.compile(r"(?<![A-Za-zА-Яа-яёα-ωΑ-Ω])([A-Za-zА-Яа-яα-ωΑ-Ω])_([A-Za-zА-Яа-яёα-ω0-9′]+(?:\.[A-Za-zа-я]+)*)(\*?)")
+_NUMBER = re.compile(r"(?<![\d.])\d+(?:\.\d+)+(?![\d])")
+_REFWORD = re.compile(r"(п\.|§|табл\.|рис\.|Table|Fig\.|Figure|section|item)\s*$")
+
+
+def _decimal_commas(text: str) -> str:
+    """1.25 → 1,25 in numbers, but not in references: п. 2.4, табл. 1.1, (1.28), §1.3.1."""
+    def fix(m: re.Match) -> str:
+        s = m.group(0)
+        if s.count(".") > 1 or _REFWORD.search(text[:m.start()]):
+            return s
+        before, after = text[m.start() - 1:m.start()], text[m.end():m.end() + 1]
+        if re.fullmatch(r"[12]\.\d{1,2}", s) and (before in "(–" and after in ")–,"):
+            return s  # an equation number (1.9), (1.9)–(1.18)
+        return s.replace(".", ",")
+
+    return _NUMBER.sub(fix, text)
 
 
 def _sub(m: re.Match) -> str:
@@ -49,13 +63,16 @@ def _sub(m: re.Match) -> str:
 def for_note(text: str, lang: str) -> str:
     """A terminal sentence made fit for the note (mini markup: plain text with $math$).
 
-    >>> for_note("Задайте момент M (--torque), r_0 = 12.50 мм (1.28), n_кр и h_a*", "ru")
-    'Задайте момент M, $r_0$ = 12,50 мм (1.28), $n_("кр")$ и $h_a^*$'
+    >>> for_note("Задайте момент M (--torque), r_0 = 12.50 мм (1.28), n_кр и 2h_a*", "ru")
+    'Задайте момент M, $r_0$ = 12,50 мм (1.28), $n_("кр")$ и 2$h_a^*$'
+    >>> for_note("(149.3 × 132.9 мм), п. 1.3.1, табл. 1.1, (1.9)–(1.18), x ≥ 0.0057), -2.85 %", "ru")
+    '(149,3 × 132,9 мм), п. 1.3.1, табл. 1.1, (1.9)–(1.18), x ≥ 0,0057), −2,85 %'
     """
     text = _HINT.sub("", text)
     text = _FLAG.sub(lambda m: m.group(1).replace("-", " "), text)
     if lang == "ru":
-        text = _DECIMAL.sub(r"\1,\2", text)
+        text = _decimal_commas(text)
+    text = re.sub(r"(?<![\w−-])-(?=\d)", "−", text)
     text = _SYMBOL.sub(_sub, text)
     parts = re.split(r"(\$[^$]*\$)", text)
     return "".join(p if p.startswith("$") else p.replace("_", " ") for p in parts)
