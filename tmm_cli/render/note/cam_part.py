@@ -71,7 +71,7 @@ def cam_section(c: Ctx) -> None:
     h_sym = "γ_max" if rocker else "S_max"
     h_val = q(math.radians(v.stroke), sig=4) + " " + c.u(t("rad", "рад")) if rocker else q(v.stroke, sig=4) + " " + c.u(t("m", "м"))
     doc.p(t(f"The follower moves by the law of {law_words(v.law, c.lang)} (Fig. 1.9 of [1]), the same on the rise and "
-            "the return. With the phase share t = φ/φ_у on the rise, the normalised displacement is",
+            "the return. As a share of the stroke, against the share $t$ of the phase angle, the displacement is",
             f"Толкатель движется по закону: {law_words(v.law, c.lang)} (рис. 1.9 [1]), одинаковому на удалении и "
             "возвращении. При относительном угле поворота $t$ на фазе перемещение толкателя в долях хода равно"))
     for line in _LAW_F[v.law]:

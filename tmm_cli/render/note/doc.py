@@ -278,11 +278,17 @@ class Doc:
 
     def to_markdown(self, title: str) -> str:
         out = [f"# {title}", ""]
+        counters = [0, 0, 0]
         for b in self.blocks:
             kind = b[0]
             if kind == "h":
-                _, level, text, _numbered = b
-                out += ["#" * (level + 1) + " " + self._inline_md(text), ""]
+                _, level, text, numbered = b
+                number = ""
+                if numbered:
+                    counters[level - 1] += 1
+                    counters[level:] = [0] * (len(counters) - level)
+                    number = ".".join(str(x) for x in counters[:level]) + " "
+                out += ["#" * (level + 1) + " " + number + self._inline_md(text), ""]
             elif kind == "p":
                 out += [self._inline_md(b[1]), ""]
             elif kind == "f":
