@@ -122,6 +122,10 @@ def math_to_text(s: str, html: bool = True) -> str:
             out.append(s[i + 1:j])
             i = j + 1
             continue
+        if s.startswith("abs(", i):
+            body, i = _group(s, i + 3)
+            out.append("|" + math_to_text(body, html) + "|")
+            continue
         m = re.match(r"[A-Za-z]+(\.[a-z]+)*", s[i:])
         if m and len(m.group(0)) > 1 and m.group(0) in _WORDS:
             out.append(_WORDS[m.group(0)])
@@ -138,7 +142,8 @@ def math_to_text(s: str, html: bool = True) -> str:
             continue
         out.append(ch)
         i += 1
-    return re.sub(r"  +", " ", "".join(out)).strip()
+    text = re.sub(r" °(?!/)", "°", re.sub(r"  +", " ", "".join(out)).strip())
+    return re.sub(r"(?<=[\s(\d])-(?=[\s\d(])", "−", text)
 
 
 # --- the model ---------------------------------------------------------------------------------
