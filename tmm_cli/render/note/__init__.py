@@ -84,14 +84,34 @@ def note_meta(result, lang: str, title) -> dict:
     }
 
 
-def build_note(result, lang: str, figures: dict[str, str]):
-    """The note as a Doc: cam, gears, conclusion, references. `figures` maps names to files."""
+MAX_FIGURE_HEIGHT_CM = 14.5
+TEXT_WIDTH_CM = 16.5
+
+
+def figure_width(path: Path) -> str | None:
+    """The width to embed an SVG with, so that it is at most MAX_FIGURE_HEIGHT_CM tall."""
+    import re
+
+    try:
+        head = Path(path).read_text(encoding="utf-8", errors="replace")[:2000]
+    except OSError:
+        return None
+    m = re.search(r'<svg[^>]*\swidth="([\d.]+)(?:pt)?"[^>]*\sheight="([\d.]+)(?:pt)?"', head)
+    if not m or float(m.group(2)) <= 0:
+        return None
+    width = min(TEXT_WIDTH_CM, MAX_FIGURE_HEIGHT_CM * float(m.group(1)) / float(m.group(2)))
+    return f"{width:.1f}cm"
+
+
+def build_note(result, lang: str, figures: dict[str, str], widths: dict[str, str] | None = None):
+    """The note as a Doc: cam, gears, conclusion, references. `figures` maps names to files,
+    `widths` names to the widths to embed them with (default: the text width)."""
     from .cam_part import cam_section
     from .ctx import Ctx
     from .gears_part import gears_section
     from .sentences import note_sentence
 
-    c = Ctx(result, lang, {k: v for k, v in figures.items() if k in NOTE_FIGURES})
+    c = Ctx(result, lang, {k: v for k, v in figures.items() if k in NOTE_FIGURES}, widths=dict(widths or {}))
     t = c.t
     doc = c.doc
     cam_section(c)
@@ -197,7 +217,8 @@ def write_note(folder: Path, result, lang: str, title, figures: dict[str, str], 
     from ...titleblock import TitleFields
 
     folder = Path(folder)
-    doc, used = build_note(result, lang, figures)
+    widths = {name: w for name, file in figures.items() if (w := figure_width(folder / file))}
+    doc, used = build_note(result, lang, figures, widths)
     meta = note_meta(result, lang, title or TitleFields())
     try:
         (folder / STYLE_FILE).write_text(template if template is not None else default_template(), encoding="utf-8")

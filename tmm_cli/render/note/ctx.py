@@ -15,6 +15,7 @@ class Ctx:
     figures: dict[str, str]  # figure name -> file the note embeds (empty without plots)
     doc: Doc = None  # type: ignore[assignment]
     used_figures: list[str] = field(default_factory=list)
+    widths: dict[str, str] = field(default_factory=dict)
 
     def __post_init__(self):
         if self.doc is None:
@@ -51,7 +52,7 @@ class Ctx:
         """Embed a figure if it was drawn (`--no-plots` draws none)."""
         file = self.figures.get(name)
         if file:
-            self.doc.figure(name, file, caption)
+            self.doc.figure(name, file, caption, self.widths.get(name, "100%"))
             self.used_figures.append(name)
 
     def has(self, name: str) -> bool:

@@ -178,10 +178,10 @@ class Doc:
         if texts:
             self.blocks.append(("list", list(texts)))
 
-    def figure(self, name: str, file: str, caption: str) -> None:
+    def figure(self, name: str, file: str, caption: str, width: str = "100%") -> None:
         self.counts["fig"] += 1
         self.numbers["fig:" + name] = self.counts["fig"]
-        self.blocks.append(("fig", name, file, caption))
+        self.blocks.append(("fig", name, file, caption, width))
 
     def table(self, name: str, caption: str, header: list[str], rows: list[list[str]],
               align: str | None = None, widths: list[str] | None = None) -> None:
@@ -261,9 +261,9 @@ class Doc:
             elif kind == "list":
                 lines += [f"- {self._inline_typst(t)}" for t in b[1]] + [""]
             elif kind == "fig":
-                _, name, file, caption = b
+                _, name, file, caption, width = b
                 label = "fig-" + name.replace("_", "-")
-                lines += [f"#figure(image({typst_string(file)}, width: 100%),",
+                lines += [f"#figure(image({typst_string(file)}, width: {width}),",
                           f"  caption: [{self._inline_typst(caption)}]) <{label}>", ""]
             elif kind == "tab":
                 _, name, caption, header, rows, align, widths = b
@@ -305,7 +305,7 @@ class Doc:
             elif kind == "list":
                 out += [f"- {self._inline_md(t)}" for t in b[1]] + [""]
             elif kind == "fig":
-                _, name, file, caption = b
+                _, name, file, caption, _width = b
                 n = self.numbers["fig:" + name]
                 word = "Рисунок" if self.lang == "ru" else "Figure"
                 out += [f"![{self._inline_md(caption)}]({file})", "", f"*{word} {n} – {self._inline_md(caption)}*", ""]
