@@ -174,3 +174,11 @@ def test_a_department_template_is_used(tmp_path):
     res = run("project", "--variant", 5, "--out", tmp_path / "o", "--no-plots", "--note-template", mine)
     assert res.exit_code == 0, res.output
     assert "ОГЛАВЛЕНИЕ КАФЕДРЫ" in _text(tmp_path / "o" / "variant-05" / "note.pdf")
+
+
+def test_hostile_title_fields_stay_text(tmp_path, table):
+    r = run_project(table[5])
+    odd = 'Иванов "И." #panic() [x] $y$ \\ <z> @w // --q'
+    write_note(tmp_path, r, "ru", TitleFields(student=odd, group="#1", teacher="*t*", org="_a_, b"), {})
+    text = _text(tmp_path / "note.pdf")
+    assert _squash(odd) in _squash(text) and "#1" in text and "*t*" in text and "_a_" in text
