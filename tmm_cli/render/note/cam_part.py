@@ -148,7 +148,8 @@ def cam_section(c: Ctx) -> None:
                     f'{q(s.k_a, sig=4)} {c.u(t("rad/(s²·mm)", "рад/(с²·мм)"))}', "1.17")
         doc.p(t("The scales of the roller centre's motion (1.18):", "Масштабы перемещения, скорости и ускорения центра ролика (1.18):"))
         doc.formula(f'k_S = k_(γ "{t("rad", "рад")}") l_(B C) = {q(s.k_s_b, sig=4)} {c.u(t("m/mm", "м/мм"))}; quad '
-                    f'k_V = k_ω l_(B C) = {q(s.k_v_b, sig=4)}; quad k_a = k_ε l_(B C) = {q(s.k_a_b, sig=4)}', "1.18")
+                    f'k_V = k_ω l_(B C) = {q(s.k_v_b, sig=4)} {c.u(t("m/(s·mm)", "м/(с·мм)"))}; quad '
+                    f'k_a = k_ε l_(B C) = {q(s.k_a_b, sig=4)} {c.u(t("m/(s²·mm)", "м/(с²·мм)"))}', "1.18")
     else:
         doc.formula(f'k_S = S_max/Y_(S max) = {q(v.stroke, sig=4)}/{q(s.y_s_max_mm)} = {q(s.k_s, sig=4)} '
                     f'{c.u(t("m/mm", "м/мм"))}', "1.11")
