@@ -150,7 +150,10 @@ def build_note(result, lang: str, figures: dict[str, str], widths: dict[str, str
             f"{_teeth(g.planetary)} и {g.planetary.planets} сателлитами ($i = {c.q(g.planetary.ratio, decimals=4)}$, "
             f"отклонение {c.n(g.planetary.ratio_error_pct, decimals=2)} %) и простая передача $z_1 = {sp.z1}$, "
             f"$z_2 = {sp.z2}$, $m = {c.q(sp.m_mm)}$ мм с коэффициентом перекрытия $ε_α = {c.q(sp.eps_alpha, decimals=3)}$."))
-    notes = result.notes
+    notes = []  # the cam's first, as in the note (ProjectResult.notes puts the gears' first)
+    for n in tuple(cam.notes) + tuple(g.notes):
+        if n not in notes:
+            notes.append(n)
     assumptions = [note_sentence(n, lang) for n in notes if n.level == "assumption"]
     warnings = [note_sentence(n, lang) for n in notes if n.level == "warning"]
     if assumptions:

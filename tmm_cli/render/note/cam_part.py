@@ -213,8 +213,9 @@ def cam_section(c: Ctx) -> None:
     if n(z.book_r0_m * 1000, decimals=2) == n(z.r0_m * 1000, decimals=2):
         doc.p(t("The textbook's construction gives the same point here.", "Построение пособия здесь даёт ту же точку."))
     elif abs(diff) < 0.1:
-        doc.p(t(f"The two practically coincide (they differ by {n(diff, decimals=2)} %, the step of the construction).",
-                f"Оба решения практически совпадают (отличие {n(diff, decimals=2)} % — в пределах шага построения)."))
+        by = n(diff, decimals=2) if abs(diff) >= 0.01 else t("less than 0.01", "менее 0,01")
+        doc.p(t(f"The two practically coincide (they differ by {by} %, within the step of the construction).",
+                f"Оба решения практически совпадают (отличие {by} % — в пределах шага построения)."))
     else:
         doc.p(t(f"The textbook's construction gives $r_0$ larger by {n(diff, decimals=2)} %.",
                 f"Построение пособия даёт $r_0$ больше на {n(diff, decimals=2)} %."))

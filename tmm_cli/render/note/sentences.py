@@ -73,6 +73,7 @@ def for_note(text: str, lang: str) -> str:
     if lang == "ru":
         text = _decimal_commas(text)
     text = re.sub(r"(?<![\w−-])-(?=\d)", "−", text)
+    text = re.sub(r"\(\s*[−+]?0([,.])00 %\)", lambda m: f"(< 0{m.group(1)}01 %)", text)
     text = _SYMBOL.sub(_sub, text)
     parts = re.split(r"(\$[^$]*\$)", text)
     return "".join(p if p.startswith("$") else p.replace("_", " ") for p in parts)
