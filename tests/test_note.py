@@ -182,3 +182,23 @@ def test_hostile_title_fields_stay_text(tmp_path, table):
     write_note(tmp_path, r, "ru", TitleFields(student=odd, group="#1", teacher="*t*", org="_a_, b"), {})
     text = _text(tmp_path / "note.pdf")
     assert _squash(odd) in _squash(text) and "#1" in text and "*t*" in text and "_a_" in text
+
+
+def test_tmm_note_recompiles_an_edited_note(tmp_path):
+    assert run("project", "--variant", 5, "--out", tmp_path, "--no-plots", "--lang", "ru").exit_code == 0
+    folder = tmp_path / "variant-05"
+    src = folder / "note.typ"
+    src.write_text(src.read_text(encoding="utf-8").replace("Заключение", "Выводы студента"), encoding="utf-8")
+    res = run("note", folder)
+    assert res.exit_code == 0, res.output
+    assert "Выводы студента" in _text(folder / "note.pdf")
+    # a broken edit: one line with the place, the old PDF kept, no temporary file left
+    before = (folder / "note.pdf").read_bytes()
+    src.write_text(src.read_text(encoding="utf-8") + "\n$n1$\n", encoding="utf-8")
+    res = run("note", src)
+    assert res.exit_code == 2 and len(res.stderr.strip().splitlines()) == 1
+    assert "note.typ:" in res.stderr and "n1" in res.stderr
+    assert (folder / "note.pdf").read_bytes() == before
+    assert not [p for p in folder.iterdir() if p.name.startswith(".")]
+    res = run("note", tmp_path / "nowhere")
+    assert res.exit_code == 2 and "no " in res.stderr

@@ -443,6 +443,10 @@ from .commands.planetary import planetary_cmd  # noqa: E402
 cli.add_command(linkage_cmd)
 cli.add_command(planetary_cmd)
 
+from .commands.note import note_cmd  # noqa: E402  (issue 11: recompile an edited note)
+
+cli.add_command(note_cmd)
+
 main = cli
 
 if __name__ == "__main__":  # pragma: no cover

@@ -188,8 +188,8 @@ def note_source(doc, meta: dict) -> str:
         return typst_string(str(x))
 
     fields = ",\n".join(f"  {k}: {value(v)}" for k, v in meta.items())
-    head = (f"// The explanatory note written by tmm. Edit the text freely and recompile:\n"
-            f"//   python -m typst compile note.typ        (or: typst compile note.typ)\n"
+    head = (f"// The explanatory note written by tmm. Edit the text freely and recompile in this folder:\n"
+            f"//   tmm note        (or the standalone typst: typst compile note.typ)\n"
             f"// The style (page, fonts, title page) is in {STYLE_FILE}.\n"
             f"#import \"{STYLE_FILE}\": *\n"
             f"#let meta = (\n{fields},\n)\n"
@@ -197,18 +197,53 @@ def note_source(doc, meta: dict) -> str:
     return doc.to_typst(head)
 
 
-def compile_note(folder: Path) -> None:
-    """Compile folder/note.typ to folder/note.pdf; TmmError (one line) on any typst error."""
+def _typst_error(exc: Exception) -> str:
+    """'unknown variable: n1 at note.typ:2:7' from a typst error (its diagnostic names the place)."""
+    import re
+
+    message = getattr(exc, "message", None) or next((ln.strip() for ln in str(exc).splitlines() if ln.strip()),
+                                                     exc.__class__.__name__)
+    where = re.search(r"┌─\s*(\S+:\d+:\d+)", str(getattr(exc, "diagnostic", "") or ""))
+    return f"{message} at {where.group(1)}" if where else str(message)
+
+
+def compile_note(folder: Path, source: str = "note.typ", output: str = "note.pdf") -> Path:
+    """Compile folder/source to folder/output; TmmError (one line) on any typst error."""
     try:
         import typst
     except ImportError:  # pragma: no cover - typst is a dependency
         raise TmmError("the typst package is missing; reinstall tmm (pip install tmm) to write the note") from None
     folder = Path(folder)
     try:
-        typst.compile(str(folder / "note.typ"), output=str(folder / "note.pdf"), root=str(folder))
+        typst.compile(str(folder / source), output=str(folder / output), root=str(folder))
     except Exception as exc:  # typst.TypstError and its relatives
-        first = next((ln.strip() for ln in str(exc).splitlines() if ln.strip()), exc.__class__.__name__)
-        raise TmmError(f"the note could not be typeset ({first}); check the note template or note.typ") from None
+        raise TmmError(f"the note could not be typeset ({_typst_error(exc)}); check the note template or "
+                       f"{source}") from None
+    return folder / output
+
+
+def recompile(path: Path) -> Path:
+    """`tmm note`: compile an edited note.typ (a folder holding it, or the .typ file) to PDF beside it.
+
+    The PDF is first written under a temporary name, so a failed compile keeps the old PDF.
+    """
+    import os
+
+    path = Path(path)
+    src = path / "note.typ" if path.is_dir() else path
+    if not src.is_file():
+        raise TmmError(f"no {src} here; run tmm note in the folder of the note (or give the .typ file)")
+    if src.suffix != ".typ":
+        raise TmmError(f"{src} is not a typst file (.typ)")
+    tmp = f".{src.stem}.tmp.pdf"
+    try:
+        compile_note(src.parent, src.name, tmp)
+        os.replace(src.parent / tmp, src.with_suffix(".pdf"))
+    except OSError as exc:
+        raise TmmError(f"cannot write {src.with_suffix('.pdf')} ({exc.strerror})") from None
+    finally:
+        (src.parent / tmp).unlink(missing_ok=True)
+    return src.with_suffix(".pdf")
 
 
 def write_note(folder: Path, result, lang: str, title, figures: dict[str, str], template: str | None = None) -> list[str]:
