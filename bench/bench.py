@@ -91,7 +91,7 @@ def main() -> None:
             ("tmm cam --variant 17 --json --no-plots", TMM + ["cam", "--variant", "17", "--json", "--no-plots", "--out", str(out)]),
             ("tmm cam --variant 17 (figures)", TMM + ["cam", "--variant", "17", "--out", str(out)]),
             ("tmm gears --variant 17 --crank-rpm 95 --json --no-plots", TMM + ["gears", "--variant", "17", "--crank-rpm", "95", "--json", "--no-plots", "--out", str(out)]),
-            ("tmm project --variant 17 (figures, report)", TMM + ["project", "--variant", "17", "--out", str(out)]),
+            ("tmm project --variant 17 (figures, note.pdf)", TMM + ["project", "--variant", "17", "--out", str(out)]),
             ("tmm project --variant 17 --report md (figures)", TMM + ["project", "--variant", "17", "--report", "md", "--out", str(out)]),
         ]
         print(f"{'command':58s} {'median s':>9s} {'x floor':>8s}")
