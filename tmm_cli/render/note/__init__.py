@@ -68,7 +68,7 @@ def note_meta(result, lang: str, title) -> dict:
         "topic": pick(lang, "«Synthesis of the cam and gear mechanisms»",
                       "«Синтез кулачкового и зубчатых механизмов»"),
         "variant-line": pick(lang, f"Variant {v.number}", f"Вариант {v.number}"),
-        "designation": title.designation_for(0, v.number) + pick(lang, " EN", " ПЗ"),
+        "designation": title.designation_for(0, v.number) + pick(lang, "", " ПЗ"),
         "teacher-label": pick(lang, "Supervisor", "Руководитель"),
         "teacher": title.teacher,
         "date-label": pick(lang, "date", "дата"),
