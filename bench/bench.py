@@ -49,6 +49,34 @@ def in_process_synthesis() -> tuple[float, float, float]:
     return max(times), statistics.median(times), worst_at
 
 
+def note_time(variant: int = 17) -> tuple[float, float]:
+    """The note's own time for one variant, in process: (SVG copies of the figures, build + typst compile).
+
+    The figures are drawn (and saved as PNG) by `tmm project` with any report, so they are not counted.
+    """
+    import io
+
+    from tmm_cli.project import run_project
+    from tmm_cli.render.cam_figures import cam_figures
+    from tmm_cli.render.gears_figures import gears_figures
+    from tmm_cli.render.note import NOTE_FIGURES, write_note
+    from tmm_cli.titleblock import TitleFields
+    from tmm_cli.variants import get_variant
+
+    r = run_project(get_variant(variant))
+    figs = {**gears_figures(r.gears, "ru"), **cam_figures(r.cam, "ru")}
+    with tempfile.TemporaryDirectory() as d:
+        for f in figs.values():
+            f.savefig(io.BytesIO(), format="png", dpi=120)
+        t0 = time.perf_counter()
+        for name in NOTE_FIGURES:
+            figs[name].savefig(Path(d) / f"{name}.svg", format="svg")
+        t1 = time.perf_counter()
+        write_note(Path(d), r, "ru", TitleFields(), {n: f"{n}.svg" for n in NOTE_FIGURES})
+        t2 = time.perf_counter()
+    return t1 - t0, t2 - t1
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--runs", type=int, default=5)
@@ -63,13 +91,17 @@ def main() -> None:
             ("tmm cam --variant 17 --json --no-plots", TMM + ["cam", "--variant", "17", "--json", "--no-plots", "--out", str(out)]),
             ("tmm cam --variant 17 (figures)", TMM + ["cam", "--variant", "17", "--out", str(out)]),
             ("tmm gears --variant 17 --crank-rpm 95 --json --no-plots", TMM + ["gears", "--variant", "17", "--crank-rpm", "95", "--json", "--no-plots", "--out", str(out)]),
-            ("tmm project --variant 17 (figures, report)", TMM + ["project", "--variant", "17", "--out", str(out)]),
+            ("tmm project --variant 17 (figures, note.pdf)", TMM + ["project", "--variant", "17", "--out", str(out)]),
+            ("tmm project --variant 17 --report md (figures)", TMM + ["project", "--variant", "17", "--report", "md", "--out", str(out)]),
             ("tmm linkage (Whitworth, seed 003) --no-plots --json", [PY, "-c", "from tmm_cli.cli import main; main()", "linkage", "--r1", "0.10", "--h", "0.04", "--r2", "0.08", "--r3", "0.30", "--b", "-0.04", "--rpm", "60", "--no-plots", "--json", "--out", str(out)]),
         ]
         print(f"{'command':58s} {'median s':>9s} {'x floor':>8s}")
         for name, cmd in rows:
             t = wall(cmd, args.runs)
             print(f"{name:58s} {t:9.3f} {t / floor:8.2f}")
+        svg, note = note_time()
+        print(f"the note for variant 17 in process: SVG copies {svg:.2f} s + build and typst compile {note:.2f} s "
+              f"= {svg + note:.2f} s (target 2 s)")
         worst, median, at = in_process_synthesis()
         print(f"in-process gear synthesis over n_cr = 30..960 rpm: worst {worst * 1000:.1f} ms (at {at:g} rpm), median {median * 1000:.1f} ms")
         if args.batch:

@@ -13,6 +13,7 @@ import pytest
 from click.testing import CliRunner
 
 from tmm_cli.cli import cli
+from tmm_cli.render.files import MANIFEST
 
 ACCEPT = ["--r1", "0.10", "--h", "0.04", "--c", "0", "--r2", "0.08", "--r3", "0.30", "--b", "-0.04"]
 KEYS = {"phi_deg", "link_angle_deg", "rho_m", "x_c_m", "omega_link_rad_s", "eps_link_rad_s2", "v_rel_m_s",
@@ -102,7 +103,7 @@ def test_curve_csv_differences(tmp_path):
 def test_figures_and_tables(tmp_path):
     res = run("linkage", *ACCEPT, "--rpm", "60", "--at", "120", "--out", tmp_path, "--lang", "ru", "--format", "svg")
     assert res.exit_code == 0, res.output
-    names = sorted(p.name for p in (tmp_path / "linkage").iterdir())
+    names = sorted(p.name for p in (tmp_path / "linkage").iterdir() if p.name != MANIFEST)
     assert names == ["linkage.json", "linkage_acceleration_plan.svg", "linkage_curve.csv", "linkage_diagrams.svg",
                      "linkage_mechanism.svg", "linkage_velocity_plan.svg"]
     assert "1,709953" in res.output and "Витворта" in res.output and "План" in res.output
@@ -116,7 +117,7 @@ def test_rerun_replaces_own_files_keeps_users(tmp_path):
     (folder / "my_notes.txt").write_text("mine", encoding="utf-8")
     (folder / "linkage_mine.png").write_bytes(b"mine")
     assert run("linkage", *ACCEPT, "--rpm", "60", "--out", tmp_path, "--no-plots").exit_code == 0
-    names = sorted(p.name for p in folder.iterdir())
+    names = sorted(p.name for p in folder.iterdir() if p.name != MANIFEST)
     assert "my_notes.txt" in names and "linkage_mine.png" in names  # never ours, never touched
     assert not any(n.endswith(".pdf") for n in names)  # the figures of the earlier run are gone
 

@@ -14,6 +14,7 @@ from click.testing import CliRunner
 from tmm_cli.cli import cli
 from tmm_cli.errors import TmmError
 from tmm_cli.gears.aa_bar import c_range, divisibility, family, synthesize, teeth_for
+from tmm_cli.render.files import MANIFEST
 
 SEED_ARGS = ["planetary", "--ratio", "1/10", "--c", "26/25", "--planets", "3", "--module", "5", "--x1", "-0.4",
              "--x2", "0.4"]
@@ -210,7 +211,7 @@ def test_cli_family_and_figures(tmp_path):
     res = run(*SEED_ARGS, "--family", 2, "--out", tmp_path, "--lang", "ru")
     assert res.exit_code == 0, res.output
     assert "60/96/96/54" in res.stdout
-    files = sorted(p.name for p in (tmp_path / "planetary").iterdir())
+    files = sorted(p.name for p in (tmp_path / "planetary").iterdir() if p.name != MANIFEST)
     assert files == ["planetary.json", "planetary_mechanism.png", "planetary_velocity.png"]
     d = json.loads((tmp_path / "planetary" / "planetary.json").read_text(encoding="utf-8"))
     assert d["teeth"] == [60, 96, 96, 54] and d["family_multiple"] == 2

@@ -27,14 +27,15 @@ def project17(tmp_path_factory):
 def test_project_writes_the_whole_folder(project17):
     folder, res = project17
     names = {p.name for p in folder.iterdir()}
-    assert {"results.json", "cam_profile.csv", "report.md"} <= names
+    assert {"results.json", "cam_profile.csv", "note.pdf", "note.typ", "note-style.typ"} <= names
     assert {f"{f}.png" for f in FIGURES} <= names
     assert not [n for n in names if n.startswith(".") and n != ".tmm-files.json"]  # the manifest only
     for f in FIGURES:
         assert (folder / f"{f}.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    report = (folder / "report.md").read_text()
+    # the note embeds the vector copies of the figures
+    note = (folder / "note.typ").read_text()
     for f in FIGURES:
-        assert f"({f}.png)" in report
+        assert f'image("{f}.svg"' in note
     # the terminal report follows the explanatory note: sheet 4 before sheet 3
     assert res.output.index("Sheet 4") < res.output.index("Sheet 3")
 
@@ -65,11 +66,12 @@ def test_default_crank_speed_is_stated(tmp_path):
     assert any("220" in a for a in doc["assumptions"])
 
 
-def test_pdf_report(tmp_path):
+def test_pdf_report_is_the_note(tmp_path):
     res = run("project", "--variant", 2, "--out", tmp_path, "--no-plots", "--report", "pdf", "--lang", "ru")
     assert res.exit_code == 0, res.stderr
-    pdf = tmp_path / "variant-02" / "report.pdf"
+    pdf = tmp_path / "variant-02" / "note.pdf"
     assert pdf.read_bytes()[:5] == b"%PDF-"
+    assert not (tmp_path / "variant-02" / "report.pdf").exists()
 
 
 def test_failed_project_leaves_no_folder(tmp_path):

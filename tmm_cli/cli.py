@@ -376,15 +376,23 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 @format_option
 @no_plots_option
 @json_option
-@click.option("--report", "report", type=click.Choice(["md", "pdf"]), default="md", show_default=True, help="Report format written beside the figures.")
+@click.option("--report", "report", type=click.Choice(["md", "pdf"]), default="pdf", show_default=True,
+              help="pdf: the explanatory note (note.pdf and its source note.typ); md: report.md.")
+@click.option("--note-template", "note_template", type=click.Path(dir_okay=False), default=None, metavar="FILE",
+              help="A typst style file replacing the note's (see docs/note.md).")
 @step_option
 @cam_choice_options
 @title_options
 @lang_option
-def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, select, out, fmt, no_plots, as_json, report, step_deg, lang, **title_kw):
-    """The whole project for one variant: sheet 4 then sheet 3, figures, results.json and a report."""
+def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, select, out, fmt, no_plots, as_json, report, note_template, step_deg, lang, **title_kw):
+    """The whole project for one variant: sheet 4 then sheet 3, figures, results.json and the note."""
     choice = _cam_choice(title_kw)
     title = _title(title_kw)
+    template = None
+    if note_template is not None:
+        from .render.note import read_template
+
+        template = read_template(note_template)
     from .project import run_project
     from .render.files import ensure_writable_dir
     from .render.report import write_project_folder
@@ -398,7 +406,8 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
         ratio=_parse_ratio(ratio), tolerance_pct=tolerance_pct, planets=planets,
         shift=_parse_shift(shift), a_w_mm=a_w_mm, select=select, cam_choice=choice,
     )
-    doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report, title=title)
+    doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report, title=title,
+                                        note_template=template)
     if as_json:
         _print_json(doc)
         return
@@ -524,6 +533,10 @@ from .commands.planetary import planetary_cmd  # noqa: E402
 
 cli.add_command(linkage_cmd)
 cli.add_command(planetary_cmd)
+
+from .commands.note import note_cmd  # noqa: E402  (issue 11: recompile an edited note)
+
+cli.add_command(note_cmd)
 
 # Limits on every number a user gives (docs/limits.md): ranges set on the options by name
 from .limits import apply_option_limits  # noqa: E402

@@ -1,8 +1,8 @@
-"""The project's documents: JSON objects, the terminal report and the Markdown / PDF report.
+"""The project's documents: JSON objects, the terminal report, report.md and the typeset note.
 
 Every document reads the same result objects: the JSON comes from ``cam_to_json`` and
-``gears_to_json``; the Markdown and PDF reports embed the very tables printed in the terminal
-(recorded from rich) and the very figures saved beside them.
+``gears_to_json``; report.md and note.pdf are the explanatory note (render/note), with the very
+figures saved beside them.
 """
 
 from __future__ import annotations
@@ -91,39 +91,10 @@ def terminal_text(result, lang: str, width: int = 110) -> str:
 
 
 def markdown_report(result, lang: str, figure_files: list[str]) -> str:
-    """A Markdown report: the terminal tables verbatim and every figure linked."""
-    v = result.variant
-    title = pick(lang, f"TMM course project, variant {v.number}", f"Курсовой проект по ТММ, вариант {v.number}")
-    parts = [f"# {title}", "", pick(lang, f"Computed by tmm {__version__}.", f"Рассчитано программой tmm {__version__}."), ""]
-    parts += ["```text", terminal_text(result, lang).rstrip(), "```", ""]
-    if figure_files:
-        parts += ["## " + pick(lang, "Figures", "Рисунки"), ""]
-        for name in figure_files:
-            stem = Path(name).stem
-            parts += [f"### {stem}", "", f"![{stem}]({name})", ""]
-    return "\n".join(parts)
+    """report.md: the explanatory note as Markdown (headings, tables, figures with captions)."""
+    from .note import markdown_note
 
-
-_PDF_SAFE = str.maketrans({"ℹ": "i", "━": "─", "┃": "│", "┏": "┌", "┓": "┐", "┗": "└", "┛": "┘", "┳": "┬",
-                          "┻": "┴", "╋": "┼", "┣": "├", "┫": "┤", "┡": "├", "┩": "┤", "╇": "┼"})
-
-
-def pdf_report(path: Path, result, lang: str, figures: dict) -> None:
-    """One printable PDF: the text report on A4 pages, then every figure on its own page."""
-    from matplotlib.backends.backend_pdf import PdfPages
-    from matplotlib.figure import Figure
-
-    # DejaVu Sans Mono lacks "ℹ" and the heavy box-drawing lines: use "i" and the light ones
-    lines = terminal_text(result, lang, width=110).translate(_PDF_SAFE).splitlines()
-    per_page = 80
-    with PdfPages(path) as pdf:
-        for start in range(0, max(len(lines), 1), per_page):
-            fig = Figure(figsize=(8.27, 11.69))
-            fig.text(0.04, 0.97, "\n".join(lines[start:start + per_page]), family="DejaVu Sans Mono",
-                     fontsize=5.6, va="top", ha="left")
-            pdf.savefig(fig)
-        for fig in figures.values():
-            pdf.savefig(fig)
+    return markdown_note(result, lang, figure_files)
 
 
 # Figures that depend only on the planetary reducer, i.e. on design_gears' inputs other than the
@@ -136,8 +107,15 @@ def _reducer_key(gears, lang: str, fmt: str) -> tuple:
 
 
 def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", plots: bool = True,
-                         report: str | None = "md", figure_cache: dict | None = None, title=None):
+                         report: str | None = "md", figure_cache: dict | None = None, title=None,
+                         note_template: str | None = None):
     """Write results.json, cam_profile.csv, the figures and the report into `folder`, atomically.
+
+    `report`: "md" writes report.md, "pdf" the typeset note (note.pdf, its source note.typ and
+    note-style.typ, and SVG copies of the figures it embeds), None neither. The note is written
+    last; if typst fails (a broken `note_template`, the text of a style file), every other file
+    still comes out, the note's files do not, and the TmmError is raised after the folder is in
+    place (exit 2).
 
     `title` (a :class:`tmm_cli.titleblock.TitleFields`, default empty) fills the drawing sheets'
     title blocks and the note's title page.
@@ -173,9 +151,38 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
             save_figures(tmp, figures, fmt)
             files = [f"{n}.{fmt}" for n in (*REDUCER_FIGURES, "gears_mesh") if n in cached or n in figures]
             files += [f"{n}.{fmt}" for n in figures if n.startswith("cam_")]
+        # --- the report: Markdown or the typeset note (issue 11) ------------------------------------
+        note_error = None
         if report == "md":
             write_text(tmp / "report.md", markdown_report(result, lang, files))
         elif report == "pdf":
-            pdf_report(tmp / "report.pdf", result, lang, figures)
+            note_error = _write_note(tmp, result, lang, title, figures, fmt, note_template)
+        # --- end of the report ------------------------------------------------------------------------
         written = sorted(p.name for p in tmp.iterdir())
+    if note_error is not None:
+        raise note_error
     return doc, written
+
+
+def _write_note(tmp: Path, result, lang: str, title, figures: dict, fmt: str, template: str | None):
+    """The note into the staging folder; returns the TmmError of a failed note (its files removed)."""
+    from ..errors import TmmError
+    from .note import NOTE_FIGURES, write_note
+
+    made, files = [], {}
+    for name in NOTE_FIGURES:
+        if name in figures:
+            path = tmp / f"{name}.svg"
+            if fmt != "svg":
+                figures[name].savefig(path, format="svg")
+                made.append(path)
+            files[name] = path.name
+        elif (tmp / f"{name}.svg").exists():  # drawn once per batch worker (figure cache)
+            files[name] = f"{name}.svg"
+    try:
+        write_note(tmp, result, lang, title, files, template)
+    except TmmError as exc:
+        for path in made:
+            path.unlink(missing_ok=True)
+        return exc
+    return None
