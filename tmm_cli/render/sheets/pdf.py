@@ -1,0 +1,51 @@
+"""The PDF of a sheet, rendered from the very ezdxf document written as DXF.
+
+ezdxf's drawing add-on with its matplotlib backend (DRAWING.md traps): ``adjust_figure=False``
+keeps the 841 × 594 mm page, lineweights are scaled by 72/25.4 (the backend reads them as
+points), black lines on white paper. The axes fill the page and span exactly the sheet's
+millimetres, so 1 mm of the model is 1 mm of paper (print at 100 %).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .paper import SHEET_H, SHEET_W
+
+MM_PER_INCH = 25.4
+
+
+def sheet_figure(doc):
+    """A matplotlib Figure of the whole sheet at true size (no pyplot)."""
+    from ezdxf.addons.drawing import Frontend, RenderContext
+    from ezdxf.addons.drawing.config import BackgroundPolicy, ColorPolicy, Configuration, LineweightPolicy
+    from ezdxf.addons.drawing.matplotlib import MatplotlibBackend
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(SHEET_W / MM_PER_INCH, SHEET_H / MM_PER_INCH))
+    ax = fig.add_axes((0.0, 0.0, 1.0, 1.0))
+    ax.set_axis_off()
+    cfg = Configuration(
+        color_policy=ColorPolicy.BLACK,
+        background_policy=BackgroundPolicy.WHITE,
+        lineweight_policy=LineweightPolicy.ABSOLUTE,
+        lineweight_scaling=72.0 / MM_PER_INCH,
+    )
+    ctx = RenderContext(doc)
+    backend = MatplotlibBackend(ax, adjust_figure=False)
+    Frontend(ctx, backend, config=cfg).draw_layout(doc.modelspace(), finalize=True)
+    ax.set_xlim(0.0, SHEET_W)
+    ax.set_ylim(0.0, SHEET_H)
+    ax.set_aspect("equal", adjustable="box")
+    ax.set_position((0.0, 0.0, 1.0, 1.0))
+    return fig
+
+
+def save_pdf(doc, path: Path) -> None:
+    """Write the sheet as a vector PDF of 841 × 594 mm."""
+    sheet_figure(doc).savefig(path, format="pdf")
+
+
+def save_png(doc, path: Path, dpi: int = 60) -> None:
+    """A raster preview of the sheet (documentation pictures)."""
+    sheet_figure(doc).savefig(path, format="png", dpi=dpi)
