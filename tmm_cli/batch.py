@@ -183,7 +183,8 @@ def summary_row(job: BatchJob, doc: dict, folder: str) -> dict:
 _FIGURE_CACHE: dict = {}  # per worker process: reducer drawings shared by rows with one crank speed
 
 
-def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, fmt: str, plots: bool, report: str | None) -> dict:
+def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, fmt: str, plots: bool, report: str | None,
+            sheets: bool = False) -> dict:
     """Run one row in this process: the project, its folder, its summary row (or a failure row)."""
     from .project import run_project
     from .render.report import write_project_folder
@@ -195,7 +196,8 @@ def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, f
         folder = Path(out_dir) / job.folder
         if job.folder and not job.folder.startswith("variant-"):
             folder = folder / f"variant-{v.number:02d}"
-        doc, _ = write_project_folder(result, folder, lang, fmt=fmt, plots=plots, report=report, figure_cache=_FIGURE_CACHE)
+        doc, _ = write_project_folder(result, folder, lang, fmt=fmt, plots=plots, report=report, figure_cache=_FIGURE_CACHE,
+                                      sheets=sheets)
         return summary_row(job, doc, str(folder))
     except TmmError as exc:
         return _failure_row(job, str(exc))
@@ -225,7 +227,7 @@ def write_summary_csv(path: Path, rows: list[dict]) -> None:
 
 def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_file: str | None = None,
               lang: str = "en", fmt: str = "png", plots: bool = True, report: str | None = "md",
-              jobs_n: int | None = None, progress: bool = False) -> BatchSummary:
+              jobs_n: int | None = None, progress: bool = False, sheets: bool = False) -> BatchSummary:
     """Run all jobs (in `jobs_n` processes), write out_dir/summary.csv, return the rows in order."""
     from .render.files import ensure_writable_dir
 
@@ -235,7 +237,7 @@ def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_
 
         load_table(variants_file)
     n_workers = max(1, min(jobs_n or os.cpu_count() or 1, len(jobs) or 1))
-    args = (str(out_dir), variants_file, lang, fmt, plots, report)
+    args = (str(out_dir), variants_file, lang, fmt, plots, report, sheets)
     results: dict[int, dict] = {}
 
     def _progress_ctx():

@@ -135,7 +135,8 @@ def _reducer_key(gears, lang: str, fmt: str) -> tuple:
 
 
 def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", plots: bool = True,
-                         report: str | None = "md", figure_cache: dict | None = None, title=None):
+                         report: str | None = "md", figure_cache: dict | None = None, title=None,
+                         sheets: bool = False):
     """Write results.json, cam_profile.csv, the figures and the report into `folder`, atomically.
 
     `title` (a :class:`tmm_cli.titleblock.TitleFields`, default empty) fills the drawing sheets'
@@ -143,6 +144,7 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
 
     `figure_cache` (a dict the caller keeps between calls, as `tmm batch` does) lets variants
     that share a reducer reuse its two drawings instead of drawing them again.
+    `sheets` adds the A1 drawings sheet3.dxf/.pdf and sheet4.dxf/.pdf (render/sheets).
     Returns (the JSON document, the sorted list of file names written).
     """
     from .cam_json import profile_csv
@@ -176,5 +178,11 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
             write_text(tmp / "report.md", markdown_report(result, lang, files))
         elif report == "pdf":
             pdf_report(tmp / "report.pdf", result, lang, figures)
+        # --- the A1 drawing sheets 3 and 4 (issue 10): DXF + PDF from one ezdxf model ---------
+        if sheets:
+            from .sheets import write_sheets
+
+            write_sheets(tmp, result, lang, title)
+        # ----------------------------------------------------------------------------------------
         written = sorted(p.name for p in tmp.iterdir())
     return doc, written

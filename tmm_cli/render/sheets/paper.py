@@ -504,10 +504,10 @@ class Sheet:
         # left part: columns 7, 10, 23, 15, 10 mm; rows of 5 mm
         for x in (17, 40, 55, 65):
             L(x, 0, x, 55, thick)
-        L(7, 25, 7, 55, thick)
-        for y in (5, 10, 15, 20, 35, 40, 45, 50):
+        L(7, 30, 7, 55, thick)
+        for y in (5, 10, 15, 20, 25, 40, 45, 50):
             L(0, y, 65, y, thin)
-        for y in (25, 30):
+        for y in (30, 35):
             L(0, y, 65, y, thick)
         # right part
         L(65, 40, 185, 40, thick)
@@ -525,12 +525,13 @@ class Sheet:
             return self.text(X + x, Y + y, s, h, width=w, align=align, **kw)
 
         for x, w, s in ((0, 7, "Изм."), (7, 10, "Лист"), (17, 23, "№ докум."), (40, 15, "Подп."), (55, 10, "Дата")):
-            T(x + w / 2, 26.2, s, 2.5, w - 1, "center")
-        for k, s in enumerate(("Разраб.", "Пров.", "Т.контр.", "", "Н.контр.", "Утв.")[::-1]):
+            T(x + w / 2, 31.2, s, 2.5, w - 1, "center")
+        # lower rows, top down: Разраб. 25–30, Пров. 20–25, Т.контр. 15–20, (free), Н.контр., Утв.
+        for k, s in enumerate(("Разраб.", "Пров.", "Т.контр.", "", "Н.контр.", "Утв.")):
             if s:
-                T(0.8, k * 5 + 1.2, s, 2.5, 15.5)
-        T(17.8, 21.2, title.student, 3.5, 21.5)
-        T(17.8, 16.2, title.teacher, 3.5, 21.5)
+                T(0.8, 25 - k * 5 + 1.2, s, 2.5, 15.5)
+        T(17.8, 26.2, title.student, 3.5, 21.5)
+        T(17.8, 21.2, title.teacher, 3.5, 21.5)
         for x, w, s in ((135, 15, "Лит."), (150, 17, "Масса"), (167, 18, "Масштаб")):
             T(x + w / 2, 36.2, s, 2.5, w - 1, "center")
         T(176, 27.5, scale, 5.0, 16, "center", valign="middle")

@@ -18,11 +18,11 @@ from ..numbers import num
 from .paper import GOST_SCALES, Sheet, fit_scale, gost_scale
 
 # field boxes (x0, y0, x1, y1) on the A1 sheet [mm]; the frame is 20…836 × 5…589
-BOX_MOTION = (22.0, 228.0, 302.0, 587.0)
-BOX_ZONE = (304.0, 7.0, 552.0, 587.0)
-BOX_PROFILE = (554.0, 250.0, 834.0, 587.0)
-BOX_PRESSURE = (22.0, 7.0, 302.0, 226.0)
-BOX_TABLE = (554.0, 62.0, 834.0, 248.0)
+BOX_MOTION = (22.0, 228.0, 300.0, 587.0)
+BOX_ZONE = (302.0, 7.0, 518.0, 587.0)
+BOX_PROFILE = (520.0, 222.0, 834.0, 587.0)
+BOX_PRESSURE = (22.0, 7.0, 300.0, 226.0)
+BOX_TABLE = (520.0, 64.0, 834.0, 220.0)
 
 H_LABEL = 3.5
 H_SMALL = 2.5
@@ -170,6 +170,10 @@ def _zone_field(sh: Sheet, r, lang: str):
     f = sh.add_field("zone", BOX_ZONE, pick(lang, "Minimum cam radius", "Определение минимального радиуса кулачка"),
                      origin=origin, scale=fac, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {name}")
     clip = (x0b + 1, y0b + 28.0, x1b - 1, f.inner[3])
+    # the construction's own window: the zone and the lines end a little beyond it
+    pad = 0.06 * float((hi - lo).max())
+    w0, w1 = f.p(*(lo - pad)), f.p(*(hi + pad))
+    clip = (max(clip[0], w0[0]), max(clip[1], w0[1]), min(clip[2], w1[0]), min(clip[3], w1[1]))
     f.box = clip
     # feasible zone: outline (thin) and a light hatch of parallel lines
     poly = zn.polygon * k
@@ -330,8 +334,7 @@ def profile_scale(r) -> tuple[str, float]:
     d, p = r.drawing, r.profile
     k = 1000.0
     f0 = 0.001 / d.k_sk
-    ext = max(abs(c) for c in d.bbox_m) * k + p.roller_m * k
-    R = ext * 1.18
+    R = (float(np.hypot(*p.pitch.T).max()) + p.roller_m) * k * 1.12 + 6.0 / f0
     if p.pivot_path is not None:
         R = max(R, float(np.abs(p.pivot_path).max()) * k + 8.0 / f0)
     x0, y0, x1, y1 = BOX_PROFILE
