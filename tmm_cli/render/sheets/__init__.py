@@ -14,14 +14,14 @@ from pathlib import Path
 
 def sheet3(cam, lang: str, title):
     """Sheet 3 «Синтез кулачкового механизма» of a CamResult (a Sheet; nothing written)."""
-    from .sheet3 import sheet3 as build
+    from .cam_sheet import sheet3 as build
 
     return build(cam, lang, title)
 
 
 def sheet4(gears, variant: int, lang: str, title):
     """Sheet 4 «Синтез и анализ зубчатых механизмов» of a GearsResult (a Sheet; nothing written)."""
-    from .sheet4 import sheet4 as build
+    from .gears_sheet import sheet4 as build
 
     return build(gears, variant, lang, title)
 

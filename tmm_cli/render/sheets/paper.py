@@ -460,9 +460,15 @@ class Sheet:
                     return hh, 1.0, lines
                 if w * MIN_WIDTH_FACTOR <= width:
                     return hh, max(MIN_WIDTH_FACTOR, width / w * 0.999), lines
+        # last resort: the smallest height, as many lines as allowed, narrowed as far as needed
         hh = heights[-1]
-        w = self.text_width(text, hh)
-        return hh, max(0.3, (width or w) / w * 0.999), [text]
+        best = [text]
+        for n in range(2, max_lines + 1):
+            if height_max is not None and block_h(hh, n) > height_max + 1e-9:
+                break
+            best = _wrap(text, n) or best
+        w = max(self.text_width(t, hh) for t in best)
+        return hh, min(1.0, (width or w) / w * 0.999), best
 
     # ----------------------------------------------------------------------------- fields
     def add_field(self, name: str, box, heading: str, *, origin=(0.0, 0.0), scale: float = 1.0,
@@ -530,8 +536,8 @@ class Sheet:
         for k, s in enumerate(("Разраб.", "Пров.", "Т.контр.", "", "Н.контр.", "Утв.")):
             if s:
                 T(0.8, 25 - k * 5 + 1.2, s, 2.5, 15.5)
-        T(17.8, 26.2, title.student, 3.5, 21.5)
-        T(17.8, 21.2, title.teacher, 3.5, 21.5)
+        T(17.6, 27.5, title.student, 3.5, 22.0, valign="middle", max_lines=2, height_max=4.6)
+        T(17.6, 22.5, title.teacher, 3.5, 22.0, valign="middle", max_lines=2, height_max=4.6)
         for x, w, s in ((135, 15, "Лит."), (150, 17, "Масса"), (167, 18, "Масштаб")):
             T(x + w / 2, 36.2, s, 2.5, w - 1, "center")
         T(176, 27.5, scale, 5.0, 16, "center", valign="middle")

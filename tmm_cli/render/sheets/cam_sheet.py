@@ -284,8 +284,14 @@ def _nearest(arr, p) -> int:
 
 def _hatch(f, poly, spacing):
     """45° thin hatch lines across a convex polygon (drawing units), clipped by the field."""
-    if len(poly) < 3:
-        return
+    # only the part inside the field's window (drawing units): a few dozen lines, not thousands
+    x0, y0, x1, y1 = f.box
+    lo = (np.array([x0, y0]) - f.origin) / f.scale
+    hi = (np.array([x1, y1]) - f.origin) / f.scale
+    for a, c in (((-1.0, 0.0), -lo[0]), ((1.0, 0.0), hi[0]), ((0.0, -1.0), -lo[1]), ((0.0, 1.0), hi[1])):
+        poly = _clip_half(poly, np.array(a), c)
+        if len(poly) < 3:
+            return
     d = np.array([1.0, 1.0]) / math.sqrt(2)
     n = np.array([-d[1], d[0]])
     proj = poly @ n
@@ -300,6 +306,20 @@ def _hatch(f, poly, spacing):
         if len(hits) >= 2:
             hits = sorted(hits, key=lambda h: h @ d)
             f.line(hits[0], hits[-1], "Тонкие")
+
+
+def _clip_half(poly: np.ndarray, a: np.ndarray, c: float) -> np.ndarray:
+    """Convex polygon ∩ {x: a·x ≤ c} (a drawing transform: the zone cut to the window)."""
+    out = []
+    n = len(poly)
+    for i in range(n):
+        p, q = poly[i], poly[(i + 1) % n]
+        fp, fq = p @ a - c, q @ a - c
+        if fp <= 0:
+            out.append(p)
+        if fp * fq < 0:
+            out.append(p + (q - p) * (fp / (fp - fq)))
+    return np.array(out).reshape(-1, 2)
 
 
 def _cross(sh: Sheet, c, size):

@@ -17,7 +17,7 @@ from ..gears_figures import _mesh_geometry, tooth_outline
 from ..i18n import pick
 from ..numbers import num
 from .paper import GOST_SCALES, Sheet, fit_scale
-from .sheet3 import table
+from .cam_sheet import table
 
 BOX_SCHEME = (22.0, 300.0, 262.0, 587.0)
 BOX_LINEAR = (264.0, 300.0, 420.0, 587.0)
