@@ -89,10 +89,11 @@ def profile_matches_csv(doc, cam) -> None:
     want = {"inner": np.array([[float(r["inner_x_mm"]), float(r["inner_y_mm"])] for r in rows])}
     if "outer_x_mm" in rows[0]:
         want["outer"] = np.array([[float(r["outer_x_mm"]), float(r["outer_y_mm"])] for r in rows])
-    polys = [np.array([p[:2] for p in e.get_points()]) for e in doc.modelspace().query("LWPOLYLINE[layer=='Основные']")]
+    polys = [e for e in doc.modelspace().query("LWPOLYLINE[layer=='Основные']") if len(e) == len(rows)]
     for name, ref in want.items():
         ok = False
-        for pts in polys:
+        for e in polys:
+            pts = np.array([p[:2] for p in e.get_points()])
             if len(pts) == len(ref):
                 back = (pts - np.array([ox, oy])) / k
                 if np.abs(back - ref).max() < 0.01:

@@ -51,8 +51,16 @@ def _axis(sh: Sheet, x0, y0, length, up, down, xlabel, ylabel):
 
 
 def _curve(sh: Sheet, x, y, jump_break: bool = False):
+    # every second point of the 0.25° grid: 0.5° is at most 0.6 mm of abscissa (b = 240 mm)
     x = np.asarray(x, float)
     y = np.asarray(y, float)
+    keep = np.zeros(len(x), dtype=bool)
+    keep[::2] = True
+    keep[-1] = True
+    if jump_break:  # keep both sides of a jump of the acceleration
+        big = np.nonzero(np.abs(np.diff(y)) > 0.2 * (np.abs(y).max() + 1e-12))[0]
+        keep[big] = keep[big + 1] = True
+    x, y = x[keep], y[keep]
     if jump_break:
         big = np.abs(np.diff(y)) > 0.2 * (np.abs(y).max() + 1e-12)
         cuts = np.nonzero(big)[0] + 1
@@ -385,8 +393,8 @@ def _profile_field(sh: Sheet, r, lang: str):
         f.circle((0, 0), z.l_oc_m * k, "Осевые")
     elif abs(z.e_m) * k * fac > 0.5:
         f.circle((0, 0), abs(z.e_m) * k, "Тонкие")
-    # pitch curve T (thin dash-dot) and the working profile(s)
-    f.poly(P, "Осевые")
+    # pitch curve T (thin dash-dot, every second point) and the working profile(s) (every point)
+    f.poly(np.vstack([P[::2], P[-1:]]), "Осевые")
     f.poly(p.inner * k, "Основные")
     if p.outer is not None:
         f.poly(p.outer * k, "Основные")
