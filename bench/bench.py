@@ -69,6 +69,13 @@ def main() -> None:
         for name, cmd in rows:
             t = wall(cmd, args.runs)
             print(f"{name:58s} {t:9.3f} {t / floor:8.2f}")
+        # the A1 sheets (issue 10): project with and without them (through the console entry point:
+        # `python -m tmm_cli.cli` trips over the commands' circular import)
+        tmm_main = [PY, "-c", "import sys; from tmm_cli.cli import main; sys.exit(main())"]
+        with_s = wall(tmm_main + ["project", "--variant", "17", "--no-plots", "--out", str(out)], args.runs)
+        without = wall(tmm_main + ["project", "--variant", "17", "--no-plots", "--no-sheets", "--out", str(out)], args.runs)
+        print(f"sheets 3 and 4 (DXF + PDF) add to tmm project --variant 17: {with_s - without:.2f} s "
+              f"({without:.2f} -> {with_s:.2f} s; target <= 3 s)")
         worst, median, at = in_process_synthesis()
         print(f"in-process gear synthesis over n_cr = 30..960 rpm: worst {worst * 1000:.1f} ms (at {at:g} rpm), median {median * 1000:.1f} ms")
         if args.batch:

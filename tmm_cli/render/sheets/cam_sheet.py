@@ -470,8 +470,10 @@ def _profile_field(sh: Sheet, r, lang: str):
     txt = [f"k_{{Sk}} = {_g(0.001 / fac, lang)} {pick(lang, 'm/mm', 'м/мм')};  r_{{р}} = 0,2·r_0 = {_n(rp, lang, 2)} {mm}"
            if lang == "ru" else f"k_{{Sk}} = {_g(0.001 / fac, lang)} m/mm;  r_{{r}} = 0.2·r_0 = {_n(rp, lang, 2)} mm"]
     if abs(fac - 0.001 / d.k_sk) > 1e-12:
-        txt.append(pick(lang, f"(Table 1.1 gives {d.scale}; smaller here to fit the pivot circle)",
-                        f"(по табл. 1.1 — {d.scale}; здесь меньше, чтобы уместить окружность центров качания)"))
+        why = pick(lang, "the pivot circle", "окружность центров качания") if p.pivot_path is not None else \
+            pick(lang, "the profile with its constructions", "профиль с построениями")
+        txt.append(pick(lang, f"(Table 1.1 gives {d.scale}; a smaller ГОСТ 2.302 scale here to fit {why})",
+                        f"(по табл. 1.1 — {d.scale}; здесь меньший масштаб ГОСТ 2.302, чтобы уместить {why})"))
     y = y0b + 2.0 + 4.6 * (len(txt) - 1)
     for t in txt:
         sh.text(x0b + 2.0, y, t, H_SMALL, width=x1b - x0b - 4.0)

@@ -19,8 +19,8 @@ from ..numbers import num
 from .paper import GOST_SCALES, Sheet, fit_scale
 from .cam_sheet import table
 
-BOX_SCHEME = (22.0, 300.0, 262.0, 587.0)
-BOX_LINEAR = (264.0, 300.0, 420.0, 587.0)
+BOX_SCHEME = (22.0, 300.0, 252.0, 587.0)
+BOX_LINEAR = (254.0, 300.0, 420.0, 587.0)
 BOX_ANGULAR = (22.0, 175.0, 220.0, 298.0)
 BOX_ASSEMBLY = (222.0, 7.0, 420.0, 298.0)
 BOX_TABLE = (22.0, 7.0, 220.0, 173.0)
@@ -59,7 +59,7 @@ def _scheme_field(sh: Sheet, r, lang: str):
     width = x_end + 0.9 * gap + 0.5 * rmax
     height = 2 * 1.2 * rmax
     x0b, y0b, x1b, y1b = BOX_SCHEME
-    name, f = fit_scale((width, height), (x1b - x0b - 20.0, y1b - y0b - 45.0), ENLARGE)
+    name, f = fit_scale((width, height), (x1b - x0b - 16.0, y1b - y0b - 36.0), ENLARGE)
     k_s = 0.001 / f  # m/mm for a module of 1 mm
     cy = (y0b + 12.0 + y1b - 30.0) / 2
     origin = (x0b + 12.0 + 0.45 * rmax * f, cy)
@@ -133,8 +133,9 @@ def _linear_field(sh: Sheet, r, lang: str, scheme):
     fld_s, rmax = scheme
     x0b, y0b, x1b, y1b = BOX_LINEAR
     vmax = max(max(s.v_a for s in v.stages), max(abs(s.v_a / (s.r_a - s.r_b)) * (max(s.r_b, s.r_a + 2 * s.r_planet) - s.r_b) for s in v.stages))
-    kv = min(fld_s.scale, (x1b - x0b - 30.0) / (1.25 * vmax))
-    xo = x0b + 12.0
+    vmin = min(0.0, min(s.v_a / (s.r_a - s.r_b) * (max(s.r_b, s.r_a + 2 * s.r_planet) - s.r_b) for s in v.stages))
+    kv = (x1b - x0b - 28.0) / (1.1 * vmax - vmin)  # velocities: the picture's own scale; radii: the scheme's
+    xo = x0b + 12.0 - kv * vmin
     yo = fld_s.origin[1]
     fy = fld_s.scale
     fld = sh.add_field("linear", BOX_LINEAR, pick(lang, "Linear velocities", "Картина линейных скоростей"),
@@ -238,8 +239,8 @@ def _assembly_field(sh: Sheet, r, lang: str):
         rk, rc, rc2, rn = st.z_sun / 2, st.z_planet / 2, st.zc2 / 2, st.z_ring / 2
         rC = rk + rc
         big = max(rn, rC + max(rc, rc2))
-        f = min((cw - 10.0) / (2 * big + 4), (y1b - y0b - 60.0) / (2 * big + 4))
-        c = np.array([x0b + cw * (j + 0.5), y0b + 42.0 + (y1b - y0b - 60.0) / 2])
+        f = min((cw - 10.0) / (2 * big + 4), (y1b - y0b - 50.0) / (2 * big + 4))
+        c = np.array([x0b + cw * (j + 0.5), y0b + 20.0 + (y1b - y0b - 30.0) / 2])
         sh.circle(c, rk * f, "Основные")
         sh.circle(c, rn * f, "Основные")
         sh.circle(c, rC * f, "Осевые")
@@ -260,8 +261,10 @@ def _assembly_field(sh: Sheet, r, lang: str):
             sh.dim_arc(c, ra, 90.0, 90.0 + 360.0 / k, f"2β = {num(360.0 / k, lang, sig=4)}°", H_SMALL)
         suf = pick(lang, f"Stage {j + 1}: ", f"Ступень {j + 1}: ") if n > 1 else ""
         lines = [suf + f"K = {k};  c = {ch.assembly_c};  2β = 360°/{k} = {num(360.0 / k, lang, sig=4)}°",
-                 f"φ_{{H1}} = c·2β = {num(ch.carrier_turn_deg, lang, sig=4)}°"]
-        y = y0b + 10.0
+                 f"φ_{{H1}} = c·2β = {num(ch.carrier_turn_deg, lang, sig=5)}°"
+                 + (f" = {int(ch.carrier_turn_deg // 360)}·360° + {num(ch.carrier_turn_deg % 360, lang, sig=4)}°"
+                    if ch.carrier_turn_deg >= 360 else "")]
+        y = c[1] - big * f - 7.0
         for t in lines:
             sh.text(c[0], y, t, H_SMALL, align="center", width=cw - 4.0)
             y -= 4.6
@@ -325,7 +328,8 @@ def _mesh_field(sh: Sheet, r, lang: str):
                                               (g.z2, tooth2, o2, rot2, g.p2_mm, g.da2_mm / 2)):
         tau = 2 * math.pi / z
         r_start = float(np.hypot(*(at(rmin_s) - centre)))
-        for j in range(-4, 5):
+        extra = [-int(math.ceil(math.radians(50.0) / tau)) * int(sx)] if z == g.z1 else [int(round(3 * sx))]
+        for j in sorted(set(range(-4, 5)) | set(extra)):
             a = rot + j * tau
             ca, sa = math.cos(a), math.sin(a)
             pts = tooth @ np.array([[ca, sa], [-sa, ca]]) + centre
@@ -371,7 +375,7 @@ def _mesh_field(sh: Sheet, r, lang: str):
         sh.text(q[0], q[1], lab, H_SMALL, align="center", valign="middle")
     # α_w at P between the tangent to the pitch circles and the line of action
     pq = np.array(fld.p(*p))
-    rr = 28.0
+    rr = 45.0
     sh.line(pq - np.array([sx * 5.0, 0]), pq + np.array([sx * (rr + 6.0), 0]), "Тонкие")
     a0, a1 = (0.0, g.alpha_w_deg) if sx > 0 else (180.0 - g.alpha_w_deg, 180.0)
     sh.dim_arc(pq, rr, a0, a1, f"α_{{w}} = {num(g.alpha_w_deg, lang, sig=3)}°", H_SMALL)
@@ -386,14 +390,14 @@ def _mesh_field(sh: Sheet, r, lang: str):
     r1 = g.d1_mm / 2
     t1 = 2 * math.pi / g.z1
     half_s = g.s_mm / 2 / r1
-    jd = -2 * sx  # two teeth away from the pole, on the side away from the line of action's end
+    jd = -int(math.ceil(math.radians(50.0) / t1)) * int(sx)  # a tooth ≥ 50° from the pole, clear of gear 2
     a_t = rot1 + jd * t1
     c1 = np.array(fld.p(*o1))
-    rdim = (g.da1_mm / 2 + 1.2 * m) * f
+    rdim = g.da1_mm / 2 * f + 5.0
     deg = math.degrees
     sh.dim_arc(c1, rdim, deg(a_t - half_s), deg(a_t + half_s), "s", H_SMALL, ext_from=r1 * f)
-    sh.dim_arc(c1, rdim + 9.0, deg(a_t + half_s), deg(a_t + half_s + g.e_mm / r1), "e", H_SMALL, ext_from=r1 * f)
-    sh.dim_arc(c1, rdim + 18.0, deg(a_t - half_s), deg(a_t - half_s + g.p_mm / r1), "p", H_SMALL, ext_from=r1 * f)
+    sh.dim_arc(c1, rdim + 7.0, deg(a_t + half_s), deg(a_t + half_s + g.e_mm / r1), "e", H_SMALL, ext_from=r1 * f)
+    sh.dim_arc(c1, rdim + 14.0, deg(a_t - half_s), deg(a_t - half_s + g.p_mm / r1), "p", H_SMALL, ext_from=r1 * f)
     # radial dimensions h_f, h_a, h (gear 2, a tooth away from the pole) and c
     r2 = g.d2_mm / 2
     t2 = 2 * math.pi / g.z2

@@ -25,6 +25,13 @@ def sheet_figure(doc):
     fig = Figure(figsize=(SHEET_W / MM_PER_INCH, SHEET_H / MM_PER_INCH))
     ax = fig.add_axes((0.0, 0.0, 1.0, 1.0))
     ax.set_axis_off()
+    ax.set_xlim(0.0, SHEET_W)
+    ax.set_ylim(0.0, SHEET_H)
+    ax.set_autoscale_on(False)
+    # the limits are the sheet, fixed: skip matplotlib's data-limit updates, which walk every
+    # Bézier segment of every text glyph (seconds per sheet, for nothing)
+    ax._update_patch_limits = lambda patch: None
+    ax._update_line_limits = lambda line: None
     cfg = Configuration(
         color_policy=ColorPolicy.BLACK,
         background_policy=BackgroundPolicy.WHITE,
