@@ -42,11 +42,11 @@ def _g(x, lang, sig=4):
 
 def _axis(sh: Sheet, x0, y0, length, up, down, xlabel, ylabel):
     """Abscissa from x0 with an arrow, ordinate from y0 − down to y0 + up with an arrow."""
-    sh.line((x0, y0), (x0 + length + 8, y0), "Основные")
-    sh.arrow((x0 + length + 10, y0), (1, 0), "Основные", 3.5, 1.2)
+    sh.line((x0, y0), (x0 + length + 4, y0), "Основные")
+    sh.arrow((x0 + length + 6, y0), (1, 0), "Основные", 3.5, 1.2)
     sh.line((x0, y0 - down), (x0, y0 + up + 6), "Основные")
     sh.arrow((x0, y0 + up + 8), (0, 1), "Основные", 3.5, 1.2)
-    sh.text(x0 + length + 11, y0 - 1.0, xlabel, H_LABEL, valign="top")
+    sh.text(x0 + length + 3, y0 - 1.5, xlabel, H_LABEL, valign="top")
     sh.text(x0 - 1.5, y0 + up + 8, ylabel, H_LABEL, align="right", valign="top")
 
 
@@ -80,7 +80,7 @@ def _motion_field(sh: Sheet, r, lang: str) -> None:
     sc = m.scales
     f = sh.add_field("motion", BOX_MOTION, pick(lang, "Follower motion laws", "Законы движения толкателя"))
     x0b, y0b, x1b, y1b = f.inner
-    xo = x0b + 22.0  # ordinate axes
+    xo = x0b + 26.0  # ordinate axes (the poles P_V, P_a at H left of them when H fits)
     phw = v.phi_working_deg
     keep = np.degrees(m.phi) <= phw + 1e-9
     xs = xo + np.degrees(m.phi[keep]) / sc.k_phi_deg_mm
@@ -118,7 +118,9 @@ def _motion_field(sh: Sheet, r, lang: str) -> None:
         sh.text(x, ys0 - 1.2, str(row.index), H_SMALL, align="center", valign="top")
     # poles of graphical differentiation: P_V, P_a at H_V, H_a left of the origin
     for y0, H, nm in ((yv0, sc.h_v_mm, "V"), (ya0, sc.h_a_mm, "a")):
-        px = xo - H * squeeze if H * squeeze < 20 else xo - 19.0
+        if H > xo - x0b - 3.0:  # the pole would leave the field: H is printed below instead
+            continue
+        px = xo - H
         sh.dot((px, y0), 0.8)
         sh.text(px, y0 + 1.5, f"P_{{{nm if not rocker else ('ω' if nm == 'V' else 'ε')}}}", H_SMALL, align="center")
     # scales
@@ -268,9 +270,8 @@ def _zone_field(sh: Sheet, r, lang: str):
             lo_a, hi_a = hi_a, lo_a + 360
         sh.arc(f.p(*d), rr, lo_a, hi_a, "Тонкие")
         nu_i = abs(((a2 - a1 + 180) % 360) - 180)
-        am = math.radians((lo_a + hi_a) / 2)
-        q = np.add(f.p(*d), (rr * 1.25 * math.cos(am), rr * 1.25 * math.sin(am)))
-        sh.text(q[0], q[1], f"ν_{{{i}}} = {_n(nu_i, lang, 1)}°", H_SMALL, align="center", valign="middle")
+        q = np.array(f.p(*(d - lo_len * u)))  # at the free end of the −u line
+        sh.text(q[0] + 1.0, q[1] - 1.0, f"ν_{{{i}}} = {_n(nu_i, lang, 1)}°", H_SMALL, valign="top")
     # caption under the drawing
     txt = [
         f"ν_{{max}} = {v.nu_max_deg:g}°;  r_0 = {_n(z.r0_m * k, lang, 2)} {pick(lang, 'mm', 'мм')}",
@@ -456,7 +457,8 @@ def _profile_field(sh: Sheet, r, lang: str):
         q = np.add(f.p(0, 0), ((rr + 4.0) * math.cos(am), (rr + 4.0) * math.sin(am)))
         sh.text(q[0], q[1], f"{names[j]} = {_n(vals[j], lang, 1)}°", H_SMALL, align="center", valign="middle")
     # rotation of the cam
-    rr = 0.45 * r0 * fac
+    e_abs = 0.0 if p.pivot_path is not None else abs(z.e_m) * k
+    rr = (0.45 * r0 if e_abs < 0.3 * r0 else 0.5 * (e_abs + r0)) * fac
     a0, a1 = 200.0, 250.0
     sh.arc(f.p(0, 0), rr, a0, a1, "Основные")
     e = math.radians(a1 if v.ccw else a0)
@@ -498,7 +500,7 @@ def _pressure_field(sh: Sheet, r, lang: str):
     nu = p.nu_deg[keep]
     top = max(float(nu.max()), v.nu_max_deg)
     room = y1b - yo - 14.0
-    k_nu = next((c for c in (0.5, 1.0, 2.0, 2.5) if top / c <= room), 5.0)  # °/mm
+    k_nu = next((c for c in (0.25, 0.4, 0.5, 1.0, 2.0, 2.5) if top / c <= room), 5.0)  # °/mm
     xs = xo + np.degrees(p.phi[keep]) / sc.k_phi_deg_mm
     _axis(sh, xo, yo, sc.b_mm, top / k_nu, 0.0, "φ", "ν")
     ph = m.program.phase_index(p.phi[keep])
