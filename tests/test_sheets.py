@@ -219,3 +219,13 @@ def test_cam_and_gears_sheets_flag(tmp_path):
     run = CliRunner().invoke(cli, ["cam", "-v", "3", "--out", str(tmp_path), "--no-plots"])
     assert run.exit_code == 0
     assert not (tmp_path / "variant-03" / "sheet3.dxf").exists()
+
+
+def test_batch_sheets_only_on_request(tmp_path):
+    base = ["batch", "--variants", "3", "--jobs", "1", "--no-plots", "--report", "none"]
+    run = CliRunner().invoke(cli, base + ["--out", str(tmp_path / "a")])
+    assert run.exit_code == 0, run.output
+    assert not list((tmp_path / "a").rglob("sheet*"))
+    run = CliRunner().invoke(cli, base + ["--out", str(tmp_path / "b"), "--sheets"])
+    assert run.exit_code == 0, run.output
+    assert {p.name for p in (tmp_path / "b").rglob("sheet*")} == {"sheet3.dxf", "sheet3.pdf", "sheet4.dxf", "sheet4.pdf"}

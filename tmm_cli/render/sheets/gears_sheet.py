@@ -286,9 +286,28 @@ def _cross_small(sh, c, s=3.0):
 def mesh_scale(g) -> tuple[str, float]:
     """The mesh field's ГОСТ 2.302 scale: both centres O1, O2 and the pole region inside the field."""
     x0, y0, x1, y1 = BOX_MESH
-    need_h = g.a_mm + 0.9 * g.m_mm * 2 + 60.0 / 1.0  # centres plus room for labels (at 1:1)
-    choices = tuple((lab, f) for lab, f in GOST_SCALES if 0.1 <= f <= 2.0)
-    return fit_scale((g.d1_mm * 0.6, need_h), (x1 - x0 - 20.0, y1 - y0 - 60.0), choices)
+    choices = [(lab, f) for lab, f in GOST_SCALES if 0.1 <= f <= 2.0]
+    room = y1 - y0 - 60.0 - 12.0  # the centres with their labels inside the drawing area
+    best = max((c for c in choices if g.a_mm * c[1] <= room), key=lambda c: c[1], default=choices[0])
+    return best
+
+
+def dim_tooth(g, f, c1, clip, sx) -> int:
+    """The tooth of gear 1 that carries the p, s, e dimensions: ≥ 40° from the pole (clear of
+    gear 2), its dimension arcs inside the field; the side away from N2 first."""
+    t1 = 2 * math.pi / g.z1
+    r_out = g.da1_mm / 2 * f + 22.0
+    for deg_min in (50.0, 40.0, 30.0, 60.0, 70.0):
+        for side in (-sx, sx):
+            j = int(math.ceil(math.radians(deg_min) / t1)) * int(side)
+            ok = True
+            for da in np.linspace(-0.5 * t1, 1.5 * t1, 9):
+                a = math.pi / 2 + j * t1 + da
+                q = c1 + r_out * np.array([math.cos(a), math.sin(a)])
+                ok &= clip[0] + 3 < q[0] < clip[2] - 3 and clip[1] + 3 < q[1] < clip[3] - 3
+            if ok:
+                return j
+    return int(math.ceil(math.radians(50.0) / t1)) * int(-sx)
 
 
 def _mesh_field(sh: Sheet, r, lang: str):
@@ -328,7 +347,7 @@ def _mesh_field(sh: Sheet, r, lang: str):
                                               (g.z2, tooth2, o2, rot2, g.p2_mm, g.da2_mm / 2)):
         tau = 2 * math.pi / z
         r_start = float(np.hypot(*(at(rmin_s) - centre)))
-        extra = [-int(math.ceil(math.radians(50.0) / tau)) * int(sx)] if z == g.z1 else [int(round(3 * sx))]
+        extra = [dim_tooth(g, f, np.array(fld.p(*o1)), clip, sx)] if z == g.z1 else [int(round(3 * sx))]
         for j in sorted(set(range(-4, 5)) | set(extra)):
             a = rot + j * tau
             ca, sa = math.cos(a), math.sin(a)
@@ -390,10 +409,10 @@ def _mesh_field(sh: Sheet, r, lang: str):
     r1 = g.d1_mm / 2
     t1 = 2 * math.pi / g.z1
     half_s = g.s_mm / 2 / r1
-    jd = -int(math.ceil(math.radians(50.0) / t1)) * int(sx)  # a tooth ≥ 50° from the pole, clear of gear 2
-    a_t = rot1 + jd * t1
     c1 = np.array(fld.p(*o1))
     rdim = g.da1_mm / 2 * f + 5.0
+    jd = dim_tooth(g, f, c1, clip, sx)
+    a_t = rot1 + jd * t1
     deg = math.degrees
     sh.dim_arc(c1, rdim, deg(a_t - half_s), deg(a_t + half_s), "s", H_SMALL, ext_from=r1 * f)
     sh.dim_arc(c1, rdim + 7.0, deg(a_t + half_s), deg(a_t + half_s + g.e_mm / r1), "e", H_SMALL, ext_from=r1 * f)
