@@ -171,8 +171,8 @@ def _zone_field(sh: Sheet, r, lang: str):
     lo, hi = allp.min(axis=0), allp.max(axis=0)
     lo = np.minimum(lo, O - np.array([0.0, 0.25 * (hi - lo).max()]))  # the zone below O
     x0b, y0b, x1b, y1b = BOX_ZONE
-    room = (x1b - x0b - 24.0, y1b - y0b - 40.0 - 30.0)
-    name, fac = fit_scale(tuple((hi - lo) * 1.08), room)
+    room = (x1b - x0b - 12.0, y1b - y0b - 40.0 - 30.0)
+    name, fac = fit_scale(tuple((hi - lo) * 1.04), room)
     mid = (lo + hi) / 2
     cx = (x0b + x1b) / 2
     cy = (y0b + 30.0 + y1b - 40.0) / 2
@@ -357,27 +357,78 @@ PROFILE_SCALES = tuple((lab, gost_scale(lab)) for lab in ("1:10", "1:5", "1:4", 
                                                               "2,5:1", "4:1", "5:1", "10:1"))
 
 
-def profile_scale(r) -> tuple[str, float]:
-    """The profile field's scale: the core's Table 1.1 scale, or a smaller ГОСТ 2.302 one when the
-    cam with its roller, ψ arcs and (rocker) the pivot circle would not fit the field."""
-    d, p = r.drawing, r.profile
+def _psi_spans(r) -> list[tuple[int, float, float]]:
+    """(j, lo, hi) [deg, ccw] of the profile angles ψ_у, ψ_дс, ψ_в as arcs about O: from the ray
+    to the pitch-curve point at the start of each phase, swept against the rotation by the core's ψ."""
+    p, v = r.profile, r.variant
+    P = p.pitch
+    n = len(p.phi) - 1
+    prog = r.motion.program
+    marks = [0.0, prog.phi_rise, prog.return_start]
+    ang = [math.degrees(math.atan2(P[i, 1], P[i, 0])) for i in (int(round(a / (2 * math.pi) * n)) % n for a in marks)]
+    sgn = 1.0 if v.ccw else -1.0  # ψ is swept against the rotation: clockwise for a ccw cam
+    out = []
+    for j, val in enumerate((p.psi_rise_deg, p.psi_far_deg, p.psi_return_deg)):
+        if val < 0.05:
+            continue
+        sweep = -sgn * val
+        out.append((j, *((ang[j] + sweep, ang[j]) if sweep < 0 else (ang[j], ang[j] + sweep))))
+    return out
+
+
+PSI_GAP = 6.0  # [paper mm] from the cam's outline to the first ψ arc; 5 mm between the arcs
+
+
+def _profile_extent(r, fac: float) -> tuple[np.ndarray, np.ndarray]:
+    """Lower-left and upper-right corners [paper mm, O at 0] of everything the field draws."""
+    p = r.profile
     k = 1000.0
-    f0 = 0.001 / d.k_sk
-    R = (float(np.hypot(*p.pitch.T).max()) + p.roller_m) * k * 1.12 + 6.0 / f0
+    x0, x1, y0, y1 = (c * k * fac for c in r.drawing.bbox_m)
+    pts = [np.array([[x0, y0], [x1, y1]])]
+    big = (float(np.hypot(*p.pitch.T).max()) + p.roller_m) * k * fac
+    for j, lo, hi in _psi_spans(r):
+        rr = big + PSI_GAP + 5.0 * j
+        t = np.radians(np.linspace(lo, hi, 30))
+        pts.append(np.column_stack([(rr + 5.0) * np.cos(t), (rr + 5.0) * np.sin(t)]))
+        am = math.radians((lo + hi) / 2)
+        c = (rr + 4.0) * np.array([math.cos(am), math.sin(am)])
+        pts.append(np.array([c - (13.0, 3.0), c + (13.0, 3.0)]))  # its label
     if p.pivot_path is not None:
-        R = max(R, float(np.abs(p.pivot_path).max()) * k + 8.0 / f0)
-    x0, y0, x1, y1 = BOX_PROFILE
-    room = (x1 - x0 - 16.0, y1 - y0 - 32.0)
-    choices = [(lab, f) for lab, f in PROFILE_SCALES if f <= f0 + 1e-12]
-    return fit_scale((2 * R, 2 * R), room, choices)
+        pp = p.pivot_path * k * fac
+        pts.append(np.vstack([pp - 7.0, pp + 7.0]))
+    a = np.vstack(pts)
+    return a.min(axis=0), a.max(axis=0)
+
+
+PROFILE_ROOM = (BOX_PROFILE[0] + 4.0, BOX_PROFILE[1] + 14.0, BOX_PROFILE[2] - 4.0, BOX_PROFILE[3] - 20.0)
+
+
+def profile_layout(r) -> tuple[str, float, tuple[float, float]]:
+    """The profile field's scale and the sheet position of O: the core's Table 1.1 scale, or a
+    smaller ГОСТ 2.302 one when the cam with its rollers, ψ arcs and (rocker) the pivot circle would
+    not fit the field; the drawing is centred in the field."""
+    f0 = 0.001 / r.drawing.k_sk
+    X0, Y0, X1, Y1 = PROFILE_ROOM
+    choices = sorted(((lab, f) for lab, f in PROFILE_SCALES if f <= f0 + 1e-12), key=lambda c: -c[1])
+    for lab, f in choices:
+        lo, hi = _profile_extent(r, f)
+        if hi[0] - lo[0] <= X1 - X0 and hi[1] - lo[1] <= Y1 - Y0:
+            break
+    mid = (lo + hi) / 2
+    return lab, f, ((X0 + X1) / 2 - mid[0], (Y0 + Y1) / 2 - mid[1])
+
+
+def profile_scale(r) -> tuple[str, float]:
+    """The profile field's ГОСТ 2.302 scale (label, paper mm per real mm)."""
+    lab, f, _ = profile_layout(r)
+    return lab, f
 
 
 def _profile_field(sh: Sheet, r, lang: str):
     v, z, p, d = r.variant, r.sizing, r.profile, r.drawing
     k = 1000.0
-    name, fac = profile_scale(r)
+    name, fac, (cx, cy) = profile_layout(r)
     x0b, y0b, x1b, y1b = BOX_PROFILE
-    cx, cy = (x0b + x1b) / 2, (y0b + 4.0 + y1b - 28.0) / 2
     f = sh.add_field("profile", BOX_PROFILE, pick(lang, "Cam profile synthesis", "Синтез профиля кулачка"),
                      origin=(cx, cy), scale=fac, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {name}")
     f.box = (x0b + 1, y0b + 1, x1b - 1, f.inner[3])
@@ -429,32 +480,28 @@ def _profile_field(sh: Sheet, r, lang: str):
         _pivot(sh, f.p(*c0))
         sh.text(*np.add(f.p(*c0), (2.5, 2.0)), "C_0", H_LABEL)
         f.line(c0, P[0], "Основные")
-    # profile angles ψ as arcs outside the cam, between rays from O
-    prog = r.motion.program
-    marks = [0.0, prog.phi_rise, prog.return_start, prog.phi_working]
-    idxs = [int(round(a / (2 * math.pi) * n)) % n for a in marks]
-    ang = [math.degrees(math.atan2(P[i, 1], P[i, 0])) for i in idxs]
-    R_arc = big * 1.08
-    for i in idxs:
-        q = P[i] / np.hypot(*P[i]) * R_arc * 1.03
-        f.line((0, 0), q, "Тонкие")
-    sgn = 1.0 if v.ccw else -1.0  # ψ is swept against the rotation: clockwise for a ccw cam
+    # profile angles ψ as arcs outside the cam, between rays from O (the core's values)
     names = ("ψ_{у}", "ψ_{дс}", "ψ_{в}") if lang == "ru" else ("ψ_{r}", "ψ_{fd}", "ψ_{ret}")
     vals = (p.psi_rise_deg, p.psi_far_deg, p.psi_return_deg)
-    for j in range(3):
-        if vals[j] < 0.05:
-            continue
-        a_start, sweep = ang[j], -sgn * vals[j]
-        lo_a, hi_a = (a_start + sweep, a_start) if sweep < 0 else (a_start, a_start + sweep)
-        rr = R_arc * (1.0 + 0.04 * j) * fac
-        sh.arc(f.p(0, 0), rr, lo_a, hi_a, "Размеры")
+    o_s = np.array(f.p(0, 0))
+    big_p = big * fac
+    rays = set()
+    for j, lo_a, hi_a in _psi_spans(r):
+        rr = big_p + PSI_GAP + 5.0 * j
+        for a in (lo_a, hi_a):
+            key = round(a % 360.0, 3)
+            e = np.array([math.cos(math.radians(a)), math.sin(math.radians(a))])
+            if key not in rays:
+                rays.add(key)
+            sh.line(o_s, o_s + e * (rr + 2.5), "Тонкие")
+        sh.arc(o_s, rr, lo_a, hi_a, "Размеры")
         for end, dirn in ((lo_a, 1), (hi_a, -1)):
             e = math.radians(end)
-            tip = np.add(f.p(0, 0), (rr * math.cos(e), rr * math.sin(e)))
+            tip = o_s + (rr * math.cos(e), rr * math.sin(e))
             tang = np.array([-math.sin(e), math.cos(e)]) * -dirn
             sh.arrow(tip, tang, "Размеры", 3.0, 0.9)
         am = math.radians((lo_a + hi_a) / 2)
-        q = np.add(f.p(0, 0), ((rr + 4.0) * math.cos(am), (rr + 4.0) * math.sin(am)))
+        q = o_s + ((rr + 4.0) * math.cos(am), (rr + 4.0) * math.sin(am))
         sh.text(q[0], q[1], f"{names[j]} = {_n(vals[j], lang, 1)}°", H_SMALL, align="center", valign="middle")
     # rotation of the cam
     e_abs = 0.0 if p.pivot_path is not None else abs(z.e_m) * k
