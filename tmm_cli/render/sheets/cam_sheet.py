@@ -108,7 +108,7 @@ def _motion_field(sh: Sheet, r, lang: str) -> None:
     for (y0, arr, pts, up, dn, nm, jb) in ((ys0, s_arr, rs, sc.y_s_max_mm, 0.0, names[0], False),
                                             (yv0, v_arr, rv, up_v, dn_v, names[1], False),
                                             (ya0, a_arr, ra, up_a, dn_a, names[2], True)):
-        _axis(sh, xo, y0, b, up * squeeze, dn * squeeze, "φ", nm)
+        _axis(sh, xo, y0, b, up * squeeze, dn * squeeze, "φ, t", nm)
         _curve(sh, xs, y0 + arr * squeeze, jump_break=jb)
         for x, yy in zip(xr, pts):
             if abs(yy) > 0.3:
