@@ -16,7 +16,7 @@ import numpy as np
 from ..gears_figures import _mesh_geometry, tooth_outline
 from ..i18n import pick
 from ..numbers import num
-from .paper import GOST_SCALES, Sheet, fit_scale
+from .paper import GOST_SCALES, Sheet, fit_scale, thin_out
 from .cam_sheet import table
 
 BOX_SCHEME = (22.0, 300.0, 252.0, 587.0)
@@ -340,8 +340,8 @@ def _mesh_field(sh: Sheet, r, lang: str):
             sh.dot(q, 0.7)
             sh.text(q[0] + 2.0, q[1] + 1.5, nm, H_LABEL)
     # teeth: 4 on either side of the line of centres
-    tooth1 = tooth_outline(g.z1, m)
-    tooth2 = tooth_outline(g.z2, m)
+    tooth1 = thin_out(tooth_outline(g.z1, m), 0.6 / f)  # a vertex every 0.6 mm of paper
+    tooth2 = thin_out(tooth_outline(g.z2, m), 0.6 / f)
     active = []
     for z, tooth, centre, rot, rmin_s, ra in ((g.z1, tooth1, o1, rot1, g.p1_mm, g.da1_mm / 2),
                                               (g.z2, tooth2, o2, rot2, g.p2_mm, g.da2_mm / 2)):

@@ -164,6 +164,24 @@ def circle_arcs_in_box(c, r: float, box) -> list[tuple[float, float]] | None:
     return [(a, b) for a, b in out if b - a > 0.3]
 
 
+def thin_out(pts: np.ndarray, step: float) -> np.ndarray:
+    """Every point at least `step` (along the path) from the last kept one, ends kept: a drawing
+    needs no more vertices than it can show (the tooth flanks come at 400 points each)."""
+    pts = np.asarray(pts, dtype=float)
+    if len(pts) < 3:
+        return pts
+    seg = np.hypot(*np.diff(pts, axis=0).T)
+    s = np.concatenate([[0.0], np.cumsum(seg)])
+    keep = [0]
+    last = 0.0
+    for i in range(1, len(pts) - 1):
+        if s[i] - last >= step:
+            keep.append(i)
+            last = s[i]
+    keep.append(len(pts) - 1)
+    return pts[keep]
+
+
 # ----------------------------------------------------------------------------------------------
 # rich text: "ψ_{у}", "r_0", "S^{2}"
 

@@ -15,11 +15,30 @@ from .paper import SHEET_H, SHEET_W
 MM_PER_INCH = 25.4
 
 
+def _backend(ax):
+    """ezdxf's matplotlib backend, filling paths as given: the sheet's filled paths are glyphs of a
+    TrueType font (outer contours and holes already wound opposite ways), arrow heads and dots, so
+    the hole detection ezdxf runs on every filled path (a third of the render time) is not needed."""
+    from ezdxf.addons.drawing.matplotlib import MatplotlibBackend
+    from ezdxf.npshapes import to_matplotlib_path
+    from matplotlib.patches import PathPatch
+
+    class SheetBackend(MatplotlibBackend):
+        def draw_filled_paths(self, paths, properties):
+            try:
+                patch = PathPatch(to_matplotlib_path(paths, detect_holes=False), color=properties.color,
+                                  linewidth=0, fill=True, zorder=self._get_z())
+            except ValueError:  # an empty path: nothing to fill
+                return
+            self.ax.add_patch(patch)
+
+    return SheetBackend(ax, adjust_figure=False)
+
+
 def sheet_figure(doc):
     """A matplotlib Figure of the whole sheet at true size (no pyplot)."""
     from ezdxf.addons.drawing import Frontend, RenderContext
     from ezdxf.addons.drawing.config import BackgroundPolicy, ColorPolicy, Configuration, LineweightPolicy
-    from ezdxf.addons.drawing.matplotlib import MatplotlibBackend
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(SHEET_W / MM_PER_INCH, SHEET_H / MM_PER_INCH))
@@ -39,7 +58,7 @@ def sheet_figure(doc):
         lineweight_scaling=72.0 / MM_PER_INCH,
     )
     ctx = RenderContext(doc)
-    backend = MatplotlibBackend(ax, adjust_figure=False)
+    backend = _backend(ax)
     Frontend(ctx, backend, config=cfg).draw_layout(doc.modelspace(), finalize=True)
     ax.set_xlim(0.0, SHEET_W)
     ax.set_ylim(0.0, SHEET_H)
@@ -49,8 +68,13 @@ def sheet_figure(doc):
 
 
 def save_pdf(doc, path: Path) -> None:
-    """Write the sheet as a vector PDF of 841 × 594 mm."""
-    sheet_figure(doc).savefig(path, format="pdf")
+    """Write the sheet as a vector PDF of 841 × 594 mm (zlib level 1: half the time of the
+    default level for a file 15 % larger)."""
+    import matplotlib
+
+    fig = sheet_figure(doc)
+    with matplotlib.rc_context({"pdf.compression": 1}):
+        fig.savefig(path, format="pdf")
 
 
 def save_png(doc, path: Path, dpi: int = 60) -> None:
