@@ -15,7 +15,7 @@ import numpy as np
 
 from ..i18n import pick
 from ..numbers import num
-from .paper import GOST_SCALES, Sheet, fit_scale, gost_scale
+from .paper import Sheet, fit_scale, gost_scale
 
 # field boxes (x0, y0, x1, y1) on the A1 sheet [mm]; the frame is 20…836 × 5…589
 BOX_MOTION = (22.0, 228.0, 300.0, 587.0)
@@ -609,7 +609,7 @@ def table(sh: Sheet, box, title: str, rows: list[tuple[str, str]], col1: float =
 
 
 def _results(sh: Sheet, r, lang: str, prof_scale: str) -> None:
-    v, z, p, d, sc = r.variant, r.sizing, r.profile, r.drawing, r.motion.scales
+    v, z, p, sc = r.variant, r.sizing, r.profile, r.motion.scales
     k = 1000.0
     mm = pick(lang, "mm", "мм")
     ru = lang == "ru"
