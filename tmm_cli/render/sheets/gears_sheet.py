@@ -57,7 +57,7 @@ def _scheme_field(sh: Sheet, r, lang: str):
     d = r.planetary
     rmax, gap, xs, x_end = _scheme_layout(d)
     width = x_end + 0.9 * gap + 0.5 * rmax
-    height = 2 * 1.2 * rmax
+    height = 2 * 1.16 * rmax  # the ring hatch ends at 1.14·r_max
     x0b, y0b, x1b, y1b = BOX_SCHEME
     name, f = fit_scale((width, height), (x1b - x0b - 16.0, y1b - y0b - 36.0), ENLARGE)
     k_s = 0.001 / f  # m/mm for a module of 1 mm
