@@ -283,13 +283,31 @@ def _cross_small(sh, c, s=3.0):
 # the spur mesh
 
 
+MESH_ROOM = (BOX_MESH[1] + 30.0, BOX_MESH[3] - 28.0)  # y band of the drawing (captions below, heading above)
+
+
 def mesh_scale(g) -> tuple[str, float]:
-    """The mesh field's ГОСТ 2.302 scale: both centres O1, O2 and the pole region inside the field."""
-    x0, y0, x1, y1 = BOX_MESH
-    choices = [(lab, f) for lab, f in GOST_SCALES if 0.1 <= f <= 2.0]
-    room = y1 - y0 - 60.0 - 12.0  # the centres with their labels inside the drawing area
-    best = max((c for c in choices if g.a_mm * c[1] <= room), key=lambda c: c[1], default=choices[0])
-    return best
+    """The mesh field's ГОСТ 2.302 scale, at most 1:1: the largest at which the smaller wheel's
+    centre and the mesh zone with its dimensions fit; the larger wheel's centre may lie beyond
+    the field (its circles are then drawn as arcs and a_w as a dimension broken at the edge)."""
+    lo, hi = MESH_ROOM
+    room = hi - lo - 12.0
+    choices = [(lab, f) for lab, f in GOST_SCALES if 0.1 <= f <= 1.0]
+    r_small = min(g.d1_mm, g.d2_mm) / 2
+    ok = [c for c in choices if g.a_mm * c[1] <= room or r_small * c[1] + 14.0 + 150.0 <= room]
+    return max(ok, key=lambda c: c[1], default=choices[0])
+
+
+def mesh_origin(g, f: float) -> tuple[float, float]:
+    """Sheet position of O1 (the field's origin): both centres centred in the band when they fit,
+    else the smaller wheel's centre 10 mm inside the band's edge."""
+    lo, hi = MESH_ROOM
+    x = (BOX_MESH[0] + BOX_MESH[2]) / 2
+    if g.a_mm * f <= hi - lo - 12.0:
+        return x, (lo + hi) / 2 - f * g.a_mm / 2
+    if g.d2_mm <= g.d1_mm:  # O2 (top) shown, O1 below the field
+        return x, hi - 10.0 - f * g.a_mm
+    return x, lo + 10.0
 
 
 def dim_tooth(g, f, c1, clip, sx) -> int:
@@ -317,9 +335,7 @@ def _mesh_field(sh: Sheet, r, lang: str):
     o1, o2, p, u, n1, at = _mesh_geometry(g, r.directions.motor)
     sx = 1.0 if u[0] > 0 else -1.0
     # O1 low in the field, the pole in the middle band
-    room_lo, room_hi = y0b + 30.0, y1b - 28.0
-    oy = (room_lo + room_hi) / 2 - f * g.a_mm / 2
-    origin = ((x0b + x1b) / 2, oy)
+    origin = mesh_origin(g, f)
     fld = sh.add_field("mesh", BOX_MESH, pick(lang, "Spur gear mesh synthesis", "Геометрический синтез зубчатого зацепления"),
                        origin=origin, scale=f, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {name}")
     clip = (x0b + 1.0, y0b + 24.0, x1b - 1.0, fld.inner[3])
@@ -402,9 +418,16 @@ def _mesh_field(sh: Sheet, r, lang: str):
     for centre, phi, rad, nm, base in ((o1, g.phi_alpha1_deg, 0.55 * g.df1_mm / 2, "φ_{α1}", 90.0),
                                        (o2, g.phi_alpha2_deg, 0.55 * g.df2_mm / 2, "φ_{α2}", 270.0)):
         q = np.array(fld.p(*centre))
+        ext = 0.0
+        if not clip[1] < q[1] < clip[3]:  # the centre is beyond the field: the arc 30 mm inside it
+            edge = clip[1] if base == 90 else clip[3]
+            rad = (abs(edge - q[1]) + 30.0) / f
+            ext = (rad * f) - 25.0
+            if rad > 0.9 * (g.df1_mm if base == 90 else g.df2_mm) / 2:
+                continue  # no room below the root circle
         if clip[1] + 10 < q[1] + (rad * f if base == 90 else -rad * f) < clip[3] - 10:
             sh.dim_arc(q, rad * f, base - phi / 2, base + phi / 2, f"{nm} = {num(phi, lang, sig=4)}°", H_SMALL,
-                       ext_from=0.0)
+                       ext_from=ext)
     # dimensions on gear 1: p, s, e on the pitch circle of a tooth left of the pole; h, h_a, h_f
     r1 = g.d1_mm / 2
     t1 = 2 * math.pi / g.z1
@@ -438,6 +461,14 @@ def _mesh_field(sh: Sheet, r, lang: str):
     pa, pb = np.array(fld.p(*o1)), np.array(fld.p(*o2))
     if clip[1] < pa[1] and pb[1] < clip[3]:
         sh.dim_linear(pa, pb, (xa - pa[0], 0.0), f"a_{{w}} = {num(g.a_mm, lang, sig=4)}", H_LABEL)
+    else:  # one centre beyond the field: the dimension line broken at the field's edge
+        seen, other = (pa, pb) if clip[1] < pa[1] < clip[3] else (pb, pa)
+        end_y = clip[1] + 2.0 if other[1] < seen[1] else clip[3] - 2.0
+        sh.line(seen + (np.sign(xa - seen[0]) * 2.0, 0.0), (xa + np.sign(xa - seen[0]) * 2.0, seen[1]), "Размеры")
+        sh.line((xa, seen[1]), (xa, end_y), "Размеры")
+        sh.arrow((xa, seen[1]), (0.0, np.sign(seen[1] - end_y)), "Размеры", 3.0, 0.9)
+        ym = seen[1] + np.sign(end_y - seen[1]) * min(60.0, abs(end_y - seen[1]) / 2)
+        sh.text(xa - 1.0, ym, f"a_{{w}} = {num(g.a_mm, lang, sig=4)}", H_LABEL, align="center", rot=90.0)
     # captions
     mm = pick(lang, "mm", "мм")
     lines = [
