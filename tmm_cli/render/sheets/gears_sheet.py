@@ -410,9 +410,10 @@ def _mesh_field(sh: Sheet, r, lang: str):
         sh.text(q[0], q[1], lab, H_SMALL, align="center", valign="middle")
     # α_w at P between the tangent to the pitch circles and the line of action
     pq = np.array(fld.p(*p))
-    rr = 45.0
-    sh.line(pq - np.array([sx * 5.0, 0]), pq + np.array([sx * (rr + 6.0), 0]), "Тонкие")
-    a0, a1 = (0.0, g.alpha_w_deg) if sx > 0 else (180.0 - g.alpha_w_deg, 180.0)
+    # on the P1 side, below the tangent (the P2 side carries the zone labels)
+    rr = 0.65 * (g.pole_mm - g.p1_mm) * f
+    sh.line(pq + np.array([sx * 5.0, 0]), pq - np.array([sx * (rr + 6.0), 0]), "Тонкие")
+    a0, a1 = (180.0, 180.0 + g.alpha_w_deg) if sx > 0 else (360.0 - g.alpha_w_deg, 360.0)
     sh.dim_arc(pq, rr, a0, a1, f"α_{{w}} = {num(g.alpha_w_deg, lang, sig=3)}°", H_SMALL)
     # arcs φ_α1, φ_α2 (the gears' turns while a pair of teeth is in mesh), about the centres
     for centre, phi, rad, nm, base in ((o1, g.phi_alpha1_deg, 0.55 * g.df1_mm / 2, "φ_{α1}", 90.0),
