@@ -48,7 +48,7 @@ LAYERS = {
 }
 LTSCALE = 5.0  # CENTER: 16 mm dashes, 3 mm gaps; DASHED: 6 mm dashes, 1.3 mm gaps (ГОСТ 2.303)
 XDATA_APP = "TMM_FIELD"
-STYLE = "TMM"
+STYLE = "OpenGostTypeA-Regular"  # LibreCAD picks its GOST stroke font by this name; others use the TTF
 FONT_GOST = "osifont.ttf"
 FONT_FALLBACK = "DejaVuSans.ttf"
 
