@@ -102,6 +102,13 @@ def main() -> None:
         svg, note = note_time()
         print(f"the note for variant 17 in process: SVG copies {svg:.2f} s + build and typst compile {note:.2f} s "
               f"= {svg + note:.2f} s (target 2 s)")
+        # the A1 sheets (issue 10): project with and without them (through the console entry point:
+        # `python -m tmm_cli.cli` trips over the commands' circular import)
+        tmm_main = [PY, "-c", "import sys; from tmm_cli.cli import main; sys.exit(main())"]
+        with_s = wall(tmm_main + ["project", "--variant", "17", "--out", str(out)], args.runs)
+        without = wall(tmm_main + ["project", "--variant", "17", "--no-sheets", "--out", str(out)], args.runs)
+        print(f"sheets 3 and 4 (DXF + PDF) add to tmm project --variant 17 (figures, report): {with_s - without:.2f} s "
+              f"({without:.2f} -> {with_s:.2f} s; target <= 3 s)")
         worst, median, at = in_process_synthesis()
         print(f"in-process gear synthesis over n_cr = 30..960 rpm: worst {worst * 1000:.1f} ms (at {at:g} rpm), median {median * 1000:.1f} ms")
         if args.batch:

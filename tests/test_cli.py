@@ -136,6 +136,6 @@ def test_rerun_never_mixes_two_runs(tmp_path):
     names = {p.name for p in folder.iterdir()}
     assert not any(n.startswith("cam_") and n.endswith(".png") for n in names)
     assert "gears_mesh.png" in names  # another command's files stay
-    assert run("project", "--variant", 2, "--out", tmp_path, "--no-plots").exit_code == 0
+    assert run("project", "--variant", 2, "--out", tmp_path, "--no-plots", "--no-sheets").exit_code == 0
     assert sorted(p.name for p in folder.iterdir()) == [".tmm-files.json", "cam_profile.csv", "note-style.typ", "note.pdf",
                                                         "note.typ", "results.json"]

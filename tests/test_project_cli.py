@@ -51,7 +51,7 @@ def test_results_json_is_the_union_and_matches_stdout(project17, tmp_path):
     for key in ("crank_rpm", "motor", "i_spur", "i_planetary", "planetary", "spur", "warnings"):
         assert key in doc["gears"], key
     assert doc["gears"]["crank_rpm"] == 95
-    res = run("project", "--variant", 17, "--crank-rpm", 95, "--out", tmp_path, "--json", "--no-plots", "--lang", "en")
+    res = run("project", "--variant", 17, "--crank-rpm", 95, "--out", tmp_path, "--json", "--no-plots", "--lang", "en", "--no-sheets")
     assert res.exit_code == 0
     printed = json.loads(res.output)
     assert printed == json.loads((tmp_path / "variant-17" / "results.json").read_text())
@@ -59,7 +59,7 @@ def test_results_json_is_the_union_and_matches_stdout(project17, tmp_path):
 
 
 def test_default_crank_speed_is_stated(tmp_path):
-    res = run("project", "--variant", 5, "--out", tmp_path, "--json", "--no-plots", "--lang", "en")
+    res = run("project", "--variant", 5, "--out", tmp_path, "--json", "--no-plots", "--lang", "en", "--no-sheets")
     assert res.exit_code == 0
     doc = json.loads(res.output)
     assert doc["gears"]["crank_rpm"] == 220
@@ -67,7 +67,7 @@ def test_default_crank_speed_is_stated(tmp_path):
 
 
 def test_pdf_report_is_the_note(tmp_path):
-    res = run("project", "--variant", 2, "--out", tmp_path, "--no-plots", "--report", "pdf", "--lang", "ru")
+    res = run("project", "--variant", 2, "--out", tmp_path, "--no-plots", "--report", "pdf", "--lang", "ru", "--no-sheets")
     assert res.exit_code == 0, res.stderr
     pdf = tmp_path / "variant-02" / "note.pdf"
     assert pdf.read_bytes()[:5] == b"%PDF-"

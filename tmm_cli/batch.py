@@ -362,7 +362,8 @@ _FIGURE_CACHE: dict = {}  # per worker process: reducer drawings shared by rows 
 _FIGURE_CACHE_SIZE = 8  # drawings of this many reducers kept (a roster of 1000 crank speeds stays small)
 
 
-def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, fmt: str, plots: bool, report: str | None) -> dict:
+def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, fmt: str, plots: bool, report: str | None,
+            sheets: bool = False) -> dict:
     """Run one row in this process: the project, its folder, its summary row (or a failure row)."""
     from .project import run_project
     from .render.report import write_project_folder
@@ -375,7 +376,7 @@ def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, f
         folder = Path(out_dir) / job.folder
         title = TitleFields(student=job.label, group=job.group) if job.fname else None
         doc, _ = write_project_folder(result, folder, lang, fmt=fmt, plots=plots, report=report,
-                                      figure_cache=_FIGURE_CACHE, title=title)
+                                      figure_cache=_FIGURE_CACHE, title=title, sheets=sheets)
         while len(_FIGURE_CACHE) > _FIGURE_CACHE_SIZE:
             _FIGURE_CACHE.pop(next(iter(_FIGURE_CACHE)))
         codes = [n.code for n in result.notes if n.level == "warning"]
@@ -477,7 +478,8 @@ def _stop_pool(pool) -> list[int]:
 
 def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_file: str | None = None,
               lang: str = "en", fmt: str = "png", plots: bool = True, report: str | None = "md",
-              jobs_n: int | None = None, progress: bool = False, csv_locale: str | None = None) -> BatchSummary:
+              jobs_n: int | None = None, progress: bool = False, csv_locale: str | None = None,
+              sheets: bool = False) -> BatchSummary:
     """Run all jobs (in `jobs_n` processes), write out_dir/summary.csv, return the rows in order.
 
     On Ctrl-C or SIGTERM (:class:`tmm_cli.interrupt.Interrupted`) the workers are stopped, the
@@ -496,7 +498,7 @@ def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_
     try:
         with lock_dir(out_dir, wait=False, what="tmm batch"):  # two batches never mix one folder
             prepare_out_dir(out_dir, jobs)
-            return _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale)
+            return _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale, sheets)
     except TmmError:
         from .render.files import remove_empty_dirs
 
@@ -504,13 +506,13 @@ def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_
         raise
 
 
-def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale) -> BatchSummary:
+def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale, sheets) -> BatchSummary:
     import signal
 
     from .interrupt import Interrupted
 
     n_workers = max(1, min(jobs_n or os.cpu_count() or 1, len(jobs) or 1))
-    args = (str(out_dir), variants_file, lang, fmt, plots, report)
+    args = (str(out_dir), variants_file, lang, fmt, plots, report, sheets)
     results: dict[int, dict] = {}
     stopped: KeyboardInterrupt | None = None
 

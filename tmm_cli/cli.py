@@ -118,7 +118,7 @@ def _print_files(console, folder: Path, names: list[str], lang: str) -> None:
         console.print(pick(lang, "Files written to ", "Файлы записаны в ") + f"[bold]{folder}[/]: " + ", ".join(names))
 
 
-def _emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, lang: str, owns=()) -> None:
+def _emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, lang: str, owns=(), extra=None) -> None:
     """Write `files` (name -> JSON object or text) and the figures atomically, then either print
     `json_doc` alone or the tables (`show(console)`), the notes and the list of files."""
     from .render.files import save_figures, staged_dir, write_json, write_text
@@ -128,6 +128,8 @@ def _emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, l
             (write_text if isinstance(content, str) else write_json)(tmp / name, content)
         if figures is not None:
             save_figures(tmp, figures(), fmt)
+        if extra is not None:  # e.g. the A1 drawing sheet (--sheets)
+            extra(tmp)
         written = sorted(p.name for p in tmp.iterdir())
     if json_doc is not None:
         _print_json(json_doc)
@@ -148,6 +150,7 @@ variants_file_option = click.option(
 out_option = click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Output folder (default ./tmm-out); files go to DIR/variant-NN/.")
 format_option = click.option("--format", "fmt", type=click.Choice(["png", "svg", "pdf"]), default="png", show_default=True, help="Figure file format.")
 no_plots_option = click.option("--no-plots", is_flag=True, help="Do not draw figures (faster).")
+sheets_option = click.option("--sheets", is_flag=True, help="Also write the A1 drawing sheet (DXF and PDF, ESKD frame and title block).")
 json_option = click.option("--json", "as_json", is_flag=True, help="Print only JSON on stdout.")
 lang_option = click.option("--lang", type=click.Choice(["ru", "en"]), default=None, help="Output language (default: from the locale).")
 step_option = click.option("--step", "step_deg", type=float, default=10.0, show_default=True, metavar="DEG", help="Cam angle step of the printed tables [deg].")
@@ -275,12 +278,13 @@ def variants_show(ctx, number, variants_file, lang):
 @json_option
 @step_option
 @cam_choice_options
+@sheets_option
 @title_options
 @lang_option
-def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang, **title_kw):
+def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, sheets, lang, **title_kw):
     """Sheet 3: follower diagrams, main dimensions, cam profile, pressure angle."""
     choice = _cam_choice(title_kw)
-    title = _title(title_kw)  # noqa: F841 - read by the drawing sheet
+    title = _title(title_kw)
     from .cam.design import design_cam
     from .render.cam_json import profile_csv
     from .render.files import ensure_writable_dir
@@ -303,8 +307,14 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang,
 
         print_cam(console, result, lang)
 
+    def sheet(tmp):
+        from .render.sheets import save_sheet, sheet3
+
+        save_sheet(sheet3(result, lang, title), tmp, "sheet3")
+
     _emit(folder, {"cam.json": doc, "cam_profile.csv": profile_csv(result)}, None if no_plots else figures,
-          fmt, doc if as_json else None, show, result.notes, lang, owns=("cam_*.*",))
+          fmt, doc if as_json else None, show, result.notes, lang, owns=("cam_*.*", "sheet3.*"),
+          extra=sheet if sheets else None)
 
 
 # tmm gears ---------------------------------------------------------------------------------
@@ -325,11 +335,12 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang,
 @format_option
 @no_plots_option
 @json_option
+@sheets_option
 @title_options
 @lang_option
-def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, select, out, fmt, no_plots, as_json, lang, **title_kw):
+def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, select, out, fmt, no_plots, as_json, sheets, lang, **title_kw):
     """Sheet 4: motor, ratio split, planetary reducer synthesis, spur pair to the cam."""
-    title = _title(title_kw)  # noqa: F841 - read by the drawing sheet
+    title = _title(title_kw)
     from .gears.design import design_gears
     from .render.files import ensure_writable_dir
     from .render.report import gears_document
@@ -354,8 +365,13 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 
         print_gears(console, result, lang)
 
+    def sheet(tmp):
+        from .render.sheets import save_sheet, sheet4
+
+        save_sheet(sheet4(result, v.number, lang, title), tmp, "sheet4")
+
     _emit(folder, {"gears.json": doc}, None if no_plots else figures, fmt, doc if as_json else None, show,
-          result.notes, lang, owns=("gears_*.*",))
+          result.notes, lang, owns=("gears_*.*", "sheet4.*"), extra=sheet if sheets else None)
 
 
 # tmm project -------------------------------------------------------------------------------
@@ -381,11 +397,12 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 @click.option("--note-template", "note_template", type=click.Path(dir_okay=False), default=None, metavar="FILE",
               help="A typst style file replacing the note's (see docs/note.md).")
 @step_option
+@click.option("--no-sheets", is_flag=True, help="Do not write the A1 drawing sheets sheet3/sheet4 (.dxf, .pdf).")
 @cam_choice_options
 @title_options
 @lang_option
-def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, select, out, fmt, no_plots, as_json, report, note_template, step_deg, lang, **title_kw):
-    """The whole project for one variant: sheet 4 then sheet 3, figures, results.json and the note."""
+def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, select, out, fmt, no_plots, as_json, report, note_template, step_deg, no_sheets, lang, **title_kw):
+    """The whole project for one variant: sheet 4 then sheet 3, figures, results.json, the note and the drawing sheets."""
     choice = _cam_choice(title_kw)
     title = _title(title_kw)
     template = None
@@ -407,7 +424,7 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
         shift=_parse_shift(shift), a_w_mm=a_w_mm, select=select, cam_choice=choice,
     )
     doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report, title=title,
-                                        note_template=template)
+                                        note_template=template, sheets=not no_sheets)
     if as_json:
         _print_json(doc)
         return
@@ -433,8 +450,9 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
 @no_plots_option
 @click.option("--report", "report", type=click.Choice(["md", "pdf", "none"]), default="md", show_default=True, help="Per-variant report format.")
 @click.option("--csv-locale", type=click.Choice(["ru", "en"]), default=None, help="summary.csv for a Russian (';', decimal comma) or English spreadsheet (default: from --lang).")
+@sheets_option
 @lang_option
-def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, fmt, jobs, no_plots, report, csv_locale, lang):
+def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, fmt, jobs, no_plots, report, csv_locale, sheets, lang):
     """Teachers: run many variants or a class roster in parallel and write summary.csv."""
     from .batch import jobs_from_roster, jobs_from_spec, run_batch
     from .render.batch_render import print_batch, print_batch_intro
@@ -455,7 +473,7 @@ def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, f
     summary = run_batch(
         rows, bad, out_dir, variants_file=variants_file, lang=lang, fmt=fmt,
         plots=not no_plots, report=None if report == "none" else report, jobs_n=jobs, progress=True,
-        csv_locale=csv_locale,
+        csv_locale=csv_locale, sheets=sheets,
     )
     print_batch(console, summary, out_dir, lang)
     return 1 if summary.failed else 0

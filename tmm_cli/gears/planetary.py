@@ -256,6 +256,23 @@ class StageChecks:
         return all(i.ok for i in self.interference)
 
     @property
+    def assembly_c(self) -> int:
+        """The smallest whole c of (2.4) with (z_k·i/k)·c a whole number: the carrier is turned by
+        c·2β between fitting two planets (the book's sample sheet: φ_H1 = c·2β).
+
+        >>> c = check_stage(Stage(40, 25, None, 90, 5))
+        >>> c.assembly_c, c.carrier_turn_deg
+        (1, 72.0)
+        """
+        k, n, d = self.stage.planets, self.assembly_book_n, self.assembly_book_d
+        return (d * k) // math.gcd(n, d * k)
+
+    @property
+    def carrier_turn_deg(self) -> float:
+        """φ_H1 = c·2β = c·360°/k [deg], the carrier's turn between fitting two planets."""
+        return self.assembly_c * 360.0 / self.stage.planets
+
+    @property
     def assembly_forms_differ(self) -> bool:
         return self.k_max != self.k_max_book or self.assembly_exact_ok != self.assembly_book_ok
 

@@ -108,7 +108,7 @@ def _reducer_key(gears, lang: str, fmt: str) -> tuple:
 
 def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", plots: bool = True,
                          report: str | None = "md", figure_cache: dict | None = None, title=None,
-                         note_template: str | None = None):
+                         note_template: str | None = None, sheets: bool = False):
     """Write results.json, cam_profile.csv, the figures and the report into `folder`, atomically.
 
     `report`: "md" writes report.md, "pdf" the typeset note (note.pdf, its source note.typ and
@@ -122,6 +122,7 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
 
     `figure_cache` (a dict the caller keeps between calls, as `tmm batch` does) lets variants
     that share a reducer reuse its two drawings instead of drawing them again.
+    `sheets` adds the A1 drawings sheet3.dxf/.pdf and sheet4.dxf/.pdf (render/sheets).
     Returns (the JSON document, the sorted list of file names written).
     """
     from .cam_json import profile_csv
@@ -157,7 +158,12 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
             write_text(tmp / "report.md", markdown_report(result, lang, files))
         elif report == "pdf":
             note_error = _write_note(tmp, result, lang, title, figures, fmt, note_template)
-        # --- end of the report ------------------------------------------------------------------------
+        # --- the A1 drawing sheets 3 and 4 (issue 10): DXF + PDF from one ezdxf model ---------
+        if sheets:
+            from .sheets import write_sheets
+
+            write_sheets(tmp, result, lang, title)
+        # ----------------------------------------------------------------------------------------
         written = sorted(p.name for p in tmp.iterdir())
     if note_error is not None:
         raise note_error

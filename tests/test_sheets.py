@@ -1,0 +1,231 @@
+"""The A1 sheets 3 and 4 (issue 10), checked from the written files.
+
+Everything is read back from the DXF (ezdxf), the PDF (pypdf) and the exported CSV/JSON: the
+field origin and scale are the XDATA the sheet stores on each field's heading, not numbers taken
+from the code under test.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import re
+
+import ezdxf
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from tmm_cli.cam.design import design_cam
+from tmm_cli.cli import cli
+from tmm_cli.gears.design import design_gears
+from tmm_cli.render.cam_json import profile_csv
+from tmm_cli.render.sheets import save_sheet, sheet3, sheet4
+from tmm_cli.titleblock import TitleFields
+from tmm_cli.variants import load_table
+
+# ГОСТ 2.302 (written out here, independently of the code)
+GOST = {"1:1", "1:2", "1:2,5", "1:4", "1:5", "1:10", "1:15", "1:20", "1:25", "1:40", "1:50", "1:75", "1:100",
+        "2:1", "2,5:1", "4:1", "5:1", "10:1", "20:1", "40:1", "50:1", "100:1"}
+FRAME = (20.0, 5.0, 836.0, 589.0)
+VARIANTS = load_table()
+TITLE = TitleFields(student="Иванов И. И.", group="П-243", teacher="Петров П. П.", org="ЮУрГУ, кафедра ТММ")
+GEAR_CASES = {"1": 220.0, "2": 60.0, "1+1": 40.0}
+
+
+def fields(doc) -> dict:
+    """name -> dict(box, origin, scale, label) from the XDATA of the field headings."""
+    out = {}
+    for e in doc.modelspace():
+        if e.has_xdata("TMM_FIELD"):
+            tags = [t.value for t in e.get_xdata("TMM_FIELD")]
+            out[tags[0]] = {"box": tuple(tags[1:5]), "origin": tuple(tags[5:7]), "scale": tags[7], "label": tags[8]}
+    return out
+
+
+def reopen(sheet, tmp_path, name):
+    save_sheet(sheet, tmp_path, name, pdf=False)
+    return ezdxf.readfile(tmp_path / f"{name}.dxf")
+
+
+def check_layout(doc):
+    """Frame, title block 185 × 55 at its lower right corner, fields inside and apart, ГОСТ scales."""
+    msp = doc.modelspace()
+    rects = []
+    for e in msp.query("LWPOLYLINE[layer=='Рамка']"):
+        pts = np.array([p[:2] for p in e.get_points()])
+        if e.closed and len(pts) == 4:
+            rects.append((pts[:, 0].min(), pts[:, 1].min(), pts[:, 0].max(), pts[:, 1].max()))
+    assert any(np.allclose(r, FRAME) for r in rects), rects
+    tb = (FRAME[2] - 185.0, FRAME[1], FRAME[2], FRAME[1] + 55.0)
+    assert any(np.allclose(r, tb) for r in rects), rects
+    fl = fields(doc)
+    boxes = [f["box"] for f in fl.values()]
+    assert len(boxes) >= 4
+    for b in boxes:
+        assert FRAME[0] <= b[0] < b[2] <= FRAME[2] and FRAME[1] <= b[1] < b[3] <= FRAME[3]
+        # no field under the title block
+        assert not (b[2] > tb[0] and b[0] < tb[2] and b[1] < tb[3] and b[3] > tb[1])
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1:]:
+            assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1], (a, b)
+    for f in fl.values():
+        if f["label"]:
+            assert f["label"] in GOST
+    texts = " ".join(e.dxf.text for e in msp.query("TEXT"))
+    for lab in re.findall(r"М (\d+(?:,\d+)?:\d+(?:,\d+)?)", texts):
+        assert lab in GOST, lab
+    assert not doc.audit().has_errors
+    return fl
+
+
+def profile_matches_csv(doc, cam) -> None:
+    f = fields(doc)["profile"]
+    ox, oy = f["origin"]
+    k = f["scale"]
+    rows = list(csv.DictReader(io.StringIO(profile_csv(cam))))
+    want = {"inner": np.array([[float(r["inner_x_mm"]), float(r["inner_y_mm"])] for r in rows])}
+    if "outer_x_mm" in rows[0]:
+        want["outer"] = np.array([[float(r["outer_x_mm"]), float(r["outer_y_mm"])] for r in rows])
+    polys = [e for e in doc.modelspace().query("LWPOLYLINE[layer=='Основные']") if len(e) == len(rows)]
+    for name, ref in want.items():
+        ok = False
+        for e in polys:
+            pts = np.array([p[:2] for p in e.get_points()])
+            if len(pts) == len(ref):
+                back = (pts - np.array([ox, oy])) / k
+                if np.abs(back - ref).max() < 0.01:
+                    ok = True
+                    break
+        assert ok, f"{name} profile not found at the field's scale"
+
+
+def test_sheet3_variant_1_file(tmp_path):
+    cam = design_cam(VARIANTS[1])
+    doc = reopen(sheet3(cam, "ru", TITLE), tmp_path, "sheet3")
+    fl = check_layout(doc)
+    assert set(fl) >= {"motion", "zone", "profile", "pressure"}
+    profile_matches_csv(doc, cam)
+    texts = [e.dxf.text for e in doc.modelspace().query("TEXT")]
+    assert "ТММ.03.01.00.00" in texts and "Иванов И. И." in texts
+    # the linetypes are the standard ones, the lineweights 0.7 / 0.25
+    assert doc.layers.get("Осевые").dxf.linetype == "CENTER"
+    assert doc.layers.get("Основные").dxf.lineweight == 70 and doc.layers.get("Тонкие").dxf.lineweight == 25
+
+
+@pytest.mark.parametrize("number", sorted(VARIANTS))
+def test_sheet3_every_variant(number):
+    cam = design_cam(VARIANTS[number])
+    doc = sheet3(cam, "ru", TITLE).doc
+    fl = check_layout(doc)
+    profile_matches_csv(doc, cam)
+    f = fl["profile"]
+    x0, y0, x1, y1 = f["box"]
+    ox, oy = f["origin"]
+    k = f["scale"]
+    # the whole working profile and (rocker) the pivot circle lie inside the profile field
+    R = float(np.hypot(*cam.profile.inner.T).max()) * 1000.0 * k
+    if cam.sizing.l_oc_m is not None:
+        R = max(R, cam.sizing.l_oc_m * 1000.0 * k)
+    assert x0 <= ox - R and ox + R <= x1 and y0 <= oy - R and oy + R <= y1
+
+
+@pytest.mark.parametrize("scheme", sorted(GEAR_CASES))
+def test_sheet4_schemes(scheme, tmp_path):
+    g = design_gears(600.0, GEAR_CASES[scheme])
+    assert g.scheme == scheme
+    doc = reopen(sheet4(g, 7, "ru", TITLE), tmp_path, "sheet4")
+    fl = check_layout(doc)
+    assert set(fl) >= {"scheme", "linear", "angular", "assembly", "mesh"}
+    f = fl["mesh"]
+    k = f["scale"]
+    ox, oy = f["origin"]
+    m = 20.0
+    z1, z2 = g.spur.z1, g.spur.z2
+    a = m * (z1 + z2) / 2
+    centres = {1: (ox, oy), 2: (ox, oy + a * k)}  # the line of centres is vertical, O1 below
+    for z, c in ((z1, centres[1]), (z2, centres[2])):
+        ra = m * (z + 2) / 2 * k
+        found = [e for e in doc.modelspace().query("ARC CIRCLE")
+                 if math.dist((e.dxf.center.x, e.dxf.center.y), c) < 1e-6 and abs(e.dxf.radius - ra) < 1e-6]
+        assert found, f"tip circle of z = {z} not drawn at the scale"
+    texts = [e.dxf.text for e in doc.modelspace().query("TEXT")]
+    assert "ТММ.04.07.00.00" in texts
+
+
+def test_long_title_text_is_fitted():
+    long = TitleFields(student="Константинопольский-Старобогатырёв Вениамин Вениаминович", org="Южно-Уральский государственный университет (национальный исследовательский университет), кафедра теоретической механики и основ проектирования машин")
+    sh = sheet3(design_cam(VARIANTS[2]), "ru", long)
+    doc = sh.doc
+    # every text of the title block stays inside the block; the long ones inside their cells
+    X, Y = 836.0 - 185.0, 5.0
+    for e in doc.modelspace().query("TEXT"):
+        x, y = e.dxf.insert.x, e.dxf.insert.y
+        w = sh.text_width(e.dxf.text, e.dxf.height, e.dxf.width)
+        if x >= X and y <= Y + 55.0:
+            assert x + w <= X + 185.0 + 1e-6
+            assert Y <= y and y + e.dxf.height <= Y + 55.0 + 1e-6
+        if e.dxf.text.startswith("Константинопольский"):  # column "Фамилия", x 17…40, row 25…30
+            assert X + 17.0 < x and x + w < X + 40.0 and Y + 25.0 < y and y + e.dxf.height < Y + 30.0
+        if "Южно-Уральский" in e.dxf.text or "кафедра" in e.dxf.text:  # organisation cell 135…185 × 0…15
+            assert X + 135.0 < x and x + w < X + 185.0 and Y < y and y + e.dxf.height < Y + 15.0
+
+
+def test_pdf_page_is_a1(tmp_path):
+    from pypdf import PdfReader
+
+    g = design_gears(600.0, 40.0)
+    names = save_sheet(sheet4(g, 3, "ru", TITLE), tmp_path, "sheet4")
+    assert names == ["sheet4.dxf", "sheet4.pdf"]
+    page = PdfReader(tmp_path / "sheet4.pdf").pages[0]
+    w = float(page.mediabox.width) * 25.4 / 72
+    h = float(page.mediabox.height) * 25.4 / 72
+    assert abs(w - 841.0) <= 0.5 and abs(h - 594.0) <= 0.5
+
+
+def test_project_writes_sheets_and_no_sheets_skips(tmp_path):
+    from pypdf import PdfReader
+
+    run = CliRunner().invoke(cli, ["project", "-v", "4", "--out", str(tmp_path), "--no-plots", "--lang", "ru",
+                                   "--student", "Петров П. П."])
+    assert run.exit_code == 0, run.output
+    folder = tmp_path / "variant-04"
+    for n in ("sheet3.dxf", "sheet3.pdf", "sheet4.dxf", "sheet4.pdf"):
+        assert (folder / n).is_file()
+    page = PdfReader(folder / "sheet3.pdf").pages[0]
+    assert abs(float(page.mediabox.width) * 25.4 / 72 - 841.0) <= 0.5
+    doc = ezdxf.readfile(folder / "sheet3.dxf")
+    assert not doc.audit().has_errors
+    # the written profile equals the written CSV (form closure: both walls of the groove)
+    cam_csv = (folder / "cam_profile.csv").read_text(encoding="utf-8")
+    cam = design_cam(VARIANTS[4])
+    assert cam_csv == profile_csv(cam)
+    profile_matches_csv(doc, cam)
+    assert json.loads((folder / "results.json").read_text(encoding="utf-8"))["variant"] == 4
+    run = CliRunner().invoke(cli, ["project", "-v", "4", "--out", str(tmp_path), "--no-plots", "--no-sheets"])
+    assert run.exit_code == 0, run.output
+    assert not list(folder.glob("sheet*"))  # a run without sheets leaves no stale ones
+
+
+def test_cam_and_gears_sheets_flag(tmp_path):
+    run = CliRunner().invoke(cli, ["cam", "-v", "3", "--out", str(tmp_path), "--no-plots", "--sheets"])
+    assert run.exit_code == 0, run.output
+    run = CliRunner().invoke(cli, ["gears", "-v", "3", "--out", str(tmp_path), "--no-plots", "--sheets", "--crank-rpm", "60"])
+    assert run.exit_code == 0, run.output
+    names = {p.name for p in (tmp_path / "variant-03").iterdir()}
+    assert {"sheet3.dxf", "sheet3.pdf", "sheet4.dxf", "sheet4.pdf"} <= names
+    run = CliRunner().invoke(cli, ["cam", "-v", "3", "--out", str(tmp_path), "--no-plots"])
+    assert run.exit_code == 0
+    assert not (tmp_path / "variant-03" / "sheet3.dxf").exists()
+
+
+def test_batch_sheets_only_on_request(tmp_path):
+    base = ["batch", "--variants", "3", "--jobs", "1", "--no-plots", "--report", "none"]
+    run = CliRunner().invoke(cli, base + ["--out", str(tmp_path / "a")])
+    assert run.exit_code == 0, run.output
+    assert not list((tmp_path / "a").rglob("sheet*"))
+    run = CliRunner().invoke(cli, base + ["--out", str(tmp_path / "b"), "--sheets"])
+    assert run.exit_code == 0, run.output
+    assert {p.name for p in (tmp_path / "b").rglob("sheet*")} == {"sheet3.dxf", "sheet3.pdf", "sheet4.dxf", "sheet4.pdf"}
