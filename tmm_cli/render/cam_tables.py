@@ -7,6 +7,7 @@ import math
 from ..cam.design import CamResult
 from ..cam.laws import law_impacts
 from .i18n import pick
+from .table_model import Table
 from .variants_tables import law_words, rotation_words, scheme_words
 
 OK = "[green]✔[/green]"
@@ -15,11 +16,9 @@ WARN = "[yellow]![/yellow]"
 
 
 def _table(title: str, *cols: tuple[str, str]):
-    from rich.table import Table
-
-    t = Table(title=title, header_style="bold", title_justify="left")
+    t = Table(title=title, header_style="bold")
     for name, justify in cols:
-        t.add_column(name, justify=justify, overflow="fold")
+        t.add_column(name, justify=justify)
     return t
 
 

@@ -6,6 +6,7 @@ import math
 from fractions import Fraction
 
 from .i18n import pick
+from .table_model import Table
 
 OK = "✓"
 FAIL = "✗"
@@ -24,12 +25,10 @@ def _frac(f: Fraction) -> str:
     return f"{f.numerator}/{f.denominator}" if f.denominator != 1 else f"{f.numerator}"
 
 
-def _table(title: str, *cols: str, left: tuple[int, ...] = (0,), **kw):
-    from rich.table import Table
-
-    t = Table(title=title, title_justify="left", title_style="bold", **kw)
+def _table(title: str, *cols: str, left: tuple[int, ...] = (0,)):
+    t = Table(title=title, title_style="bold")
     for i, c in enumerate(cols):
-        t.add_column(c, justify="left" if i in left else "right", overflow="fold")
+        t.add_column(c, justify="left" if i in left else "right")
     return t
 
 

@@ -50,17 +50,16 @@ def project_document(result, lang: str) -> dict:
 
 def print_project(console, result, lang: str) -> None:
     """The terminal report in the order of the explanatory note: input, sheet 4, sheet 3, notes."""
-    from rich.rule import Rule
-
     from .cam_tables import print_cam, print_cam_input
     from .gears_tables import print_gears
+    from .table_model import Heading
 
     v = result.variant
-    console.print(Rule(pick(lang, f"TMM course project — variant {v.number}", f"Курсовой проект по ТММ — вариант {v.number}")))
+    console.print(Heading(pick(lang, f"TMM course project — variant {v.number}", f"Курсовой проект по ТММ — вариант {v.number}")))
     print_cam_input(console, result.cam, lang)
-    console.print(Rule(pick(lang, "Sheet 4 — gear drive", "Лист 4 — синтез зубчатых механизмов")))
+    console.print(Heading(pick(lang, "Sheet 4 — gear drive", "Лист 4 — синтез зубчатых механизмов")))
     print_gears(console, result.gears, lang)
-    console.print(Rule(pick(lang, "Sheet 3 — cam mechanism", "Лист 3 — синтез кулачкового механизма")))
+    console.print(Heading(pick(lang, "Sheet 3 — cam mechanism", "Лист 3 — синтез кулачкового механизма")))
     print_cam(console, result.cam, lang, include_input=False)
     print_notes(console, result.notes, lang)
 
@@ -69,15 +68,14 @@ def print_notes(console, notes, lang: str) -> None:
     """All assumptions, then all warnings, in one panel at the end of a report."""
     if not notes:
         return
-    from rich.panel import Panel
+    from .table_model import NoteBlock
 
     assumptions = [n for n in notes if n.level == "assumption"]
     warnings = [n for n in notes if n.level == "warning"]
-    lines = [f"[cyan]ℹ[/] {note_text(n, lang)}" for n in assumptions]
-    lines += [f"[yellow]⚠[/] {note_text(n, lang)}" for n in warnings]
+    lines = [("ℹ", note_text(n, lang)) for n in assumptions] + [("⚠", note_text(n, lang)) for n in warnings]
     title = pick(lang, f"Assumptions ({len(assumptions)}) and warnings ({len(warnings)})",
                  f"Допущения ({len(assumptions)}) и предупреждения ({len(warnings)})")
-    console.print(Panel("\n".join(lines), title=title, expand=False))
+    console.print(NoteBlock(title, lines))
 
 
 def terminal_text(result, lang: str, width: int = 110) -> str:
@@ -89,12 +87,21 @@ def terminal_text(result, lang: str, width: int = 110) -> str:
     return console.export_text()
 
 
+def report_tables_markdown(result, lang: str) -> str:
+    """The terminal report's tables and notes as Markdown (same objects, no terminal layout)."""
+    from .table_model import MarkdownSink
+
+    sink = MarkdownSink()
+    print_project(sink, result, lang)
+    return sink.text()
+
+
 def markdown_report(result, lang: str, figure_files: list[str]) -> str:
-    """A Markdown report: the terminal tables verbatim and every figure linked."""
+    """A Markdown report: the terminal report's tables as Markdown tables and every figure linked."""
     v = result.variant
     title = pick(lang, f"TMM course project, variant {v.number}", f"Курсовой проект по ТММ, вариант {v.number}")
     parts = [f"# {title}", "", pick(lang, f"Computed by tmm {__version__}.", f"Рассчитано программой tmm {__version__}."), ""]
-    parts += ["```text", terminal_text(result, lang).rstrip(), "```", ""]
+    parts += [report_tables_markdown(result, lang).rstrip(), ""]
     if figure_files:
         parts += ["## " + pick(lang, "Figures", "Рисунки"), ""]
         for name in figure_files:
