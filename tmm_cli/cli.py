@@ -132,6 +132,7 @@ torque_option = click.option("--torque", "torque_nm", type=float, default=None, 
 ratio_option = click.option("--ratio", default=None, metavar="P/Q", help="Force the planetary ratio fraction of the book's procedure, e.g. 13/4.")
 tolerance_option = click.option("--tolerance", "tolerance_pct", type=float, default=5.0, show_default=True, metavar="PCT", help="Allowed planetary ratio error [%].")
 planets_option = click.option("--planets", type=int, default=None, metavar="K", help="Force the number of planets.")
+stiffness_option = click.option("--stiffness", is_flag=True, help="Also compute the spur pair's mesh stiffness (beyond the course, informative; V. P. Tarasik's method).")
 
 
 def title_options(f):
@@ -259,13 +260,14 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, lang,
 @ratio_option
 @tolerance_option
 @planets_option
+@stiffness_option
 @out_option
 @format_option
 @no_plots_option
 @json_option
 @title_options
 @lang_option
-def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, lang, **title_kw):
+def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, stiffness, out, fmt, no_plots, as_json, lang, **title_kw):
     """Sheet 4: motor, ratio split, planetary reducer synthesis, spur pair to the cam."""
     title = _title(title_kw)  # noqa: F841 - read by the drawing sheet
     from .gears.design import design_gears
@@ -278,7 +280,7 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
     ensure_writable_dir(folder.parent)
     result = design_gears(
         v.n_cam_rpm, crank_rpm=crank_rpm, torque_nm=torque_nm, ratio=_parse_ratio(ratio),
-        tolerance_pct=tolerance_pct, planets=planets,
+        tolerance_pct=tolerance_pct, planets=planets, stiffness=stiffness,
     )
     doc = gears_document(v, result, lang)
 
@@ -307,6 +309,7 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 @ratio_option
 @tolerance_option
 @planets_option
+@stiffness_option
 @out_option
 @format_option
 @no_plots_option
@@ -315,7 +318,7 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 @step_option
 @title_options
 @lang_option
-def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, out, fmt, no_plots, as_json, report, step_deg, lang, **title_kw):
+def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, stiffness, out, fmt, no_plots, as_json, report, step_deg, lang, **title_kw):
     """The whole project for one variant: sheet 4 then sheet 3, figures, results.json and a report."""
     title = _title(title_kw)
     from .project import run_project
@@ -328,7 +331,7 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
     ensure_writable_dir(folder.parent)
     result = run_project(
         v, crank_rpm=crank_rpm, torque_nm=torque_nm, step_deg=step_deg,
-        ratio=_parse_ratio(ratio), tolerance_pct=tolerance_pct, planets=planets,
+        ratio=_parse_ratio(ratio), tolerance_pct=tolerance_pct, planets=planets, stiffness=stiffness,
     )
     doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report, title=title)
     if as_json:  # the very text of results.json (encoding 180 kB of JSON twice costs ~0.1 s)

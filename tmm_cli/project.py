@@ -37,8 +37,11 @@ def run_project(
     ratio: tuple[int, int] | None = None,
     tolerance_pct: float = 5.0,
     planets: int | None = None,
+    stiffness: bool = False,
 ) -> ProjectResult:
-    """Run sheet 4 (motor, ratios, planetary reducer, spur pair) and sheet 3 (cam) for a variant."""
+    """Run sheet 4 (motor, ratios, planetary reducer, spur pair) and sheet 3 (cam) for a variant.
+
+    `stiffness` adds the spur pair's mesh stiffness (beyond the course, ``--stiffness``)."""
     from .cam.design import design_cam
     from .gears.design import design_gears
 
@@ -49,6 +52,7 @@ def run_project(
         ratio=ratio,
         tolerance_pct=tolerance_pct,
         planets=planets,
+        stiffness=stiffness,
     )
     cam = design_cam(variant, step_deg=step_deg)
     return ProjectResult(variant=variant, gears=gears, cam=cam)

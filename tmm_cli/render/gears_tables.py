@@ -343,13 +343,13 @@ def _sci(x: float, nd: int = 3) -> str:
 
 
 def _print_stiffness(console, r, lang):
-    """Beyond the course: the spur pair's mesh stiffness by seed 002 (Tarasik), informative."""
+    """Beyond the course (`--stiffness`): the spur pair's mesh stiffness after Tarasik's paper, informative."""
     st = getattr(r, "spur_stiffness", None)
     if st is None:
         return
     s = st.mesh
-    t = _table(pick(lang, "Mesh stiffness (beyond the course; Tarasik) — informative",
-                    "Жёсткость зацепления (сверх программы курса; Тарасик) — справочно"),
+    t = _table(pick(lang, "Mesh stiffness (beyond the course, informative): V. P. Tarasik's method",
+                    "Жёсткость зацепления (сверх программы курса, справочно): методика В. П. Тарасика"),
                pick(lang, "Quantity", "Величина"), pick(lang, "Formula", "Формула"), pick(lang, "Gear 1", "Колесо 1"),
                pick(lang, "Gear 2", "Колесо 2"), left=(0, 1))
     mm, um = pick(lang, "mm", "мм"), pick(lang, "μm", "мкм")
@@ -393,6 +393,9 @@ def _print_stiffness(console, r, lang):
     console.print(t)
     from .i18n import note_text
 
+    from .messages_gears import MESSAGES
+
+    console.print("  [dim]" + pick(lang, "Source: ", "Источник: ") + MESSAGES["stiffness_paper"][lang if lang == "ru" else "en"] + "[/]")
     for n in st.notes:
         console.print(f"  [dim]• {note_text(n, lang)}[/]")
 

@@ -126,13 +126,21 @@ MESSAGES: dict[str, dict[str, str]] = {
         "en": "Required power {kw} kW is above the largest rated motor of the series ({top} kW).",
         "ru": "Потребная мощность {kw} кВт больше наибольшей в ряду ({top} кВт).",
     },
-    # mesh stiffness of the spur pair: beyond the course (seed 002, Tarasik)
+    # mesh stiffness of the spur pair (tmm gears/project --stiffness): beyond the course
+    "stiffness_paper": {
+        "en": "V. P. Tarasik, “Determining the stiffness parameters of the gear trains of mobile machines” "
+              "(Belarusian-Russian University, Mogilev; in Russian)",
+        "ru": "В. П. Тарасик, «Определение параметров жёсткости зубчатых передач трансмиссий мобильных машин» "
+              "(Белорусско-Российский университет, г. Могилёв)",
+    },
     "stiffness_scope": {
-        "en": "Mesh stiffness is beyond the course (V. P. Tarasik's method, seed 002) and only informative: each tooth "
+        "en": "Mesh stiffness is beyond the course (after V. P. Tarasik, “Determining the stiffness parameters of the "
+              "gear trains of mobile machines”) and only informative: each tooth "
               "is a cantilever of trapezoidal section (bending, eqs. (1)–(14)), the contact deformation follows "
               "Nakhatakyan's formula (16), and the turn angles add: c = c_b·c_H/(c_b + c_H) (20); stiffness reduced "
               "to the motor shaft (gear 1, the driving gear).",
-        "ru": "Жёсткость зацепления — сверх программы курса (методика В. П. Тарасика, источник 002), справочно: зуб — "
+        "ru": "Жёсткость зацепления — сверх программы курса (по статье В. П. Тарасика «Определение параметров "
+              "жёсткости зубчатых передач трансмиссий мобильных машин»), справочно: зуб — "
               "консольная балка трапецеидального сечения (изгиб, формулы (1)–(14)), контактная деформация — по "
               "формуле Нахатакяна (16), углы поворота складываются: c = c_и·c_H/(c_и + c_H) (20); жёсткость "
               "приведена к валу двигателя (колесо 1, ведущее).",
