@@ -22,38 +22,86 @@ class TmmGroup(click.Group):
     """A click group whose errors are one line on stderr with exit status 2, never a traceback."""
 
     def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True, **extra):
+        """Run the command line; help, click's messages and our errors follow --lang / the locale."""
+        args = list(sys.argv[1:] if args is None else args)
+        lang = _requested_lang(args)
+        if lang == "ru":
+            from .render.help_ru import russian
+
+            with russian(self):
+                return self._main(args, prog_name, complete_var, standalone_mode, lang, **extra)
+        return self._main(args, prog_name, complete_var, standalone_mode, lang, **extra)
+
+    def _main(self, args, prog_name, complete_var, standalone_mode, lang, **extra):
         if not standalone_mode:
             return super().main(args, prog_name, complete_var, standalone_mode, **extra)
+        say = _words(lang)
         try:
             rv = super().main(args, prog_name or "tmm", complete_var, False, **extra)
         except TmmError as exc:
-            _fail(str(exc))
+            _fail(str(exc), lang)
         except click.exceptions.Abort:
-            click.echo("tmm: aborted", err=True)
+            click.echo(f"tmm: {say('aborted')}", err=True)
             sys.exit(1)
         except click.ClickException as exc:
-            _fail(exc.format_message())
+            _fail(exc.format_message(), lang)
         except KeyboardInterrupt:
-            click.echo("tmm: interrupted", err=True)
+            click.echo(f"tmm: {say('interrupted')}", err=True)
             sys.exit(130)
         except Exception as exc:  # a bug: one line, not a traceback, unless TMM_DEBUG is set
             if os.environ.get("TMM_DEBUG"):
                 raise
-            click.echo(f"tmm: internal error: {exc.__class__.__name__}: {exc} (run with TMM_DEBUG=1 for details)", err=True)
+            click.echo(f"tmm: {say('internal error')}: {exc.__class__.__name__}: {exc} "
+                       f"({say('run with TMM_DEBUG=1 for details')})", err=True)
             sys.exit(1)
         sys.exit(rv if isinstance(rv, int) else 0)
 
 
-def _fail(message: str) -> None:
+def _requested_lang(args: list[str]) -> str:
+    """The language of this run: --lang on the command line (the last one wins), else the locale."""
+    lang = None
+    for i, a in enumerate(args):
+        if a == "--":
+            break
+        if a == "--lang" and i + 1 < len(args):
+            lang = args[i + 1]
+        elif a.startswith("--lang="):
+            lang = a.split("=", 1)[1]
+    if lang in ("ru", "en"):
+        return lang
+    from .render.i18n import default_lang
+
+    return default_lang()
+
+
+def _words(lang: str):
+    if lang != "ru":
+        return lambda w: w
+    from .render.help_ru import WORDS
+
+    return lambda w: WORDS.get(w, w)
+
+
+def _fail(message: str, lang: str = "en") -> None:
     line = " ".join(str(message).split())
-    click.echo(f"tmm: error: {line}", err=True)
+    if lang == "ru":
+        from .render.help_ru import translate_error
+
+        line = translate_error(line)
+    click.echo(f"tmm: {_words(lang)('error')}: {line}", err=True)
     sys.exit(2)
 
 
 def _lang(lang: str | None) -> str:
+    """--lang of the command, else --lang given before it (`tmm --lang ru cam …`), else the locale."""
+    if lang:
+        return lang
+    ctx = click.get_current_context(silent=True)
+    if ctx is not None and ctx.find_root().params.get("lang"):
+        return ctx.find_root().params["lang"]
     from .render.i18n import default_lang
 
-    return lang or default_lang()
+    return default_lang()
 
 
 def _console(lang: str):
@@ -167,7 +215,8 @@ def _parse_ratio(ratio: str | None):
 
 @click.group(cls=TmmGroup, context_settings=CONTEXT)
 @click.version_option(package_name="tmm", prog_name="tmm")
-def cli():
+@lang_option
+def cli(lang):
     """tmm — the calculation part of the TMM course project (Pozhbelko et al., 2003, part 2).
 
     Sheet 3: cam mechanism synthesis (`tmm cam`). Sheet 4: gear drive synthesis (`tmm gears`).
