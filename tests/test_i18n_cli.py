@@ -63,6 +63,7 @@ def test_help_language_from_the_locale_then_english_again():
     assert "Номер варианта по табл. 1.2" in ru.output
     en = run("project", "--help", env={"LC_ALL": None, "LC_MESSAGES": None, "LANG": "en_US.UTF-8"})
     assert "Variant number from Table 1.2" in en.output and "Номер" not in en.output
+    assert "Show this message and exit." in en.output  # click's cached help option is English again
     # --lang on the command line wins over the locale
     en2 = run("project", "--help", "--lang", "en", env={"LANG": "ru_RU.UTF-8", "LC_ALL": None})
     assert "Usage:" in en2.output and "Variant number" in en2.output

@@ -6,7 +6,9 @@ import math
 from fractions import Fraction
 
 from .i18n import pick
-from .numbers import num
+from .numbers import num, plural
+
+VARIANTS_RU = {"one": "вариант", "few": "варианта", "many": "вариантов", "other": "варианта"}
 from .table_model import Table
 
 OK = "✓"
@@ -208,7 +210,7 @@ def _print_search(console, r, lang):
     }[s.rule]
     title = pick(lang, f"Exhaustive search: {s.n_sets} candidates within ±{_f(lang, s.tolerance_pct)} %, "
                        f"every wheel ≤ {s.z_max} teeth; size = max(Γ1, Γ2) = max(z_k + 2z_c, z_n); rule: {rule}",
-                 f"Полный перебор: {s.n_sets} вариантов в пределах ±{_f(lang, s.tolerance_pct)} %, все колёса ≤ {s.z_max} "
+                 f"Полный перебор: {plural(s.n_sets, lang, VARIANTS_RU)} в пределах ±{_f(lang, s.tolerance_pct)} %, все колёса ≤ {s.z_max} "
                  f"зубьев; габарит = max(Γ1, Γ2) = max(z_k + 2z_c, z_n); правило: {rule}")
     if r.scheme == "1+1":
         cols = [pick(lang, "Stage 1", "Ступень 1") + " z_k/z_c/z_n", pick(lang, "Stage 2", "Ступень 2") + " z_k/z_c/z_n"]

@@ -273,6 +273,12 @@ def russian(cli):
             if value in ru:
                 saved_help.append((cmd, attr, value))
                 setattr(cmd, attr, ru[value])
+        # click caches the -h/--help option of a command: never let a Russian one outlive the block
+        cached = getattr(cmd, "_help_option", None)
+        saved_help.append((cmd, "_help_option", cached))
+        if cached is not None and cached.help in OPTIONS:
+            saved_help.append((cached, "help", cached.help))
+            cached.help = OPTIONS[cached.help]
         for param in cmd.params:
             text = getattr(param, "help", None)
             if text in OPTIONS:

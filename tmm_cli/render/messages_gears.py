@@ -51,7 +51,7 @@ MESSAGES: dict[str, dict[str, str]] = {
         "en": "Carried: {teeth}, k = {k} — the smallest reducer (size = max(z_k + 2z_c, z_n) = {size}) with at least "
               "3 planets among {n} tooth sets within tolerance (every wheel ≤ {zmax} teeth).",
         "ru": "Принят {teeth}, k = {k} — наименьший редуктор (габарит max(z_k + 2z_c, z_n) = {size}) с не менее чем "
-              "3 сателлитами среди {n} наборов чисел зубьев в пределах допуска (все колёса ≤ {zmax} зубьев).",
+              "3 сателлитами среди наборов чисел зубьев в пределах допуска (всего их {n}; все колёса ≤ {zmax} зуб.).",
     },
     "carried_smallest_no3": {
         "en": "Carried: {teeth}, k = {k} — no tooth set within tolerance takes 3 planets, so the smallest "
@@ -77,9 +77,9 @@ MESSAGES: dict[str, dict[str, str]] = {
               "дающие его точно.",
     },
     "few_planets": {
-        "en": "Only k = {k} planet(s): fewer than 3 leaves the carrier unbalanced and loads the bearings; consider a "
+        "en": "The number of planets k = {k} is below 3: the carrier is unbalanced and loads the bearings; consider a "
               "wider tolerance or another fraction.",
-        "ru": "Всего k = {k} сателлит(а): меньше 3 — водило не уравновешено, опоры нагружены; расширьте допуск или "
+        "ru": "Число сателлитов k = {k} меньше 3: водило не уравновешено, опоры нагружены; расширьте допуск или "
               "возьмите другую дробь.",
     },
     "assembly_forms_differ": {

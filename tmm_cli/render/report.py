@@ -87,13 +87,25 @@ def terminal_text(result, lang: str, width: int = 110) -> str:
     return console.export_text()
 
 
+FIGURE_TITLES = {
+    "gears_planetary": ("Planetary reducer: scheme and velocity pictures", "Планетарный редуктор: схема и планы скоростей"),
+    "gears_assembly": ("Planets placed at 2β = 360°/k", "Расстановка сателлитов"),
+    "gears_mesh": ("Spur pair and its mesh", "Простая передача и картина зацепления"),
+    "cam_motion": ("Follower motion diagrams", "Диаграммы движения толкателя"),
+    "cam_zone": ("Zone of the cam centre", "Зона положения центра кулачка"),
+    "cam_profile": ("Cam profile", "Профиль кулачка"),
+    "cam_pressure_angle": ("Pressure angle over the cam turn", "Угол давления за оборот кулачка"),
+    "cam_profile_scaled": ("Cam profile at its standard scale", "Профиль кулачка в стандартном масштабе"),
+}
+
+
 def report_tables_markdown(result, lang: str) -> str:
     """The terminal report's tables and notes as Markdown (same objects, no terminal layout)."""
     from .table_model import MarkdownSink
 
     sink = MarkdownSink()
     print_project(sink, result, lang)
-    return sink.text()
+    return "\n\n".join(p for p in sink.parts[1:] if p) + "\n"  # [0] repeats the report's title
 
 
 def markdown_report(result, lang: str, figure_files: list[str]) -> str:
@@ -106,7 +118,8 @@ def markdown_report(result, lang: str, figure_files: list[str]) -> str:
         parts += ["## " + pick(lang, "Figures", "Рисунки"), ""]
         for name in figure_files:
             stem = Path(name).stem
-            parts += [f"### {stem}", "", f"![{stem}]({name})", ""]
+            title = pick(lang, *FIGURE_TITLES[stem]) if stem in FIGURE_TITLES else stem
+            parts += [f"### {title}", "", f"![{title}]({name})", ""]
     return "\n".join(parts)
 
 
