@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 import os
 import re
+import sys
 
 from .numbers import num
 
@@ -114,3 +115,48 @@ def decimal_commas(fig, lang: str) -> None:
 def fmt(lang: str):
     """``f(x, **kw) = num(x, lang, **kw)``: numbers in figure texts as the reader writes them."""
     return lambda x, **kw: num(x, lang, **kw)
+
+
+def save_side_by_side(folder, fmt: str, first, second, save) -> dict:
+    """Draw and save two groups of figures at once: a forked child process draws `first()`, this
+    process `second()`; `save(folder, figures, fmt)` writes a group. Returns {name: Figure or None}
+    (None for the child's figures, which exist only as files).
+
+    On two cores this halves the time of the figures of one project. Only on Linux (fork after
+    matplotlib is imported is cheap and safe there); elsewhere, or if the child fails, the first
+    group is drawn here after the second, so the result is the same.
+    """
+    if not (sys.platform.startswith("linux") and (os.cpu_count() or 1) > 1):
+        figs = {**first(), **second()}
+        save(folder, figs, fmt)
+        return figs
+    sys.stdout.flush()
+    sys.stderr.flush()
+    pid = os.fork()
+    if pid == 0:  # the child: draw, save, leave without running any exit handler of the parent
+        code = 1
+        try:
+            figs = first()
+            save(folder, figs, fmt)
+            names = "\n".join(figs)
+            code = 0
+            with open(os.path.join(folder, f".tmm-child-{os.getpid()}"), "w", encoding="utf-8") as f:
+                f.write(names)
+        finally:
+            os._exit(code)
+    try:
+        mine = second()
+        save(folder, mine, fmt)
+    finally:
+        _, status = os.waitpid(pid, 0)
+    marker = os.path.join(folder, f".tmm-child-{pid}")
+    if status == 0 and os.path.exists(marker):
+        with open(marker, encoding="utf-8") as f:
+            theirs = {name: None for name in f.read().split("\n") if name}
+        os.remove(marker)
+        return {**theirs, **mine}
+    if os.path.exists(marker):
+        os.remove(marker)
+    theirs = first()  # the child failed: draw its figures here (an error now surfaces normally)
+    save(folder, theirs, fmt)
+    return {**theirs, **mine}

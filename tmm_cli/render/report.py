@@ -188,8 +188,14 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
                 for name, data in cached.items():
                     (tmp / f"{name}.{fmt}").write_bytes(data)
             names = [n for n in ("gears_planetary", "gears_assembly", "gears_mesh") if n not in cached]
-            figures = {**gears_figures(result.gears, lang, names=names), **cam_figures(result.cam, lang)}
-            save_figures(tmp, figures, fmt)
+            if figure_cache is None and report != "pdf":  # one project: sheet 4 and sheet 3 drawn side by side
+                from .figure_kit import save_side_by_side
+
+                figures = save_side_by_side(tmp, fmt, lambda: gears_figures(result.gears, lang, names=names),
+                                            lambda: cam_figures(result.cam, lang), save_figures)
+            else:
+                figures = {**gears_figures(result.gears, lang, names=names), **cam_figures(result.cam, lang)}
+                save_figures(tmp, figures, fmt)
             files = [f"{n}.{fmt}" for n in (*REDUCER_FIGURES, "gears_mesh") if n in cached or n in figures]
             files += [f"{n}.{fmt}" for n in figures if n.startswith("cam_")]
         if report == "md":
