@@ -209,6 +209,31 @@ ERRORS: list[tuple[str, str]] = [
     (r"(?P<p>.*) is not valid TOML \((?P<why>.*)\); write lines like student = \"Иванов И\. И\.\"",
      "{p} — не TOML ({why}); пишите строки вида student = \"Иванов И. И.\""),
     (r"(?P<p>.*) is not UTF-8 text; save it as UTF-8", "{p} — не текст в UTF-8; сохраните его в UTF-8"),
+    (r"cam speed must be a non-zero number of rpm, got (?P<x>.*); take n_k from Table 1\.2",
+     "частота вращения кулачка должна быть ненулевой, задано {x}; возьмите n_k из табл. 1.2"),
+    (r"(?P<w>.*): field '(?P<f>.*)' is '(?P<r>.*)', not a number; fix the table",
+     "{w}: поле '{f}' = '{r}' — не число; исправьте таблицу"),
+    (r"(?P<w>.*): field '(?P<f>.*)' is empty; fill it in", "{w}: поле '{f}' пустое; заполните его"),
+    (r"(?P<w>.*): field '(?P<f>.*)' is '(?P<r>.*)'; it must be a whole number",
+     "{w}: поле '{f}' = '{r}'; нужно целое число"),
+    (r"(?P<s>.*): missing column\(s\) (?P<m>.*); the header must be (?P<h>.*)",
+     "{s}: нет столбцов {m}; заголовок должен быть {h}"),
+    (r"(?P<s>.*): no variants in the table; add rows under the header",
+     "{s}: в таблице нет вариантов; добавьте строки под заголовком"),
+    (r"(?P<s>.*) line (?P<n>\d+): variant (?P<v>\d+) appears twice; keep one row",
+     "{s}, строка {n}: вариант {v} встречается дважды; оставьте одну строку"),
+    (r"(?P<w>.*): the phase angles sum to (?P<t>.*) deg, over 360; shorten the rise, dwell or return",
+     "{w}: сумма фазовых углов {t}° больше 360°; сократите удаление, стояние или возвращение"),
+    (r"(?P<p>.*) is not valid TOML \((?P<why>.*)\); write lines like r0_mm = 41\.2, with a dot for decimals",
+     "{p} — не TOML ({why}); пишите строки вида r0_mm = 41.2, с точкой в дробных числах"),
+    (r"(?P<w>.*): '(?P<r>.*)' is not a number; write a plain number", "{w}: '{r}' — не число; запишите обычное число"),
+    (r"(?P<w>.*): '(?P<r>.*)' is not a number", "{w}: '{r}' — не число"),
+    (r"roster (?P<p>.*) has no column\(s\) (?P<m>.*); the header must be student,variant\[,crank_rpm\]\[,torque\]",
+     "в списке группы {p} нет столбцов {m}; заголовок: student,variant[,crank_rpm][,torque]"),
+    (r"(?P<s>.*): '(?P<n>.*)' is (?P<k>\d+) characters long; shorten it to (?P<m>\d+) or fewer",
+     "{s}: '{n}' длиной {k} символов; сократите до {m}"),
+    (r"(?P<p>.*): unknown key\(s\) (?P<u>.*); known keys: (?P<k>.*)", "{p}: неизвестные ключи {u}; допустимые: {k}"),
+    (r"cannot read (?P<p>.*) \((?P<why>.*)\)", "не удалось прочитать {p} ({why})"),
 ]
 _ERRORS = [(re.compile(p + r"\Z", re.S), t) for p, t in ERRORS]
 
@@ -228,8 +253,9 @@ def translate_error(message: str) -> str:
     text = " ".join(str(message).split())
     for pattern, template in _ERRORS:
         m = pattern.match(text)
-        if m:
-            return template.format(**m.groupdict())
+        if m:  # "table.csv line 3" inside a quoted place → "table.csv, строка 3"
+            parts = {k: re.sub(r"(\S) line (\d+)", r"\1, строка \2", v or "") for k, v in m.groupdict().items()}
+            return template.format(**parts)
     return text
 
 
