@@ -126,3 +126,15 @@ def test_project_folder_has_every_figure_once(tmp_path):
     report = (folder / "report.md").read_text(encoding="utf-8")
     assert all(f"({n})" in report for n in pngs)
     assert report.index("gears_planetary.png") < report.index("cam_motion.png")
+
+
+def test_opaque_figures_go_to_png_as_rgb_transparent_ones_keep_alpha(tmp_path):
+    from PIL import Image
+
+    fig = figure_kit.new_figure(1, 1)
+    fig.add_subplot().plot([0, 1])
+    fig.savefig(tmp_path / "opaque.png", dpi=30)
+    fig.savefig(tmp_path / "clear.png", dpi=30, transparent=True)
+    opaque = Image.open(tmp_path / "opaque.png")
+    assert opaque.mode == "RGB" and opaque.size == (30, 30) and "Matplotlib" in opaque.info["Software"]
+    assert Image.open(tmp_path / "clear.png").mode == "RGBA"

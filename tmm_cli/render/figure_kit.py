@@ -55,14 +55,51 @@ def _figure_class():
     return TmmFigure
 
 
+def _canvas_class():
+    import matplotlib
+    import numpy as np
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    class TmmCanvas(FigureCanvasAgg):
+        """Agg, but an opaque figure goes to PNG as RGB, not RGBA: a quarter less to encode, and
+        the file (zlib level 1) is as small as matplotlib's RGBA at level 6. Pixels are the same."""
+
+        def print_png(self, filename_or_obj, *, metadata=None, pil_kwargs=None, **_):
+            FigureCanvasAgg.draw(self)
+            rgba = np.asarray(self.buffer_rgba())
+            if int(rgba[..., 3].min()) < 255:  # something transparent: matplotlib's own RGBA path
+                matplotlib.image.imsave(filename_or_obj, rgba, format="png", origin="upper", dpi=self.figure.dpi,
+                                        metadata=metadata, pil_kwargs=pil_kwargs)
+                return
+            from PIL import Image, PngImagePlugin
+
+            kwargs = dict(pil_kwargs or {})
+            if "pnginfo" not in kwargs:
+                info = PngImagePlugin.PngInfo()
+                meta = {"Software": f"Matplotlib version{matplotlib.__version__}, https://matplotlib.org/",
+                        **(metadata or {})}
+                for key, value in meta.items():
+                    if value is not None:
+                        info.add_text(key, value)
+                kwargs["pnginfo"] = info
+            h, w = rgba.shape[:2]
+            image = Image.frombuffer("RGBA", (w, h), rgba, "raw", "RGBA", 0, 1).convert("RGB")
+            dpi = round(self.figure.dpi)
+            image.save(filename_or_obj, format="png", dpi=(dpi, dpi), **kwargs)
+
+    return TmmCanvas
+
+
 _CLASS = []
 
 
 def new_figure(width_in: float, height_in: float):
     """An empty figure of the given size with no layout engine (the caller places the axes)."""
     if not _CLASS:
-        _CLASS.append(_figure_class())
-    return _CLASS[0](figsize=(width_in, height_in), layout="none")
+        _CLASS.extend((_figure_class(), _canvas_class()))
+    fig = _CLASS[0](figsize=(width_in, height_in), layout="none")
+    _CLASS[1](fig)
+    return fig
 
 
 def title_height(lines: int, fontsize: float = 12.0, pad_pt: float = 8.0) -> float:
