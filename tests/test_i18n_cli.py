@@ -107,3 +107,8 @@ def test_error_catalogue_entries_are_russian_and_unknown_text_passes_through():
         assert CYRILLIC.search(template), pattern
     assert translate_error("something new went wrong") == "something new went wrong"
     assert translate_error("--jobs is 0; give 1 or more worker processes") == "--jobs = 0; задайте 1 или больше процессов"
+
+
+def test_version_in_both_languages():
+    assert run("--version", "--lang", "ru").output.startswith("tmm, версия ")
+    assert run("--version", "--lang", "en").output.startswith("tmm, version ")

@@ -270,6 +270,17 @@ def _ngettext(singular: str, plural: str, n: int) -> str:
     return forms[0] if n == 1 else forms[1]
 
 
+def _version_ru(ctx, param, value):
+    """`tmm --version` in Russian (click's message is fixed when the option is declared)."""
+    if not value or ctx.resilient_parsing:
+        return
+    import click
+    from importlib.metadata import version
+
+    click.echo(f"tmm, версия {version('tmm')}")
+    ctx.exit()
+
+
 def _commands(cmd, path: str):
     yield path, cmd
     for name, sub in getattr(cmd, "commands", {}).items():
@@ -306,6 +317,9 @@ def russian(cli):
             saved_help.append((cached, "help", cached.help))
             cached.help = OPTIONS[cached.help]
         for param in cmd.params:
+            if param.name == "version" and getattr(param, "is_flag", False):
+                saved_help.append((param, "callback", param.callback))
+                param.callback = _version_ru
             text = getattr(param, "help", None)
             if text in OPTIONS:
                 saved_help.append((param, "help", text))
