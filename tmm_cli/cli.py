@@ -23,8 +23,8 @@ class TmmGroup(click.Group):
 
     def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True, **extra):
         """Run the command line; help, click's messages and our errors follow --lang / the locale."""
-        args = list(sys.argv[1:] if args is None else args)
-        lang = _requested_lang(args)
+        lang = _requested_lang(list(sys.argv[1:] if args is None else args))  # args stay as given (click
+        # expands wildcards itself on Windows when they are None)
         if lang == "ru":
             from .render.help_ru import russian
 
