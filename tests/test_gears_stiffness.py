@@ -197,8 +197,8 @@ def test_course_pair_json_and_tables():
     assert len(sj["s_a_mm"]) == 2 and sj["b_w_mm"] == pytest.approx(100.0)
     assert any("beyond the course" in n for n in sj["notes"])
     assert gears_to_json(design_gears(600, 220, stiffness=False), "ru")["spur"]["stiffness"] is None
-    for lang, title in (("en", "Mesh stiffness (beyond the course; Tarasik)"),
-                        ("ru", "Жёсткость зацепления (сверх программы курса; Тарасик)")):
+    for lang, title in (("en", "Mesh stiffness (beyond the course, informative): V. P. Tarasik's method"),
+                        ("ru", "Жёсткость зацепления (сверх программы курса, справочно): методика В. П. Тарасика")):
         c = Console(width=160, file=io.StringIO(), record=True, color_system=None)
         print_gears(c, r, lang)
         text = c.export_text()

@@ -27,33 +27,46 @@ class TmmGroup(click.Group):
     """A click group whose errors are one line on stderr with exit status 2, never a traceback."""
 
     def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True, **extra):
+        """Run the command line; help, click's messages and our errors follow --lang / the locale."""
+        lang = _requested_lang(list(sys.argv[1:] if args is None else args))  # args stay as given (click
+        # expands wildcards itself on Windows when they are None)
+        if lang == "ru":
+            from .render.help_ru import russian
+
+            with russian(self):
+                return self._main(args, prog_name, complete_var, standalone_mode, lang, **extra)
+        return self._main(args, prog_name, complete_var, standalone_mode, lang, **extra)
+
+    def _main(self, args, prog_name, complete_var, standalone_mode, lang, **extra):
         if not standalone_mode:
             return super().main(args, prog_name, complete_var, standalone_mode, **extra)
         import warnings
 
         from .interrupt import Stopped, handle_signals
 
+        say = _words(lang)
         try:
             with handle_signals(), warnings.catch_warnings():
                 warnings.simplefilter("ignore", RuntimeWarning)  # numpy's overflow chatter is never shown
                 rv = super().main(args, prog_name or "tmm", complete_var, False, **extra)
         except TmmError as exc:
-            _fail(str(exc))
+            _fail(str(exc), lang)
         except click.exceptions.Abort:
-            click.echo("tmm: aborted", err=True)
+            click.echo(f"tmm: {say('aborted')}", err=True)
             sys.exit(1)
         except click.ClickException as exc:
-            _fail(exc.format_message())
+            _fail(exc.format_message(), lang)
         except Stopped as exc:  # Ctrl-C (130) or SIGTERM (143) during a command, see interrupt.py
-            click.echo(f"tmm: {exc.message}", err=True)
+            click.echo(f"tmm: {say(exc.message)}", err=True)
             sys.exit(exc.exit_code)
         except KeyboardInterrupt as exc:  # Ctrl-C (130) or SIGTERM (143), see interrupt.py
-            click.echo(f"tmm: {getattr(exc, 'message', '') or 'interrupted'}", err=True)
+            click.echo(f"tmm: {say(getattr(exc, 'message', '') or 'interrupted')}", err=True)
             sys.exit(getattr(exc, "exit_code", 130))
         except Exception as exc:  # a bug: one line, not a traceback, unless TMM_DEBUG is set
             if os.environ.get("TMM_DEBUG"):
                 raise
-            click.echo(f"tmm: internal error: {exc.__class__.__name__}: {exc} (run with TMM_DEBUG=1 for details)", err=True)
+            click.echo(f"tmm: {say('internal error')}: {exc.__class__.__name__}: {exc} "
+                       f"({say('run with TMM_DEBUG=1 for details')})", err=True)
             sys.exit(1)
         sys.exit(rv if isinstance(rv, int) else 0)
 
@@ -66,16 +79,51 @@ class TmmGroup(click.Group):
             raise Stopped(exc) from None
 
 
-def _fail(message: str) -> None:
+def _requested_lang(args: list[str]) -> str:
+    """The language of this run: --lang on the command line (the last one wins), else the locale."""
+    lang = None
+    for i, a in enumerate(args):
+        if a == "--":
+            break
+        if a == "--lang" and i + 1 < len(args):
+            lang = args[i + 1]
+        elif a.startswith("--lang="):
+            lang = a.split("=", 1)[1]
+    if lang in ("ru", "en"):
+        return lang
+    from .render.i18n import default_lang
+
+    return default_lang()
+
+
+def _words(lang: str):
+    if lang != "ru":
+        return lambda w: w
+    from .render.help_ru import WORDS
+
+    return lambda w: WORDS.get(w, w)
+
+
+def _fail(message: str, lang: str = "en") -> None:
     line = " ".join(str(message).split())
-    click.echo(f"tmm: error: {line}", err=True)
+    if lang == "ru":
+        from .render.help_ru import translate_error
+
+        line = translate_error(line)
+    click.echo(f"tmm: {_words(lang)('error')}: {line}", err=True)
     sys.exit(2)
 
 
 def _lang(lang: str | None) -> str:
+    """--lang of the command, else --lang given before it (`tmm --lang ru cam …`), else the locale."""
+    if lang:
+        return lang
+    ctx = click.get_current_context(silent=True)
+    if ctx is not None and ctx.find_root().params.get("lang"):
+        return ctx.find_root().params["lang"]
     from .render.i18n import default_lang
 
-    return lang or default_lang()
+    return default_lang()
 
 
 def _console(lang: str):
@@ -121,7 +169,7 @@ def _print_files(console, folder: Path, names: list[str], lang: str) -> None:
 def _emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, lang: str, owns=(), extra=None) -> None:
     """Write `files` (name -> JSON object or text) and the figures atomically, then either print
     `json_doc` alone or the tables (`show(console)`), the notes and the list of files."""
-    from .render.files import save_figures, staged_dir, write_json, write_text
+    from .render.files import save_figures, staged_dir, staged_names, write_json, write_text
 
     with staged_dir(folder, owns) as tmp:
         for name, content in files.items():
@@ -130,7 +178,7 @@ def _emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, l
             save_figures(tmp, figures(), fmt)
         if extra is not None:  # e.g. the A1 drawing sheet (--sheets)
             extra(tmp)
-        written = sorted(p.name for p in tmp.iterdir())
+        written = staged_names(tmp)
     if json_doc is not None:
         _print_json(json_doc)
         return
@@ -169,6 +217,8 @@ def _parse_shift(shift: str | None):
     from .gears.shifted import parse_shift
 
     return parse_shift(shift)
+
+
 select_option = click.option("--select", "select", type=click.Choice(["accurate", "smallest"]), default="accurate", show_default=True,
                              help="Which reducer to carry: the most accurate ratio among sets at most one tooth larger than the smallest, or the smallest.")
 
@@ -192,6 +242,9 @@ def _cam_choice(kw: dict):
     c = CamChoice(kw.pop("cam_r0", None), kw.pop("cam_offset", None), kw.pop("cam_l_oc", None),
                   kw.pop("cam_swing", None), kw.pop("cam_roller", None))
     return c if c.given else None
+
+
+stiffness_option = click.option("--stiffness", is_flag=True, help="Also compute the spur pair's mesh stiffness (beyond the course, informative; V. P. Tarasik's method).")
 
 
 def title_options(f):
@@ -226,7 +279,8 @@ def _parse_ratio(ratio: str | None):
 
 @click.group(cls=TmmGroup, context_settings=CONTEXT)
 @click.version_option(package_name="tmm", prog_name="tmm")
-def cli():
+@lang_option
+def cli(lang):
     """tmm — the calculation part of the TMM course project (Pozhbelko et al., 2003, part 2).
 
     Sheet 3: cam mechanism synthesis (`tmm cam`). Sheet 4: gear drive synthesis (`tmm gears`).
@@ -331,6 +385,7 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, sheet
 @shift_option
 @aw_option
 @select_option
+@stiffness_option
 @out_option
 @format_option
 @no_plots_option
@@ -338,7 +393,7 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, sheet
 @sheets_option
 @title_options
 @lang_option
-def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, select, out, fmt, no_plots, as_json, sheets, lang, **title_kw):
+def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, stiffness, shift, a_w_mm, select, out, fmt, no_plots, as_json, sheets, lang, **title_kw):
     """Sheet 4: motor, ratio split, planetary reducer synthesis, spur pair to the cam."""
     title = _title(title_kw)
     from .gears.design import design_gears
@@ -351,7 +406,7 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
     ensure_writable_dir(folder.parent)
     result = design_gears(
         v.n_cam_rpm, crank_rpm=crank_rpm, torque_nm=torque_nm, ratio=_parse_ratio(ratio),
-        tolerance_pct=tolerance_pct, planets=planets, shift=_parse_shift(shift), a_w_mm=a_w_mm, select=select,
+        tolerance_pct=tolerance_pct, planets=planets, stiffness=stiffness, shift=_parse_shift(shift), a_w_mm=a_w_mm, select=select,
     )
     doc = gears_document(v, result, lang)
 
@@ -388,6 +443,7 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 @shift_option
 @aw_option
 @select_option
+@stiffness_option
 @out_option
 @format_option
 @no_plots_option
@@ -401,7 +457,7 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 @cam_choice_options
 @title_options
 @lang_option
-def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, shift, a_w_mm, select, out, fmt, no_plots, as_json, report, note_template, step_deg, no_sheets, lang, **title_kw):
+def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, stiffness, shift, a_w_mm, select, out, fmt, no_plots, as_json, report, note_template, step_deg, no_sheets, lang, **title_kw):
     """The whole project for one variant: sheet 4 then sheet 3, figures, results.json, the note and the drawing sheets."""
     choice = _cam_choice(title_kw)
     title = _title(title_kw)
@@ -420,13 +476,13 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
     ensure_writable_dir(folder.parent)
     result = run_project(
         v, crank_rpm=crank_rpm, torque_nm=torque_nm, step_deg=step_deg,
-        ratio=_parse_ratio(ratio), tolerance_pct=tolerance_pct, planets=planets,
+        ratio=_parse_ratio(ratio), tolerance_pct=tolerance_pct, planets=planets, stiffness=stiffness,
         shift=_parse_shift(shift), a_w_mm=a_w_mm, select=select, cam_choice=choice,
     )
     doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report, title=title,
                                         note_template=template, sheets=not no_sheets)
-    if as_json:
-        _print_json(doc)
+    if as_json:  # the very text of results.json (encoding 180 kB of JSON twice costs ~0.1 s)
+        click.echo((folder / "results.json").read_text(encoding="utf-8"), nl=False)
         return
     from .render.report import print_project
 

@@ -41,11 +41,13 @@ def run_project(
     a_w_mm: float | None = None,
     select: str = "accurate",
     cam_choice=None,
+    stiffness: bool = False,
 ) -> ProjectResult:
     """Run sheet 4 (motor, ratios, planetary reducer, spur pair) and sheet 3 (cam) for a variant.
 
     `select`: the reducer rule ("accurate" or "smallest", :func:`~tmm_cli.gears.design.design_gears`);
-    `cam_choice`: the student's cam overrides (:class:`~tmm_cli.cam.design.CamChoice`) or None."""
+    `cam_choice`: the student's cam overrides (:class:`~tmm_cli.cam.design.CamChoice`) or None;
+    `stiffness` adds the spur pair's mesh stiffness (beyond the course, ``--stiffness``)."""
     from .cam.design import design_cam
     from .gears.design import design_gears
 
@@ -59,6 +61,7 @@ def run_project(
         shift=shift,
         a_w_mm=a_w_mm,
         select=select,
+        stiffness=stiffness,
     )
     cam = design_cam(variant, step_deg=step_deg, choice=cam_choice)
     return ProjectResult(variant=variant, gears=gears, cam=cam)

@@ -10,6 +10,7 @@ import math
 import numpy as np
 
 from ..cam.design import CamResult
+from .figure_kit import bottom_legend, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
 from .i18n import pick
 
 C_RISE = "#1f77b4"
@@ -35,16 +36,20 @@ def _phase_marks(ax, r: CamResult, lang: str, labels: bool = False) -> None:
         ax.axvline(x, color="k", lw=0.6, ls=":")
 
 
-def _motion_figure(Figure, r: CamResult, lang: str):
+def _motion_figure(r: CamResult, lang: str):
     v, m = r.variant, r.motion
-    fig = Figure(figsize=(9, 9.5), layout="constrained")
+    f = fmt(lang)
+    W, H = 9.0, 9.5
+    fig = new_figure(W, H)
+    top = title_height(2) + 0.62  # two-line title, then the time axis with its label
+    fig.subplots_adjust(left=0.95 / W, right=1 - 0.2 / W, bottom=0.5 / H, top=1 - top / H, hspace=0.055)
     axes = fig.subplots(3, 1, sharex=True)
     deg = np.degrees(m.phi)
     rows = [(x.phi_deg, x) for x in m.table]
     if v.is_rocker:
         l_mm = v.l_bc_m * 1000
         series = [
-            (np.degrees(m.s), "γ, °", pick(lang, f"γ (S_B = γ·l_BC, l_BC = {l_mm:g} mm)", f"γ (S_B = γ·l_BC, l_BC = {l_mm:g} мм)"), [math.degrees(x.s) for _, x in rows]),
+            (np.degrees(m.s), "γ, °", mt(pick(lang, f"γ (S_B = γ·l_BC, l_BC = {f(l_mm)} mm)", f"γ (S_B = γ·l_BC, l_BC = {f(l_mm)} мм)")), [math.degrees(x.s) for _, x in rows]),
             (m.v, pick(lang, "ω, rad/s", "ω, рад/с"), "ω = dγ/dt", [x.v for _, x in rows]),
             (m.a, pick(lang, "ε, rad/s²", "ε, рад/с²"), "ε = dω/dt", [x.a for _, x in rows]),
         ]
@@ -81,19 +86,19 @@ def _motion_figure(Figure, r: CamResult, lang: str):
     top = axes[0].secondary_xaxis("top", functions=(lambda d: np.radians(d) / w * 1000.0, lambda t: np.degrees(np.asarray(t) / 1000.0 * w)))
     top.set_xlabel(pick(lang, "time t, ms", "время t, мс"))
     law = pick(lang, f"law {v.law}", f"закон {v.law}")
-    fig.suptitle(
-        pick(lang, f"Variant {v.number}: follower motion diagrams\n({law}, n_k = {v.n_cam_rpm:g} rpm)", f"Вариант {v.number}: диаграммы движения толкателя\n({law}, n_k = {v.n_cam_rpm:g} об/мин)")
-    )
+    suptitle(fig, mt(pick(lang, f"Variant {v.number}: follower motion diagrams\n({law}, n_k = {f(v.n_cam_rpm, minus='−')} rpm)",
+                          f"Вариант {v.number}: диаграммы движения толкателя\n({law}, n_k = {f(v.n_cam_rpm, minus='−')} об/мин)")))
     return fig
 
 
-def _zone_figure(Figure, r: CamResult, lang: str):
+def _zone_figure(r: CamResult, lang: str):
     from matplotlib.patches import Polygon
 
     v, z = r.variant, r.sizing
     zn = z.zone
-    fig = Figure(figsize=(8.5, 9.5), layout="constrained")
-    ax = fig.subplots()
+    f = fmt(lang)
+    fig = new_figure(8.5, 9.5)
+    ax = fig.add_axes((0, 0, 1, 1))  # placed below, once the legend's size is known
     k = 1000.0
     b, d = zn.b * k, zn.d * k
     rise = zn.phase == 0
@@ -112,7 +117,7 @@ def _zone_figure(Figure, r: CamResult, lang: str):
     xlim = (mid[0] - span / 2, mid[0] + span / 2)
     ylim = (mid[1] - span / 2, mid[1] + span / 2)
 
-    ax.add_patch(Polygon(zn.polygon * k, closed=True, facecolor=C_ZONE, alpha=0.15, edgecolor=C_ZONE, lw=1.0, label=pick(lang, "feasible zone (ν ≤ ν_max everywhere)", "зона возможного положения центра (ν ≤ ν_max)")))
+    ax.add_patch(Polygon(zn.polygon * k, closed=True, facecolor=C_ZONE, alpha=0.15, edgecolor=C_ZONE, lw=1.0, label=mt(pick(lang, "feasible zone (ν ≤ ν_max everywhere)", "зона возможного положения центра (ν ≤ ν_max)"))))
     ax.plot(b[rise, 0], b[rise, 1], color="k", lw=1.2, label=pick(lang, "roller-centre path B", "траектория центра ролика B"))
     ax.plot(d[rise, 0], d[rise, 1], color=C_RISE, lw=1.6, label=pick(lang, "D-curve, rise", "кривая D, удаление"))
     ls = "-" if z.closure == "form" else "--"
@@ -134,49 +139,51 @@ def _zone_figure(Figure, r: CamResult, lang: str):
             if xlim[0] + 0.04 * span < q[0] < xlim[1] - 0.2 * span and ylim[0] + 0.04 * span < q[1] < ylim[1] - 0.04 * span:
                 ax.text(q[0], q[1], " " + pick(lang, "line ", "прямая ") + L.name, color=C_BOOK, fontsize=11, weight="bold", va="bottom")
                 break
-    ax.plot([], [], color=C_BOOK, lw=1.0, ls="-.", label=pick(lang, "book's bounding lines (ν_max)", "ограничивающие прямые по пособию (ν_max)"))
+    ax.plot([], [], color=C_BOOK, lw=1.0, ls="-.", label=mt(pick(lang, "book's bounding lines (ν_max)", "ограничивающие прямые по пособию (ν_max)")))
     ax.plot([0, o[0]], [0, o[1]], color="k", lw=1.0, ls="--")
-    ax.plot(*o, marker="*", ms=16, color=C_ZONE, mec="k", ls="none", zorder=5, label=pick(lang, f"chosen centre O: r0 = {z.r0_m * k:.2f} mm", f"принятый центр O: r_0 = {z.r0_m * k:.2f} мм"))
-    ax.plot(*bv, marker="X", ms=10, color=C_BOOK, mec="k", ls="none", label=pick(lang, f"book's vertex: r0 = {z.book_r0_m * k:.2f} mm, ν ≤ {max(z.book_nu_rise_max_deg, z.book_nu_return_max_deg if z.closure == 'form' else 0):.1f}°", f"вершина по пособию: r_0 = {z.book_r0_m * k:.2f} мм, ν ≤ {max(z.book_nu_rise_max_deg, z.book_nu_return_max_deg if z.closure == 'form' else 0):.1f}°"))
+    ax.plot(*o, marker="*", ms=16, color=C_ZONE, mec="k", ls="none", zorder=5, label=mt(pick(lang, f"chosen centre O: r_0 = {f(z.r0_m * k, decimals=2)} mm", f"принятый центр O: r_0 = {f(z.r0_m * k, decimals=2)} мм")))
+    book_nu = f(max(z.book_nu_rise_max_deg, z.book_nu_return_max_deg if z.closure == "form" else 0), decimals=1)
+    ax.plot(*bv, marker="X", ms=10, color=C_BOOK, mec="k", ls="none", label=mt(pick(lang, f"book's vertex: r_0 = {f(z.book_r0_m * k, decimals=2)} mm, ν ≤ {book_nu}°", f"вершина по пособию: r_0 = {f(z.book_r0_m * k, decimals=2)} мм, ν ≤ {book_nu}°")))
     ax.plot(0, 0, "o", color="k", ms=5)
     ax.annotate("B₀", (0, 0), textcoords="offset points", xytext=(6, 4), fontsize=11)
     ax.annotate("O", o, textcoords="offset points", xytext=(8, -12), fontsize=11)
-    ax.text(o[0] / 2, o[1] / 2, f" r₀ = {z.r0_m * k:.1f}", fontsize=9, rotation=0, ha="left")
+    ax.text(o[0] / 2, o[1] / 2, " " + mt(f"r_0 = {f(z.r0_m * k, decimals=1)}"), fontsize=9, rotation=0, ha="left")
     if z.pivot is not None:
         c = np.array(z.pivot) * k
         ax.plot(*c, "s", color="k", ms=6)
         ax.annotate("C", c, textcoords="offset points", xytext=(6, 6), fontsize=11)
-        ax.plot([o[0], c[0]], [o[1], c[1]], color="tab:brown", lw=1.2, label=pick(lang, f"l_OC = {z.l_oc_m * k:.2f} mm", f"l_OC = {z.l_oc_m * k:.2f} мм"))
-        ax.plot([c[0], 0], [c[1], 0], color="k", lw=2.0, alpha=0.6, label=pick(lang, f"rocker CB₀, l_BC = {v.l_bc_m * k:g} mm", f"коромысло CB₀, l_BC = {v.l_bc_m * k:g} мм"))
+        ax.plot([o[0], c[0]], [o[1], c[1]], color="tab:brown", lw=1.2, label=mt(pick(lang, f"l_OC = {f(z.l_oc_m * k, decimals=2)} mm", f"l_OC = {f(z.l_oc_m * k, decimals=2)} мм")))
+        ax.plot([c[0], 0], [c[1], 0], color="k", lw=2.0, alpha=0.6, label=mt(pick(lang, f"rocker CB₀, l_BC = {f(v.l_bc_m * k)} mm", f"коромысло CB₀, l_BC = {f(v.l_bc_m * k)} мм")))
     else:
         ax.axvline(0, color="k", lw=0.8, ls=":")
-        ax.plot([o[0], 0], [o[1], o[1]], color="tab:brown", lw=1.4, label=pick(lang, f"offset e = {z.e_m * k:+.2f} mm", f"эксцентриситет e = {z.e_m * k:+.2f} мм"))
+        ax.plot([o[0], 0], [o[1], o[1]], color="tab:brown", lw=1.4, label=pick(lang, f"offset e = {_signed(f, z.e_m * k)} mm", f"эксцентриситет e = {_signed(f, z.e_m * k)} мм"))
     ax.set_xlim(*xlim)
     ax.set_ylim(*ylim)
     ax.set_aspect("equal", adjustable="box")
     ax.grid(alpha=0.3)
     ax.set_xlabel(pick(lang, "x, mm (B₀ at the origin)", "x, мм (начало в B₀)"))
     ax.set_ylabel(pick(lang, "y, mm (rise direction at B₀ = +y)", "y, мм (+y — направление удаления в B₀)"))
-    fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncol=2, fontsize=8, frameon=False)
     rot = pick(lang, "cam turns counter-clockwise", "кулачок вращается против часовой стрелки") if v.ccw else pick(lang, "cam turns clockwise", "кулачок вращается по часовой стрелке")
-    fig.suptitle(pick(lang, f"Variant {v.number}: zone of the cam centre, ν_max = {v.nu_max_deg:g}°\n({rot})", f"Вариант {v.number}: зона положения центра кулачка, ν_max = {v.nu_max_deg:g}°\n({rot})"))
+    suptitle(fig, mt(pick(lang, f"Variant {v.number}: zone of the cam centre, ν_max = {f(v.nu_max_deg)}°\n({rot})", f"Вариант {v.number}: зона положения центра кулачка, ν_max = {f(v.nu_max_deg)}°\n({rot})")))
+    _square_with_legend(fig, ax)
     return fig
 
 
-def _profile_figure(Figure, r: CamResult, lang: str):
+def _profile_figure(r: CamResult, lang: str):
     from matplotlib.patches import Circle, FancyArrowPatch
 
     v, z, p = r.variant, r.sizing, r.profile
     k = 1000.0
-    fig = Figure(figsize=(8.5, 9.5), layout="constrained")
-    ax = fig.subplots()
+    f = fmt(lang)
+    fig = new_figure(8.5, 9.5)
+    ax = fig.add_axes((0, 0, 1, 1))  # placed below, once the legend's size is known
     P = p.pitch * k
     th = np.linspace(0, 2 * math.pi, 361)
     r0 = z.r0_m * k
     rp = p.roller_m * k
-    ax.plot(r0 * np.cos(th), r0 * np.sin(th), color="0.4", lw=0.8, ls="--", label=pick(lang, f"base circle r0 = {r0:.2f} mm", f"окружность r_0 = {r0:.2f} мм"))
+    ax.plot(r0 * np.cos(th), r0 * np.sin(th), color="0.4", lw=0.8, ls="--", label=mt(pick(lang, f"base circle r_0 = {f(r0, decimals=2)} mm", f"окружность r_0 = {f(r0, decimals=2)} мм")))
     ax.plot(P[:, 0], P[:, 1], color=C_RISE, lw=1.2, ls="-.", label=pick(lang, "pitch curve T", "теоретический профиль T"))
-    ax.plot(p.inner[:, 0] * k, p.inner[:, 1] * k, color="k", lw=1.8, label=pick(lang, f"working profile D1 (roller r = {rp:.2f} mm)", f"действительный профиль D1 (ролик r = {rp:.2f} мм)"))
+    ax.plot(p.inner[:, 0] * k, p.inner[:, 1] * k, color="k", lw=1.8, label=mt(pick(lang, f"working profile D1 (roller r_р = {f(rp, decimals=2)} mm)", f"действительный профиль D1 (ролик r_р = {f(rp, decimals=2)} мм)")))
     if p.outer is not None:
         ax.plot(p.outer[:, 0] * k, p.outer[:, 1] * k, color="k", lw=1.8, ls="-", alpha=0.7)
         ax.plot([], [], color="k", lw=1.8, alpha=0.7, label=pick(lang, "groove side D2", "вторая сторона паза D2"))
@@ -199,18 +206,18 @@ def _profile_figure(Figure, r: CamResult, lang: str):
     ax.plot([], [], color="tab:brown", lw=1.0, label=pick(lang, "follower in inverted motion", "толкатель в обращённом движении"))
     if p.pivot_path is not None:
         pp = p.pivot_path * k
-        ax.plot(pp[:, 0], pp[:, 1], color="tab:brown", lw=0.6, ls=":", label=pick(lang, f"pivot circle l_OC = {z.l_oc_m * k:.2f} mm", f"окружность центров качания l_OC = {z.l_oc_m * k:.2f} мм"))
+        ax.plot(pp[:, 0], pp[:, 1], color="tab:brown", lw=0.6, ls=":", label=mt(pick(lang, f"pivot circle l_OC = {f(z.l_oc_m * k, decimals=2)} mm", f"окружность центров качания l_OC = {f(z.l_oc_m * k, decimals=2)} мм")))
     else:
         e = abs(z.e_m) * k
         if e > 1e-6:
-            ax.plot(e * np.cos(th), e * np.sin(th), color="tab:brown", lw=0.6, ls=":", label=pick(lang, f"offset circle |e| = {e:.2f} mm", f"окружность эксцентриситета |e| = {e:.2f} мм"))
+            ax.plot(e * np.cos(th), e * np.sin(th), color="tab:brown", lw=0.6, ls=":", label=pick(lang, f"offset circle |e| = {f(e, decimals=2)} mm", f"окружность эксцентриситета |e| = {f(e, decimals=2)} мм"))
         # the follower axis in the drawn position (start of rise)
         ax.plot([z.e_m * k, z.e_m * k], [P[0, 1] - 0.2 * r0, P[0, 1] + stem], color="tab:brown", lw=1.6)
     ax.plot([0], [0], "+", color="k", ms=12, mew=1.5)
     ax.annotate("O", (0, 0), textcoords="offset points", xytext=(-12, -14), fontsize=11)
     b0 = P[0]
     ax.plot([0, b0[0]], [0, b0[1]], color="0.2", lw=0.9)
-    ax.annotate(f"r₀ = {r0:.1f}", b0 / 2, textcoords="offset points", xytext=(4, 0), fontsize=9)
+    ax.annotate(mt(f"r_0 = {f(r0, decimals=1)}"), b0 / 2, textcoords="offset points", xytext=(4, 0), fontsize=9)
     ax.annotate("B₀", b0, textcoords="offset points", xytext=(6, -12), fontsize=11)
     # rotation arrow outside the cam
     R = 1.12 * np.max(np.hypot(P[:, 0], P[:, 1])) + rp
@@ -218,7 +225,7 @@ def _profile_figure(Figure, r: CamResult, lang: str):
     arr = FancyArrowPatch((R * math.cos(a0), R * math.sin(a0)), (R * math.cos(a1), R * math.sin(a1)), connectionstyle=f"arc3,rad={0.2 if v.ccw else -0.2}", arrowstyle="-|>", mutation_scale=18, lw=1.6, color="k")
     ax.add_patch(arr)
     am = math.radians(225)
-    ax.text(1.12 * R * math.cos(am), 1.12 * R * math.sin(am), "ω_k", fontsize=12, ha="center", va="center")
+    ax.text(1.12 * R * math.cos(am), 1.12 * R * math.sin(am), mt("ω_k"), fontsize=12, ha="center", va="center")
     lim = 1.3 * R + stem * 0.2
     ax.set_xlim(-lim, lim)
     top = max(lim, float(P[:, 1].max() + stem + rp))
@@ -232,18 +239,20 @@ def _profile_figure(Figure, r: CamResult, lang: str):
     ax.grid(alpha=0.25)
     ax.set_xlabel(pick(lang, "x, mm (cam frame, centre O at the origin)", "x, мм (система кулачка, центр O в начале)"))
     ax.set_ylabel("y, " + pick(lang, "mm", "мм"))
-    fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncol=2, fontsize=8, frameon=False)
-    dims = f"e = {z.e_m * k:+.2f} mm" if not v.is_rocker else f"l_OC = {z.l_oc_m * k:.2f} mm, l_BC = {v.l_bc_m * k:g} mm"
-    if lang == "ru":
-        dims = dims.replace("mm", "мм")
+    mm = pick(lang, "mm", "мм")
+    dims = f"e = {_signed(f, z.e_m * k)} {mm}" if not v.is_rocker else f"l_OC = {f(z.l_oc_m * k, decimals=2)} {mm}, l_BC = {f(v.l_bc_m * k)} {mm}"
     uc = pick(lang, " — UNDERCUT", " — ПОДРЕЗ") if p.undercut else ""
-    fig.suptitle(pick(lang, f"Variant {v.number}: cam profile{uc}\nr0 = {r0:.2f} mm, {dims}", f"Вариант {v.number}: профиль кулачка{uc}\nr_0 = {r0:.2f} мм, {dims}"))
+    suptitle(fig, mt(pick(lang, f"Variant {v.number}: cam profile{uc}\nr_0 = {f(r0, decimals=2)} mm, {dims}", f"Вариант {v.number}: профиль кулачка{uc}\nr_0 = {f(r0, decimals=2)} мм, {dims}")))
+    _square_with_legend(fig, ax)
     return fig
 
 
-def _pressure_figure(Figure, r: CamResult, lang: str):
+def _pressure_figure(r: CamResult, lang: str):
     v, z, p = r.variant, r.sizing, r.profile
-    fig = Figure(figsize=(9, 4.8), layout="constrained")
+    f = fmt(lang)
+    W, H = 9.0, 4.8
+    fig = new_figure(W, H)
+    fig.subplots_adjust(left=0.6 / W, right=1 - 0.2 / W, bottom=0.5 / H, top=1 - (title_height(1) + 0.12) / H)
     ax = fig.subplots()
     deg = np.degrees(p.phi)
     ph = r.motion.program.phase_index(p.phi)
@@ -251,13 +260,13 @@ def _pressure_figure(Figure, r: CamResult, lang: str):
     rise = np.where(ph == 0, p.nu_deg, np.nan)
     ret = np.where(ph == 2, p.nu_deg, np.nan)
     dwell = np.where((ph == 1) | (ph == 3), p.nu_deg, np.nan)
-    ax.plot(deg, rise, color=C_RISE, lw=1.8, label=pick(lang, f"rise, max {z.nu_rise_max_deg:.2f}°", f"удаление, max {z.nu_rise_max_deg:.2f}°"))
-    lab = pick(lang, f"return, max {z.nu_return_max_deg:.2f}°", f"возвращение, max {z.nu_return_max_deg:.2f}°")
+    ax.plot(deg, rise, color=C_RISE, lw=1.8, label=pick(lang, f"rise, max {f(z.nu_rise_max_deg, decimals=2)}°", f"удаление, max {f(z.nu_rise_max_deg, decimals=2)}°"))
+    lab = pick(lang, f"return, max {f(z.nu_return_max_deg, decimals=2)}°", f"возвращение, max {f(z.nu_return_max_deg, decimals=2)}°")
     if z.closure == "force":
         lab += pick(lang, " (spring: not limited)", " (пружина: не ограничивается)")
     ax.plot(deg, ret, color=C_RET, lw=1.8, ls="-" if z.closure == "form" else "--", label=lab)
     ax.plot(deg, dwell, color=C_DWELL, lw=1.0, ls=":", label=pick(lang, "dwells (no motion)", "выстои (нет движения)"))
-    ax.axhline(v.nu_max_deg, color="k", lw=1.2, ls="-.", label=f"ν_max = {v.nu_max_deg:g}°")
+    ax.axhline(v.nu_max_deg, color="k", lw=1.2, ls="-.", label=mt(f"ν_max = {f(v.nu_max_deg)}°"))
     ax.set_xlim(0, 360)
     ax.set_xticks(np.arange(0, 361, 30))
     ax.set_ylim(0, max(90.0 if z.closure == "force" else v.nu_max_deg * 1.35, float(np.nanmax(p.nu_deg)) * 1.08))
@@ -265,7 +274,7 @@ def _pressure_figure(Figure, r: CamResult, lang: str):
     ax.set_ylabel(pick(lang, "pressure angle ν, °", "угол давления ν, °"))
     ax.grid(alpha=0.3)
     ax.legend(loc="upper right", fontsize=8, framealpha=0.9)
-    fig.suptitle(pick(lang, f"Variant {v.number}: pressure angle over the cam turn", f"Вариант {v.number}: угол давления за оборот кулачка"))
+    suptitle(fig, pick(lang, f"Variant {v.number}: pressure angle over the cam turn", f"Вариант {v.number}: угол давления за оборот кулачка"))
     return fig
 
 
@@ -297,7 +306,7 @@ def scaled_layout(r: CamResult) -> dict:
     }
 
 
-def _scaled_profile_figure(Figure, r: CamResult, lang: str):
+def _scaled_profile_figure(r: CamResult, lang: str):
     """The cam at its standard scale: printed at 100 %, 1 mm on paper = k_Sk m of the cam."""
     from matplotlib.patches import Circle
 
@@ -306,7 +315,8 @@ def _scaled_profile_figure(Figure, r: CamResult, lang: str):
     w_mm, h_mm = lay["paper_mm"]
     f = lay["real_mm_per_paper_mm"]
     (xa, xb), (ya, yb) = lay["xlim"], lay["ylim"]
-    fig = Figure(figsize=(w_mm / MM_PER_INCH, h_mm / MM_PER_INCH), layout="none")
+    fm = fmt(lang)
+    fig = new_figure(w_mm / MM_PER_INCH, h_mm / MM_PER_INCH)
     ax = fig.add_axes((0.0, 0.0, 1.0, 1.0))
     ax.set_axis_off()
     k = 1000.0
@@ -344,12 +354,12 @@ def _scaled_profile_figure(Figure, r: CamResult, lang: str):
                                    "печатать в масштабе 100 % (без подгонки): отрезок должен быть 50 мм"), fontsize=5, ha="left", va="top")
     m_sign = pick(lang, "M", "М")
     ax.text(bx + (CHECK_BAR_MM + 6.0) * f, by, f"{m_sign} {d.scale}", fontsize=12, weight="bold", ha="left", va="bottom")
-    ax.text(bx + (CHECK_BAR_MM + 6.0) * f, by - 1.5 * f, f"k_Sk = {d.k_sk:g} " + pick(lang, "m/mm", "м/мм"), fontsize=6, ha="left", va="top")
-    dims = f"r₀ = {r0:.2f}, r_р = {rp:.2f}, " + (f"l_OC = {z.l_oc_m * k:.2f}, l_BC = {v.l_bc_m * k:g}" if v.is_rocker else f"e = {z.e_m * k:+.2f}") + f" {mm}"
+    ax.text(bx + (CHECK_BAR_MM + 6.0) * f, by - 1.5 * f, mt(f"k_Sk = {fm(d.k_sk)} ") + pick(lang, "m/mm", "м/мм"), fontsize=6, ha="left", va="top")
+    dims = f"r_0 = {fm(r0, decimals=2)}, r_р = {fm(rp, decimals=2)}, " + (f"l_OC = {fm(z.l_oc_m * k, decimals=2)}, l_BC = {fm(v.l_bc_m * k)}" if v.is_rocker else f"e = {_signed(fm, z.e_m * k)}") + f" {mm}"
     dims += "\n" + (pick(lang, "cam turns counter-clockwise", "кулачок вращается против часовой стрелки") if v.ccw else pick(lang, "cam turns clockwise", "кулачок вращается по часовой стрелке"))
     fig.suptitle(
-        pick(lang, f"Variant {v.number}: cam profile at {m_sign} {d.scale} (Table 1.1)\n{dims}",
-             f"Вариант {v.number}: профиль кулачка, {m_sign} {d.scale} (табл. 1.1)\n{dims}"),
+        mt(pick(lang, f"Variant {v.number}: cam profile at {m_sign} {d.scale} (Table 1.1)\n{dims}",
+                f"Вариант {v.number}: профиль кулачка, {m_sign} {d.scale} (табл. 1.1)\n{dims}")),
         y=1.0 - 1.5 / h_mm, va="top", fontsize=6.5,
     )
     ax.set_xlim(xa, xb)
@@ -364,12 +374,30 @@ def cam_figures(result: CamResult, lang: str) -> dict:
     "cam_profile_scaled" is the profile at its standard scale (Table 1.1): a figure whose page is
     the drawing itself, so a PDF/SVG printed at 100 % gives M exactly (check bar 50 mm).
     """
-    from matplotlib.figure import Figure
-
-    return {
-        "cam_motion": _motion_figure(Figure, result, lang),
-        "cam_zone": _zone_figure(Figure, result, lang),
-        "cam_profile": _profile_figure(Figure, result, lang),
-        "cam_pressure_angle": _pressure_figure(Figure, result, lang),
-        "cam_profile_scaled": _scaled_profile_figure(Figure, result, lang),
+    figs = {
+        "cam_motion": _motion_figure(result, lang),
+        "cam_zone": _zone_figure(result, lang),
+        "cam_profile": _profile_figure(result, lang),
+        "cam_pressure_angle": _pressure_figure(result, lang),
+        "cam_profile_scaled": _scaled_profile_figure(result, lang),
     }
+    for fig in figs.values():
+        decimal_commas(fig, lang)
+    return figs
+
+
+def _signed(f, x: float) -> str:
+    """+1,25 / −1,25 / 0,00: an offset with its sign (the book's e > 0 is to the right of O)."""
+    text = f(x, decimals=2, minus="−")
+    return text if text.startswith("−") or set(text) <= set("0,.") else "+" + text
+
+
+def _square_with_legend(fig, ax, ncol: int = 2, fontsize: float = 8.0) -> None:
+    """Place the (equal-aspect) axes between the title and a legend block at the bottom."""
+    W, H = fig.get_size_inches()
+    handles, labels = ax.get_legend_handles_labels()
+    lines = fig.get_suptitle().count("\n") + 1
+    bottom = legend_height(len(labels), ncol, fontsize) + 0.5  # + the x label and tick labels
+    top = title_height(lines) + 0.1
+    ax.set_position((0.85 / W, bottom / H, 1 - 1.05 / W, 1 - (bottom + top) / H))
+    bottom_legend(fig, handles, labels, ncol, fontsize)

@@ -369,6 +369,11 @@ def json_text(obj) -> str:
     return json.dumps(json_safe(obj), ensure_ascii=False, indent=2, allow_nan=False)
 
 
+def staged_names(tmp: Path) -> list[str]:
+    """The names of the files written so far into the staging folder `tmp` (its mark left out), sorted."""
+    return sorted(p.name for p in Path(tmp).iterdir() if p.name != STAGING_MARK)
+
+
 def write_json(path: Path, obj) -> None:
     Path(path).write_text(json_text(obj) + "\n", encoding="utf-8")
 

@@ -11,7 +11,9 @@ import math
 
 import numpy as np
 
+from .figure_kit import bottom_legend, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
 from .i18n import pick
+from .numbers import num, plural
 
 C_SUN = "#1f77b4"
 C_PLANET = "#d62728"
@@ -119,11 +121,12 @@ def _shift_kw(g, idx: int) -> dict:
     return {"x": (g.x1, g.x2)[idx - 1], "ra": (g.da1_mm, g.da2_mm)[idx - 1] / 2}
 
 
-def _shift_title(g) -> str:
+def _shift_title(g, lang: str) -> str:
     """", x1 = …, x2 = …, a_w = …" for a shifted pair (beyond the book), "" for the zero pair."""
     if not getattr(g, "shifted", False):
         return ""
-    return f"\nx1 = {g.x1:.4g}, x2 = {g.x2:.4g}, a_w = {g.a_w_mm:.5g}, α_w = {g.alpha_w_deg:.4g}°"
+    return (f"\nx1 = {num(g.x1, lang, sig=4)}, x2 = {num(g.x2, lang, sig=4)}, a_w = {num(g.a_w_mm, lang, sig=5)}, "
+            f"α_w = {num(g.alpha_w_deg, lang, sig=4)}°")
 
 
 def _mesh_geometry(g, motor_sense: str = "cw"):
@@ -228,7 +231,7 @@ def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
         ax.add_patch(Arc(tuple(p), 2 * rr, 2 * rr, theta1=th0, theta2=th1, color="k", lw=0.9))
         ax.plot([p[0], p[0] + sx * 1.3 * rr], [p[1], p[1]], color="k", lw=0.7, ls="--")
         mid = math.radians(g.alpha_w_deg / 2)
-        ax.annotate(f"α_w = {g.alpha_w_deg:.4g}°", (p[0] + sx * rr * math.cos(mid), p[1] + rr * math.sin(mid)),
+        ax.annotate(mt(f"α_w = {num(g.alpha_w_deg, lang, sig=4)}°"), (p[0] + sx * rr * math.cos(mid), p[1] + rr * math.sin(mid)),
                     xytext=(sx * 10, -3), textcoords="offset points", fontsize=fs, ha="left" if sx > 0 else "right",
                     bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
         # the active profile parts (double line in the book): radii of P1 from O1 and P2 from O2
@@ -255,12 +258,15 @@ def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
 
 
 def _mesh_figure(result, lang):
-    from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
 
     g = result.spur
-    fig = Figure(figsize=(15, 8.2), layout="constrained")
-    gs = fig.add_gridspec(1, 2, width_ratios=[1, 1.25])
+    f = fmt(lang)
+    W, H = 15.0, 8.2
+    fig = new_figure(W, H)
+    bottom = legend_height(8, 4, 9) + 0.45
+    gs = fig.add_gridspec(1, 2, width_ratios=[1, 1.25], left=0.55 / W, right=1 - 0.1 / W, bottom=bottom / H,
+                          top=1 - title_height(2, 10.5) / H, wspace=0.1)
     ax0 = fig.add_subplot(gs[0])
     ax1 = fig.add_subplot(gs[1])
     dirs = result.directions
@@ -269,29 +275,28 @@ def _mesh_figure(result, lang):
     # senses of rotation: motor (gear 1) and cam (gear 2), opposite in an external mesh
     _rotation_arrow(ax0, (0.0, 0.0), 0.45 * g.d1_mm / 2, dirs.motor, 235.0, C_SUN, "ω1")
     _rotation_arrow(ax0, (0.0, g.a_w_mm or g.a_mm), 0.45 * g.d2_mm / 2, dirs.cam, 55.0, C_PLANET, "ω2")
-    ax0.set_title(pick(lang, f"Spur pair z1 = {g.z1}, z2 = {g.z2}, m = {g.m_mm:g} mm, a = {g.a_mm:g} mm{_shift_title(g)}\n"
+    ax0.set_title(pick(lang, f"Spur pair z1 = {g.z1}, z2 = {g.z2}, m = {f(g.m_mm)} mm, a = {f(g.a_mm)} mm{_shift_title(g, lang)}\n"
                              f"ω1: motor ({_sense_text(dirs.motor, lang)}), ω2: cam ({_sense_text(dirs.cam, lang)})",
-                       f"Зубчатая передача z1 = {g.z1}, z2 = {g.z2}, m = {g.m_mm:g} мм, a = {g.a_mm:g} мм{_shift_title(g)}\n"
+                       f"Зубчатая передача z1 = {g.z1}, z2 = {g.z2}, m = {f(g.m_mm)} мм, a = {f(g.a_mm)} мм{_shift_title(g, lang)}\n"
                        f"ω1: двигатель ({_sense_text(dirs.motor, lang)}), ω2: кулачок ({_sense_text(dirs.cam, lang)})"),
                   fontsize=10.5)
-    ax1.set_title(pick(lang, f"Mesh zone: ε_α = P1P2/p_b = {g.g_alpha_mm:.1f}/{g.pb_mm:.2f} = {g.eps_alpha:.3f};  "
-                             f"φ_α1 = {g.phi_alpha1_deg:.2f}°, φ_α2 = {g.phi_alpha2_deg:.2f}°",
-                       f"Зона зацепления: ε_α = P1P2/p_b = {g.g_alpha_mm:.1f}/{g.pb_mm:.2f} = {g.eps_alpha:.3f};  "
-                       f"φ_α1 = {g.phi_alpha1_deg:.2f}°, φ_α2 = {g.phi_alpha2_deg:.2f}°"), fontsize=11)
+    zone = (f"ε_α = P1P2/p_b = {f(g.g_alpha_mm, decimals=1)}/{f(g.pb_mm, decimals=2)} = {f(g.eps_alpha, decimals=3)};  "
+            f"φ_α1 = {f(g.phi_alpha1_deg, decimals=2)}°, φ_α2 = {f(g.phi_alpha2_deg, decimals=2)}°")
+    ax1.set_title(mt(pick(lang, "Mesh zone: ", "Зона зацепления: ") + zone), fontsize=11)
     for ax in (ax0, ax1):
         ax.set_xlabel(pick(lang, "mm", "мм"))
         ax.grid(alpha=0.15)
     handles = [
-        Line2D([], [], color="0.3", ls="-", label=pick(lang, "pitch circle d", "делительная d")),
-        Line2D([], [], color="0.3", ls="--", label=pick(lang, "base circle d_b", "основная d_b")),
-        Line2D([], [], color="0.3", ls=":", label=pick(lang, "tip circle d_a", "вершин d_a")),
-        Line2D([], [], color="0.3", ls="-.", label=pick(lang, "root circle d_f", "впадин d_f")),
+        Line2D([], [], color="0.3", ls="-", label=mt(pick(lang, "pitch circle d", "делительная d"))),
+        Line2D([], [], color="0.3", ls="--", label=mt(pick(lang, "base circle d_b", "основная d_b"))),
+        Line2D([], [], color="0.3", ls=":", label=mt(pick(lang, "tip circle d_a", "вершин d_a"))),
+        Line2D([], [], color="0.3", ls="-.", label=mt(pick(lang, "root circle d_f", "впадин d_f"))),
         Line2D([], [], color="k", lw=0.8, label=pick(lang, "line of action N1N2", "линия зацепления N1N2")),
         Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=pick(lang, "double-pair zones P1U2, U1P2", "двухпарное зацепление P1U2, U1P2")),
         Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=pick(lang, "single-pair zone U2U1", "однопарное зацепление U2U1")),
         Line2D([], [], color=C_SUN, lw=2.6, label=pick(lang, "active profiles", "активные участки профилей")),
     ]
-    fig.legend(handles=handles, loc="outside lower center", ncol=4, fontsize=9, frameon=False)
+    bottom_legend(fig, handles, [h.get_label() for h in handles], ncol=4, fontsize=9)
     return fig
 
 
@@ -368,7 +373,7 @@ def _scheme(ax, result, lang):
     teeth = "  +  ".join(
         ", ".join(f"{n} = {v}" for n, v in zip(("z_k", "z_c", "z_c′", "z_n") if s.z_planet2 is not None else ("z_k", "z_c", "z_n"), s.teeth))
         + f", k = {s.planets}" for s in d.stages)
-    ax.set_title(pick(lang, f"Scheme {d.scheme}: {teeth}", f"Схема {d.scheme}: {teeth}"), fontsize=10)
+    ax.set_title(mt(pick(lang, f"Scheme {d.scheme}: {teeth}", f"Схема {d.scheme}: {teeth}")), fontsize=10)
 
 
 def _velocity(ax, result, lang, ylim):
@@ -406,7 +411,7 @@ def _velocity(ax, result, lang, ylim):
         r_lab = s.r_a + 0.5 * (s.r_c - s.r_a)
         ax.annotate(f"c{suf}", (slope * (r_lab - s.r_b), r_lab), xytext=(6, 0),
                     textcoords="offset points", color=cc, fontsize=10, fontweight="bold", va="center")
-        ax.annotate(f"V_A{suf}", (s.v_a, s.r_a), xytext=(-8, 3), textcoords="offset points", fontsize=8, ha="right")
+        ax.annotate(mt(f"V_A{suf}"), (s.v_a, s.r_a), xytext=(-8, 3), textcoords="offset points", fontsize=8, ha="right")
     groups: list[list] = []
     tol = 1e-6 * max(1.0, vmax)
     for vx, ry, name in named:
@@ -429,9 +434,9 @@ def _velocity(ax, result, lang, ylim):
     ax.add_patch(Arc((0, 0), 2.7 * r_arc, 2.7 * r_arc, theta1=90 - sl.phi_h_deg, theta2=90,
                      color=C_CARRIER if len(v.stages) == 1 else C_STAGE2[2], lw=1))
     # the angle labels left of the radius axis, at the top of their arcs (the picture is on the right)
-    ax.annotate("φ_k", (0, r_arc), xytext=(-4, 0), textcoords="offset points", fontsize=9, color=C_SUN,
+    ax.annotate(mt("φ_k"), (0, r_arc), xytext=(-4, 0), textcoords="offset points", fontsize=9, color=C_SUN,
                 ha="right", va="center")
-    ax.annotate("φ_H", (0, 1.35 * r_arc), xytext=(-4, 0), textcoords="offset points", fontsize=9,
+    ax.annotate(mt("φ_H"), (0, 1.35 * r_arc), xytext=(-4, 0), textcoords="offset points", fontsize=9,
                 color=C_CARRIER if len(v.stages) == 1 else C_STAGE2[2], ha="right", va="center")
     ax.plot([0, 0], [0, ylim[1]], color="k", lw=0.8)
     ax.axhline(0, color="0.5", lw=0.7, ls=(0, (10, 3, 2, 3)))
@@ -440,9 +445,9 @@ def _velocity(ax, result, lang, ylim):
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel(pick(lang, "linear velocity (drawing units)", "линейная скорость (в масштабе)"))
     ax.set_xticks([])
-    ratios = " · ".join(f"{s.ratio:.4g}" for s in v.stages)
-    ax.set_title(pick(lang, f"Linear velocities: i = tg φ_k/tg φ_H = {ratios}; below: angular velocities",
-                      f"План линейных скоростей: i = tg φ_k/tg φ_H = {ratios}; ниже — план угловых скоростей"),
+    ratios = " · ".join(num(s.ratio, lang, sig=4) for s in v.stages)
+    ax.set_title(mt(pick(lang, f"Linear velocities: i = tg φ_k/tg φ_H = {ratios}; below: angular velocities",
+                         f"План линейных скоростей: i = tg φ_k/tg φ_H = {ratios}; ниже — план угловых скоростей")),
                  fontsize=10)
     ax.tick_params(axis="y", labelleft=False)
 
@@ -480,8 +485,9 @@ def _angular(ax, result, lang, y0: float):
     ax.plot(0, y0 - h, "ko", ms=4)
     ax.annotate("P", (0, y0 - h), xytext=(6, -4), textcoords="offset points", fontsize=10)
     ax.annotate("o", (0, y0), xytext=(-10, 6), textcoords="offset points", fontsize=10)
-    ax.annotate(pick(lang, f"angular velocities: i = ok/oh = {v.ok:.1f}/{v.oh:.2f} = {v.ratio:.4g}",
-                       f"план угловых скоростей: i = ok/oh = {v.ok:.1f}/{v.oh:.2f} = {v.ratio:.4g}"),
+    f = fmt(lang)
+    ratio = f"i = ok/oh = {f(v.ok, decimals=1)}/{f(v.oh, decimals=2)} = {f(v.ratio, sig=4)}"
+    ax.annotate(pick(lang, f"angular velocities: {ratio}", f"план угловых скоростей: {ratio}"),
                 (0, y0 - h), xytext=(0, -18), textcoords="offset points", fontsize=9.5, ha="left")
 
 
@@ -489,30 +495,35 @@ def _checks_text(ax, result, lang):
     ch = result.checks
     v = ch.velocity
     d = result.planetary
+    f = fmt(lang)
     lines = [pick(lang, "Ratio check", "Проверка передаточного отношения"), ""]
-    per = " · ".join(f"{x:.4g}" for x in ch.ratio_formula_21)
-    lines.append(pick(lang, "(2.1): i = 1 + z_c·z_n/(z_k·z_c′)", "(2.1): i = 1 + z_c·z_n/(z_k·z_c′)")
-                 + (f" = {per}" if len(ch.ratio_formula_21) > 1 else "") + f" = {ch.ratio_formula_21_total:.4f}")
+    per = " · ".join(f(x, sig=4) for x in ch.ratio_formula_21)
+    lines.append("(2.1): i = 1 + z_c·z_n/(z_k·z_c′)"
+                 + (f" = {per}" if len(ch.ratio_formula_21) > 1 else "") + f" = {f(ch.ratio_formula_21_total, decimals=4)}")
     for j, s in enumerate(v.stages, 1):
         pre = pick(lang, f"stage {j}: ", f"ступень {j}: ") if len(v.stages) > 1 else ""
-        lines.append(f"(2.3): {pre}tg φ_k/tg φ_H = tg {s.phi_k_deg:.2f}°/tg {s.phi_h_deg:.2f}° = {s.ratio:.4f}")
-    lines.append(f"(2.3): ok/oh = {v.ok:.2f}/{v.oh:.3f} = {v.ratio:.4f}")
-    lines.append(pick(lang, f"required i_pl = {result.i_planetary:.4f}, error {d.ratio_error_pct:+.2f} % "
-                            f"(±{result.tolerance_pct:g} %)",
-                      f"требуемое i_пл = {result.i_planetary:.4f}, ошибка {d.ratio_error_pct:+.2f} % "
-                      f"(±{result.tolerance_pct:g} %)"))
+        lines.append(f"(2.3): {pre}tg φ_k/tg φ_H = tg {f(s.phi_k_deg, decimals=2)}°/tg {f(s.phi_h_deg, decimals=2)}° = "
+                     f"{f(s.ratio, decimals=4)}")
+    lines.append(f"(2.3): ok/oh = {f(v.ok, decimals=2)}/{f(v.oh, decimals=3)} = {f(v.ratio, decimals=4)}")
+    err = percent(d.ratio_error_pct, lang)
+    lines.append(pick(lang, f"required i_пл = {f(result.i_planetary, decimals=4)}, error {err} "
+                            f"(±{f(result.tolerance_pct)} %)",
+                      f"требуемое i_пл = {f(result.i_planetary, decimals=4)}, ошибка {err} "
+                      f"(±{f(result.tolerance_pct)} %)"))
     lines.append(pick(lang, f"size max(z_k + 2z_c, z_n) = {d.size} modules; planets k = {d.planets}",
-                      f"габарит max(z_k + 2z_c, z_n) = {d.size} модулей; сателлитов k = {d.planets}"))
-    ax.text(0.02, 0.95, "\n".join(lines), va="top", ha="left", fontsize=10, transform=ax.transAxes,
-            family="DejaVu Sans")
+                      f"габарит max(z_k + 2z_c, z_n) = {plural(d.size, 'ru', MODULES)}; сателлитов k = {d.planets}"))
+    # one text per line: mathtext sets a line, not a paragraph
+    for i, line in enumerate(lines):
+        ax.text(0.02, 0.95 - i * 0.13, mt(line), va="top", ha="left", fontsize=10, transform=ax.transAxes,
+                weight="bold" if i == 0 else "normal")
     ax.axis("off")
 
 
 def _planetary_figure(result, lang):
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=(15, 10.5), layout="constrained")
-    gs = fig.add_gridspec(2, 2, width_ratios=[1.1, 1], height_ratios=[4.2, 1])
+    W, H = 15.0, 10.5
+    fig = new_figure(W, H)
+    gs = fig.add_gridspec(2, 2, width_ratios=[1.1, 1], height_ratios=[4.2, 1], left=0.75 / W, right=1 - 0.15 / W,
+                          bottom=0.02, top=1 - (title_height(1) + title_height(1, 10)) / H, wspace=0.04, hspace=0.1)
     ax_s = fig.add_subplot(gs[0, 0])
     ax_v = fig.add_subplot(gs[0, 1], sharey=ax_s)
     ax_t = fig.add_subplot(gs[1, :])
@@ -526,12 +537,12 @@ def _planetary_figure(result, lang):
         for ry in (st.r_a, st.r_c, st.r_b):
             ax_s.axhline(ry, color="0.75", lw=0.6, ls=":", zorder=0)
     _checks_text(ax_t, result, lang)
-    fig.suptitle(pick(lang, f"Planetary reducer: i_pl = n_d/n_cr = {result.motor_rpm}/{result.crank_rpm:g} = "
-                            f"{result.i_planetary:.4g}, realised {result.planetary.ratio:.4g} "
-                            f"({result.planetary.ratio_error_pct:+.2f} %)",
-                      f"Планетарный редуктор: i_пл = n_д/n_кр = {result.motor_rpm}/{result.crank_rpm:g} = "
-                      f"{result.i_planetary:.4g}, получено {result.planetary.ratio:.4g} "
-                      f"({result.planetary.ratio_error_pct:+.2f} %)"), fontsize=12)
+    f = fmt(lang)
+    err = percent(result.planetary.ratio_error_pct, lang)
+    suptitle(fig, mt(pick(lang, f"Planetary reducer: i_пл = n_д/n_кр = {result.motor_rpm}/{f(result.crank_rpm)} = "
+                                f"{f(result.i_planetary, sig=4)}, realised {f(result.planetary.ratio, sig=4)} ({err})",
+                          f"Планетарный редуктор: i_пл = n_д/n_кр = {result.motor_rpm}/{f(result.crank_rpm)} = "
+                          f"{f(result.i_planetary, sig=4)}, получено {f(result.planetary.ratio, sig=4)} ({err})")))
     return fig
 
 
@@ -570,7 +581,7 @@ def _assembly_stage(ax, stage, checks, lang, title):
         r_arc = max(0.55 * rk, 0.4 * rC)
         ax.add_patch(Arc((0, 0), 2 * r_arc, 2 * r_arc, theta1=90, theta2=90 + 360 / k, color="k", lw=1.2))
         mid = math.radians(90 + 180 / k)
-        ax.annotate(f"2β = {360 / k:.4g}°", (r_arc * math.cos(mid), r_arc * math.sin(mid)),
+        ax.annotate(f"2β = {num(360 / k, lang, sig=4)}°", (r_arc * math.cos(mid), r_arc * math.sin(mid)),
                     xytext=(14 * math.cos(mid), 14 * math.sin(mid)), textcoords="offset points",
                     ha="right" if math.cos(mid) < -0.2 else ("left" if math.cos(mid) > 0.2 else "center"),
                     va="bottom" if math.sin(mid) > 0.2 else ("top" if math.sin(mid) < -0.2 else "center"),
@@ -584,24 +595,22 @@ def _assembly_stage(ax, stage, checks, lang, title):
     ax.set_yticks([])
     c = checks
     if stage.z_planet2 is None:
-        asm = f"(z_k + z_n)/k = {stage.z_sun + stage.z_ring}/{k} = {(stage.z_sun + stage.z_ring) / k:.4g}"
+        asm = f"(z_k + z_n)/k = {stage.z_sun + stage.z_ring}/{k} = {num((stage.z_sun + stage.z_ring) / k, lang, sig=4)}"
     else:
-        asm = f"(z_k·z_c′ + z_c·z_n)/(k·{c.assembly_g}) = {c.assembly_t}/{k * c.assembly_g} = {c.assembly_t / (k * c.assembly_g):.4g}"
-    nb = f"sin(π/{k}) = {c.neighbour_sin:.3f} > {c.neighbour_q:.3f}"
-    ax.set_title(f"{title}\n{asm}\n{nb}", fontsize=9.5)
+        asm = f"(z_k·z_c′ + z_c·z_n)/(k·{c.assembly_g}) = {c.assembly_t}/{k * c.assembly_g} = {num(c.assembly_t / (k * c.assembly_g), lang, sig=4)}"
+    nb = f"sin(π/{k}) = {num(c.neighbour_sin, lang, decimals=3)} > {num(c.neighbour_q, lang, decimals=3)}"
+    ax.set_title(f"{title}\n{mt(asm)}\n{nb}", fontsize=9.5)
 
 
 def _assembly_figure(result, lang):
-    from matplotlib.figure import Figure
-
     d = result.planetary
     n = len(d.stages)
-    fig = Figure(figsize=(7.2 * n + 1.5, 8.4), layout="constrained")
+    fig = new_figure(7.2 * n + 1.5, 8.4)
     axes = [fig.add_subplot(1, n, j + 1) for j in range(n)]
     for j, (ax, st, ch) in enumerate(zip(axes, d.stages, result.checks.stages)):
         lab = "/".join(map(str, st.teeth))
         title = (pick(lang, f"Stage {j + 1}: ", f"Ступень {j + 1}: ") if n > 1 else "") + \
-            pick(lang, f"{lab}, k = {st.planets} planets", f"{lab}, k = {st.planets} {_satellites_ru(st.planets)}")
+            pick(lang, f"{lab}, k = {st.planets} planets", f"{lab}, k = {plural(st.planets, 'ru', SATELLITES)}")
         _assembly_stage(ax, st, ch, lang, title)
     k = d.planets
     order = pick(lang, "Assembly order: fit planet 1; turn the carrier by 2β = 360°/k (the sun turns by a whole number "
@@ -612,28 +621,35 @@ def _assembly_figure(result, lang):
     import textwrap
 
     width = int(11 * (7.2 * n + 1.5))  # characters per line that fit the figure at 10.5 pt
-    fig.suptitle(pick(lang, "Planets placed at 2β = 360°/k", "Расстановка сателлитов через 2β = 360°/k") + "\n"
-                 + "\n".join(textwrap.wrap(order, width)), fontsize=10.5)
-    if any(st.z_planet2 is not None for st in d.stages):
+    wrapped = textwrap.wrap(order, width)
+    suptitle(fig, pick(lang, "Planets placed at 2β = 360°/k", "Расстановка сателлитов через 2β = 360°/k") + "\n"
+             + "\n".join(wrapped), fontsize=10.5)
+    W, H = fig.get_size_inches()
+    double = any(st.z_planet2 is not None for st in d.stages)
+    top = title_height(1 + len(wrapped), 10.5) + title_height(3, 9.5) + 0.05
+    bottom = legend_height(3, 3, 9) if double else 0.1
+    fig.subplots_adjust(left=0.15 / W, right=1 - 0.15 / W, bottom=bottom / H, top=1 - top / H, wspace=0.08)
+    if double:
         from matplotlib.lines import Line2D
 
-        fig.legend(handles=[Line2D([], [], color=C_PLANET, label=pick(lang, "planet c (row 1, meshes the sun)",
+        handles = [Line2D([], [], color=C_PLANET, label=pick(lang, "planet c (row 1, meshes the sun)",
                                                                        "сателлит c (1-й ряд, с колесом k)")),
                             Line2D([], [], color="#8c564b", ls="--", label=pick(lang, "planet c′ (row 2, meshes the ring)",
                                                                                 "сателлит c′ (2-й ряд, с колесом n)")),
                             Line2D([], [], color="0.4", ls=":", label=pick(lang, "tip circle of the larger planet",
-                                                                            "окружность вершин большего сателлита"))],
-                   loc="outside lower center", ncol=3, fontsize=9, frameon=False)
+                                                                            "окружность вершин большего сателлита"))]
+        bottom_legend(fig, handles, [h.get_label() for h in handles], ncol=3, fontsize=9)
     return fig
 
 
-def _satellites_ru(k: int) -> str:
-    """Russian plural: 1 сателлит, 2–4 сателлита, 5+ сателлитов (11–14 too)."""
-    if k % 10 == 1 and k % 100 != 11:
-        return "сателлит"
-    if 2 <= k % 10 <= 4 and not 12 <= k % 100 <= 14:
-        return "сателлита"
-    return "сателлитов"
+SATELLITES = {"one": "сателлит", "few": "сателлита", "many": "сателлитов", "other": "сателлита"}
+MODULES = {"one": "модуль", "few": "модуля", "many": "модулей", "other": "модуля"}
+
+
+def percent(x: float, lang: str) -> str:
+    """A signed percentage, "−2,85 %"; one too small to show reads "0,00 %", never "-0.00 %"."""
+    text = num(x, lang, decimals=2, minus="−")
+    return (text if text.startswith("−") or set(text) <= set("0,.") else "+" + text) + " %"
 
 
 def gears_figures(result, lang: str, names=None) -> dict:
@@ -642,4 +658,7 @@ def gears_figures(result, lang: str, names=None) -> dict:
     `names` limits the drawing to some of them (all three by default).
     """
     makers = {"gears_planetary": _planetary_figure, "gears_assembly": _assembly_figure, "gears_mesh": _mesh_figure}
-    return {name: make(result, lang) for name, make in makers.items() if names is None or name in names}
+    figs = {name: make(result, lang) for name, make in makers.items() if names is None or name in names}
+    for fig in figs.values():
+        decimal_commas(fig, lang)
+    return figs

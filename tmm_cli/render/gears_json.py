@@ -69,14 +69,17 @@ def _pair(t, scale: float = 1.0, nd: int = 6) -> list[float]:
 
 
 def _stiffness(st, lang: str) -> dict | None:
-    """The spur pair's mesh stiffness (seed 002): beyond the course, informative; lengths in mm."""
+    from .messages_gears import MESSAGES
+
+    """The spur pair's mesh stiffness (Tarasik's paper, `tmm gears --stiffness`): beyond the course, informative; lengths in mm."""
     if st is None:
         return None
     s = st.mesh
     return {
         "informative": True,
         "beyond_course": True,
-        "method": "Tarasik (seed 002): variable-section cantilever bending + Nakhatakyan contact, c = c_b*c_H/(c_b + c_H)",
+        "method": "variable-section cantilever bending + Nakhatakyan contact, c = c_b*c_H/(c_b + c_H)",
+        "source": MESSAGES["stiffness_paper"]["ru" if lang == "ru" else "en"],
         "b_w_mm": _r(s.b_w_m * 1e3), "psi_m": st.psi_m, "load": st.load,
         "torque1_nm": _r(s.torque1_nm), "force_n": _r(s.force_n, 3), "line_load_n_per_mm": _r(s.line_load_n_per_m * 1e-3),
         "e_pa": s.e_pa, "nu": s.nu,

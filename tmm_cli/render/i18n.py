@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import locale
 import os
+import re
 
 from ..notes import Note
 
@@ -39,10 +40,43 @@ def _catalogue() -> dict[str, dict[str, str]]:
     return merged
 
 
+_NUMBER = re.compile(r"[+-]?\d+\.\d+")
+
+
+class _Number(float):
+    """A float parameter of a note that formats itself for the reader (decimal comma under ru)."""
+
+    lang = "en"
+
+    def __format__(self, spec: str) -> str:
+        text = format(float(self), spec)
+        return _reader_number(text, self.lang)
+
+
+def _reader_number(text: str, lang: str) -> str:
+    """"-0.00" → "0.00" (a value rounded to zero has no sign); "2.85" → "2,85" under ru."""
+    if re.fullmatch(r"[+-]0(\.0*)?", text):
+        text = text[1:]
+    return text.replace(".", ",") if lang == "ru" else text
+
+
+def _param(value, lang: str):
+    if isinstance(value, float) and not isinstance(value, bool):
+        num = _Number(value)
+        num.lang = lang
+        return num
+    if isinstance(value, str) and _NUMBER.fullmatch(value):
+        return _reader_number(value, lang)
+    return value
+
+
 def note_text(note: Note, lang: str) -> str:
-    """The sentence for a note, formatted with its parameters; falls back to code + params."""
+    """The sentence for a note, formatted with its parameters; falls back to code + params.
+
+    Numeric parameters read as the reader writes them: "2,85" under ru, never "-0.00".
+    """
     entry = _catalogue().get(note.code)
-    kwargs = note.kwargs
+    kwargs = {k: _param(v, lang) for k, v in note.kwargs.items()}
     if entry:
         template = entry.get(lang) or entry.get("en")
         try:

@@ -51,7 +51,7 @@ MESSAGES: dict[str, dict[str, str]] = {
         "en": "Carried: {teeth}, k = {k} — the smallest reducer (size = max(z_k + 2z_c, z_n) = {size}) with at least "
               "3 planets among {n} tooth sets within tolerance (every wheel ≤ {zmax} teeth).",
         "ru": "Принят {teeth}, k = {k} — наименьший редуктор (габарит max(z_k + 2z_c, z_n) = {size}) с не менее чем "
-              "3 сателлитами среди {n} наборов чисел зубьев в пределах допуска (все колёса ≤ {zmax} зубьев).",
+              "3 сателлитами среди наборов чисел зубьев в пределах допуска (всего их {n}; все колёса ≤ {zmax} зуб.).",
     },
     "carried_smallest_no3": {
         "en": "Carried: {teeth}, k = {k} — no tooth set within tolerance takes 3 planets, so the smallest "
@@ -77,9 +77,9 @@ MESSAGES: dict[str, dict[str, str]] = {
               "дающие его точно.",
     },
     "few_planets": {
-        "en": "Only k = {k} planet(s): fewer than 3 leaves the carrier unbalanced and loads the bearings; consider a "
+        "en": "The number of planets k = {k} is below 3: the carrier is unbalanced and loads the bearings; consider a "
               "wider tolerance or another fraction.",
-        "ru": "Всего k = {k} сателлит(а): меньше 3 — водило не уравновешено, опоры нагружены; расширьте допуск или "
+        "ru": "Число сателлитов k = {k} меньше 3: водило не уравновешено, опоры нагружены; расширьте допуск или "
               "возьмите другую дробь.",
     },
     "assembly_forms_differ": {
@@ -126,13 +126,21 @@ MESSAGES: dict[str, dict[str, str]] = {
         "en": "Required power {kw} kW is above the largest rated motor of the series ({top} kW).",
         "ru": "Потребная мощность {kw} кВт больше наибольшей в ряду ({top} кВт).",
     },
-    # mesh stiffness of the spur pair: beyond the course (seed 002, Tarasik)
+    # mesh stiffness of the spur pair (tmm gears/project --stiffness): beyond the course
+    "stiffness_paper": {
+        "en": "V. P. Tarasik, “Determining the stiffness parameters of the gear trains of mobile machines” "
+              "(Belarusian-Russian University, Mogilev; in Russian)",
+        "ru": "В. П. Тарасик, «Определение параметров жёсткости зубчатых передач трансмиссий мобильных машин» "
+              "(Белорусско-Российский университет, г. Могилёв)",
+    },
     "stiffness_scope": {
-        "en": "Mesh stiffness is beyond the course (V. P. Tarasik's method, seed 002) and only informative: each tooth "
+        "en": "Mesh stiffness is beyond the course (after V. P. Tarasik, “Determining the stiffness parameters of the "
+              "gear trains of mobile machines”) and only informative: each tooth "
               "is a cantilever of trapezoidal section (bending, eqs. (1)–(14)), the contact deformation follows "
               "Nakhatakyan's formula (16), and the turn angles add: c = c_b·c_H/(c_b + c_H) (20); stiffness reduced "
               "to the motor shaft (gear 1, the driving gear).",
-        "ru": "Жёсткость зацепления — сверх программы курса (методика В. П. Тарасика, источник 002), справочно: зуб — "
+        "ru": "Жёсткость зацепления — сверх программы курса (по статье В. П. Тарасика «Определение параметров "
+              "жёсткости зубчатых передач трансмиссий мобильных машин»), справочно: зуб — "
               "консольная балка трапецеидального сечения (изгиб, формулы (1)–(14)), контактная деформация — по "
               "формуле Нахатакяна (16), углы поворота складываются: c = c_и·c_H/(c_и + c_H) (20); жёсткость "
               "приведена к валу двигателя (колесо 1, ведущее).",

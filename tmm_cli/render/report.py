@@ -50,17 +50,16 @@ def project_document(result, lang: str) -> dict:
 
 def print_project(console, result, lang: str) -> None:
     """The terminal report in the order of the explanatory note: input, sheet 4, sheet 3, notes."""
-    from rich.rule import Rule
-
     from .cam_tables import print_cam, print_cam_input
     from .gears_tables import print_gears
+    from .table_model import Heading
 
     v = result.variant
-    console.print(Rule(pick(lang, f"TMM course project — variant {v.number}", f"Курсовой проект по ТММ — вариант {v.number}")))
+    console.print(Heading(pick(lang, f"TMM course project — variant {v.number}", f"Курсовой проект по ТММ — вариант {v.number}")))
     print_cam_input(console, result.cam, lang)
-    console.print(Rule(pick(lang, "Sheet 4 — gear drive", "Лист 4 — синтез зубчатых механизмов")))
+    console.print(Heading(pick(lang, "Sheet 4 — gear drive", "Лист 4 — синтез зубчатых механизмов")))
     print_gears(console, result.gears, lang)
-    console.print(Rule(pick(lang, "Sheet 3 — cam mechanism", "Лист 3 — синтез кулачкового механизма")))
+    console.print(Heading(pick(lang, "Sheet 3 — cam mechanism", "Лист 3 — синтез кулачкового механизма")))
     print_cam(console, result.cam, lang, include_input=False)
     print_notes(console, result.notes, lang)
 
@@ -69,16 +68,16 @@ def print_notes(console, notes, lang: str) -> None:
     """All assumptions, then all warnings, in one panel at the end of a report."""
     if not notes:
         return
-    from rich.panel import Panel
+    from .table_model import NoteBlock
 
     assumptions = [n for n in notes if n.level == "assumption"]
     warnings = [n for n in notes if n.level == "warning"]
-    lines = [f"[cyan]ℹ[/] {note_text(n, lang)}" for n in assumptions]
-    lines += [f"[bold red]✖ {note_text(n, lang)}[/]" if "_fail_" in n.code else f"[yellow]⚠[/] {note_text(n, lang)}"
-              for n in warnings]  # "_fail_": a condition the carried (student's) design breaks
+    lines = [("ℹ", note_text(n, lang)) for n in assumptions]
+    lines += [("✖" if "_fail_" in n.code else "⚠", note_text(n, lang)) for n in warnings]  # "_fail_": a condition
+    # the carried (student's) design breaks, in red
     title = pick(lang, f"Assumptions ({len(assumptions)}) and warnings ({len(warnings)})",
                  f"Допущения ({len(assumptions)}) и предупреждения ({len(warnings)})")
-    console.print(Panel("\n".join(lines), title=title, expand=False))
+    console.print(NoteBlock(title, lines))
 
 
 def terminal_text(result, lang: str, width: int = 110) -> str:
@@ -88,6 +87,27 @@ def terminal_text(result, lang: str, width: int = 110) -> str:
     console = Console(record=True, width=width, file=io.StringIO(), color_system=None, highlight=False)
     print_project(console, result, lang)
     return console.export_text()
+
+
+FIGURE_TITLES = {
+    "gears_planetary": ("Planetary reducer: scheme and velocity pictures", "Планетарный редуктор: схема и планы скоростей"),
+    "gears_assembly": ("Planets placed at 2β = 360°/k", "Расстановка сателлитов"),
+    "gears_mesh": ("Spur pair and its mesh", "Простая передача и картина зацепления"),
+    "cam_motion": ("Follower motion diagrams", "Диаграммы движения толкателя"),
+    "cam_zone": ("Zone of the cam centre", "Зона положения центра кулачка"),
+    "cam_profile": ("Cam profile", "Профиль кулачка"),
+    "cam_pressure_angle": ("Pressure angle over the cam turn", "Угол давления за оборот кулачка"),
+    "cam_profile_scaled": ("Cam profile at its standard scale", "Профиль кулачка в стандартном масштабе"),
+}
+
+
+def report_tables_markdown(result, lang: str) -> str:
+    """The terminal report's tables and notes as Markdown (same objects, no terminal layout)."""
+    from .table_model import MarkdownSink
+
+    sink = MarkdownSink()
+    print_project(sink, result, lang)
+    return "\n\n".join(p for p in sink.parts[1:] if p) + "\n"  # [0] repeats the report's title
 
 
 def markdown_report(result, lang: str, figure_files: list[str]) -> str:
@@ -126,7 +146,7 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     Returns (the JSON document, the sorted list of file names written).
     """
     from .cam_json import profile_csv
-    from .files import save_figures, staged_dir, write_json, write_text
+    from .files import save_figures, staged_dir, staged_names, write_json, write_text
 
     doc = project_document(result, lang)
     # the project owns its folder: nothing of an earlier run (other options) stays beside it
@@ -148,8 +168,14 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
                 for name, data in cached.items():
                     (tmp / f"{name}.{fmt}").write_bytes(data)
             names = [n for n in ("gears_planetary", "gears_assembly", "gears_mesh") if n not in cached]
-            figures = {**gears_figures(result.gears, lang, names=names), **cam_figures(result.cam, lang)}
-            save_figures(tmp, figures, fmt)
+            if figure_cache is None and report != "pdf":  # one project: sheet 4 and sheet 3 drawn side by side
+                from .figure_kit import save_side_by_side
+
+                figures = save_side_by_side(tmp, fmt, lambda: gears_figures(result.gears, lang, names=names),
+                                            lambda: cam_figures(result.cam, lang), save_figures)
+            else:
+                figures = {**gears_figures(result.gears, lang, names=names), **cam_figures(result.cam, lang)}
+                save_figures(tmp, figures, fmt)
             files = [f"{n}.{fmt}" for n in (*REDUCER_FIGURES, "gears_mesh") if n in cached or n in figures]
             files += [f"{n}.{fmt}" for n in figures if n.startswith("cam_")]
         # --- the report: Markdown or the typeset note (issue 11) ------------------------------------
@@ -164,7 +190,7 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
 
             write_sheets(tmp, result, lang, title)
         # ----------------------------------------------------------------------------------------
-        written = sorted(p.name for p in tmp.iterdir())
+        written = staged_names(tmp)
     if note_error is not None:
         raise note_error
     return doc, written

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from ..variants import Variant
 from .i18n import pick
+from .numbers import num
 
 SCHEME_WORDS = {
     1: ("translating roller follower, force closure (spring)", "поступательный роликовый толкатель, силовое замыкание (пружина)"),
@@ -33,8 +34,13 @@ def rotation_words(v: Variant, lang: str) -> str:
     return pick(lang, "clockwise (n_k < 0)", "по часовой стрелке (n_k < 0)")
 
 
-def stroke_text(v: Variant) -> str:
-    return f"{v.stroke:g}°" if v.is_rocker else f"{v.stroke:g} m"
+def stroke_text(v: Variant, lang: str = "en") -> str:
+    return f"{_g(v.stroke, lang)}°" if v.is_rocker else f"{_g(v.stroke, lang)} " + pick(lang, "m", "м")
+
+
+def _g(x, lang: str) -> str:
+    """A table value as the book prints it (up to 6 significant digits), decimal comma under ru."""
+    return num(x, lang, sig=6, sci=False)
 
 
 def print_variant_table(console, table: dict[int, Variant], lang: str) -> None:
@@ -44,10 +50,10 @@ def print_variant_table(console, table: dict[int, Variant], lang: str) -> None:
     for head in (
         pick(lang, "No.", "№ вар."),
         pick(lang, "Scheme", "№ сх."),
-        "l_BC, m",
+        pick(lang, "l_BC, m", "l_BC, м"),
         "ν_max, °",
-        "n_k, rpm" if lang != "ru" else "n_k, об/мин",
-        "S_max, m / γ_max, °",
+        pick(lang, "n_k, rpm", "n_k, об/мин"),
+        pick(lang, "S_max, m / γ_max, °", "S_max, м / γ_max, °"),
         pick(lang, "Law", "№ зак."),
         "φ_у, °",
         "φ_дс, °",
@@ -58,9 +64,9 @@ def print_variant_table(console, table: dict[int, Variant], lang: str) -> None:
     for n in sorted(table):
         v = table[n]
         t.add_row(
-            str(n), str(v.scheme), "—" if v.l_bc_m is None else f"{v.l_bc_m:g}", f"{v.nu_max_deg:g}",
-            f"{v.n_cam_rpm:g}", stroke_text(v), str(v.law), f"{v.phi_rise_deg:g}",
-            f"{v.phi_far_dwell_deg:g}", f"{v.phi_return_deg:g}", f"{v.phi_near_dwell_deg:g}",
+            str(n), str(v.scheme), "—" if v.l_bc_m is None else _g(v.l_bc_m, lang), _g(v.nu_max_deg, lang),
+            _g(v.n_cam_rpm, lang), stroke_text(v, lang), str(v.law), _g(v.phi_rise_deg, lang),
+            _g(v.phi_far_dwell_deg, lang), _g(v.phi_return_deg, lang), _g(v.phi_near_dwell_deg, lang),
         )
     console.print(t)
     console.print(pick(
@@ -79,17 +85,17 @@ def print_variant_detail(console, v: Variant, lang: str) -> None:
     t.add_column(pick(lang, "Meaning", "Смысл"))
     t.add_row(pick(lang, "Scheme", "№ схемы"), str(v.scheme), scheme_words(v.scheme, lang))
     if v.is_rocker:
-        t.add_row("l_BC", f"{v.l_bc_m:g} m", pick(lang, "rocker length", "длина коромысла"))
-        t.add_row("γ_max", f"{v.stroke:g}°", pick(lang, "rocker swing", "максимальный угол поворота коромысла"))
+        t.add_row("l_BC", f"{_g(v.l_bc_m, lang)} " + pick(lang, "m", "м"), pick(lang, "rocker length", "длина коромысла"))
+        t.add_row("γ_max", f"{_g(v.stroke, lang)}°", pick(lang, "rocker swing", "максимальный угол поворота коромысла"))
     else:
-        t.add_row("S_max", f"{v.stroke:g} m", pick(lang, "follower stroke", "максимальное перемещение толкателя"))
-    t.add_row("ν_max", f"{v.nu_max_deg:g}°", pick(lang, "maximum allowed pressure angle", "максимально допустимый угол давления"))
-    t.add_row("n_k", f"{v.n_cam_rpm:g} " + pick(lang, "rpm", "об/мин"), rotation_words(v, lang))
-    t.add_row("ω_k", f"{v.omega_cam:.3f} " + pick(lang, "rad/s", "рад/с"), "ω_k = π·|n_k|/30 (1.5)")
+        t.add_row("S_max", f"{_g(v.stroke, lang)} " + pick(lang, "m", "м"), pick(lang, "follower stroke", "максимальное перемещение толкателя"))
+    t.add_row("ν_max", f"{_g(v.nu_max_deg, lang)}°", pick(lang, "maximum allowed pressure angle", "максимально допустимый угол давления"))
+    t.add_row("n_k", f"{_g(v.n_cam_rpm, lang)} " + pick(lang, "rpm", "об/мин"), rotation_words(v, lang))
+    t.add_row("ω_k", f"{num(v.omega_cam, lang, decimals=3)} " + pick(lang, "rad/s", "рад/с"), "ω_k = π·|n_k|/30 (1.5)")
     t.add_row(pick(lang, "Law", "№ закона"), str(v.law), law_words(v.law, lang))
-    t.add_row("φ_у", f"{v.phi_rise_deg:g}°", pick(lang, "rise", "фазовый угол удаления"))
-    t.add_row("φ_дс", f"{v.phi_far_dwell_deg:g}°", pick(lang, "far dwell", "фазовый угол дальнего стояния"))
-    t.add_row("φ_в", f"{v.phi_return_deg:g}°", pick(lang, "return", "фазовый угол возвращения"))
-    t.add_row("φ_бс", f"{v.phi_near_dwell_deg:g}°", pick(lang, "near dwell = 360° − (φ_у + φ_дс + φ_в)", "ближнее стояние = 360° − (φ_у + φ_дс + φ_в)"))
-    t.add_row("φ_р", f"{v.phi_working_deg:g}°", pick(lang, "working angle (1.3)", "рабочий угол (1.3)"))
+    t.add_row("φ_у", f"{_g(v.phi_rise_deg, lang)}°", pick(lang, "rise", "фазовый угол удаления"))
+    t.add_row("φ_дс", f"{_g(v.phi_far_dwell_deg, lang)}°", pick(lang, "far dwell", "фазовый угол дальнего стояния"))
+    t.add_row("φ_в", f"{_g(v.phi_return_deg, lang)}°", pick(lang, "return", "фазовый угол возвращения"))
+    t.add_row("φ_бс", f"{_g(v.phi_near_dwell_deg, lang)}°", pick(lang, "near dwell = 360° − (φ_у + φ_дс + φ_в)", "ближнее стояние = 360° − (φ_у + φ_дс + φ_в)"))
+    t.add_row("φ_р", f"{_g(v.phi_working_deg, lang)}°", pick(lang, "working angle (1.3)", "рабочий угол (1.3)"))
     console.print(t)

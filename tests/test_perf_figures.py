@@ -1,0 +1,140 @@
+"""What keeps the figures and the JSON path cheap, checked without timing anything (timings live in
+bench/bench.py): fixed layouts (one draw per save), PNG at zlib level 1, the two sheets drawn side
+by side with the same files as one after the other, and `project --json --no-plots` neither lays out
+terminal tables nor imports matplotlib."""
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from matplotlib.figure import Figure
+
+from tmm_cli.gears.design import design_gears
+from tmm_cli.project import run_project
+from tmm_cli.render import figure_kit
+from tmm_cli.render.cam_figures import cam_figures
+from tmm_cli.render.files import save_figures
+from tmm_cli.render.gears_figures import gears_figures
+from tmm_cli.variants import get_variant
+
+
+@pytest.fixture(scope="module")
+def project17():
+    return run_project(get_variant("17", None))
+
+
+def test_every_figure_has_a_fixed_layout_and_is_drawn_once_per_save(project17, tmp_path, monkeypatch):
+    figs = {**gears_figures(project17.gears, "ru"), **cam_figures(project17.cam, "ru")}
+    assert len(figs) == 8
+    draws = []
+    original = Figure.draw
+    monkeypatch.setattr(Figure, "draw", lambda self, renderer: (draws.append(self), original(self, renderer))[1])
+    for name, fig in figs.items():
+        assert fig.get_layout_engine() is None, name
+        draws.clear()
+        fig.savefig(tmp_path / f"{name}.png", format="png", dpi=40)
+        assert draws == [fig], name  # the constrained layout drew every figure twice
+
+
+def test_png_is_encoded_at_zlib_level_1(tmp_path, monkeypatch):
+    seen = {}
+    original = Figure.savefig
+
+    def spy(self, fname, *args, **kwargs):
+        seen.update(kwargs.get("pil_kwargs") or {})
+        return original(self, fname, *args, **kwargs)
+
+    monkeypatch.setattr(Figure, "savefig", spy)
+    fig = figure_kit.new_figure(2, 2)
+    fig.savefig(tmp_path / "a.png", dpi=20)
+    assert seen == {"compress_level": 1}
+    assert (tmp_path / "a.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    seen.clear()
+    fig.savefig(tmp_path / "a.svg", format="svg")
+    assert seen == {}
+
+
+def _tiny(names):
+    def make():
+        out = {}
+        for n in names:
+            f = figure_kit.new_figure(1, 1)
+            f.text(0.5, 0.5, n)
+            out[n] = f
+        return out
+    return make
+
+
+def _save(folder, figs, fmt):
+    save_figures(folder, figs, fmt, dpi=20)
+
+
+def test_side_by_side_writes_what_serial_writes(tmp_path):
+    a, b = tmp_path / "a", tmp_path / "b"
+    a.mkdir()
+    b.mkdir()
+    got = figure_kit.save_side_by_side(a, "png", _tiny(["g1", "g2"]), _tiny(["c1"]), _save)
+    assert list(got) == ["g1", "g2", "c1"]
+    _save(b, {**_tiny(["g1", "g2"])(), **_tiny(["c1"])()}, "png")
+    assert sorted(p.name for p in a.iterdir()) == sorted(p.name for p in b.iterdir()) == ["c1.png", "g1.png", "g2.png"]
+
+
+def test_side_by_side_redraws_here_what_the_child_failed_to_draw(tmp_path):
+    parent = os.getpid()
+
+    def first():
+        if os.getpid() != parent:
+            raise RuntimeError("the child fails")
+        return _tiny(["g1"])()
+
+    got = figure_kit.save_side_by_side(tmp_path, "png", first, _tiny(["c1"]), _save)
+    assert set(got) == {"g1", "c1"} and got["g1"] is not None
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["c1.png", "g1.png"]
+
+
+def test_json_path_lays_out_no_table_and_imports_no_matplotlib(tmp_path):
+    code = (
+        "import sys\n"
+        "from tmm_cli.cli import main\n"
+        "try:\n"
+        f"    main(['project', '--variant', '17', '--json', '--no-plots', '--out', {str(tmp_path)!r}])\n"
+        "except SystemExit:\n"
+        "    pass\n"
+        "sys.stderr.write(repr(sorted(m for m in ('rich.table', 'rich.console', 'matplotlib') if m in sys.modules)))\n"
+    )
+    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert json.loads(res.stdout)["variant"] == 17
+    assert res.stderr.strip() == "[]"
+    report = (tmp_path / "variant-17" / "report.md").read_text(encoding="utf-8")
+    assert "| Quantity | Value |" in report or "| Величина | Значение |" in report  # Markdown tables
+
+
+def test_project_folder_has_every_figure_once(tmp_path):
+    from click.testing import CliRunner
+
+    from tmm_cli.cli import cli
+
+    res = CliRunner().invoke(cli, ["project", "--variant", "17", "--out", str(tmp_path), "--lang", "ru"])
+    assert res.exit_code == 0, res.output
+    folder = tmp_path / "variant-17"
+    names = sorted(p.name for p in folder.iterdir())
+    pngs = [n for n in names if n.endswith(".png")]
+    assert len(pngs) == 8 and not [n for n in names if n.startswith(".")]
+    report = (folder / "report.md").read_text(encoding="utf-8")
+    assert all(f"({n})" in report for n in pngs)
+    assert report.index("gears_planetary.png") < report.index("cam_motion.png")
+
+
+def test_opaque_figures_go_to_png_as_rgb_transparent_ones_keep_alpha(tmp_path):
+    from PIL import Image
+
+    fig = figure_kit.new_figure(1, 1)
+    fig.add_subplot().plot([0, 1])
+    fig.savefig(tmp_path / "opaque.png", dpi=30)
+    fig.savefig(tmp_path / "clear.png", dpi=30, transparent=True)
+    opaque = Image.open(tmp_path / "opaque.png")
+    assert opaque.mode == "RGB" and opaque.size == (30, 30) and "Matplotlib" in opaque.info["Software"]
+    assert Image.open(tmp_path / "clear.png").mode == "RGBA"

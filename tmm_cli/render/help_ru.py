@@ -1,0 +1,338 @@
+"""Russian texts of the command line: `--help` of every command and option, click's own messages
+and our error messages. The English texts stay in the click decorators and the code; this is the
+one catalogue that maps them to Russian.
+
+To translate a new option, add one line to OPTIONS: its English help → its Russian help
+(tests/test_i18n_cli.py fails for an option whose help has no entry here).
+Imported only under ``--lang ru`` / a Russian locale, so ``tmm --help`` in English pays nothing.
+"""
+
+from __future__ import annotations
+
+import re
+from contextlib import contextmanager
+
+# English help of an option → Russian help ------------------------------------------------------
+OPTIONS: dict[str, str] = {
+    "Show the version and exit.": "Показать версию и выйти.",
+    "Show this message and exit.": "Показать эту справку и выйти.",
+    "Use your own table in the format of variants/table_1_2.csv.":
+        "Взять свою таблицу заданий в формате variants/table_1_2.csv.",
+    "Output language (default: from the locale).": "Язык вывода (по умолчанию — по локали системы).",
+    "Variant number from Table 1.2 (1–68).": "Номер варианта по табл. 1.2 (1–68).",
+    "Output folder (default ./tmm-out); files go to DIR/variant-NN/.":
+        "Папка результатов (по умолчанию ./tmm-out); файлы пишутся в DIR/variant-NN/.",
+    "Figure file format.": "Формат файлов рисунков.",
+    "Do not draw figures (faster).": "Не строить рисунки (быстрее).",
+    "Print only JSON on stdout.": "Вывести только JSON в стандартный вывод.",
+    "Cam angle step of the printed tables [deg].": "Шаг угла поворота кулачка в таблицах [град].",
+    'Student\'s name for the title block and the note, e.g. "Иванов И. И." (or in tmm.toml).':
+        'Фамилия и инициалы студента для основной надписи и записки, например "Иванов И. И." (или в tmm.toml).',
+    "Student's group (or in tmm.toml).": "Группа студента (или в tmm.toml).",
+    "Teacher's name (or in tmm.toml).": "Фамилия и инициалы преподавателя (или в tmm.toml).",
+    "University and department (or in tmm.toml).": "Вуз и кафедра (или в tmm.toml).",
+    "Drawing designation (default: built from the sheet and variant numbers).":
+        "Обозначение чертежа (по умолчанию — из номеров листа и варианта).",
+    "Crank speed of the linkage n_кр [rpm] (default: the book's 220 rpm, stated in the output).":
+        "Частота вращения кривошипа рычажного механизма n_кр [об/мин] (по умолчанию 220 об/мин, как в "
+        "пособии; об этом сказано в выводе).",
+    "Mean reduced moment M from sheet 2 [N·m], for the motor power (§2.6).":
+        "Средний приведённый момент M с 2-го листа [Н·м] — для мощности двигателя (п. 2.6).",
+    "Force the planetary ratio fraction of the book's procedure, e.g. 13/4.":
+        "Задать дробь передаточного отношения редуктора для методики пособия, например 13/4.",
+    "Allowed planetary ratio error [%].": "Допустимая погрешность передаточного отношения редуктора [%].",
+    "Force the number of planets.": "Задать число сателлитов.",
+    "Also compute the spur pair's mesh stiffness (beyond the course, informative; V. P. Tarasik's method).":
+        "Рассчитать также жёсткость зацепления простой передачи (сверх программы курса, справочно; методика "
+        "В. П. Тарасика).",
+    "Report format written beside the figures.": "Формат отчёта, записываемого рядом с рисунками.",
+    "Variants, e.g. 1-68 or 3,17,40.": "Варианты, например 1-68 или 3,17,40.",
+    "CSV with columns student,variant[,crank_rpm][,torque].":
+        "CSV со столбцами student,variant[,crank_rpm][,torque] (или студент,вариант,…).",
+    "Parallel worker processes (default: number of cores).":
+        "Число параллельных процессов (по умолчанию — по числу ядер).",
+    "Per-variant report format.": "Формат отчёта для каждого варианта.",
+    "Variant number (one student).": "Номер варианта (один студент).",
+    "The student's numbers (TOML or CSV, keys in `tmm check --keys`).":
+        "Результаты студента (TOML или CSV, ключи — в `tmm check --keys`).",
+    "Class roster CSV (student,variant[,crank_rpm][,torque]).":
+        "Список группы, CSV (student,variant[,crank_rpm][,torque]).",
+    "Folder with one answers file per student (STUDENT.toml or STUDENT.csv).":
+        "Папка с файлом результатов каждого студента (СТУДЕНТ.toml или СТУДЕНТ.csv).",
+    "Tolerance for graphical quantities [%].": "Допуск для графически определяемых величин [%].",
+    "List the answer keys and exit.": "Показать ключи результатов и выйти.",
+}
+
+# command path → Russian help (the English one is the command's docstring) -----------------------
+COMMANDS: dict[str, str] = {
+    "tmm": "tmm — расчётная часть курсового проекта по ТММ (Пожбелко и др., 2003, ч. 2).\n\n"
+           "Лист 3: синтез кулачкового механизма (`tmm cam`). Лист 4: синтез зубчатых механизмов (`tmm gears`). "
+           "Оба листа сразу, с отчётом: `tmm project --variant 17`. Преподавателю: `tmm batch`, `tmm check`.",
+    "tmm variants": "Таблица 1.2 (68 вариантов 3-го листа); `tmm variants show N` поясняет одну строку.",
+    "tmm variants show": "Показать один вариант с пояснением каждого поля.",
+    "tmm cam": "Лист 3: диаграммы движения толкателя, основные размеры, профиль кулачка, угол давления.",
+    "tmm gears": "Лист 4: двигатель, разбивка передаточного отношения, синтез планетарного редуктора, простая "
+                 "передача к кулачку.",
+    "tmm project": "Весь проект для одного варианта: лист 4, затем лист 3, рисунки, results.json и отчёт.",
+    "tmm batch": "Преподавателю: расчёт многих вариантов или списка группы параллельно, со сводкой summary.csv.",
+    "tmm check": "Преподавателю: проверка результатов студента по расчётным значениям.",
+    "tmm linkage": "Лист 1: кулисный механизм — положения, скорости, ускорения (в разработке).",
+    "tmm planetary": "Планетарный механизм со смещёнными колёсами и разными углами зацепления (в разработке).",
+}
+
+# click's own messages (msgid → Russian); plural ones as (one, few, many) --------------------------
+CLICK: dict[str, str] = {
+    "Usage:": "Использование:",
+    "Options": "Параметры",
+    "Commands": "Команды",
+    "Positional arguments": "Позиционные аргументы",
+    "Show this message and exit.": "Показать эту справку и выйти.",
+    "Show the version and exit.": "Показать версию и выйти.",
+    "%(prog)s, version %(version)s": "%(prog)s, версия %(version)s",
+    "default: {default}": "по умолчанию: {default}",
+    "required": "обязательно",
+    "(dynamic)": "(вычисляется)",
+    "env var: {var}": "переменная окружения: {var}",
+    "deprecated": "устарело",
+    "Aborted!": "Прервано.",
+    "Missing command.": "Не указана команда.",
+    "Missing argument": "Не задан аргумент",
+    "Missing option": "Не задан параметр",
+    "Missing parameter": "Не задан параметр",
+    "Missing {param_type}": "Не задан {param_type}",
+    "Missing parameter: {param_name}": "Не задан параметр: {param_name}",
+    "argument": "аргумент",
+    "option": "параметр",
+    "parameter": "параметр",
+    "Invalid value for {param_hint}: {message}": "Недопустимое значение {param_hint}: {message}",
+    "Invalid value: {message}": "Недопустимое значение: {message}",
+    "No such option: {name}": "Нет такого параметра: {name}",
+    "No such option {name!r}.": "Нет такого параметра {name!r}.",
+    "No such command {name!r}.": "Нет такой команды {name!r}.",
+    "Option {name!r} does not take a value.": "Параметр {name!r} не принимает значения.",
+    "Argument {name!r} takes {nargs} values.": "Аргумент {name!r} принимает {nargs} значения.",
+    "Error: {message}": "Ошибка: {message}",
+    "Try '{command} {option}' for help.": "Справка: '{command} {option}'.",
+    "{value!r} is not a valid {number_type}.": "{value!r} — не число.",
+    "{value} is not in the range {range}.": "{value} вне диапазона {range}.",
+    "{name} {filename!r} does not exist.": "{name} {filename!r} не существует.",
+    "{name} {filename!r} is a directory.": "{name} {filename!r} — это папка.",
+    "{name} {filename!r} is a file.": "{name} {filename!r} — это файл.",
+    "{name} {filename!r} is not readable.": "{name} {filename!r} недоступен для чтения.",
+    "{name} {filename!r} is not writable.": "{name} {filename!r} недоступен для записи.",
+    "file": "Файл",
+    "directory": "Папка",
+    "path": "Путь",
+    "Could not open file {filename!r}: {message}": "Не удалось открыть файл {filename!r}: {message}",
+    "Value must be an iterable.": "Значение должно быть списком.",
+}
+CLICK_PLURAL: dict[str, tuple[str, str]] = {
+    "Got unexpected extra argument ({args})": ("Лишний аргумент ({args})", "Лишние аргументы ({args})"),
+    "Option {name!r} requires an argument.": ("Параметру {name!r} нужно значение.",
+                                              "Параметру {name!r} нужно {nargs} значения."),
+    "{value!r} is not {choice}.": ("{value!r}: можно только {choice}.", "{value!r} не из списка: {choices}."),
+    "Did you mean {possibility}?": ("Может быть, {possibility}?", "(Может быть, одно из: {possibilities}?)"),
+    "Takes {nargs} values but 1 was given.": ("Нужно {nargs} значения, задано 1.",
+                                              "Нужно {nargs} значения, задано {len}."),
+}
+
+# our own errors: English pattern → Russian template ----------------------------------------------
+ERRORS: list[tuple[str, str]] = [
+    (r"variant '(?P<v>.*)' is not a number; give a variant number such as 17",
+     "вариант '{v}' — не число; укажите номер варианта, например 17"),
+    (r"variant (?P<n>\d+) is not in the table; choose a variant from (?P<lo>\d+) to (?P<hi>\d+)",
+     "варианта {n} нет в таблице; выберите вариант от {lo} до {hi}"),
+    (r"variants file (?P<p>.*) does not exist; check the path", "файл заданий {p} не существует; проверьте путь"),
+    (r"variants file (?P<p>.*) cannot be read \((?P<why>.*)\); check the file",
+     "файл заданий {p} не читается ({why}); проверьте файл"),
+    (r"crank speed must be a positive number of rpm, got (?P<x>.*); give the crank speed of your linkage "
+     r"\(sheet 1\), e\.g\. --crank-rpm 220",
+     "частота вращения кривошипа должна быть положительной, задано {x}; укажите частоту кривошипа вашего "
+     "рычажного механизма (лист 1), например --crank-rpm 220"),
+    (r"crank speed (?P<x>.*) rpm is too high: no standard motor \(720, 920, 1420, 2880 rpm\) has n_d ≥ 3·n_cr = "
+     r"(?P<y>.*) rpm; use a crank speed of at most 960 rpm",
+     "частота кривошипа {x} об/мин слишком велика: ни один стандартный двигатель (720, 920, 1420, 2880 об/мин) "
+     "не даёт n_д ≥ 3·n_кр = {y} об/мин; задайте не более 960 об/мин"),
+    (r"mean reduced moment must be a non-negative number of N·m, got (?P<x>.*); give M from sheet 2, e\.g\. "
+     r"--torque 100",
+     "приведённый момент должен быть неотрицательным числом Н·м, задано {x}; возьмите M со 2-го листа, "
+     "например --torque 100"),
+    (r"ratio tolerance must be a non-negative percentage, got (?P<x>.*); the book uses 5, e\.g\. --tolerance 5",
+     "допуск передаточного отношения должен быть неотрицательным, задано {x}; в пособии 5 %, например "
+     "--tolerance 5"),
+    (r"number of planets must be a whole number ≥ 1, got (?P<x>.*); e\.g\. --planets 3",
+     "число сателлитов должно быть целым ≥ 1, задано {x}; например --planets 3"),
+    (r"cannot read the ratio (?P<x>.*): write it as a fraction of two positive whole numbers, e\.g\. --ratio 13/4",
+     "не удалось прочитать дробь {x}: запишите её как дробь двух целых положительных чисел, например "
+     "--ratio 13/4"),
+    (r"the ratio (?P<x>.*) has a zero in it: write it as a fraction of two positive whole numbers, e\.g\. "
+     r"--ratio 13/4",
+     "в дроби {x} есть ноль: запишите её как дробь двух целых положительных чисел, например --ratio 13/4"),
+    (r"the forced ratio (?P<f>\S+) must be greater than 1 for a reducer, e\.g\. --ratio 13/4",
+     "заданная дробь {f} должна быть больше 1 (редуктор), например --ratio 13/4"),
+    (r"the forced ratio (?P<f>\S+) = (?P<x>\S+) is (?P<e>\S+) % off the required i_pl = n_d/n_cr = (?P<r>\S+) = "
+     r"(?P<i>\S+), outside ±(?P<t>\S+) %; use a fraction near it \(e\.g\. (?P<near>.*)\) or widen --tolerance",
+     "заданная дробь {f} = {x} отличается от требуемого i_пл = n_д/n_кр = {r} = {i} на {e} %, это вне ±{t} %; "
+     "возьмите близкую дробь (например {near}) или увеличьте --tolerance"),
+    (r"table step '(?P<x>.*)' is not a number; give degrees, e\.g\. 10",
+     "шаг таблицы '{x}' — не число; задайте его в градусах, например 10"),
+    (r"table step (?P<x>.*)° is out of range; give a step above 0 and at most 30 degrees \(the book uses 10\)",
+     "шаг таблицы {x}° вне допустимого диапазона; задайте шаг больше 0 и не более 30° (в пособии 10°)"),
+    (r"cannot write to output folder (?P<p>.*) \((?P<why>.*)\); choose a writable folder with --out",
+     "нельзя записать в папку {p} ({why}); укажите доступную для записи папку в --out"),
+    (r"cannot write into (?P<p>.*) \((?P<why>.*)\); choose a writable folder with --out",
+     "нельзя записать в {p} ({why}); укажите доступную для записи папку в --out"),
+    (r"give exactly one of --variants \(e\.g\. 1-68\) or --roster FILE",
+     "задайте что-то одно: --variants (например 1-68) или --roster ФАЙЛ"),
+    (r"--jobs is (?P<x>.*); give 1 or more worker processes", "--jobs = {x}; задайте 1 или больше процессов"),
+    (r"--rtol is (?P<x>.*); give a positive tolerance in percent", "--rtol = {x}; задайте положительный допуск в процентах"),
+    (r"group check needs both --roster FILE and --answers-dir DIR",
+     "для проверки группы нужны оба параметра: --roster ФАЙЛ и --answers-dir ПАПКА"),
+    (r"give --variant N and --answers FILE \(or --roster FILE with --answers-dir DIR\)",
+     "задайте --variant N и --answers ФАЙЛ (или --roster ФАЙЛ и --answers-dir ПАПКА)"),
+    (r"--variants range '(?P<p>.*)' runs backwards; write it as (?P<q>.*)",
+     "диапазон --variants '{p}' записан в обратном порядке; запишите {q}"),
+    (r"--variants '(?P<s>.*)' is not a list like 1-68 or 3,17,40; fix '(?P<p>.*)'",
+     "--variants '{s}' — не список вида 1-68 или 3,17,40; исправьте '{p}'"),
+    (r"roster (?P<p>.*) cannot be read \((?P<why>.*)\); check the path",
+     "список группы {p} не читается ({why}); проверьте путь"),
+    (r"answers file (?P<p>.*) cannot be read \((?P<why>.*)\); check the path",
+     "файл результатов {p} не читается ({why}); проверьте путь"),
+    (r"answers folder (?P<d>.*) does not exist; give the folder with one file per student",
+     "папки результатов {d} нет; укажите папку с файлом каждого студента"),
+    (r"no answers file (?P<s>.*)\.toml or \.csv in (?P<d>.*)", "в {d} нет файла результатов {s}.toml или .csv"),
+    (r"the answers file has no values; write lines like r0_mm = 41\.2 \(see `tmm check --keys`\)",
+     "в файле результатов нет значений; запишите строки вида r0_mm = 41.2 (см. `tmm check --keys`)"),
+    (r"tmm (?P<c>linkage|planetary) is not built yet", "команда tmm {c} ещё не готова"),
+    (r"no cam centre keeps the pressure angle within (?P<x>\S+)°; allow a larger nu_max or a longer phase",
+     "ни одно положение центра кулачка не удерживает угол давления в пределах {x}°; увеличьте ν_max или фазу"),
+    (r"(?P<p>.*) is not valid TOML \((?P<why>.*)\); write lines like student = \"Иванов И\. И\.\"",
+     "{p} — не TOML ({why}); пишите строки вида student = \"Иванов И. И.\""),
+    (r"(?P<p>.*) is not UTF-8 text; save it as UTF-8", "{p} — не текст в UTF-8; сохраните его в UTF-8"),
+    (r"cam speed must be a non-zero number of rpm, got (?P<x>.*); take n_k from Table 1\.2",
+     "частота вращения кулачка должна быть ненулевой, задано {x}; возьмите n_k из табл. 1.2"),
+    (r"(?P<w>.*): field '(?P<f>.*)' is '(?P<r>.*)', not a number; fix the table",
+     "{w}: поле '{f}' = '{r}' — не число; исправьте таблицу"),
+    (r"(?P<w>.*): field '(?P<f>.*)' is empty; fill it in", "{w}: поле '{f}' пустое; заполните его"),
+    (r"(?P<w>.*): field '(?P<f>.*)' is '(?P<r>.*)'; it must be a whole number",
+     "{w}: поле '{f}' = '{r}'; нужно целое число"),
+    (r"(?P<s>.*): missing column\(s\) (?P<m>.*); the header must be (?P<h>.*)",
+     "{s}: нет столбцов {m}; заголовок должен быть {h}"),
+    (r"(?P<s>.*): no variants in the table; add rows under the header",
+     "{s}: в таблице нет вариантов; добавьте строки под заголовком"),
+    (r"(?P<s>.*) line (?P<n>\d+): variant (?P<v>\d+) appears twice; keep one row",
+     "{s}, строка {n}: вариант {v} встречается дважды; оставьте одну строку"),
+    (r"(?P<w>.*): the phase angles sum to (?P<t>.*) deg, over 360; shorten the rise, dwell or return",
+     "{w}: сумма фазовых углов {t}° больше 360°; сократите удаление, стояние или возвращение"),
+    (r"(?P<p>.*) is not valid TOML \((?P<why>.*)\); write lines like r0_mm = 41\.2, with a dot for decimals",
+     "{p} — не TOML ({why}); пишите строки вида r0_mm = 41.2, с точкой в дробных числах"),
+    (r"(?P<w>.*): '(?P<r>.*)' is not a number; write a plain number", "{w}: '{r}' — не число; запишите обычное число"),
+    (r"(?P<w>.*): '(?P<r>.*)' is not a number", "{w}: '{r}' — не число"),
+    (r"roster (?P<p>.*) has no column\(s\) (?P<m>.*); the header must be student,variant\[,crank_rpm\]\[,torque\]",
+     "в списке группы {p} нет столбцов {m}; заголовок: student,variant[,crank_rpm][,torque]"),
+    (r"(?P<s>.*): '(?P<n>.*)' is (?P<k>\d+) characters long; shorten it to (?P<m>\d+) or fewer",
+     "{s}: '{n}' длиной {k} символов; сократите до {m}"),
+    (r"(?P<p>.*): unknown key\(s\) (?P<u>.*); known keys: (?P<k>.*)", "{p}: неизвестные ключи {u}; допустимые: {k}"),
+    (r"cannot read (?P<p>.*) \((?P<why>.*)\)", "не удалось прочитать {p} ({why})"),
+]
+_ERRORS = [(re.compile(p + r"\Z", re.S), t) for p, t in ERRORS]
+
+METAVARS = {"[OPTIONS]": "[ПАРАМЕТРЫ]", "COMMAND [ARGS]...": "КОМАНДА [АРГУМЕНТЫ]...",
+            "[COMMAND] [ARGS]...": "[КОМАНДА] [АРГУМЕНТЫ]...",
+            "COMMAND1 [ARGS]... [COMMAND2 [ARGS]...]...": "КОМАНДА1 [АРГУМЕНТЫ]... [КОМАНДА2 [АРГУМЕНТЫ]...]..."}
+WORDS = {"error": "ошибка", "internal error": "внутренняя ошибка", "aborted": "прервано",
+         "interrupted": "прервано пользователем", "run with TMM_DEBUG=1 for details": "подробности: TMM_DEBUG=1"}
+
+
+def translate_error(message: str) -> str:
+    """Our English error sentence in Russian, if the catalogue knows it (else unchanged).
+
+    >>> translate_error("variant 99 is not in the table; choose a variant from 1 to 68")
+    'варианта 99 нет в таблице; выберите вариант от 1 до 68'
+    """
+    text = " ".join(str(message).split())
+    for pattern, template in _ERRORS:
+        m = pattern.match(text)
+        if m:  # "table.csv line 3" inside a quoted place → "table.csv, строка 3"
+            parts = {k: re.sub(r"(\S) line (\d+)", r"\1, строка \2", v or "") for k, v in m.groupdict().items()}
+            return template.format(**parts)
+    return text
+
+
+def _gettext(message: str) -> str:
+    return CLICK.get(message, message)
+
+
+def _ngettext(singular: str, plural: str, n: int) -> str:
+    forms = CLICK_PLURAL.get(singular)
+    if forms is None:
+        return singular if n == 1 else plural
+    return forms[0] if n == 1 else forms[1]
+
+
+def _version_ru(ctx, param, value):
+    """`tmm --version` in Russian (click's message is fixed when the option is declared)."""
+    if not value or ctx.resilient_parsing:
+        return
+    import click
+    from importlib.metadata import version
+
+    click.echo(f"tmm, версия {version('tmm')}")
+    ctx.exit()
+
+
+def _commands(cmd, path: str):
+    yield path, cmd
+    for name, sub in getattr(cmd, "commands", {}).items():
+        yield from _commands(sub, f"{path} {name}")
+
+
+@contextmanager
+def russian(cli):
+    """Within the block, `cli`'s help texts and click's messages are Russian; afterwards English
+    again (tests run many commands in one process)."""
+    import click.core
+    import click.decorators
+    import click.exceptions
+    import click.formatting
+    import click.parser
+    import click.types
+    import click.utils
+
+    saved_help: list[tuple[object, str, object]] = []
+    for path, cmd in _commands(cli, "tmm"):
+        if path in COMMANDS:
+            saved_help.append((cmd, "help", cmd.help))
+            saved_help.append((cmd, "short_help", cmd.short_help))
+            cmd.help, cmd.short_help = COMMANDS[path], None
+        for attr, ru in (("options_metavar", METAVARS), ("subcommand_metavar", METAVARS)):
+            value = getattr(cmd, attr, None)
+            if value in ru:
+                saved_help.append((cmd, attr, value))
+                setattr(cmd, attr, ru[value])
+        # click caches the -h/--help option of a command: never let a Russian one outlive the block
+        cached = getattr(cmd, "_help_option", None)
+        saved_help.append((cmd, "_help_option", cached))
+        if cached is not None and cached.help in OPTIONS:
+            saved_help.append((cached, "help", cached.help))
+            cached.help = OPTIONS[cached.help]
+        for param in cmd.params:
+            if param.name == "version" and getattr(param, "is_flag", False):
+                saved_help.append((param, "callback", param.callback))
+                param.callback = _version_ru
+            text = getattr(param, "help", None)
+            if text in OPTIONS:
+                saved_help.append((param, "help", text))
+                param.help = OPTIONS[text]
+    modules = (click.core, click.decorators, click.exceptions, click.formatting, click.parser, click.types,
+               click.utils)
+    saved_fn = [(m, name, getattr(m, name)) for m in modules for name in ("_", "ngettext") if hasattr(m, name)]
+    for m, name, _fn in saved_fn:
+        setattr(m, name, _gettext if name == "_" else _ngettext)
+    try:
+        yield
+    finally:
+        for m, name, fn in saved_fn:
+            setattr(m, name, fn)
+        for obj, attr, value in reversed(saved_help):
+            setattr(obj, attr, value)
