@@ -52,8 +52,8 @@ ANSWER_KEYS: tuple[AnswerKey, ...] = (
     _k("z2", ("gears", "spur", "z2"), "int", "spur wheel teeth z2", "число зубьев колеса z2"),
     _k("a_mm", ("gears", "spur", "a_mm"), "float", "spur centre distance a [mm]", "межосевое расстояние a [мм]"),
     _k("eps_alpha", ("gears", "spur", "eps_alpha"), "float", "transverse contact ratio ε_α", "коэффициент перекрытия ε_α"),
-    _k("x1", ("gears", "spur", "x1"), "float", "spur shift coefficient x1 (0 for the book's pair)", "коэффициент смещения x1"),
-    _k("x2", ("gears", "spur", "x2"), "float", "spur shift coefficient x2 (0 for the book's pair)", "коэффициент смещения x2"),
+    _k("x1", ("gears", "spur", "x1"), "float", "spur shift x1 (the pair is recomputed with the given x1, x2; 0: the book's)", "коэффициент смещения x1 (пара пересчитывается с заданными x1, x2)"),
+    _k("x2", ("gears", "spur", "x2"), "float", "spur shift x2 (the pair is recomputed with the given x1, x2; 0: the book's)", "коэффициент смещения x2 (пара пересчитывается с заданными x1, x2)"),
     _k("a_w_mm", ("gears", "spur", "a_w_mm"), "float", "spur working centre distance a_w [mm]", "межосевое расстояние a_w [мм]"),
     _k("alpha_w_deg", ("gears", "spur", "alpha_w_deg"), "float", "spur working pressure angle α_w [deg]", "угол зацепления α_w [°]"),
     _k("r0_mm", ("cam", "r0_mm"), "float", "cam base radius r0 [mm] (the book's vertex is accepted too)",
@@ -62,7 +62,7 @@ ANSWER_KEYS: tuple[AnswerKey, ...] = (
        "эксцентриситет e [мм] (допуск от r_0; принимается и вершина по пособию)", ("cam", "r0_mm"), ("cam", "book_vertex", "e_mm")),
     _k("l_oc_mm", ("cam", "l_oc_mm"), "float", "centre distance l_OC [mm] (the book's vertex accepted)",
        "межцентровое расстояние l_OC [мм] (принимается и вершина по пособию)", book_path=("cam", "book_vertex", "l_oc_mm")),
-    _k("roller_mm", ("cam", "roller_mm"), "float", "roller radius r_p [mm]", "радиус ролика r_p [мм]"),
+    _k("roller_mm", ("cam", "roller_mm"), "float", "roller radius r_p [mm] (the book's 0.2·r0 accepted, marked)", "радиус ролика r_p [мм] (принимается и 0,2·r0 по пособию)"),
     _k("nu_rise_deg", ("cam", "pressure_angle_max_deg", "rise"), "float", "max pressure angle on rise [deg]", "максимальный угол давления на удалении [°]"),
     _k("nu_return_deg", ("cam", "pressure_angle_max_deg", "return"), "float", "max pressure angle on return [deg]", "максимальный угол давления на возвращении [°]"),
     _k("psi_rise_deg", ("cam", "psi_deg", "rise"), "float", "profile angle ψ_у [deg]", "профильный угол удаления ψ_у [°]"),
@@ -266,14 +266,87 @@ def check_one(variant, answers: dict, *, crank_rpm=None, torque_nm=None, rtol_pc
     rtol_pct = check_range(rtol_pct, *RTOL_PCT, "--rtol", " per cent")
     if not answers:
         raise TmmError("the answers file has no values; write lines like r0_mm = 41.2 (see `tmm check --keys`)")
-    result = run_project(variant, crank_rpm=crank_rpm, torque_nm=torque_nm)
+    shift = student_shift(answers)
+    result = run_project(variant, crank_rpm=crank_rpm, torque_nm=torque_nm, shift=shift)
     doc = project_document(result, lang)
     required = required_keys(doc, sheets)
     rows = accept_valid_reducer(compare(doc, answers, rtol_pct, required), answers, result.gears)
+    rows = accept_book_cam(rows, answers, result.cam, rtol_pct)
     # the tooth numbers depend on the crank speed: say when the book's 220 rpm was assumed
     notes = tuple(n for n in result.gears.notes if n.code == "crank_default")
     return CheckReport(label=label or f"variant {variant.number}", variant=variant.number, rtol_pct=rtol_pct,
                        rows=rows, notes=notes, required=required, group=group)
+
+
+def student_shift(answers: dict) -> tuple[float, float] | None:
+    """The spur pair's shifts the student chose (answers x1, x2; a missing one is 0), or None for
+    the book's zero pair: the project is then recomputed with those shifts, as
+    ``tmm gears --shift x1,x2`` does, so a_w_mm, alpha_w_deg, a_mm and eps_alpha are checked for
+    the student's own pair (the shift is a design choice, not a result to match)."""
+    x1, x2 = answers.get("x1"), answers.get("x2")
+    if x1 is None and x2 is None:
+        return None
+    x1, x2 = float(x1 or 0.0), float(x2 or 0.0)
+    return None if x1 == 0.0 and x2 == 0.0 else (x1, x2)
+
+
+BOOK_ROLLER_KEYS = ("r0_mm", "l_oc_mm", "e_mm", "roller_mm")
+
+
+def accept_book_cam(rows: tuple[CheckRow, ...], answers: dict, cam, rtol_pct: float) -> tuple[CheckRow, ...]:
+    """Cam answers that follow the book where the program carries a safer design (issue 8).
+
+    * ``roller_mm`` = 0.2·r0 (1.28) for the carried r0, its book vertex, or the student's own r0
+      when that passed: "pass (book roller)" — the program carries min(0.2·r0, 0.8·ρ_min), and
+      the report marks when the book's roller undercuts (see the cam's warning);
+    * a rocker whose smallest cam (the book's swing choice, METHOD.md) put the pivot inside the
+      swept circle, so the program carried the other swing: r0_mm / l_oc_mm of that smallest cam
+      or of its book vertex pass as "pass (other swing)", the roller 0.2·r0 of it too.
+    """
+    failed = {r.key for r in rows if r.status == "fail"} & set(BOOK_ROLLER_KEYS)
+    if not failed:
+        return rows
+    from .cam.design import CamChoice, design_cam
+    from .cam.profile import ROLLER_RULE
+
+    z, p = cam.sizing, cam.profile
+
+    def near(given, values, scale=None) -> bool:
+        for v in values:
+            if v is None:
+                continue
+            sc = abs(scale if scale is not None else v)
+            if sc > 0 and abs(float(given) - v) <= (rtol_pct + 1e-9) / 100.0 * sc:
+                return True
+        return False
+
+    other = None
+    if cam.source == "program" and cam.pivot_move == "swing" and z.swing in ("same", "opposite"):
+        other = design_cam(cam.variant, step_deg=cam.step_deg,
+                           choice=CamChoice(swing="same" if z.swing == "opposite" else "opposite"))
+    # (r0 [mm], the largest roller without undercut [mm]) of each design a student may have drawn
+    designs = [(z.r0_m * 1e3, p.roller_max_m * 1e3), (z.book_r0_m * 1e3, p.roller_max_m * 1e3)]
+    if other is not None:
+        oz, op = other.sizing, other.profile
+        designs += [(oz.r0_m * 1e3, op.roller_max_m * 1e3), (oz.book_r0_m * 1e3, op.roller_max_m * 1e3)]
+    status = {r.key: r.status for r in rows}
+    given_r0 = answers.get("r0_mm")
+    if given_r0 is not None and status.get("r0_mm", "").startswith("pass"):
+        designs.append((float(given_r0), (other.profile if status["r0_mm"] == "pass (other swing)" else p).roller_max_m * 1e3))
+    out = []
+    for r in rows:
+        st = r.status
+        if st == "fail" and other is not None and r.key == "r0_mm" and near(r.given, (other.sizing.r0_m * 1e3, other.sizing.book_r0_m * 1e3)):
+            st = "pass (other swing)"
+        elif st == "fail" and other is not None and r.key == "l_oc_mm" and near(
+                r.given, (other.sizing.l_oc_m and other.sizing.l_oc_m * 1e3, other.sizing.book_l_oc_m and other.sizing.book_l_oc_m * 1e3)):
+            st = "pass (other swing)"
+        elif st == "fail" and r.key == "roller_mm":
+            hits = [lim for r0, lim in designs if near(r.given, (ROLLER_RULE * r0,))]
+            if hits:
+                st = "pass (book roller)" if any(float(r.given) < lim for lim in hits) else "pass (book roller, undercuts)"
+        out.append(r if st == r.status else CheckRow(r.key, r.expected, r.given, r.deviation_pct, st))
+    return tuple(out)
 
 
 STAGE_KEYS = (("z_sun", "z_planet", "z_planet2", "z_ring", "planets"), ("z_sun_2", "z_planet_2", None, "z_ring_2", "planets_2"))

@@ -41,7 +41,7 @@ def _metres(name: str, help_text: str):
 @click.option("--omega", type=float, default=None, metavar="RAD_S", help="Crank speed ω21 [rad/s], instead of --rpm.")
 @click.option("--eps-crank", "eps_crank", type=float, default=None, metavar="RAD_S2", help="Crank angular acceleration ε21 [rad/s²] (default 0: uniform).")
 @click.option("--positions", "n_positions", type=int, default=None, metavar="N", help="Number of crank positions, from the start of the working stroke (default 12).")
-@click.option("--at", "at_deg", type=float, default=None, metavar="DEG", help="Crank angle φ21 [deg] of the velocity and acceleration plans (default 45, the article's).")
+@click.option("--at", "at_deg", type=float, default=None, metavar="DEG", help="Crank angle φ21 [deg], 0…360, of the velocity and acceleration plans (default 45, the article's).")
 @click.option("--input", "input_file", type=click.Path(dir_okay=False), default=None, metavar="FILE", help="TOML file with the same keys (r1, h, c, r2, r3, b, rpm, …); options beat it.")
 @click.option("--variant", default=None, metavar="N", help="With --input holding [variants.N] tables: the variant to take.")
 @json_option

@@ -241,7 +241,8 @@ def synthesize(i: Fraction, c: Fraction, planets: int, module_mm: float = 5.0, x
         raise TmmError(f"tooth limits {z_min} … {z_max} are empty; give 1 ≤ --z-min ≤ --z-max, e.g. --z-min 18 --z-max 180")
     lo, hi = c_range(i)
     if not lo < c < hi:
-        raise TmmError(f"C = {c} = {float(c):.4g} is outside its feasible range for i = {i}: 1 < C < 1/(1 − i) = "
+        shown = f"{c}" if c.denominator == 1 else f"{c} = {float(c):.4g}"
+        raise TmmError(f"C = {shown} is outside its feasible range for i = {i}: 1 < C < 1/(1 − i) = "
                        f"{hi} ≈ {float(hi):.4f} (else Z2 ≤ 0); choose C inside it, e.g. --c "
                        f"{_suggest_c(i)}")
     div = divisibility(i, c, planets)

@@ -175,6 +175,33 @@ def _selection_notes(search: SearchResult, design: PlanetaryDesign) -> list[Note
                       n=search.n_sets, zmax=Z_MAX)]
 
 
+def _larger_better_notes(search, design: PlanetaryDesign, err: float) -> list[Note]:
+    """Why an inexact ratio is carried although a more accurate or exact set exists: those are
+    larger than the selection rule admits; name them and how to carry them (issue 8)."""
+    if search is None or search.select != "accurate" or design != search.carried or abs(err) < 0.005:
+        return []
+    more, exact = getattr(search, "more_accurate", None), getattr(search, "exact", None)
+    if more is None and exact is None:
+        return []
+    fr = None
+    if exact is not None:
+        from fractions import Fraction
+
+        fr = Fraction(search.target).limit_denominator(1000)
+    parts = {"teeth": design_teeth_text(design), "size": design.size, "err": f"{err:+.2f}", "slack": SELECT_SLACK,
+             "limit": (search.smallest or design).size + SELECT_SLACK}
+    if more is not None and exact is not None and more != exact:
+        return [Note.make("select_larger_both", "assumption", m_teeth=design_teeth_text(more), m_size=more.size,
+                          m_err=f"{more.ratio_error_pct:+.2f}", e_teeth=design_teeth_text(exact), e_size=exact.size,
+                          ratio=f"{fr.numerator}/{fr.denominator}", **parts)]
+    one = exact or more
+    if exact is not None:
+        return [Note.make("select_larger_exact", "assumption", e_teeth=design_teeth_text(one), e_size=one.size,
+                          ratio=f"{fr.numerator}/{fr.denominator}", **parts)]
+    return [Note.make("select_larger_more", "assumption", m_teeth=design_teeth_text(one), m_size=one.size,
+                      m_err=f"{one.ratio_error_pct:+.2f}", **parts)]
+
+
 def _check_inputs(n_cam_rpm, crank_rpm, torque_nm, tolerance_pct, planets):
     try:
         cam = float(n_cam_rpm)
@@ -326,6 +353,7 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
     if abs(err) > RATIO_REMARK_PCT:
         notes.append(Note.make("ratio_error_large", "warning", err=f"{err:+.2f}", limit=f"{RATIO_REMARK_PCT:g}",
                                rpm=f"{n_cr_actual:.1f}", want=f"{n_cr:g}"))
+    notes += _larger_better_notes(search, design, err)
 
     # spur pair
     spur = design_spur(n_d, n_cam_rpm, shift=shift, a_w_mm=a_w_mm)

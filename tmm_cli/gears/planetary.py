@@ -476,6 +476,11 @@ class SearchResult:
     select: str = "smallest"  # "accurate" | "smallest": which of the planets-rule pool is carried
     smallest: PlanetaryDesign | None = None  # the smallest of that pool (the carried one under "smallest")
     stage_range_ok: bool | None = None  # two stages: every stage within Fig. 2.4's 3…8 (None: one stage)
+    # one stage, carried ratio not exact: the smallest set of the pool more accurate than the carried
+    # one, and the smallest exact one (None: none within the tolerance and z_max) — the sets the
+    # selection rule passed over because they are larger
+    more_accurate: PlanetaryDesign | None = None
+    exact: PlanetaryDesign | None = None
 
 
 def _window(target: float, tol_pct: float, forced: Fraction | None) -> tuple[float, float]:
@@ -535,8 +540,27 @@ def _search_single(scheme: str, target: float, tol_pct: float, forced: Fraction 
         if extra not in alts and (extra is carried or smallest_any.size < carried.size):
             alts.append(extra)
     alts.sort(key=lambda d: (d.size, abs(d.ratio_error_pct), -d.planets))
+    more, exact = _larger_better(tab, pool, kpool, target, carried, double)
     return SearchResult(scheme, target, tol_pct, forced, planets, Z_MAX, int(idx.size), carried, smallest_any,
-                        tuple(alts), rule, select, smallest)
+                        tuple(alts), rule, select, smallest, more_accurate=more, exact=exact)
+
+
+def _larger_better(tab, pool: np.ndarray, kpool: np.ndarray, target: float, carried: PlanetaryDesign, double: bool):
+    """(smallest set of `pool` with a smaller ratio error than `carried`, smallest exact set), each
+    None when there is none or the carried ratio is already exact; ties by more planets, fewer teeth."""
+    err = np.round(np.abs(tab.ratio[pool] / target - 1.0), 12)
+    e0 = round(abs(carried.ratio / target - 1.0), 12)
+    if e0 == 0.0:
+        return None, None
+    out = []
+    for mask in (err < e0 - 1e-9, err == 0.0):
+        if not mask.any():
+            out.append(None)
+            continue
+        sub = np.nonzero(mask)[0]
+        j = sub[np.lexsort((tab.total[pool][sub], -kpool[sub], err[sub], tab.size[pool][sub]))[0]]
+        out.append(PlanetaryDesign(carried.scheme, (_stage_from(tab, pool[j], kpool[j], double),), target))
+    return out[0], out[1]
 
 
 def _most_accurate(size: np.ndarray, err: np.ndarray, k: np.ndarray, total: np.ndarray) -> int:

@@ -221,6 +221,9 @@ def pair_geometry(z1: int, z2: int, m_mm: float, x1: float, x2: float, alpha_deg
     rb1, rb2 = db[0] / 2, db[1] / 2
     ra1, ra2 = da[0] / 2, da[1] / 2
     if ra1 <= rb1 or ra2 <= rb2:
+        if x_sum > 0 and dy > 0 and min(xx) >= 0:  # the tip reduction, not a negative shift, cut the tips away
+            raise TmmError(f"the shift sum x1 + x2 = {x_sum:.4g} is so large that the tip reduction Δy = {dy:.4g} puts a "
+                           f"tip circle inside its base circle; take a smaller shift sum (a_w closer to a = {a:.4g} mm)")
         raise TmmError("a tip circle lies inside its base circle: the shifts are far too negative for these teeth")
     n1n2 = a_w * math.sin(alpha_w)
     pole = rb1 * math.tan(alpha_w)

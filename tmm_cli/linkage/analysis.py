@@ -173,8 +173,8 @@ def analyse(g: Geometry, omega: float, eps: float = 0.0, n_positions: int = 12, 
         raise TmmError(f"--eps-crank is {eps}; give a finite angular acceleration in rad/s²")
     if not isinstance(n_positions, int) or not 2 <= n_positions <= 360:
         raise TmmError(f"--positions is {n_positions}; give a whole number of crank positions from 2 to 360 (the book uses 12)")
-    if not math.isfinite(at_deg):
-        raise TmmError(f"--at is {at_deg}; give a crank angle φ21 in degrees")
+    if not (math.isfinite(at_deg) and 0.0 <= at_deg <= 360.0):
+        raise TmmError(f"--at is {at_deg:g}; give a crank angle φ21 from 0 to 360 degrees")
 
     roots = stationary_angles(g)
     if len(roots) < 2:  # pragma: no cover - a smooth periodic x_C always has a max and a min

@@ -95,6 +95,9 @@ class Geometry:
         return max(abs(self.b - lo), abs(self.b - hi))
 
 
+LENGTH_MAX_M = 100.0  # every length and offset [m]: a shaping machine's links are well below a metre
+
+
 def _finite(name: str, value) -> float:
     try:
         x = float(value)
@@ -131,6 +134,10 @@ def make_geometry(r1, h, c, r2, r3, b) -> Geometry:
     for name, value in (("r1", r1), ("h", h), ("r2", r2), ("r3", r3)):
         if value <= 0:
             raise TmmError(f"--{name} is {value:g} m; lengths must be positive ({what[name]})")
+    for name, value in (("r1", r1), ("h", h), ("c", c), ("r2", r2), ("r3", r3), ("b", b)):
+        if abs(value) > LENGTH_MAX_M:
+            raise TmmError(f"--{name} is {value:g} m, over the limit of {LENGTH_MAX_M:g} m; give metres "
+                           "(e.g. 0.1 for a 100 mm crank)")
     g = Geometry(r1, h, c, r2, r3, b)
     if abs(g.d0 - r1) <= 1e-9 * r1:
         raise TmmError(

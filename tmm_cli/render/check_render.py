@@ -9,6 +9,12 @@ STATUS = {
     "pass (book)": ("[green]pass[/] (the book's vertex)", "[green]верно[/] (вершина по пособию)"),
     "pass (valid set)": ("[green]pass[/] (another set meeting all five conditions)",
                          "[green]верно[/] (другой набор, удовлетворяющий всем пяти условиям)"),
+    "pass (book roller)": ("[green]pass[/] (the book's roller 0.2·r0)", "[green]верно[/] (ролик 0,2·r0 по пособию)"),
+    "pass (book roller, undercuts)": ("[green]pass[/] (the book's roller 0.2·r0; it undercuts this cam: r_p ≥ ρ_min of the pitch curve)",
+                                      "[green]верно[/] (ролик 0,2·r0 по пособию; он подрезает этот профиль: r_р ≥ ρ_min центрового профиля)"),
+    "pass (other swing)": ("[green]pass[/] (the smallest cam of the other swing; its pivot lies inside the swept circle — see the note)",
+                           "[green]верно[/] (наименьший кулачок при другом направлении качания; ось коромысла внутри "
+                           "описываемой кулачком окружности — см. примечание)"),
     "fail": ("[red]FAIL[/]", "[red]НЕВЕРНО[/]"),
     "unknown key": ("[yellow]unknown key[/]", "[yellow]неизвестный ключ[/]"),
     "not computed": ("[yellow]not computed for this variant[/]", "[yellow]не вычисляется для варианта[/]"),
@@ -17,6 +23,9 @@ STATUS = {
 # the per-key verdict in check.csv / check.md and the group table
 SHORT = {"pass": ("pass", "верно"), "pass (book)": ("pass (book)", "верно (пособие)"),
          "pass (valid set)": ("pass (valid set)", "верно (другой набор)"), "fail": ("FAIL", "НЕВЕРНО"),
+         "pass (book roller)": ("pass (book roller)", "верно (ролик по пособию)"),
+         "pass (book roller, undercuts)": ("pass (book roller, undercuts)", "верно (ролик по пособию, подрез)"),
+         "pass (other swing)": ("pass (other swing)", "верно (другое качание)"),
          "unknown key": ("unknown key", "неизвестный ключ"), "not computed": ("not computed", "не вычисляется"),
          "missing": ("missing", "нет ответа")}
 

@@ -201,6 +201,32 @@ MESSAGES: dict[str, dict[str, str]] = {
               "что не более чем на {slack} зуб больше наименьшего, и принимается самый точный. Наименьший — "
               "{s_teeth}, k = {s_k} (габарит {s_size}, {s_err} %); его даёт --select smallest.",
     },
+    "select_larger_both": {
+        "en": "Why {teeth} ({err} %) is carried: the rule compares only the sets of size ≤ {limit} (at most {slack} "
+              "tooth larger than the smallest), and none of them is more accurate. Larger sets are: {m_teeth} "
+              "(size {m_size}, {m_err} %), and the smallest exact one, {e_teeth} (size {e_size}, 0.00 %) — "
+              "--ratio {ratio} carries the exact set, a narrower --tolerance the more accurate one.",
+        "ru": "Почему принят {teeth} ({err} %): правило сравнивает только наборы габарита ≤ {limit} (не более чем на "
+              "{slack} зуб больше наименьшего), и среди них нет более точного. Бо́льшие наборы: {m_teeth} "
+              "(габарит {m_size}, {m_err} %) и наименьший точный {e_teeth} (габарит {e_size}, 0,00 %) — "
+              "--ratio {ratio} даёт точный набор, более узкий --tolerance — более точный.",
+    },
+    "select_larger_exact": {
+        "en": "Why {teeth} ({err} %) is carried: the rule compares only the sets of size ≤ {limit} (at most {slack} "
+              "tooth larger than the smallest), and none of them is more accurate. The smallest exact set is larger: "
+              "{e_teeth} (size {e_size}, 0.00 %); --ratio {ratio} carries it.",
+        "ru": "Почему принят {teeth} ({err} %): правило сравнивает только наборы габарита ≤ {limit} (не более чем на "
+              "{slack} зуб больше наименьшего), и среди них нет более точного. Наименьший точный набор больше: "
+              "{e_teeth} (габарит {e_size}, 0,00 %); его даёт --ratio {ratio}.",
+    },
+    "select_larger_more": {
+        "en": "Why {teeth} ({err} %) is carried: the rule compares only the sets of size ≤ {limit} (at most {slack} "
+              "tooth larger than the smallest), and none of them is more accurate. A more accurate set is larger: "
+              "{m_teeth} (size {m_size}, {m_err} %); a narrower --tolerance carries it.",
+        "ru": "Почему принят {teeth} ({err} %): правило сравнивает только наборы габарита ≤ {limit} (не более чем на "
+              "{slack} зуб больше наименьшего), и среди них нет более точного. Более точный набор больше: "
+              "{m_teeth} (габарит {m_size}, {m_err} %); его даёт более узкий --tolerance.",
+    },
     "select_smallest": {
         "en": "Selection rule (--select smallest): the smallest reducer is carried, {teeth} (size {size}), whatever "
               "its ratio error within tolerance (the default --select accurate compares the sets up to {slack} tooth "
