@@ -238,12 +238,12 @@ def _diagrams_figure(Figure, r: LinkageResult, lang: str):
                     ha="center", va="top", fontsize=8, color=C_WORK)
             ax.text((w + 360) / 2, 0.97, pick(lang, "return stroke", "холостой ход"), transform=ax.get_xaxis_transform(),
                     ha="center", va="top", fontsize=8, color=C_RET)
-            ax.text(at_x, 0.03, f" φ21 = {num(math.degrees(r.at.phi), lang, decimals=1)}°", transform=ax.get_xaxis_transform(),
+            ax.text(at_x, 0.03, f" $\\varphi_{{21}}$ = {num(math.degrees(r.at.phi), lang, decimals=1)}°", transform=ax.get_xaxis_transform(),
                     fontsize=8, color=C_AT)
     axes[-1].set_xlim(0, 360)
     axes[-1].set_xticks(np.arange(0, 361, 30))
     start = num(math.degrees(r.dead[0]), lang, decimals=2)
-    axes[-1].set_xlabel(pick(lang, f"crank angle from position 0 (φ21 = {start}°), °", f"угол поворота кривошипа от положения 0 (φ21 = {start}°), °"))
+    axes[-1].set_xlabel(pick(lang, f"crank angle from position 0 ($\\varphi_{{21}}$ = {start}°), °", f"угол поворота кривошипа от положения 0 ($\\varphi_{{21}}$ = {start}°), °"))
     rpm = num(r.rpm, lang, sig=4)
     fig.suptitle(pick(lang, f"Ram C: position, velocity, acceleration (n21 = {rpm} rpm)",
                       f"Кинематические диаграммы ползуна C (n21 = {rpm} об/мин)"), fontsize=11)
@@ -297,8 +297,8 @@ def _plan_figure(Figure, r: LinkageResult, plan, lang: str):
     _arc(ax_m, g.r1 * 1000, 0.0, 2 * math.pi, color=GREY, lw=0.8, ls="--")
     _guide(ax_m, r, min(r.x_min * 1000, -g.r1 * 1000) - 20, max(r.x_max * 1000, g.r1 * 1000) + 20)
     _mechanism(ax_m, r, r.at, color="k", lw=1.6)
-    ax_m.set_title(pick(lang, f"Mechanism at φ21 = {num(math.degrees(r.at.phi), lang, decimals=2)}°",
-                        f"Положение механизма при φ21 = {num(math.degrees(r.at.phi), lang, decimals=2)}°"), fontsize=10)
+    ax_m.set_title(pick(lang, f"Mechanism at $\\varphi_{{21}}$ = {num(math.degrees(r.at.phi), lang, decimals=2)}°",
+                        f"Положение механизма при $\\varphi_{{21}}$ = {num(math.degrees(r.at.phi), lang, decimals=2)}°"), fontsize=10)
     ax_m.set_xlabel("x, " + pick(lang, "mm", "мм"))
     ax_m.grid(alpha=0.2)
     ax_m.margins(0.08)
@@ -348,9 +348,9 @@ def _plan_figure(Figure, r: LinkageResult, plan, lang: str):
     ax_t.text(0.02, 0.98, "\n".join(lines), transform=ax_t.transAxes, ha="left", va="top", fontsize=10, linespacing=1.5)
     phi = num(math.degrees(r.at.phi), lang, decimals=2)
     if velocity:
-        title = pick(lang, f"Velocity plan (pole p), φ21 = {phi}°", f"План скоростей (полюс p), φ21 = {phi}°")
+        title = pick(lang, f"Velocity plan (pole p), $\\varphi_{{21}}$ = {phi}°", f"План скоростей (полюс p), $\\varphi_{{21}}$ = {phi}°")
     else:
-        title = pick(lang, f"Acceleration plan (pole π), φ21 = {phi}°", f"План ускорений (полюс π), φ21 = {phi}°")
+        title = pick(lang, f"Acceleration plan (pole π), $\\varphi_{{21}}$ = {phi}°", f"План ускорений (полюс π), $\\varphi_{{21}}$ = {phi}°")
     ax.set_title(title, fontsize=11)
     return fig
 
