@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from ..gears_figures import _mesh_geometry, tooth_outline
+from ..gears_figures import _mesh_geometry, _shift_kw, tooth_outline
 from ..i18n import pick
 from ..numbers import num
 from .paper import GOST_SCALES, Sheet, fit_scale, thin_out
@@ -33,6 +33,15 @@ ENLARGE = tuple((lab, f) for lab, f in GOST_SCALES if 0.5 <= f <= 10.0)
 
 def _n(x, lang, d=2):
     return num(x, lang, decimals=d)
+
+
+def _g6(x, lang):
+    """A number as %g would print it (6 significant digits), with a decimal comma under ru."""
+    return num(x, lang, sig=6)
+
+
+def aw_of(g) -> float:
+    return centre_distance(g)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -286,6 +295,21 @@ def _cross_small(sh, c, s=3.0):
 MESH_ROOM = (BOX_MESH[1] + 30.0, BOX_MESH[3] - 28.0)  # y band of the drawing (captions below, heading above)
 
 
+def centre_distance(g) -> float:
+    """The distance the wheels run at [mm]: a_w of a shifted pair (= a for the book's zero pair)."""
+    return g.a_w_mm or g.a_mm
+
+
+def tooth_sizes(g) -> dict:
+    """s, e on the pitch circle, h_a, h_f of each gear and x·m [mm], read from the result: the
+    shifted pair's geometry (``g.pair``) when there is one, the book's zero pair otherwise."""
+    pr = g.pair
+    if pr is None:
+        ha, hf = g.ha_star * g.m_mm, (g.ha_star + g.c_star) * g.m_mm
+        return {"s": (g.s_mm, g.s_mm), "e": (g.e_mm, g.e_mm), "ha": (ha, ha), "hf": (hf, hf), "xm": (0.0, 0.0)}
+    return {"s": pr.s_mm, "e": pr.e_mm, "ha": pr.ha_mm, "hf": pr.hf_mm, "xm": pr.shift_mm}
+
+
 def mesh_scale(g) -> tuple[str, float]:
     """The mesh field's ГОСТ 2.302 scale, at most 1:1: the largest at which the smaller wheel's
     centre and the mesh zone with its dimensions fit; the larger wheel's centre may lie beyond
@@ -294,7 +318,7 @@ def mesh_scale(g) -> tuple[str, float]:
     room = hi - lo - 12.0
     choices = [(lab, f) for lab, f in GOST_SCALES if 0.1 <= f <= 1.0]
     r_small = min(g.d1_mm, g.d2_mm) / 2
-    ok = [c for c in choices if g.a_mm * c[1] <= room or r_small * c[1] + 14.0 + 150.0 <= room]
+    ok = [c for c in choices if centre_distance(g) * c[1] <= room or r_small * c[1] + 14.0 + 150.0 <= room]
     return max(ok, key=lambda c: c[1], default=choices[0])
 
 
@@ -303,10 +327,11 @@ def mesh_origin(g, f: float) -> tuple[float, float]:
     else the smaller wheel's centre 10 mm inside the band's edge."""
     lo, hi = MESH_ROOM
     x = (BOX_MESH[0] + BOX_MESH[2]) / 2
-    if g.a_mm * f <= hi - lo - 12.0:
-        return x, (lo + hi) / 2 - f * g.a_mm / 2
+    aw = centre_distance(g)
+    if aw * f <= hi - lo - 12.0:
+        return x, (lo + hi) / 2 - f * aw / 2
     if g.d2_mm <= g.d1_mm:  # O2 (top) shown, O1 below the field
-        return x, hi - 10.0 - f * g.a_mm
+        return x, hi - 10.0 - f * aw
     return x, lo + 10.0
 
 
@@ -341,14 +366,19 @@ def _mesh_field(sh: Sheet, r, lang: str):
     clip = (x0b + 1.0, y0b + 24.0, x1b - 1.0, fld.inner[3])
     fld.box = clip
     m = g.m_mm
+    aw = centre_distance(g)
+    ts = tooth_sizes(g)
     rot1, rot2 = math.pi / 2, -math.pi / 2 + math.pi / g.z2
-    # circles d (dash-dot), d_b, d_a, d_f (thin), centres, the line of centres
-    for centre, d, db, da, df in ((o1, g.d1_mm, g.db1_mm, g.da1_mm, g.df1_mm), (o2, g.d2_mm, g.db2_mm, g.da2_mm, g.df2_mm)):
+    # circles d (dash-dot), d_b, d_a, d_f (thin), d_w of a shifted pair (dash-dot), centres, the line of centres
+    for j, (centre, d, db, da, df) in enumerate(((o1, g.d1_mm, g.db1_mm, g.da1_mm, g.df1_mm),
+                                                  (o2, g.d2_mm, g.db2_mm, g.da2_mm, g.df2_mm))):
         fld.circle(centre, d / 2, "Осевые")
         fld.circle(centre, db / 2, "Тонкие")
         fld.circle(centre, da / 2, "Тонкие")
         fld.circle(centre, df / 2, "Тонкие")
-    fld.line((0, -0.05 * g.a_mm), (0, g.a_mm * 1.05), "Осевые")
+        if g.shifted and abs(g.pair.dw_mm[j] - d) * f > 0.3:
+            fld.circle(centre, g.pair.dw_mm[j] / 2, "Осевые")
+    fld.line((0, -0.05 * aw), (0, aw * 1.05), "Осевые")
     for c, nm in ((o1, "O_1"), (o2, "O_2")):
         q = fld.p(*c)
         if clip[1] < q[1] < clip[3]:
@@ -356,8 +386,8 @@ def _mesh_field(sh: Sheet, r, lang: str):
             sh.dot(q, 0.7)
             sh.text(q[0] + 2.0, q[1] + 1.5, nm, H_LABEL)
     # teeth: 4 on either side of the line of centres
-    tooth1 = thin_out(tooth_outline(g.z1, m), 0.6 / f)  # a vertex every 0.6 mm of paper
-    tooth2 = thin_out(tooth_outline(g.z2, m), 0.6 / f)
+    tooth1 = thin_out(tooth_outline(g.z1, m, **_shift_kw(g, 1)), 0.6 / f)  # a vertex every 0.6 mm of paper
+    tooth2 = thin_out(tooth_outline(g.z2, m, **_shift_kw(g, 2)), 0.6 / f)
     active = []
     for z, tooth, centre, rot, rmin_s, ra in ((g.z1, tooth1, o1, rot1, g.p1_mm, g.da1_mm / 2),
                                               (g.z2, tooth2, o2, rot2, g.p2_mm, g.da2_mm / 2)):
@@ -432,14 +462,14 @@ def _mesh_field(sh: Sheet, r, lang: str):
     # dimensions on gear 1: p, s, e on the pitch circle of a tooth left of the pole; h, h_a, h_f
     r1 = g.d1_mm / 2
     t1 = 2 * math.pi / g.z1
-    half_s = g.s_mm / 2 / r1
+    half_s = ts["s"][0] / 2 / r1
     c1 = np.array(fld.p(*o1))
     rdim = g.da1_mm / 2 * f + 5.0
     jd = dim_tooth(g, f, c1, clip, sx)
     a_t = rot1 + jd * t1
     deg = math.degrees
     sh.dim_arc(c1, rdim, deg(a_t - half_s), deg(a_t + half_s), "s", H_SMALL, ext_from=r1 * f)
-    sh.dim_arc(c1, rdim + 7.0, deg(a_t + half_s), deg(a_t + half_s + g.e_mm / r1), "e", H_SMALL, ext_from=r1 * f)
+    sh.dim_arc(c1, rdim + 7.0, deg(a_t + half_s), deg(a_t + half_s + ts["e"][0] / r1), "e", H_SMALL, ext_from=r1 * f)
     sh.dim_arc(c1, rdim + 14.0, deg(a_t - half_s), deg(a_t - half_s + g.p_mm / r1), "p", H_SMALL, ext_from=r1 * f)
     # radial dimensions h_f, h_a, h (gear 2, a tooth away from the pole) and c
     r2 = g.d2_mm / 2
@@ -451,9 +481,20 @@ def _mesh_field(sh: Sheet, r, lang: str):
     for (ra_, rb_, txt, off) in ((g.df2_mm / 2, r2, "h_{f}", 8.0), (r2, g.da2_mm / 2, "h_{a}", 8.0),
                                   (g.df2_mm / 2, g.da2_mm / 2, "h", 16.0)):
         sh.dim_linear(c2c + e2 * ra_ * f, c2c + e2 * rb_ * f, nn * off, txt, H_SMALL)
+    # x·m of a shifted gear: from its pitch circle to the tool rack's pitch line (a thin arc at r + x·m)
+    for j, (cc, rr_, ang, sg) in enumerate(((c1, r1, a_t - 1.5 * t1 * (1 if jd * sx < 0 else -1), 1.0),
+                                             (c2c, r2, a2 - 1.5 * t2 * sx, -1.0))):
+        xm = ts["xm"][j]
+        if abs(xm) * f < 0.2:
+            continue
+        ev = np.array([math.cos(ang), math.sin(ang)])
+        a_deg = math.degrees(ang)
+        sh.arc(cc, (rr_ + xm) * f, a_deg - 4.0, a_deg + 4.0, "Тонкие", "DASHED")
+        sh.dim_linear(cc + ev * rr_ * f, cc + ev * (rr_ + xm) * f, np.array([-ev[1], ev[0]]) * 6.0 * sg,
+                      f"x_{{{j + 1}}}m", H_SMALL)
     # c: clearance between gear 1's tip and gear 2's root on the line of centres
     q1 = np.array(fld.p(0.0, g.da1_mm / 2))
-    q2 = np.array(fld.p(0.0, g.a_mm - g.df2_mm / 2))
+    q2 = np.array(fld.p(0.0, aw - g.df2_mm / 2))
     sh.line(q2, q2 + np.array([-sx * 22.0, 8.0]), "Размеры")
     sh.text(q2[0] - sx * 22.0, q2[1] + 9.0, f"c = {num(g.c_mm, lang, sig=3)}", H_SMALL, align="center")
     sh.dot(q1, 0.4)
@@ -461,7 +502,7 @@ def _mesh_field(sh: Sheet, r, lang: str):
     xa = (x1b - 14.0) if sx < 0 else (x0b + 14.0)
     pa, pb = np.array(fld.p(*o1)), np.array(fld.p(*o2))
     if clip[1] < pa[1] and pb[1] < clip[3]:
-        sh.dim_linear(pa, pb, (xa - pa[0], 0.0), f"a_{{w}} = {num(g.a_mm, lang, sig=4)}", H_LABEL)
+        sh.dim_linear(pa, pb, (xa - pa[0], 0.0), f"a_{{w}} = {num(aw, lang, sig=6)}", H_LABEL)
     else:  # one centre beyond the field: the dimension line broken at the field's edge
         seen, other = (pa, pb) if clip[1] < pa[1] < clip[3] else (pb, pa)
         end_y = clip[1] + 2.0 if other[1] < seen[1] else clip[3] - 2.0
@@ -469,18 +510,39 @@ def _mesh_field(sh: Sheet, r, lang: str):
         sh.line((xa, seen[1]), (xa, end_y), "Размеры")
         sh.arrow((xa, seen[1]), (0.0, np.sign(seen[1] - end_y)), "Размеры", 3.0, 0.9)
         ym = seen[1] + np.sign(end_y - seen[1]) * min(60.0, abs(end_y - seen[1]) / 2)
-        sh.text(xa - 1.0, ym, f"a_{{w}} = {num(g.a_mm, lang, sig=4)}", H_LABEL, align="center", rot=90.0)
+        sh.text(xa - 1.0, ym, f"a_{{w}} = {num(aw, lang, sig=6)}", H_LABEL, align="center", rot=90.0)
     # captions
     mm = pick(lang, "mm", "мм")
-    lines = [
-        f"z_{{1}} = {g.z1}, z_{{2}} = {g.z2}, m = {g.m_mm:g} {mm}, α = {g.alpha_deg:g}°, x_{{1}} = x_{{2}} = 0;  "
-        f"p = {_n(g.p_mm, lang)}, s = e = {_n(g.s_mm, lang)}, h = {g.h_mm:g}, h_{{a}} = {g.ha_star * m:g}, "
-        f"h_{{f}} = {(g.ha_star + g.c_star) * m:g}, c = {g.c_mm:g} {mm}",
+
+    def g3(v):
+        return num(v, lang, sig=6)
+
+    if g.shifted:
+        pr = g.pair
+        lines = [
+            f"z_{{1}} = {g.z1}, z_{{2}} = {g.z2}, m = {g3(g.m_mm)} {mm}, α = {g3(g.alpha_deg)}°; "
+            f"x_{{1}} = {num(g.x1, lang, sig=4)}, x_{{2}} = {num(g.x2, lang, sig=4)}; "
+            f"x_{{1}}m = {_n(ts['xm'][0], lang)}, x_{{2}}m = {_n(ts['xm'][1], lang)}; "
+            f"a_{{w}} = {g3(aw)} (a = {g3(g.a_mm)}), α_{{w}} = {num(g.alpha_w_deg, lang, sig=5)}°, "
+            f"y = {_n(pr.y, lang, 4)}, Δy = {_n(pr.dy, lang, 4)}",
+            f"d_{{w1}} = {_n(pr.dw_mm[0], lang)}, d_{{w2}} = {_n(pr.dw_mm[1], lang)}; p = {_n(g.p_mm, lang)}; "
+            f"s_{{1}} = {_n(ts['s'][0], lang)}, e_{{1}} = {_n(ts['e'][0], lang)}; "
+            f"h_{{a1}} = {_n(ts['ha'][0], lang)}, h_{{a2}} = {_n(ts['ha'][1], lang)}, "
+            f"h_{{f1}} = {_n(ts['hf'][0], lang)}, h_{{f2}} = {_n(ts['hf'][1], lang)}, h = {_n(g.h_mm, lang)}, "
+            f"c = {g3(g.c_mm)}; s_{{a1}} = {_n(pr.sa_mm[0], lang)}, s_{{a2}} = {_n(pr.sa_mm[1], lang)} {mm}",
+        ]
+    else:
+        lines = [
+            f"z_{{1}} = {g.z1}, z_{{2}} = {g.z2}, m = {g3(g.m_mm)} {mm}, α = {g3(g.alpha_deg)}°, x_{{1}} = x_{{2}} = 0;  "
+            f"p = {_n(g.p_mm, lang)}, s = e = {_n(g.s_mm, lang)}, h = {g3(g.h_mm)}, h_{{a}} = {g3(ts['ha'][0])}, "
+            f"h_{{f}} = {g3(ts['hf'][0])}, c = {g3(g.c_mm)} {mm}",
+        ]
+    lines += [
         f"ε_{{α}} = P_{{1}}P_{{2}}/p_{{b}} = {_n(g.g_alpha_mm, lang, 1)}/{_n(g.pb_mm, lang)} = {_n(g.eps_alpha, lang, 3)};  "
         + pick(lang, "zones: 2 — two pairs, 1 — one pair; active profiles — double line",
                "зоны: 2 — двухпарное, 1 — однопарное зацепление; активные профили — двойная линия"),
     ]
-    y = y0b + 3.0 + 4.8
+    y = y0b + 3.0 + 4.8 * (len(lines) - 1)
     for t in lines:
         sh.text(x0b + 2.0, y, t, H_SMALL, width=x1b - x0b - 4.0)
         y -= 4.8
@@ -498,11 +560,25 @@ def _results(sh: Sheet, r, lang: str):
          f"{_n(r.i_planetary, lang, 3)} / {_n(d.ratio, lang, 3)} ({num(d.ratio_error_pct, lang, decimals=2)} %)"),
         (pick(lang, "Spur pair z_{1}/z_{2}, m", "Передача z_{1}/z_{2}, m"), f"{g.z1}/{g.z2}, {g.m_mm:g} " + pick(lang, "mm", "мм")),
         (pick(lang, "i_{12}: required / obtained", "i_{12}: требуемое / получено"), f"{_n(r.i_spur, lang, 3)} / {_n(g.i_actual, lang, 3)}"),
-        ("d_{1}; d_{2}", f"{g.d1_mm:g}; {g.d2_mm:g}"),
-        ("d_{a1}; d_{a2}", f"{g.da1_mm:g}; {g.da2_mm:g}"),
-        ("d_{f1}; d_{f2}", f"{g.df1_mm:g}; {g.df2_mm:g}"),
+    ]
+    if g.shifted:
+        pr = g.pair
+        rule = {"given": pick(lang, "given", "заданы"), "auto": pick(lang, "auto", "авто"),
+                "aw": pick(lang, "from a_{w}", "по a_{w}")}.get(g.shift_rule, g.shift_rule)
+        rows += [
+            (pick(lang, "Shifts x_{1}; x_{2}", "Смещения x_{1}; x_{2}"),
+             f"{num(g.x1, lang, sig=4)}; {num(g.x2, lang, sig=4)} ({rule})"),
+            (pick(lang, "a_{w}; α_{w}", "a_{w}; α_{w}"), f"{_g6(aw_of(g), lang)}; {num(g.alpha_w_deg, lang, sig=5)}°"),
+            ("d_{w1}; d_{w2}", f"{_n(pr.dw_mm[0], lang)}; {_n(pr.dw_mm[1], lang)}"),
+        ]
+    rows += [
+        ("d_{1}; d_{2}", f"{_g6(g.d1_mm, lang)}; {_g6(g.d2_mm, lang)}"),
+        ("d_{a1}; d_{a2}", f"{_n(g.da1_mm, lang)}; {_n(g.da2_mm, lang)}" if g.shifted else f"{_g6(g.da1_mm, lang)}; {_g6(g.da2_mm, lang)}"),
+        ("d_{f1}; d_{f2}", f"{_n(g.df1_mm, lang)}; {_n(g.df2_mm, lang)}" if g.shifted else f"{_g6(g.df1_mm, lang)}; {_g6(g.df2_mm, lang)}"),
         ("d_{b1}; d_{b2}", f"{_n(g.db1_mm, lang)}; {_n(g.db2_mm, lang)}"),
-        (pick(lang, "a_{w}; contact ratio ε_{α}", "a_{w}; коэффициент перекрытия ε_{α}"), f"{g.a_mm:g}; {_n(g.eps_alpha, lang, 3)}"),
+        (pick(lang, "a_{w}; contact ratio ε_{α}", "a_{w}; коэффициент перекрытия ε_{α}") if not g.shifted
+         else pick(lang, "a; contact ratio ε_{α}", "a; коэффициент перекрытия ε_{α}"),
+         f"{_g6(g.a_mm, lang)}; {_n(g.eps_alpha, lang, 3)}"),
     ]
     table(sh, BOX_TABLE, pick(lang, "Gear data", "Параметры зубчатых механизмов"), rows, col1=0.55, h=H_SMALL)
 
