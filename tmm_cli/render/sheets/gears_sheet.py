@@ -335,6 +335,28 @@ def mesh_origin(g, f: float) -> tuple[float, float]:
     return x, lo + 10.0
 
 
+def _circle_labels(sh, c, f, theta0, clip, items):
+    """Names of concentric circles written along them, upright, each just outside its circle,
+    spread along the arc from ``theta0`` [deg] so that neighbours never overlap; a name whose
+    place falls outside the field is left out (its circle is named in the captions)."""
+    th = math.radians(theta0)
+    for d, txt in items:
+        if d is None:
+            continue
+        r = d / 2 * f
+        w = sh.text_width(txt, H_SMALL)
+        up = np.array([math.cos(th), math.sin(th)])
+        rot = math.degrees(th) - 90.0
+        out = True
+        if math.sin(th) < 0:  # lower half: read left to right, the letters inside the circle
+            rot += 180.0
+            out = False
+        q = c + (r + (0.8 if out else -0.8 - H_SMALL)) * up
+        if clip[0] + 3 < q[0] < clip[2] - 3 and clip[1] + 3 < q[1] < clip[3] - 3:
+            sh.text(q[0], q[1], txt, H_SMALL, align="center", rot=rot)
+        th += (w + 3.0) / max(r, 1.0)
+
+
 def dim_tooth(g, f, c1, clip, sx) -> int:
     """The tooth of gear 1 that carries the p, s, e dimensions: ≥ 40° from the pole (clear of
     gear 2), its dimension arcs inside the field; the side away from N2 first."""
@@ -444,7 +466,24 @@ def _mesh_field(sh: Sheet, r, lang: str):
     rr = 0.65 * (g.pole_mm - g.p1_mm) * f
     sh.line(pq + np.array([sx * 5.0, 0]), pq - np.array([sx * (rr + 6.0), 0]), "Тонкие")
     a0, a1 = (180.0, 180.0 + g.alpha_w_deg) if sx > 0 else (360.0 - g.alpha_w_deg, 360.0)
-    sh.dim_arc(pq, rr, a0, a1, f"α_{{w}} = {num(g.alpha_w_deg, lang, sig=3)}°", H_SMALL)
+    sh.dim_arc(pq, rr, a0, a1, "", H_SMALL)
+    # its value on a leader into gear 1's body, below the teeth (the mesh zone is full of lines)
+    am = math.radians((a0 + a1) / 2)
+    q_arc = pq + rr * np.array([math.cos(am), math.sin(am)])
+    y_lab = pq[1] - (g.d1_mm / 2 - g.df1_mm / 2 + m) * f - 6.0
+    q_lab = np.array([pq[0] - sx * (rr + 18.0), y_lab])
+    sh.line(q_arc, q_lab, "Размеры")
+    txt = f"α_{{w}} = {num(g.alpha_w_deg, lang, sig=4)}°"
+    w_lab = sh.text_width(txt, H_LABEL)
+    sh.line(q_lab, q_lab - np.array([sx * w_lab, 0.0]), "Размеры")
+    sh.text(q_lab[0] - sx * w_lab / 2, q_lab[1] + 0.8, txt, H_LABEL, align="center")
+    # the circles named along their arcs: gear 1 on the side away from its dimensioned teeth
+    _circle_labels(sh, np.array(fld.p(*o1)), f, 90.0 + sx * 58.0, clip, [
+        (g.da1_mm, "d_{a1}"), (g.pair.dw_mm[0] if g.shifted else None, "d_{w1}"), (g.d1_mm, "d_{1}"),
+        (g.db1_mm, "d_{b1}"), (g.df1_mm, "d_{f1}")])
+    _circle_labels(sh, np.array(fld.p(*o2)), f, 270.0 - sx * 62.0, clip, [
+        (g.da2_mm, "d_{a2}"), (g.pair.dw_mm[1] if g.shifted else None, "d_{w2}"), (g.d2_mm, "d_{2}"),
+        (g.db2_mm, "d_{b2}"), (g.df2_mm, "d_{f2}")])
     # arcs φ_α1, φ_α2 (the gears' turns while a pair of teeth is in mesh), about the centres
     for centre, phi, rad, nm, base in ((o1, g.phi_alpha1_deg, 0.55 * g.df1_mm / 2, "φ_{α1}", 90.0),
                                        (o2, g.phi_alpha2_deg, 0.55 * g.df2_mm / 2, "φ_{α2}", 270.0)):
