@@ -135,10 +135,10 @@ def _motion_field(sh: Sheet, r, lang: str) -> None:
         kn = ("k_{S}", "k_{V}", "k_{a}")
     lines = [
         f"k_{{φ}} = {_g(sc.k_phi_deg_mm, lang)} °/{mm};  k_{{t}} = {_g(sc.k_t_s_mm, lang)} "
-        + pick(lang, "s/mm", "с/мм") + f";  b = {sc.b_mm:g} {mm}",
+        + pick(lang, "s/mm", "с/мм") + f";  b = {num(sc.b_mm, lang, sig=6)} {mm}",
         f"{kn[0]} = {_g(sc.k_s, lang)} {s_unit};  {kn[1]} = {_g(sc.k_v, lang)} {v_unit};  {kn[2]} = {_g(sc.k_a, lang)} {a_unit}",
-        f"H_{{V}} = {sc.h_v_mm:g} {mm};  H_{{a}} = {sc.h_a_mm:g} {mm};  "
-        + pick(lang, f"law {v.law}", f"закон {v.law}") + f";  n_{{к}} = {abs(v.n_cam_rpm):g} "
+        f"H_{{V}} = {num(sc.h_v_mm, lang, sig=6)} {mm};  H_{{a}} = {num(sc.h_a_mm, lang, sig=6)} {mm};  "
+        + pick(lang, f"law {v.law}", f"закон {v.law}") + f";  {pick(lang, 'n_{c}', 'n_{к}')} = {num(abs(v.n_cam_rpm), lang, sig=6)} "
         + pick(lang, "rpm", "об/мин"),
     ]
     if rocker:
@@ -274,8 +274,8 @@ def _zone_field(sh: Sheet, r, lang: str):
         sh.text(q[0] + 1.0, q[1] - 1.0, f"ν_{{{i}}} = {_n(nu_i, lang, 1)}°", H_SMALL, valign="top")
     # caption under the drawing
     txt = [
-        f"ν_{{max}} = {v.nu_max_deg:g}°;  r_0 = {_n(z.r0_m * k, lang, 2)} {pick(lang, 'mm', 'мм')}",
-        (f"l_{{OC}} = {_n(z.l_oc_m * k, lang, 2)} {pick(lang, 'mm', 'мм')};  l_{{BC}} = {v.l_bc_m * k:g} {pick(lang, 'mm', 'мм')}"
+        f"ν_{{max}} = {num(v.nu_max_deg, lang, sig=6)}°;  r_0 = {_n(z.r0_m * k, lang, 2)} {pick(lang, 'mm', 'мм')}",
+        (f"l_{{OC}} = {_n(z.l_oc_m * k, lang, 2)} {pick(lang, 'mm', 'мм')};  l_{{BC}} = {num(v.l_bc_m * k, lang, sig=6)} {pick(lang, 'mm', 'мм')}"
          if z.rocker else f"e = {_n(z.e_m * k, lang, 2)} {pick(lang, 'mm', 'мм')}"),
         pick(lang, f"O_b — book's vertex: r_0 = {_n(z.book_r0_m * k, lang, 2)} mm",
              f"O_{{кн}} — вершина по пособию: r_0 = {_n(z.book_r0_m * k, lang, 2)} мм"),
@@ -516,8 +516,7 @@ def _profile_field(sh: Sheet, r, lang: str):
     sh.text(qm[0], qm[1], "ω_{к}" if lang == "ru" else "ω_{c}", H_LABEL, align="right", valign="top")
     # captions
     mm = pick(lang, "mm", "мм")
-    txt = [f"k_{{Sk}} = {_g(0.001 / fac, lang)} {pick(lang, 'm/mm', 'м/мм')};  r_{{р}} = 0,2·r_0 = {_n(rp, lang, 2)} {mm}"
-           if lang == "ru" else f"k_{{Sk}} = {_g(0.001 / fac, lang)} m/mm;  r_{{r}} = 0.2·r_0 = {_n(rp, lang, 2)} mm"]
+    txt = [f"k_{{Sk}} = {_g(0.001 / fac, lang)} {pick(lang, 'm/mm', 'м/мм')};  {pick(lang, 'r_{r}', 'r_{р}')} = {_roller_text(p, lang)}"]
     if abs(fac - 0.001 / d.k_sk) > 1e-12:
         why = pick(lang, "the pivot circle", "окружность центров качания") if p.pivot_path is not None else \
             pick(lang, "the profile with its constructions", "профиль с построениями")
@@ -566,7 +565,7 @@ def _pressure_field(sh: Sheet, r, lang: str):
                 start = None
     ym = yo + v.nu_max_deg / k_nu
     sh.line((xo, ym), (xo + sc.b_mm, ym), "Осевые")
-    sh.text(xo + sc.b_mm, ym + 1.2, f"ν_{{max}} = {v.nu_max_deg:g}°", H_SMALL, align="right")
+    sh.text(xo + sc.b_mm, ym + 1.2, f"ν_{{max}} = {num(v.nu_max_deg, lang, sig=6)}°", H_SMALL, align="right")
     for row in m.table:
         x = xo + row.phi_deg / sc.k_phi_deg_mm
         sh.line((x, yo), (x, yo - 1.5), "Тонкие")
@@ -608,6 +607,18 @@ def table(sh: Sheet, box, title: str, rows: list[tuple[str, str]], col1: float =
     return bottom
 
 
+def _roller_text(p, lang: str) -> str:
+    """The carried roller and the rule that gave it (the core's ``roller_rule``); the book's
+    0.2·r_0 beside it when the roller differs from it."""
+    mm = pick(lang, "mm", "мм")
+    val = f"{_n(p.roller_m * 1000.0, lang)} {mm}"
+    book = f"0{pick(lang, '.', ',')}2·r_{{0}}"
+    if p.roller_rule == "book":
+        return f"{val} ({book})"
+    rule = {"limited": f"0{pick(lang, '.', ',')}8·ρ_{{min}}", "student": pick(lang, "given", "задан")}.get(p.roller_rule, p.roller_rule)
+    return f"{val} ({rule}; {book} = {_n(p.roller_book_m * 1000.0, lang)})"
+
+
 def _results(sh: Sheet, r, lang: str, prof_scale: str) -> None:
     v, z, p, sc = r.variant, r.sizing, r.profile, r.motion.scales
     k = 1000.0
@@ -622,9 +633,9 @@ def _results(sh: Sheet, r, lang: str, prof_scale: str) -> None:
     else:
         rows.append((pick(lang, "Offset e", "Эксцентриситет e"), f"{_n(z.e_m * k, lang)} {mm}"))
     rows += [
-        (pick(lang, "Roller radius r_{r}", "Радиус ролика r_{р}"), f"{_n(p.roller_m * k, lang)} {mm}"),
+        (pick(lang, "Roller radius r_{r}", "Радиус ролика r_{р}"), _roller_text(p, lang)),
         (pick(lang, "Pressure angle ν_{max} (given / reached)", "Угол давления ν_{max} (задан / получен)"),
-         f"{v.nu_max_deg:g}° / {_n(max(z.nu_rise_max_deg, z.nu_return_max_deg if z.closure == 'form' else 0), lang, 1)}°"),
+         f"{num(v.nu_max_deg, lang, sig=6)}° / {_n(max(z.nu_rise_max_deg, z.nu_return_max_deg if z.closure == 'form' else 0), lang, 1)}°"),
         (("Профильные углы ψ_{у}, ψ_{дс}, ψ_{в}" if ru else "Profile angles ψ"),
          f"{_n(p.psi_rise_deg, lang, 1)}°; {_n(p.psi_far_deg, lang, 1)}°; {_n(p.psi_return_deg, lang, 1)}°"),
         (pick(lang, "Scales k_{S}, k_{V}, k_{a}", "Масштабы k_{S}, k_{V}, k_{a}") if not z.rocker

@@ -597,7 +597,7 @@ def _results(sh: Sheet, r, lang: str):
         (pick(lang, "Planets k", "Число сателлитов k"), str(d.planets)),
         (pick(lang, "i_{pl}: required / obtained", "i_{пл}: требуемое / получено"),
          f"{_n(r.i_planetary, lang, 3)} / {_n(d.ratio, lang, 3)} ({num(d.ratio_error_pct, lang, decimals=2)} %)"),
-        (pick(lang, "Spur pair z_{1}/z_{2}, m", "Передача z_{1}/z_{2}, m"), f"{g.z1}/{g.z2}, {g.m_mm:g} " + pick(lang, "mm", "мм")),
+        (pick(lang, "Spur pair z_{1}/z_{2}, m", "Передача z_{1}/z_{2}, m"), f"{g.z1}/{g.z2}, {_g6(g.m_mm, lang)} " + pick(lang, "mm", "мм")),
         (pick(lang, "i_{12}: required / obtained", "i_{12}: требуемое / получено"), f"{_n(r.i_spur, lang, 3)} / {_n(g.i_actual, lang, 3)}"),
     ]
     if g.shifted:
