@@ -122,3 +122,33 @@ def test_english_headings():
         rus = [e.dxf.text for e in doc.modelspace().query("TEXT")
                if not (e.dxf.insert.x >= tb_x - 1e-6 and e.dxf.insert.y <= tb_y) and re.search(r"[А-Яа-яЁё]", e.dxf.text)]
         assert not rus, rus[:10]
+
+
+def test_write_sheets_forked_or_not_same_files(tmp_path, monkeypatch):
+    """Sheet 3 drawn in a forked child (two cores) or here: the same files, the same drawing; a
+    child that fails leaves sheet 3 to this process."""
+    import os
+
+    import tmm_cli.render.sheets as sheets
+    from tmm_cli.project import run_project
+
+    r = run_project(VARIANTS[3], crank_rpm=40.0)
+    counts = {}
+    parent = os.getpid()
+    real = sheets.sheet3
+
+    def failing_in_child(*a, **kw):
+        if os.getpid() != parent:
+            raise RuntimeError("child fails")
+        return real(*a, **kw)
+
+    for mode in ("here", "fork", "child-fails"):
+        monkeypatch.setattr(sheets, "_fork_ok", (lambda: False) if mode == "here" else (lambda: True))
+        monkeypatch.setattr(sheets, "sheet3", failing_in_child if mode == "child-fails" else real)
+        d = tmp_path / mode
+        d.mkdir()
+        names = sheets.write_sheets(d, r, "ru", TITLE)
+        assert sorted(names) == ["sheet3.dxf", "sheet3.pdf", "sheet4.dxf", "sheet4.pdf"]
+        assert sorted(p.name for p in d.iterdir()) == sorted(names)
+        counts[mode] = [len(ezdxf.readfile(d / n).modelspace()) for n in ("sheet3.dxf", "sheet4.dxf")]
+    assert counts["here"] == counts["fork"] == counts["child-fails"]
