@@ -110,7 +110,10 @@ def _scheme_field(sh: Sheet, r, lang: str):
         for (lx, ly, t) in ((xk, 0.5 * rk, f"k{suf}"), (xk, rk + rc, f"c{suf}"), (xh, 0.5 * rC, f"H{suf}"),
                             (x_c2, rn + 0.05 * rmax, f"n{suf}")):
             q = P(lx, ly)
-            sh.text(q[0] - 1.5, q[1], t, H_LABEL, align="right", valign="middle")
+            if t.startswith("c"):  # above the planet's axle, which runs left of the bar
+                sh.text(q[0] - 1.5, q[1] + 1.2, t, H_LABEL, align="right")
+            else:
+                sh.text(q[0] - 1.5, q[1], t, H_LABEL, align="right", valign="middle")
         if s.z_planet2 is not None:
             q = P(x_c2, rC + 0.5 * rc2)
             sh.text(q[0] + 1.5, q[1], f"c′{suf}", H_LABEL, valign="middle")
@@ -118,9 +121,9 @@ def _scheme_field(sh: Sheet, r, lang: str):
     sh.line(P(prev, 0), P(prev + 0.8 * gap, 0), "Основные")
     sh.line(P(prev, 0.6), P(prev + 0.8 * gap, 0.6), "Основные")
     q = P(-0.4 * rmax, 0)
-    sh.text(q[0], q[1] + 2.0, pick(lang, "from motor", "от двигателя"), H_SMALL)
+    sh.text(q[0], q[1] + 0.6 * fld.scale + 1.5, pick(lang, "from motor", "от двигателя"), H_SMALL)
     q = P(prev + 0.8 * gap, 0)
-    sh.text(q[0], q[1] + 2.0, pick(lang, "to crank", "к кривошипу"), H_SMALL, align="right")
+    sh.text(q[0], q[1] + 0.6 * fld.scale + 1.5, pick(lang, "to crank", "к кривошипу"), H_SMALL, align="right")
     teeth = "; ".join(", ".join(f"{n} = {v}" for n, v in zip(
         ("z_{k}", "z_{c}", "z_{c′}", "z_{n}") if s.z_planet2 is not None else ("z_{k}", "z_{c}", "z_{n}"), s.teeth))
         + f", k = {s.planets}" for s in d.stages)
