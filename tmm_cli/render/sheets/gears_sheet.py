@@ -123,7 +123,9 @@ def _scheme_field(sh: Sheet, r, lang: str):
     q = P(-0.4 * rmax, 0)
     sh.text(q[0], q[1] + 0.6 * fld.scale + 1.5, pick(lang, "from motor", "от двигателя"), H_SMALL)
     q = P(prev + 0.8 * gap, 0)
-    sh.text(q[0], q[1] + 0.6 * fld.scale + 1.5, pick(lang, "to crank", "к кривошипу"), H_SMALL, align="right")
+    # beyond the shaft's end (above it the text would cross the carrier's arm)
+    sh.text(q[0] + 1.0, q[1] + 0.6 * fld.scale + 1.5, pick(lang, "to crank", "к кривошипу"), H_SMALL,
+            width=max(8.0, x1b - q[0] - 3.0), max_lines=2)
     teeth = "; ".join(", ".join(f"{n} = {v}" for n, v in zip(
         ("z_{k}", "z_{c}", "z_{c′}", "z_{n}") if s.z_planet2 is not None else ("z_{k}", "z_{c}", "z_{n}"), s.teeth))
         + f", k = {s.planets}" for s in d.stages)
