@@ -363,20 +363,26 @@ def _circle_labels(sh, c, f, theta0, clip, items):
 
 
 def dim_tooth(g, f, c1, clip, sx) -> int:
-    """The tooth of gear 1 that carries the p, s, e dimensions: ≥ 40° from the pole (clear of
-    gear 2), its dimension arcs inside the field; the side away from N2 first."""
+    """The tooth of gear 1 that carries the p, s, e dimensions: ≥ 40° from the pole, its
+    dimension arcs inside the field and clear of gear 2's tip circle; the side away from N2 first."""
     t1 = 2 * math.pi / g.z1
-    r_out = g.da1_mm / 2 * f + 22.0
-    for deg_min in (50.0, 40.0, 30.0, 60.0, 70.0):
-        for side in (-sx, sx):
-            j = int(math.ceil(math.radians(deg_min) / t1)) * int(side)
-            ok = True
-            for da in np.linspace(-0.5 * t1, 1.5 * t1, 9):
-                a = math.pi / 2 + j * t1 + da
-                q = c1 + r_out * np.array([math.cos(a), math.sin(a)])
-                ok &= clip[0] + 3 < q[0] < clip[2] - 3 and clip[1] + 3 < q[1] < clip[3] - 3
-            if ok:
-                return j
+    r_in, r_out = g.da1_mm / 2 * f + 4.0, g.da1_mm / 2 * f + 22.0
+    c2 = c1 + np.array([0.0, centre_distance(g) * f])
+    ra2 = g.da2_mm / 2 * f + 3.0
+    for clear in (True, False):
+        for deg_min in (50.0, 40.0, 60.0, 70.0, 30.0):
+            for side in (-sx, sx):
+                j = int(math.ceil(math.radians(deg_min) / t1)) * int(side)
+                ok = True
+                for da in np.linspace(-0.5 * t1, 1.5 * t1, 9):
+                    a = math.pi / 2 + j * t1 + da
+                    e = np.array([math.cos(a), math.sin(a)])
+                    for q in (c1 + r_in * e, c1 + r_out * e):
+                        ok &= clip[0] + 3 < q[0] < clip[2] - 3 and clip[1] + 3 < q[1] < clip[3] - 3
+                    q = c1 + (r_in + 11.0) * e  # the labels s and e
+                    ok &= (not clear) or float(np.hypot(*(q - c2))) > ra2
+                if ok:
+                    return j
     return int(math.ceil(math.radians(50.0) / t1)) * int(-sx)
 
 
@@ -513,8 +519,17 @@ def _mesh_field(sh: Sheet, r, lang: str):
     a_t = rot1 + jd * t1
     deg = math.degrees
     sh.dim_arc(c1, rdim, deg(a_t - half_s), deg(a_t + half_s), "s", H_SMALL, ext_from=r1 * f)
-    sh.dim_arc(c1, rdim + 7.0, deg(a_t + half_s), deg(a_t + half_s + ts["e"][0] / r1), "e", H_SMALL, ext_from=r1 * f)
-    sh.dim_arc(c1, rdim + 14.0, deg(a_t - half_s), deg(a_t - half_s + g.p_mm / r1), "p", H_SMALL, ext_from=r1 * f)
+    # the space e on the side of the tooth farther from gear 2 (its label clear of gear 2's teeth)
+    e_ang = ts["e"][0] / r1
+    c2s = np.array(fld.p(*o2))
+
+    def far(a):
+        return float(np.hypot(*(c1 + (rdim + 8.0) * np.array([math.cos(a), math.sin(a)]) - c2s)))
+
+    e0 = a_t + half_s if far(a_t + half_s + e_ang / 2) >= far(a_t - half_s - e_ang / 2) else a_t - half_s - e_ang
+    sh.dim_arc(c1, rdim + 7.0, deg(e0), deg(e0 + e_ang), "e", H_SMALL, ext_from=r1 * f)
+    p0 = min(e0, a_t - half_s)
+    sh.dim_arc(c1, rdim + 14.0, deg(p0), deg(p0 + g.p_mm / r1), "p", H_SMALL, ext_from=r1 * f)
     # radial dimensions h_f, h_a, h (gear 2, a tooth away from the pole) and c
     r2 = g.d2_mm / 2
     t2 = 2 * math.pi / g.z2
