@@ -122,6 +122,9 @@ def test_english_headings():
         rus = [e.dxf.text for e in doc.modelspace().query("TEXT")
                if not (e.dxf.insert.x >= tb_x - 1e-6 and e.dxf.insert.y <= tb_y) and re.search(r"[А-Яа-яЁё]", e.dxf.text)]
         assert not rus, rus[:10]
+        # English numbers: decimal points, also in the scales (М 1:2,5 is M 1:2.5)
+        assert not [x for x in texts(doc) if re.search(r"\d,\d", x) and not (x.startswith("ЮУрГУ"))], \
+            [x for x in texts(doc) if re.search(r"\d,\d", x)][:10]
 
 
 def test_write_sheets_forked_or_not_same_files(tmp_path, monkeypatch):

@@ -178,7 +178,7 @@ def _zone_field(sh: Sheet, r, lang: str):
     cy = (y0b + 30.0 + y1b - 40.0) / 2
     origin = (cx - fac * mid[0], cy - fac * mid[1])
     f = sh.add_field("zone", BOX_ZONE, pick(lang, "Minimum cam radius", "Определение минимального радиуса кулачка"),
-                     origin=origin, scale=fac, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {name}")
+                     origin=origin, scale=fac, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {pick(lang, name.replace(',', '.'), name)}")
     clip = (x0b + 1, y0b + 28.0, x1b - 1, f.inner[3])
     # the construction's own window: the zone and the lines end a little beyond it
     pad = 0.06 * float((hi - lo).max())
@@ -430,7 +430,7 @@ def _profile_field(sh: Sheet, r, lang: str):
     name, fac, (cx, cy) = profile_layout(r)
     x0b, y0b, x1b, y1b = BOX_PROFILE
     f = sh.add_field("profile", BOX_PROFILE, pick(lang, "Cam profile synthesis", "Синтез профиля кулачка"),
-                     origin=(cx, cy), scale=fac, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {name}")
+                     origin=(cx, cy), scale=fac, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {pick(lang, name.replace(',', '.'), name)}")
     f.box = (x0b + 1, y0b + 1, x1b - 1, f.inner[3])
     P = p.pitch * k
     n = len(p.phi) - 1
@@ -520,7 +520,7 @@ def _profile_field(sh: Sheet, r, lang: str):
     if abs(fac - 0.001 / d.k_sk) > 1e-12:
         why = pick(lang, "the pivot circle", "окружность центров качания") if p.pivot_path is not None else \
             pick(lang, "the profile with its constructions", "профиль с построениями")
-        txt.append(pick(lang, f"(Table 1.1 gives {d.scale}; a smaller ГОСТ 2.302 scale here to fit {why})",
+        txt.append(pick(lang, f"(Table 1.1 gives {d.scale.replace(',', '.')}; a smaller ГОСТ 2.302 scale here to fit {why})",
                         f"(по табл. 1.1 — {d.scale}; здесь меньший масштаб ГОСТ 2.302, чтобы уместить {why})"))
     y = y0b + 2.0 + 4.6 * (len(txt) - 1)
     for t in txt:
@@ -641,7 +641,7 @@ def _results(sh: Sheet, r, lang: str, prof_scale: str) -> None:
         (pick(lang, "Scales k_{S}, k_{V}, k_{a}", "Масштабы k_{S}, k_{V}, k_{a}") if not z.rocker
          else pick(lang, "Scales k_{γ}, k_{ω}, k_{ε}", "Масштабы k_{γ}, k_{ω}, k_{ε}"),
          f"{_g(sc.k_s, lang, 3)}; {_g(sc.k_v, lang, 3)}; {_g(sc.k_a, lang, 3)}"),
-        (pick(lang, "Profile scale (k_{Sk})", "Масштаб профиля (k_{Sk})"), f"{pick(lang, 'M', 'М')} {prof_scale}"),
+        (pick(lang, "Profile scale (k_{Sk})", "Масштаб профиля (k_{Sk})"), f"{pick(lang, 'M', 'М')} {pick(lang, prof_scale.replace(',', '.'), prof_scale)}"),
         (pick(lang, "Closure, follower", "Замыкание, толкатель"),
          pick(lang, f"{z.closure}, {'rocker' if z.rocker else 'translating'}",
               f"{'силовое' if z.closure == 'force' else 'геометрическое'}, {'коромысло' if z.rocker else 'поступательный'}")),

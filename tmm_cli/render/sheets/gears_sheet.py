@@ -74,7 +74,7 @@ def _scheme_field(sh: Sheet, r, lang: str):
     origin = (x0b + 12.0 + 0.45 * rmax * f, cy)
     fld = sh.add_field("scheme", BOX_SCHEME, pick(lang, "Planetary reducer scheme", "Схема планетарного механизма"),
                        origin=origin, scale=f, scale_label=name,
-                       scale_text=f"K_{{S}} = {num(k_s, lang, sig=3)} {pick(lang, 'm/mm', 'м/мм')} ({pick(lang, 'M', 'М')} {name}, m = 1 {pick(lang, 'mm', 'мм')})")
+                       scale_text=f"K_{{S}} = {num(k_s, lang, sig=3)} {pick(lang, 'm/mm', 'м/мм')} ({pick(lang, 'M', 'М')} {pick(lang, name.replace(',', '.'), name)}, m = 1 {pick(lang, 'mm', 'мм')})")
     P = fld.p
     # the axis
     fld.line((-0.4 * rmax, 0), (x_end + 0.9 * gap, 0), "Осевые")
@@ -395,7 +395,7 @@ def _mesh_field(sh: Sheet, r, lang: str):
     # O1 low in the field, the pole in the middle band
     origin = mesh_origin(g, f)
     fld = sh.add_field("mesh", BOX_MESH, pick(lang, "Spur gear mesh synthesis", "Геометрический синтез зубчатого зацепления"),
-                       origin=origin, scale=f, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {name}")
+                       origin=origin, scale=f, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {pick(lang, name.replace(',', '.'), name)}")
     clip = (x0b + 1.0, y0b + 24.0, x1b - 1.0, fld.inner[3])
     fld.box = clip
     m = g.m_mm
