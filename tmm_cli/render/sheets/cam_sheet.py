@@ -468,10 +468,11 @@ def _profile_field(sh: Sheet, r, lang: str):
         out = b / (np.hypot(*b) or 1.0)
         labels.append((row.index, np.array(f.p(*b)) + out * (rp * fac + 2.5)))
     seen = []
-    for idx, q in labels:
-        if all(np.hypot(*(q - s)) > 3.0 for s in seen):
+    for idx, q in labels:  # a number is left out where it would touch one already written
+        w = sh.text_width(f"{idx}'", H_SMALL)
+        if all(abs(q[0] - s[0]) > (w + ws) / 2 + 0.6 or abs(q[1] - s[1]) > H_SMALL + 0.4 for s, ws in seen):
             sh.text(q[0], q[1], f"{idx}'", H_SMALL, align="center", valign="middle")
-            seen.append(q)
+            seen.append((q, w))
     # centre O, B_0', the pivot C (rocker) with the rocker in the start position
     _cross(sh, f.p(0, 0), 5.0)
     sh.text(*np.add(f.p(0, 0), (1.5, -5.0)), "O", H_LABEL)
