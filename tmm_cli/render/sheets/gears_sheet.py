@@ -422,6 +422,7 @@ def _mesh_field(sh: Sheet, r, lang: str):
     tooth1 = thin_out(tooth_outline(g.z1, m, **_shift_kw(g, 1)), 0.6 / f)  # a vertex every 0.6 mm of paper
     tooth2 = thin_out(tooth_outline(g.z2, m, **_shift_kw(g, 2)), 0.6 / f)
     active = []
+    drawn = []  # the teeth on the sheet [mm]: the point labels keep clear of them
     for z, tooth, centre, rot, rmin_s, ra in ((g.z1, tooth1, o1, rot1, g.p1_mm, g.da1_mm / 2),
                                               (g.z2, tooth2, o2, rot2, g.p2_mm, g.da2_mm / 2)):
         tau = 2 * math.pi / z
@@ -432,6 +433,7 @@ def _mesh_field(sh: Sheet, r, lang: str):
             ca, sa = math.cos(a), math.sin(a)
             pts = tooth @ np.array([[ca, sa], [-sa, ca]]) + centre
             fld.poly(pts, "Основные")
+            drawn.append(np.asarray(fld.origin) + f * pts)
             # the working flank's active part: radii r(P1 or P2) … r_a, on the side that works
             rad = np.hypot(*(pts - centre).T)
             ang = np.arctan2(pts[:, 1] - centre[1], pts[:, 0] - centre[0]) - a
@@ -456,12 +458,25 @@ def _mesh_field(sh: Sheet, r, lang: str):
     fld.line(o2, n2, "Тонкие")
     pts_on = {"N_1": 0.0, "P_1": g.p1_mm, "U_2": g.u2_mm, "P": g.pole_mm, "U_1": g.u1_mm, "P_2": g.p2_mm, "N_2": g.n1n2_mm}
     nrm = np.array([-u[1], u[0]])  # left of the line
+    # each name where it is farthest from the teeth, the zone numbers and the names already placed
+    # (alternating sides of the line of action by default)
+    busy = np.vstack(drawn + [np.array([fld.p(*((at(s0) + at(s1)) / 2 - nrm * 3.5 / f))
+                                         for s0, s1 in ((g.p1_mm, g.u2_mm), (g.u2_mm, g.u1_mm), (g.u1_mm, g.p2_mm))])])
+    uu = np.asarray(u)
     for k_, (nm, s) in enumerate(pts_on.items()):
         q = np.array(fld.p(*at(s)))
         sh.dot(q, 0.6)
         side = 1.0 if k_ % 2 == 0 else -1.0
-        off = nrm * side * 4.5
-        sh.text(q[0] + off[0], q[1] + off[1], nm, H_LABEL, align="center", valign="middle")
+        best, best_score = None, -1.0
+        for sd in (side, -side):
+            for dist in (4.0, 6.0):
+                for t in (0.0, 2.5, -2.5):
+                    c = q + nrm * sd * dist + uu * t
+                    score = float(np.min(np.hypot(*(busy - c).T)))
+                    if score > best_score + 0.3:
+                        best, best_score = c, score
+        sh.text(best[0], best[1], nm, H_LABEL, align="center", valign="middle")
+        busy = np.vstack([busy, best[None, :], q[None, :]])
     # zones: a band beside the line (double-pair hatched ticks, single-pair plain)
     band = -nrm * 7.0 / f
     for s0, s1, lab in ((g.p1_mm, g.u2_mm, "2"), (g.u2_mm, g.u1_mm, "1"), (g.u1_mm, g.p2_mm, "2")):
