@@ -98,6 +98,29 @@ def note_time(variant: int = 17) -> tuple[float, float]:
     return t1 - t0, t2 - t1
 
 
+def sheets_in_process(variant: int = 17, runs: int = 3) -> tuple[float, float]:
+    """Median seconds of write_sheets (both sheets, DXF + PDF) in this process: drawn one after the
+    other, and sheet 3 in a forked child beside sheet 4 (what `tmm project` does on two cores)."""
+    import tmm_cli.render.sheets as sheets
+    from tmm_cli.project import run_project
+    from tmm_cli.variants import load_table
+
+    result = run_project(load_table()[variant])
+    real = sheets._fork_ok
+    out = []
+    for fork in (False, True):
+        sheets._fork_ok = (lambda: fork) if not fork else real
+        times = []
+        for _ in range(runs):
+            with tempfile.TemporaryDirectory() as d:
+                t = time.perf_counter()
+                sheets.write_sheets(Path(d), result, "ru")
+                times.append(time.perf_counter() - t)
+        out.append(statistics.median(times))
+    sheets._fork_ok = real
+    return out[0], out[1]
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--runs", type=int, default=7)
@@ -134,6 +157,8 @@ def main() -> None:
         without = wall(tmm_main + ["project", "--variant", "17", "--no-sheets", "--out", str(out)], args.runs)
         print(f"sheets 3 and 4 (DXF + PDF) add to tmm project --variant 17 (figures, report): {with_s - without:.2f} s "
               f"({without:.2f} -> {with_s:.2f} s; target <= 3 s)")
+        seq, par = sheets_in_process()
+        print(f"sheets 3 and 4 in process (variant 17): one after the other {seq:.2f} s, sheet 3 in a forked child {par:.2f} s")
         worst, median, at = in_process_synthesis()
         print(f"in-process gear synthesis over n_cr = 30..960 rpm: worst {worst * 1000:.1f} ms (at {at:g} rpm), median {median * 1000:.1f} ms")
         if args.batch:

@@ -22,6 +22,7 @@ from tmm_cli.cam.design import design_cam
 from tmm_cli.cli import cli
 from tmm_cli.gears.design import design_gears
 from tmm_cli.render.cam_json import profile_csv
+from tmm_cli.render.report import cam_document, gears_document
 from tmm_cli.render.sheets import save_sheet, sheet3, sheet4
 from tmm_cli.titleblock import TitleFields
 from tmm_cli.variants import load_table
@@ -130,6 +131,28 @@ def test_sheet3_every_variant(number):
     if cam.sizing.l_oc_m is not None:
         R = max(R, cam.sizing.l_oc_m * 1000.0 * k)
     assert x0 <= ox - R and ox + R <= x1 and y0 <= oy - R and oy + R <= y1
+    roller_circles_match_json(doc, cam)
+
+
+def roller_circles_match_json(doc, cam, lang="ru"):
+    """The roller circles in the profile field have the radius the exported JSON carries
+    (roller_mm: 0.2·r0, 0.8·ρ_min or the student's) × the field's scale; the book's 0.2·r0 is not
+    drawn as a roller when another rule gave the roller; the table names the rule."""
+    js = json.loads(json.dumps(cam_document(cam.variant, cam, lang)))["cam"]
+    roller, book, rule = js["roller_mm"], js["roller_book_mm"], js["roller_rule_applied"]
+    f = fields(doc)["profile"]
+    x0, y0, x1, y1 = f["box"]
+    k = f["scale"]
+    inside = [e for e in doc.modelspace().query("CIRCLE")
+              if x0 < e.dxf.center.x < x1 and y0 < e.dxf.center.y < y1
+              and math.dist((e.dxf.center.x, e.dxf.center.y), f["origin"]) > 1e-6]
+    rollers = [e for e in inside if abs(e.dxf.radius - roller * k) < 1e-3 * k]
+    assert len(rollers) >= 4, (roller, sorted({round(e.dxf.radius / k, 3) for e in inside}))
+    if abs(book - roller) > 0.05:
+        assert not [e for e in inside if abs(e.dxf.radius - book * k) < 1e-3 * k]
+    texts = "".join(e.dxf.text for e in doc.modelspace().query("TEXT"))
+    want = {"book": "0,2·r", "limited": "0,8·ρ", "student": "задан"}[rule]
+    assert want in texts
 
 
 @pytest.mark.parametrize("scheme", sorted(GEAR_CASES))
@@ -139,20 +162,27 @@ def test_sheet4_schemes(scheme, tmp_path):
     doc = reopen(sheet4(g, 7, "ru", TITLE), tmp_path, "sheet4")
     fl = check_layout(doc)
     assert set(fl) >= {"scheme", "linear", "angular", "assembly", "mesh"}
-    f = fl["mesh"]
-    k = f["scale"]
-    ox, oy = f["origin"]
-    m = 20.0
-    z1, z2 = g.spur.z1, g.spur.z2
-    a = m * (z1 + z2) / 2
-    centres = {1: (ox, oy), 2: (ox, oy + a * k)}  # the line of centres is vertical, O1 below
-    for z, c in ((z1, centres[1]), (z2, centres[2])):
-        ra = m * (z + 2) / 2 * k
-        found = [e for e in doc.modelspace().query("ARC CIRCLE")
-                 if math.dist((e.dxf.center.x, e.dxf.center.y), c) < 1e-6 and abs(e.dxf.radius - ra) < 1e-6]
-        assert found, f"tip circle of z = {z} not drawn at the scale"
+    mesh_matches_json(doc, g)
     texts = [e.dxf.text for e in doc.modelspace().query("TEXT")]
     assert "ТММ.04.07.00.00" in texts
+
+
+def mesh_matches_json(doc, g, variant=None):
+    """The tip circles of both wheels in the mesh field have the radius d_a/2 × scale, with d_a read
+    from the exported JSON (gears.spur.da_mm: the real, shifted tip circles), centred on O1 (the
+    field's origin) and O2 at a_w × scale above it (gears.spur.a_w_mm)."""
+    v = variant or VARIANTS[7]
+    sp = json.loads(json.dumps(gears_document(v, g, "ru")))["gears"]["spur"]
+    f = fields(doc)["mesh"]
+    k = f["scale"]
+    ox, oy = f["origin"]
+    centres = ((ox, oy), (ox, oy + sp["a_w_mm"] * k))  # the line of centres is vertical, O1 below
+    for j, c in enumerate(centres):
+        ra = sp["da_mm"][j] / 2 * k
+        found = [e for e in doc.modelspace().query("ARC CIRCLE")
+                 if math.dist((e.dxf.center.x, e.dxf.center.y), c) < 1e-4 and abs(e.dxf.radius - ra) < 1e-4]
+        assert found, f"tip circle of gear {j + 1} (d_a = {sp['da_mm'][j]}) not drawn at a_w × scale"
+    return sp
 
 
 def test_long_title_text_is_fitted():

@@ -129,6 +129,26 @@ class PairGeometry:
     def z2(self) -> int:
         return self.z[1]
 
+    @property
+    def e_mm(self) -> tuple[float, float]:
+        """Space width on the pitch circle e = p − s [mm] (the drawing sheet's dimension e)."""
+        return tuple(self.p_mm - si for si in self.s_mm)
+
+    @property
+    def ha_mm(self) -> tuple[float, float]:
+        """Addendum h_a = (d_a − d)/2 = (h_a* + x − Δy)·m [mm] of each gear."""
+        return tuple((da - d) / 2 for da, d in zip(self.da_mm, self.d_mm))
+
+    @property
+    def hf_mm(self) -> tuple[float, float]:
+        """Dedendum h_f = (d − d_f)/2 = (h_a* + c* − x)·m [mm] of each gear."""
+        return tuple((d - df) / 2 for d, df in zip(self.d_mm, self.df_mm))
+
+    @property
+    def shift_mm(self) -> tuple[float, float]:
+        """The tool's displacement x·m [mm] of each gear (+ away from the centre)."""
+        return tuple(xi * self.m_mm for xi in self.x)
+
 
 def working_angle_deg(z1: int, z2: int, x_sum: float, alpha_deg: float = ALPHA_DEG) -> float:
     """α_w [deg] from inv α_w = inv α + 2x_Σ tg α/(z1 + z2) (seed 000, step 1), by Newton.

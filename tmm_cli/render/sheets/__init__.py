@@ -39,11 +39,64 @@ def save_sheet(sheet, folder: Path, name: str, pdf: bool = True) -> list[str]:
     return out
 
 
+def _fork_ok() -> bool:
+    """Draw the two sheets in two processes: on Linux with more than one core, and not inside a
+    batch worker (a worker of ``tmm batch`` already keeps every core busy)."""
+    import multiprocessing
+    import os
+    import sys
+
+    return (sys.platform.startswith("linux") and (os.cpu_count() or 1) > 1
+            and multiprocessing.parent_process() is None)
+
+
+def _warm_up() -> None:
+    """Import what both processes need before forking (else each would import it again)."""
+    import ezdxf  # noqa: F401
+    from ezdxf.addons.drawing import Frontend  # noqa: F401
+    from ezdxf.addons.drawing.matplotlib import MatplotlibBackend  # noqa: F401
+    from matplotlib.backends import backend_pdf  # noqa: F401
+
+    from . import cam_sheet, gears_sheet, pdf  # noqa: F401
+
+
 def write_sheets(folder: Path, result, lang: str, title=None) -> list[str]:
-    """sheet3.dxf/.pdf and sheet4.dxf/.pdf of a ProjectResult into `folder` (a staging folder)."""
+    """sheet3.dxf/.pdf and sheet4.dxf/.pdf of a ProjectResult into `folder` (a staging folder).
+
+    On two cores a forked child draws and writes sheet 3 while this process does sheet 4 (the
+    PDF rendering is most of the time); if the child fails, sheet 3 is drawn here afterwards, so
+    the files are the same either way (the pattern of ``figure_kit.save_side_by_side``)."""
+    import os
+    import sys
+
     from ...titleblock import TitleFields
 
+    folder = Path(folder)
     title = title or TitleFields()
-    names = save_sheet(sheet3(result.cam, lang, title), folder, "sheet3")
-    names += save_sheet(sheet4(result.gears, result.variant.number, lang, title), folder, "sheet4")
-    return names
+
+    def first():
+        return save_sheet(sheet3(result.cam, lang, title), folder, "sheet3")
+
+    def second():
+        return save_sheet(sheet4(result.gears, result.variant.number, lang, title), folder, "sheet4")
+
+    if not _fork_ok():
+        return first() + second()
+    _warm_up()
+    sys.stdout.flush()
+    sys.stderr.flush()
+    pid = os.fork()
+    if pid == 0:  # the child: sheet 3, then leave without running any exit handler of the parent
+        code = 1
+        try:
+            first()
+            code = 0
+        finally:
+            os._exit(code)
+    try:
+        mine = second()
+    finally:
+        _, status = os.waitpid(pid, 0)
+    if status == 0 and all((folder / n).is_file() for n in ("sheet3.dxf", "sheet3.pdf")):
+        return ["sheet3.dxf", "sheet3.pdf"] + mine
+    return first() + mine  # the child failed: draw sheet 3 here (an error now surfaces normally)

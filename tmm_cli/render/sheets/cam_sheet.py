@@ -135,10 +135,10 @@ def _motion_field(sh: Sheet, r, lang: str) -> None:
         kn = ("k_{S}", "k_{V}", "k_{a}")
     lines = [
         f"k_{{φ}} = {_g(sc.k_phi_deg_mm, lang)} °/{mm};  k_{{t}} = {_g(sc.k_t_s_mm, lang)} "
-        + pick(lang, "s/mm", "с/мм") + f";  b = {sc.b_mm:g} {mm}",
+        + pick(lang, "s/mm", "с/мм") + f";  b = {num(sc.b_mm, lang, sig=6)} {mm}",
         f"{kn[0]} = {_g(sc.k_s, lang)} {s_unit};  {kn[1]} = {_g(sc.k_v, lang)} {v_unit};  {kn[2]} = {_g(sc.k_a, lang)} {a_unit}",
-        f"H_{{V}} = {sc.h_v_mm:g} {mm};  H_{{a}} = {sc.h_a_mm:g} {mm};  "
-        + pick(lang, f"law {v.law}", f"закон {v.law}") + f";  n_{{к}} = {abs(v.n_cam_rpm):g} "
+        f"H_{{V}} = {num(sc.h_v_mm, lang, sig=6)} {mm};  H_{{a}} = {num(sc.h_a_mm, lang, sig=6)} {mm};  "
+        + pick(lang, f"law {v.law}", f"закон {v.law}") + f";  {pick(lang, 'n_{c}', 'n_{к}')} = {num(abs(v.n_cam_rpm), lang, sig=6)} "
         + pick(lang, "rpm", "об/мин"),
     ]
     if rocker:
@@ -178,7 +178,7 @@ def _zone_field(sh: Sheet, r, lang: str):
     cy = (y0b + 30.0 + y1b - 40.0) / 2
     origin = (cx - fac * mid[0], cy - fac * mid[1])
     f = sh.add_field("zone", BOX_ZONE, pick(lang, "Minimum cam radius", "Определение минимального радиуса кулачка"),
-                     origin=origin, scale=fac, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {name}")
+                     origin=origin, scale=fac, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {pick(lang, name.replace(',', '.'), name)}")
     clip = (x0b + 1, y0b + 28.0, x1b - 1, f.inner[3])
     # the construction's own window: the zone and the lines end a little beyond it
     pad = 0.06 * float((hi - lo).max())
@@ -274,8 +274,8 @@ def _zone_field(sh: Sheet, r, lang: str):
         sh.text(q[0] + 1.0, q[1] - 1.0, f"ν_{{{i}}} = {_n(nu_i, lang, 1)}°", H_SMALL, valign="top")
     # caption under the drawing
     txt = [
-        f"ν_{{max}} = {v.nu_max_deg:g}°;  r_0 = {_n(z.r0_m * k, lang, 2)} {pick(lang, 'mm', 'мм')}",
-        (f"l_{{OC}} = {_n(z.l_oc_m * k, lang, 2)} {pick(lang, 'mm', 'мм')};  l_{{BC}} = {v.l_bc_m * k:g} {pick(lang, 'mm', 'мм')}"
+        f"ν_{{max}} = {num(v.nu_max_deg, lang, sig=6)}°;  r_0 = {_n(z.r0_m * k, lang, 2)} {pick(lang, 'mm', 'мм')}",
+        (f"l_{{OC}} = {_n(z.l_oc_m * k, lang, 2)} {pick(lang, 'mm', 'мм')};  l_{{BC}} = {num(v.l_bc_m * k, lang, sig=6)} {pick(lang, 'mm', 'мм')}"
          if z.rocker else f"e = {_n(z.e_m * k, lang, 2)} {pick(lang, 'mm', 'мм')}"),
         pick(lang, f"O_b — book's vertex: r_0 = {_n(z.book_r0_m * k, lang, 2)} mm",
              f"O_{{кн}} — вершина по пособию: r_0 = {_n(z.book_r0_m * k, lang, 2)} мм"),
@@ -430,7 +430,7 @@ def _profile_field(sh: Sheet, r, lang: str):
     name, fac, (cx, cy) = profile_layout(r)
     x0b, y0b, x1b, y1b = BOX_PROFILE
     f = sh.add_field("profile", BOX_PROFILE, pick(lang, "Cam profile synthesis", "Синтез профиля кулачка"),
-                     origin=(cx, cy), scale=fac, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {name}")
+                     origin=(cx, cy), scale=fac, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {pick(lang, name.replace(',', '.'), name)}")
     f.box = (x0b + 1, y0b + 1, x1b - 1, f.inner[3])
     P = p.pitch * k
     n = len(p.phi) - 1
@@ -468,10 +468,11 @@ def _profile_field(sh: Sheet, r, lang: str):
         out = b / (np.hypot(*b) or 1.0)
         labels.append((row.index, np.array(f.p(*b)) + out * (rp * fac + 2.5)))
     seen = []
-    for idx, q in labels:
-        if all(np.hypot(*(q - s)) > 3.0 for s in seen):
+    for idx, q in labels:  # a number is left out where it would touch one already written
+        w = sh.text_width(f"{idx}'", H_SMALL)
+        if all(abs(q[0] - s[0]) > (w + ws) / 2 + 0.6 or abs(q[1] - s[1]) > H_SMALL + 0.4 for s, ws in seen):
             sh.text(q[0], q[1], f"{idx}'", H_SMALL, align="center", valign="middle")
-            seen.append(q)
+            seen.append((q, w))
     # centre O, B_0', the pivot C (rocker) with the rocker in the start position
     _cross(sh, f.p(0, 0), 5.0)
     sh.text(*np.add(f.p(0, 0), (1.5, -5.0)), "O", H_LABEL)
@@ -516,12 +517,11 @@ def _profile_field(sh: Sheet, r, lang: str):
     sh.text(qm[0], qm[1], "ω_{к}" if lang == "ru" else "ω_{c}", H_LABEL, align="right", valign="top")
     # captions
     mm = pick(lang, "mm", "мм")
-    txt = [f"k_{{Sk}} = {_g(0.001 / fac, lang)} {pick(lang, 'm/mm', 'м/мм')};  r_{{р}} = 0,2·r_0 = {_n(rp, lang, 2)} {mm}"
-           if lang == "ru" else f"k_{{Sk}} = {_g(0.001 / fac, lang)} m/mm;  r_{{r}} = 0.2·r_0 = {_n(rp, lang, 2)} mm"]
+    txt = [f"k_{{Sk}} = {_g(0.001 / fac, lang)} {pick(lang, 'm/mm', 'м/мм')};  {pick(lang, 'r_{r}', 'r_{р}')} = {_roller_text(p, lang)}"]
     if abs(fac - 0.001 / d.k_sk) > 1e-12:
         why = pick(lang, "the pivot circle", "окружность центров качания") if p.pivot_path is not None else \
             pick(lang, "the profile with its constructions", "профиль с построениями")
-        txt.append(pick(lang, f"(Table 1.1 gives {d.scale}; a smaller ГОСТ 2.302 scale here to fit {why})",
+        txt.append(pick(lang, f"(Table 1.1 gives {d.scale.replace(',', '.')}; a smaller ГОСТ 2.302 scale here to fit {why})",
                         f"(по табл. 1.1 — {d.scale}; здесь меньший масштаб ГОСТ 2.302, чтобы уместить {why})"))
     y = y0b + 2.0 + 4.6 * (len(txt) - 1)
     for t in txt:
@@ -566,7 +566,7 @@ def _pressure_field(sh: Sheet, r, lang: str):
                 start = None
     ym = yo + v.nu_max_deg / k_nu
     sh.line((xo, ym), (xo + sc.b_mm, ym), "Осевые")
-    sh.text(xo + sc.b_mm, ym + 1.2, f"ν_{{max}} = {v.nu_max_deg:g}°", H_SMALL, align="right")
+    sh.text(xo + sc.b_mm, ym + 1.2, f"ν_{{max}} = {num(v.nu_max_deg, lang, sig=6)}°", H_SMALL, align="right")
     for row in m.table:
         x = xo + row.phi_deg / sc.k_phi_deg_mm
         sh.line((x, yo), (x, yo - 1.5), "Тонкие")
@@ -608,6 +608,18 @@ def table(sh: Sheet, box, title: str, rows: list[tuple[str, str]], col1: float =
     return bottom
 
 
+def _roller_text(p, lang: str) -> str:
+    """The carried roller and the rule that gave it (the core's ``roller_rule``); the book's
+    0.2·r_0 beside it when the roller differs from it."""
+    mm = pick(lang, "mm", "мм")
+    val = f"{_n(p.roller_m * 1000.0, lang)} {mm}"
+    book = f"0{pick(lang, '.', ',')}2·r_{{0}}"
+    if p.roller_rule == "book":
+        return f"{val} ({book})"
+    rule = {"limited": f"0{pick(lang, '.', ',')}8·ρ_{{min}}", "student": pick(lang, "given", "задан")}.get(p.roller_rule, p.roller_rule)
+    return f"{val} ({rule}; {book} = {_n(p.roller_book_m * 1000.0, lang)})"
+
+
 def _results(sh: Sheet, r, lang: str, prof_scale: str) -> None:
     v, z, p, sc = r.variant, r.sizing, r.profile, r.motion.scales
     k = 1000.0
@@ -622,15 +634,15 @@ def _results(sh: Sheet, r, lang: str, prof_scale: str) -> None:
     else:
         rows.append((pick(lang, "Offset e", "Эксцентриситет e"), f"{_n(z.e_m * k, lang)} {mm}"))
     rows += [
-        (pick(lang, "Roller radius r_{r}", "Радиус ролика r_{р}"), f"{_n(p.roller_m * k, lang)} {mm}"),
+        (pick(lang, "Roller radius r_{r}", "Радиус ролика r_{р}"), _roller_text(p, lang)),
         (pick(lang, "Pressure angle ν_{max} (given / reached)", "Угол давления ν_{max} (задан / получен)"),
-         f"{v.nu_max_deg:g}° / {_n(max(z.nu_rise_max_deg, z.nu_return_max_deg if z.closure == 'form' else 0), lang, 1)}°"),
+         f"{num(v.nu_max_deg, lang, sig=6)}° / {_n(max(z.nu_rise_max_deg, z.nu_return_max_deg if z.closure == 'form' else 0), lang, 1)}°"),
         (("Профильные углы ψ_{у}, ψ_{дс}, ψ_{в}" if ru else "Profile angles ψ"),
          f"{_n(p.psi_rise_deg, lang, 1)}°; {_n(p.psi_far_deg, lang, 1)}°; {_n(p.psi_return_deg, lang, 1)}°"),
         (pick(lang, "Scales k_{S}, k_{V}, k_{a}", "Масштабы k_{S}, k_{V}, k_{a}") if not z.rocker
          else pick(lang, "Scales k_{γ}, k_{ω}, k_{ε}", "Масштабы k_{γ}, k_{ω}, k_{ε}"),
          f"{_g(sc.k_s, lang, 3)}; {_g(sc.k_v, lang, 3)}; {_g(sc.k_a, lang, 3)}"),
-        (pick(lang, "Profile scale (k_{Sk})", "Масштаб профиля (k_{Sk})"), f"{pick(lang, 'M', 'М')} {prof_scale}"),
+        (pick(lang, "Profile scale (k_{Sk})", "Масштаб профиля (k_{Sk})"), f"{pick(lang, 'M', 'М')} {pick(lang, prof_scale.replace(',', '.'), prof_scale)}"),
         (pick(lang, "Closure, follower", "Замыкание, толкатель"),
          pick(lang, f"{z.closure}, {'rocker' if z.rocker else 'translating'}",
               f"{'силовое' if z.closure == 'force' else 'геометрическое'}, {'коромысло' if z.rocker else 'поступательный'}")),

@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from ..gears_figures import _mesh_geometry, tooth_outline
+from ..gears_figures import _mesh_geometry, _shift_kw, tooth_outline
 from ..i18n import pick
 from ..numbers import num
 from .paper import GOST_SCALES, Sheet, fit_scale, thin_out
@@ -33,6 +33,15 @@ ENLARGE = tuple((lab, f) for lab, f in GOST_SCALES if 0.5 <= f <= 10.0)
 
 def _n(x, lang, d=2):
     return num(x, lang, decimals=d)
+
+
+def _g6(x, lang):
+    """A number as %g would print it (6 significant digits), with a decimal comma under ru."""
+    return num(x, lang, sig=6)
+
+
+def aw_of(g) -> float:
+    return centre_distance(g)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -65,7 +74,7 @@ def _scheme_field(sh: Sheet, r, lang: str):
     origin = (x0b + 12.0 + 0.45 * rmax * f, cy)
     fld = sh.add_field("scheme", BOX_SCHEME, pick(lang, "Planetary reducer scheme", "Схема планетарного механизма"),
                        origin=origin, scale=f, scale_label=name,
-                       scale_text=f"K_{{S}} = {num(k_s, lang, sig=3)} {pick(lang, 'm/mm', 'м/мм')} ({pick(lang, 'M', 'М')} {name}, m = 1 {pick(lang, 'mm', 'мм')})")
+                       scale_text=f"K_{{S}} = {num(k_s, lang, sig=3)} {pick(lang, 'm/mm', 'м/мм')} ({pick(lang, 'M', 'М')} {pick(lang, name.replace(',', '.'), name)}, m = 1 {pick(lang, 'mm', 'мм')})")
     P = fld.p
     # the axis
     fld.line((-0.4 * rmax, 0), (x_end + 0.9 * gap, 0), "Осевые")
@@ -101,7 +110,10 @@ def _scheme_field(sh: Sheet, r, lang: str):
         for (lx, ly, t) in ((xk, 0.5 * rk, f"k{suf}"), (xk, rk + rc, f"c{suf}"), (xh, 0.5 * rC, f"H{suf}"),
                             (x_c2, rn + 0.05 * rmax, f"n{suf}")):
             q = P(lx, ly)
-            sh.text(q[0] - 1.5, q[1], t, H_LABEL, align="right", valign="middle")
+            if t.startswith("c"):  # above the planet's axle, which runs left of the bar
+                sh.text(q[0] - 1.5, q[1] + 1.2, t, H_LABEL, align="right")
+            else:
+                sh.text(q[0] - 1.5, q[1], t, H_LABEL, align="right", valign="middle")
         if s.z_planet2 is not None:
             q = P(x_c2, rC + 0.5 * rc2)
             sh.text(q[0] + 1.5, q[1], f"c′{suf}", H_LABEL, valign="middle")
@@ -109,9 +121,11 @@ def _scheme_field(sh: Sheet, r, lang: str):
     sh.line(P(prev, 0), P(prev + 0.8 * gap, 0), "Основные")
     sh.line(P(prev, 0.6), P(prev + 0.8 * gap, 0.6), "Основные")
     q = P(-0.4 * rmax, 0)
-    sh.text(q[0], q[1] + 2.0, pick(lang, "from motor", "от двигателя"), H_SMALL)
+    sh.text(q[0], q[1] + 0.6 * fld.scale + 1.5, pick(lang, "from motor", "от двигателя"), H_SMALL)
     q = P(prev + 0.8 * gap, 0)
-    sh.text(q[0], q[1] + 2.0, pick(lang, "to crank", "к кривошипу"), H_SMALL, align="right")
+    # beyond the shaft's end (above it the text would cross the carrier's arm)
+    sh.text(q[0] + 1.0, q[1] + 0.6 * fld.scale + 1.5, pick(lang, "to crank", "к кривошипу"), H_SMALL,
+            width=max(8.0, x1b - q[0] - 3.0), max_lines=2)
     teeth = "; ".join(", ".join(f"{n} = {v}" for n, v in zip(
         ("z_{k}", "z_{c}", "z_{c′}", "z_{n}") if s.z_planet2 is not None else ("z_{k}", "z_{c}", "z_{n}"), s.teeth))
         + f", k = {s.planets}" for s in d.stages)
@@ -286,6 +300,21 @@ def _cross_small(sh, c, s=3.0):
 MESH_ROOM = (BOX_MESH[1] + 30.0, BOX_MESH[3] - 28.0)  # y band of the drawing (captions below, heading above)
 
 
+def centre_distance(g) -> float:
+    """The distance the wheels run at [mm]: a_w of a shifted pair (= a for the book's zero pair)."""
+    return g.a_w_mm or g.a_mm
+
+
+def tooth_sizes(g) -> dict:
+    """s, e on the pitch circle, h_a, h_f of each gear and x·m [mm], read from the result: the
+    shifted pair's geometry (``g.pair``) when there is one, the book's zero pair otherwise."""
+    pr = g.pair
+    if pr is None:
+        ha, hf = g.ha_star * g.m_mm, (g.ha_star + g.c_star) * g.m_mm
+        return {"s": (g.s_mm, g.s_mm), "e": (g.e_mm, g.e_mm), "ha": (ha, ha), "hf": (hf, hf), "xm": (0.0, 0.0)}
+    return {"s": pr.s_mm, "e": pr.e_mm, "ha": pr.ha_mm, "hf": pr.hf_mm, "xm": pr.shift_mm}
+
+
 def mesh_scale(g) -> tuple[str, float]:
     """The mesh field's ГОСТ 2.302 scale, at most 1:1: the largest at which the smaller wheel's
     centre and the mesh zone with its dimensions fit; the larger wheel's centre may lie beyond
@@ -294,7 +323,7 @@ def mesh_scale(g) -> tuple[str, float]:
     room = hi - lo - 12.0
     choices = [(lab, f) for lab, f in GOST_SCALES if 0.1 <= f <= 1.0]
     r_small = min(g.d1_mm, g.d2_mm) / 2
-    ok = [c for c in choices if g.a_mm * c[1] <= room or r_small * c[1] + 14.0 + 150.0 <= room]
+    ok = [c for c in choices if centre_distance(g) * c[1] <= room or r_small * c[1] + 14.0 + 150.0 <= room]
     return max(ok, key=lambda c: c[1], default=choices[0])
 
 
@@ -303,28 +332,57 @@ def mesh_origin(g, f: float) -> tuple[float, float]:
     else the smaller wheel's centre 10 mm inside the band's edge."""
     lo, hi = MESH_ROOM
     x = (BOX_MESH[0] + BOX_MESH[2]) / 2
-    if g.a_mm * f <= hi - lo - 12.0:
-        return x, (lo + hi) / 2 - f * g.a_mm / 2
+    aw = centre_distance(g)
+    if aw * f <= hi - lo - 12.0:
+        return x, (lo + hi) / 2 - f * aw / 2
     if g.d2_mm <= g.d1_mm:  # O2 (top) shown, O1 below the field
-        return x, hi - 10.0 - f * g.a_mm
+        return x, hi - 10.0 - f * aw
     return x, lo + 10.0
 
 
+def _circle_labels(sh, c, f, theta0, clip, items):
+    """Names of concentric circles written along them, upright, each just outside its circle,
+    spread along the arc from ``theta0`` [deg] so that neighbours never overlap; a name whose
+    place falls outside the field is left out (its circle is named in the captions)."""
+    th = math.radians(theta0)
+    for d, txt in items:
+        if d is None:
+            continue
+        r = d / 2 * f
+        w = sh.text_width(txt, H_SMALL)
+        up = np.array([math.cos(th), math.sin(th)])
+        rot = math.degrees(th) - 90.0
+        out = True
+        if math.sin(th) < 0:  # lower half: read left to right, the letters inside the circle
+            rot += 180.0
+            out = False
+        q = c + (r + (0.8 if out else -0.8 - H_SMALL)) * up
+        if clip[0] + 3 < q[0] < clip[2] - 3 and clip[1] + 3 < q[1] < clip[3] - 3:
+            sh.text(q[0], q[1], txt, H_SMALL, align="center", rot=rot)
+        th += (w + 3.0) / max(r, 1.0)
+
+
 def dim_tooth(g, f, c1, clip, sx) -> int:
-    """The tooth of gear 1 that carries the p, s, e dimensions: ≥ 40° from the pole (clear of
-    gear 2), its dimension arcs inside the field; the side away from N2 first."""
+    """The tooth of gear 1 that carries the p, s, e dimensions: ≥ 40° from the pole, its
+    dimension arcs inside the field and clear of gear 2's tip circle; the side away from N2 first."""
     t1 = 2 * math.pi / g.z1
-    r_out = g.da1_mm / 2 * f + 22.0
-    for deg_min in (50.0, 40.0, 30.0, 60.0, 70.0):
-        for side in (-sx, sx):
-            j = int(math.ceil(math.radians(deg_min) / t1)) * int(side)
-            ok = True
-            for da in np.linspace(-0.5 * t1, 1.5 * t1, 9):
-                a = math.pi / 2 + j * t1 + da
-                q = c1 + r_out * np.array([math.cos(a), math.sin(a)])
-                ok &= clip[0] + 3 < q[0] < clip[2] - 3 and clip[1] + 3 < q[1] < clip[3] - 3
-            if ok:
-                return j
+    r_in, r_out = g.da1_mm / 2 * f + 4.0, g.da1_mm / 2 * f + 22.0
+    c2 = c1 + np.array([0.0, centre_distance(g) * f])
+    ra2 = g.da2_mm / 2 * f + 3.0
+    for clear in (True, False):
+        for deg_min in (50.0, 40.0, 60.0, 70.0, 30.0):
+            for side in (-sx, sx):
+                j = int(math.ceil(math.radians(deg_min) / t1)) * int(side)
+                ok = True
+                for da in np.linspace(-0.5 * t1, 1.5 * t1, 9):
+                    a = math.pi / 2 + j * t1 + da
+                    e = np.array([math.cos(a), math.sin(a)])
+                    for q in (c1 + r_in * e, c1 + r_out * e):
+                        ok &= clip[0] + 3 < q[0] < clip[2] - 3 and clip[1] + 3 < q[1] < clip[3] - 3
+                    q = c1 + (r_in + 11.0) * e  # the labels s and e
+                    ok &= (not clear) or float(np.hypot(*(q - c2))) > ra2
+                if ok:
+                    return j
     return int(math.ceil(math.radians(50.0) / t1)) * int(-sx)
 
 
@@ -337,18 +395,23 @@ def _mesh_field(sh: Sheet, r, lang: str):
     # O1 low in the field, the pole in the middle band
     origin = mesh_origin(g, f)
     fld = sh.add_field("mesh", BOX_MESH, pick(lang, "Spur gear mesh synthesis", "Геометрический синтез зубчатого зацепления"),
-                       origin=origin, scale=f, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {name}")
+                       origin=origin, scale=f, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {pick(lang, name.replace(',', '.'), name)}")
     clip = (x0b + 1.0, y0b + 24.0, x1b - 1.0, fld.inner[3])
     fld.box = clip
     m = g.m_mm
+    aw = centre_distance(g)
+    ts = tooth_sizes(g)
     rot1, rot2 = math.pi / 2, -math.pi / 2 + math.pi / g.z2
-    # circles d (dash-dot), d_b, d_a, d_f (thin), centres, the line of centres
-    for centre, d, db, da, df in ((o1, g.d1_mm, g.db1_mm, g.da1_mm, g.df1_mm), (o2, g.d2_mm, g.db2_mm, g.da2_mm, g.df2_mm)):
+    # circles d (dash-dot), d_b, d_a, d_f (thin), d_w of a shifted pair (dash-dot), centres, the line of centres
+    for j, (centre, d, db, da, df) in enumerate(((o1, g.d1_mm, g.db1_mm, g.da1_mm, g.df1_mm),
+                                                  (o2, g.d2_mm, g.db2_mm, g.da2_mm, g.df2_mm))):
         fld.circle(centre, d / 2, "Осевые")
         fld.circle(centre, db / 2, "Тонкие")
         fld.circle(centre, da / 2, "Тонкие")
         fld.circle(centre, df / 2, "Тонкие")
-    fld.line((0, -0.05 * g.a_mm), (0, g.a_mm * 1.05), "Осевые")
+        if g.shifted and abs(g.pair.dw_mm[j] - d) * f > 0.3:
+            fld.circle(centre, g.pair.dw_mm[j] / 2, "Осевые")
+    fld.line((0, -0.05 * aw), (0, aw * 1.05), "Осевые")
     for c, nm in ((o1, "O_1"), (o2, "O_2")):
         q = fld.p(*c)
         if clip[1] < q[1] < clip[3]:
@@ -356,9 +419,10 @@ def _mesh_field(sh: Sheet, r, lang: str):
             sh.dot(q, 0.7)
             sh.text(q[0] + 2.0, q[1] + 1.5, nm, H_LABEL)
     # teeth: 4 on either side of the line of centres
-    tooth1 = thin_out(tooth_outline(g.z1, m), 0.6 / f)  # a vertex every 0.6 mm of paper
-    tooth2 = thin_out(tooth_outline(g.z2, m), 0.6 / f)
+    tooth1 = thin_out(tooth_outline(g.z1, m, **_shift_kw(g, 1)), 0.6 / f)  # a vertex every 0.6 mm of paper
+    tooth2 = thin_out(tooth_outline(g.z2, m, **_shift_kw(g, 2)), 0.6 / f)
     active = []
+    drawn = []  # the teeth on the sheet [mm]: the point labels keep clear of them
     for z, tooth, centre, rot, rmin_s, ra in ((g.z1, tooth1, o1, rot1, g.p1_mm, g.da1_mm / 2),
                                               (g.z2, tooth2, o2, rot2, g.p2_mm, g.da2_mm / 2)):
         tau = 2 * math.pi / z
@@ -369,6 +433,7 @@ def _mesh_field(sh: Sheet, r, lang: str):
             ca, sa = math.cos(a), math.sin(a)
             pts = tooth @ np.array([[ca, sa], [-sa, ca]]) + centre
             fld.poly(pts, "Основные")
+            drawn.append(np.asarray(fld.origin) + f * pts)
             # the working flank's active part: radii r(P1 or P2) … r_a, on the side that works
             rad = np.hypot(*(pts - centre).T)
             ang = np.arctan2(pts[:, 1] - centre[1], pts[:, 0] - centre[0]) - a
@@ -393,12 +458,25 @@ def _mesh_field(sh: Sheet, r, lang: str):
     fld.line(o2, n2, "Тонкие")
     pts_on = {"N_1": 0.0, "P_1": g.p1_mm, "U_2": g.u2_mm, "P": g.pole_mm, "U_1": g.u1_mm, "P_2": g.p2_mm, "N_2": g.n1n2_mm}
     nrm = np.array([-u[1], u[0]])  # left of the line
+    # each name where it is farthest from the teeth, the zone numbers and the names already placed
+    # (alternating sides of the line of action by default)
+    busy = np.vstack(drawn + [np.array([fld.p(*((at(s0) + at(s1)) / 2 - nrm * 3.5 / f))
+                                         for s0, s1 in ((g.p1_mm, g.u2_mm), (g.u2_mm, g.u1_mm), (g.u1_mm, g.p2_mm))])])
+    uu = np.asarray(u)
     for k_, (nm, s) in enumerate(pts_on.items()):
         q = np.array(fld.p(*at(s)))
         sh.dot(q, 0.6)
         side = 1.0 if k_ % 2 == 0 else -1.0
-        off = nrm * side * 4.5
-        sh.text(q[0] + off[0], q[1] + off[1], nm, H_LABEL, align="center", valign="middle")
+        best, best_score = None, -1.0
+        for sd in (side, -side):
+            for dist in (4.0, 6.0):
+                for t in (0.0, 2.5, -2.5):
+                    c = q + nrm * sd * dist + uu * t
+                    score = float(np.min(np.hypot(*(busy - c).T)))
+                    if score > best_score + 0.3:
+                        best, best_score = c, score
+        sh.text(best[0], best[1], nm, H_LABEL, align="center", valign="middle")
+        busy = np.vstack([busy, best[None, :], q[None, :]])
     # zones: a band beside the line (double-pair hatched ticks, single-pair plain)
     band = -nrm * 7.0 / f
     for s0, s1, lab in ((g.p1_mm, g.u2_mm, "2"), (g.u2_mm, g.u1_mm, "1"), (g.u1_mm, g.p2_mm, "2")):
@@ -414,7 +492,24 @@ def _mesh_field(sh: Sheet, r, lang: str):
     rr = 0.65 * (g.pole_mm - g.p1_mm) * f
     sh.line(pq + np.array([sx * 5.0, 0]), pq - np.array([sx * (rr + 6.0), 0]), "Тонкие")
     a0, a1 = (180.0, 180.0 + g.alpha_w_deg) if sx > 0 else (360.0 - g.alpha_w_deg, 360.0)
-    sh.dim_arc(pq, rr, a0, a1, f"α_{{w}} = {num(g.alpha_w_deg, lang, sig=3)}°", H_SMALL)
+    sh.dim_arc(pq, rr, a0, a1, "", H_SMALL)
+    # its value on a leader into gear 1's body, below the teeth (the mesh zone is full of lines)
+    am = math.radians((a0 + a1) / 2)
+    q_arc = pq + rr * np.array([math.cos(am), math.sin(am)])
+    y_lab = pq[1] - (g.d1_mm / 2 - g.df1_mm / 2 + m) * f - 6.0
+    q_lab = np.array([pq[0] - sx * (rr + 18.0), y_lab])
+    sh.line(q_arc, q_lab, "Размеры")
+    txt = f"α_{{w}} = {num(g.alpha_w_deg, lang, sig=4)}°"
+    w_lab = sh.text_width(txt, H_LABEL)
+    sh.line(q_lab, q_lab - np.array([sx * w_lab, 0.0]), "Размеры")
+    sh.text(q_lab[0] - sx * w_lab / 2, q_lab[1] + 0.8, txt, H_LABEL, align="center")
+    # the circles named along their arcs: gear 1 on the side away from its dimensioned teeth
+    _circle_labels(sh, np.array(fld.p(*o1)), f, 90.0 + sx * 58.0, clip, [
+        (g.da1_mm, "d_{a1}"), (g.pair.dw_mm[0] if g.shifted else None, "d_{w1}"), (g.d1_mm, "d_{1}"),
+        (g.db1_mm, "d_{b1}"), (g.df1_mm, "d_{f1}")])
+    _circle_labels(sh, np.array(fld.p(*o2)), f, 270.0 - sx * 62.0, clip, [
+        (g.da2_mm, "d_{a2}"), (g.pair.dw_mm[1] if g.shifted else None, "d_{w2}"), (g.d2_mm, "d_{2}"),
+        (g.db2_mm, "d_{b2}"), (g.df2_mm, "d_{f2}")])
     # arcs φ_α1, φ_α2 (the gears' turns while a pair of teeth is in mesh), about the centres
     for centre, phi, rad, nm, base in ((o1, g.phi_alpha1_deg, 0.55 * g.df1_mm / 2, "φ_{α1}", 90.0),
                                        (o2, g.phi_alpha2_deg, 0.55 * g.df2_mm / 2, "φ_{α2}", 270.0)):
@@ -432,15 +527,24 @@ def _mesh_field(sh: Sheet, r, lang: str):
     # dimensions on gear 1: p, s, e on the pitch circle of a tooth left of the pole; h, h_a, h_f
     r1 = g.d1_mm / 2
     t1 = 2 * math.pi / g.z1
-    half_s = g.s_mm / 2 / r1
+    half_s = ts["s"][0] / 2 / r1
     c1 = np.array(fld.p(*o1))
     rdim = g.da1_mm / 2 * f + 5.0
     jd = dim_tooth(g, f, c1, clip, sx)
     a_t = rot1 + jd * t1
     deg = math.degrees
     sh.dim_arc(c1, rdim, deg(a_t - half_s), deg(a_t + half_s), "s", H_SMALL, ext_from=r1 * f)
-    sh.dim_arc(c1, rdim + 7.0, deg(a_t + half_s), deg(a_t + half_s + g.e_mm / r1), "e", H_SMALL, ext_from=r1 * f)
-    sh.dim_arc(c1, rdim + 14.0, deg(a_t - half_s), deg(a_t - half_s + g.p_mm / r1), "p", H_SMALL, ext_from=r1 * f)
+    # the space e on the side of the tooth farther from gear 2 (its label clear of gear 2's teeth)
+    e_ang = ts["e"][0] / r1
+    c2s = np.array(fld.p(*o2))
+
+    def far(a):
+        return float(np.hypot(*(c1 + (rdim + 8.0) * np.array([math.cos(a), math.sin(a)]) - c2s)))
+
+    e0 = a_t + half_s if far(a_t + half_s + e_ang / 2) >= far(a_t - half_s - e_ang / 2) else a_t - half_s - e_ang
+    sh.dim_arc(c1, rdim + 7.0, deg(e0), deg(e0 + e_ang), "e", H_SMALL, ext_from=r1 * f)
+    p0 = min(e0, a_t - half_s)
+    sh.dim_arc(c1, rdim + 14.0, deg(p0), deg(p0 + g.p_mm / r1), "p", H_SMALL, ext_from=r1 * f)
     # radial dimensions h_f, h_a, h (gear 2, a tooth away from the pole) and c
     r2 = g.d2_mm / 2
     t2 = 2 * math.pi / g.z2
@@ -451,9 +555,20 @@ def _mesh_field(sh: Sheet, r, lang: str):
     for (ra_, rb_, txt, off) in ((g.df2_mm / 2, r2, "h_{f}", 8.0), (r2, g.da2_mm / 2, "h_{a}", 8.0),
                                   (g.df2_mm / 2, g.da2_mm / 2, "h", 16.0)):
         sh.dim_linear(c2c + e2 * ra_ * f, c2c + e2 * rb_ * f, nn * off, txt, H_SMALL)
+    # x·m of a shifted gear: from its pitch circle to the tool rack's pitch line (a thin arc at r + x·m)
+    for j, (cc, rr_, ang, sg) in enumerate(((c1, r1, a_t - 1.5 * t1 * (1 if jd * sx < 0 else -1), 1.0),
+                                             (c2c, r2, a2 - 1.5 * t2 * sx, -1.0))):
+        xm = ts["xm"][j]
+        if abs(xm) * f < 0.2:
+            continue
+        ev = np.array([math.cos(ang), math.sin(ang)])
+        a_deg = math.degrees(ang)
+        sh.arc(cc, (rr_ + xm) * f, a_deg - 4.0, a_deg + 4.0, "Тонкие", "DASHED")
+        sh.dim_linear(cc + ev * rr_ * f, cc + ev * (rr_ + xm) * f, np.array([-ev[1], ev[0]]) * 6.0 * sg,
+                      f"x_{{{j + 1}}}m", H_SMALL)
     # c: clearance between gear 1's tip and gear 2's root on the line of centres
     q1 = np.array(fld.p(0.0, g.da1_mm / 2))
-    q2 = np.array(fld.p(0.0, g.a_mm - g.df2_mm / 2))
+    q2 = np.array(fld.p(0.0, aw - g.df2_mm / 2))
     sh.line(q2, q2 + np.array([-sx * 22.0, 8.0]), "Размеры")
     sh.text(q2[0] - sx * 22.0, q2[1] + 9.0, f"c = {num(g.c_mm, lang, sig=3)}", H_SMALL, align="center")
     sh.dot(q1, 0.4)
@@ -461,7 +576,7 @@ def _mesh_field(sh: Sheet, r, lang: str):
     xa = (x1b - 14.0) if sx < 0 else (x0b + 14.0)
     pa, pb = np.array(fld.p(*o1)), np.array(fld.p(*o2))
     if clip[1] < pa[1] and pb[1] < clip[3]:
-        sh.dim_linear(pa, pb, (xa - pa[0], 0.0), f"a_{{w}} = {num(g.a_mm, lang, sig=4)}", H_LABEL)
+        sh.dim_linear(pa, pb, (xa - pa[0], 0.0), f"a_{{w}} = {num(aw, lang, sig=6)}", H_LABEL)
     else:  # one centre beyond the field: the dimension line broken at the field's edge
         seen, other = (pa, pb) if clip[1] < pa[1] < clip[3] else (pb, pa)
         end_y = clip[1] + 2.0 if other[1] < seen[1] else clip[3] - 2.0
@@ -469,18 +584,39 @@ def _mesh_field(sh: Sheet, r, lang: str):
         sh.line((xa, seen[1]), (xa, end_y), "Размеры")
         sh.arrow((xa, seen[1]), (0.0, np.sign(seen[1] - end_y)), "Размеры", 3.0, 0.9)
         ym = seen[1] + np.sign(end_y - seen[1]) * min(60.0, abs(end_y - seen[1]) / 2)
-        sh.text(xa - 1.0, ym, f"a_{{w}} = {num(g.a_mm, lang, sig=4)}", H_LABEL, align="center", rot=90.0)
+        sh.text(xa - 1.0, ym, f"a_{{w}} = {num(aw, lang, sig=6)}", H_LABEL, align="center", rot=90.0)
     # captions
     mm = pick(lang, "mm", "мм")
-    lines = [
-        f"z_{{1}} = {g.z1}, z_{{2}} = {g.z2}, m = {g.m_mm:g} {mm}, α = {g.alpha_deg:g}°, x_{{1}} = x_{{2}} = 0;  "
-        f"p = {_n(g.p_mm, lang)}, s = e = {_n(g.s_mm, lang)}, h = {g.h_mm:g}, h_{{a}} = {g.ha_star * m:g}, "
-        f"h_{{f}} = {(g.ha_star + g.c_star) * m:g}, c = {g.c_mm:g} {mm}",
+
+    def g3(v):
+        return num(v, lang, sig=6)
+
+    if g.shifted:
+        pr = g.pair
+        lines = [
+            f"z_{{1}} = {g.z1}, z_{{2}} = {g.z2}, m = {g3(g.m_mm)} {mm}, α = {g3(g.alpha_deg)}°; "
+            f"x_{{1}} = {num(g.x1, lang, sig=4)}, x_{{2}} = {num(g.x2, lang, sig=4)}; "
+            f"x_{{1}}m = {_n(ts['xm'][0], lang)}, x_{{2}}m = {_n(ts['xm'][1], lang)}; "
+            f"a_{{w}} = {g3(aw)} (a = {g3(g.a_mm)}), α_{{w}} = {num(g.alpha_w_deg, lang, sig=5)}°, "
+            f"y = {_n(pr.y, lang, 4)}, Δy = {_n(pr.dy, lang, 4)}",
+            f"d_{{w1}} = {_n(pr.dw_mm[0], lang)}, d_{{w2}} = {_n(pr.dw_mm[1], lang)}; p = {_n(g.p_mm, lang)}; "
+            f"s_{{1}} = {_n(ts['s'][0], lang)}, e_{{1}} = {_n(ts['e'][0], lang)}; "
+            f"h_{{a1}} = {_n(ts['ha'][0], lang)}, h_{{a2}} = {_n(ts['ha'][1], lang)}, "
+            f"h_{{f1}} = {_n(ts['hf'][0], lang)}, h_{{f2}} = {_n(ts['hf'][1], lang)}, h = {_n(g.h_mm, lang)}, "
+            f"c = {g3(g.c_mm)}; s_{{a1}} = {_n(pr.sa_mm[0], lang)}, s_{{a2}} = {_n(pr.sa_mm[1], lang)} {mm}",
+        ]
+    else:
+        lines = [
+            f"z_{{1}} = {g.z1}, z_{{2}} = {g.z2}, m = {g3(g.m_mm)} {mm}, α = {g3(g.alpha_deg)}°, x_{{1}} = x_{{2}} = 0;  "
+            f"p = {_n(g.p_mm, lang)}, s = e = {_n(g.s_mm, lang)}, h = {g3(g.h_mm)}, h_{{a}} = {g3(ts['ha'][0])}, "
+            f"h_{{f}} = {g3(ts['hf'][0])}, c = {g3(g.c_mm)} {mm}",
+        ]
+    lines += [
         f"ε_{{α}} = P_{{1}}P_{{2}}/p_{{b}} = {_n(g.g_alpha_mm, lang, 1)}/{_n(g.pb_mm, lang)} = {_n(g.eps_alpha, lang, 3)};  "
         + pick(lang, "zones: 2 — two pairs, 1 — one pair; active profiles — double line",
                "зоны: 2 — двухпарное, 1 — однопарное зацепление; активные профили — двойная линия"),
     ]
-    y = y0b + 3.0 + 4.8
+    y = y0b + 3.0 + 4.8 * (len(lines) - 1)
     for t in lines:
         sh.text(x0b + 2.0, y, t, H_SMALL, width=x1b - x0b - 4.0)
         y -= 4.8
@@ -496,13 +632,27 @@ def _results(sh: Sheet, r, lang: str):
         (pick(lang, "Planets k", "Число сателлитов k"), str(d.planets)),
         (pick(lang, "i_{pl}: required / obtained", "i_{пл}: требуемое / получено"),
          f"{_n(r.i_planetary, lang, 3)} / {_n(d.ratio, lang, 3)} ({num(d.ratio_error_pct, lang, decimals=2)} %)"),
-        (pick(lang, "Spur pair z_{1}/z_{2}, m", "Передача z_{1}/z_{2}, m"), f"{g.z1}/{g.z2}, {g.m_mm:g} " + pick(lang, "mm", "мм")),
+        (pick(lang, "Spur pair z_{1}/z_{2}, m", "Передача z_{1}/z_{2}, m"), f"{g.z1}/{g.z2}, {_g6(g.m_mm, lang)} " + pick(lang, "mm", "мм")),
         (pick(lang, "i_{12}: required / obtained", "i_{12}: требуемое / получено"), f"{_n(r.i_spur, lang, 3)} / {_n(g.i_actual, lang, 3)}"),
-        ("d_{1}; d_{2}", f"{g.d1_mm:g}; {g.d2_mm:g}"),
-        ("d_{a1}; d_{a2}", f"{g.da1_mm:g}; {g.da2_mm:g}"),
-        ("d_{f1}; d_{f2}", f"{g.df1_mm:g}; {g.df2_mm:g}"),
+    ]
+    if g.shifted:
+        pr = g.pair
+        rule = {"given": pick(lang, "given", "заданы"), "auto": pick(lang, "auto", "авто"),
+                "aw": pick(lang, "from a_{w}", "по a_{w}")}.get(g.shift_rule, g.shift_rule)
+        rows += [
+            (pick(lang, "Shifts x_{1}; x_{2}", "Смещения x_{1}; x_{2}"),
+             f"{num(g.x1, lang, sig=4)}; {num(g.x2, lang, sig=4)} ({rule})"),
+            (pick(lang, "a_{w}; α_{w}", "a_{w}; α_{w}"), f"{_g6(aw_of(g), lang)}; {num(g.alpha_w_deg, lang, sig=5)}°"),
+            ("d_{w1}; d_{w2}", f"{_n(pr.dw_mm[0], lang)}; {_n(pr.dw_mm[1], lang)}"),
+        ]
+    rows += [
+        ("d_{1}; d_{2}", f"{_g6(g.d1_mm, lang)}; {_g6(g.d2_mm, lang)}"),
+        ("d_{a1}; d_{a2}", f"{_n(g.da1_mm, lang)}; {_n(g.da2_mm, lang)}" if g.shifted else f"{_g6(g.da1_mm, lang)}; {_g6(g.da2_mm, lang)}"),
+        ("d_{f1}; d_{f2}", f"{_n(g.df1_mm, lang)}; {_n(g.df2_mm, lang)}" if g.shifted else f"{_g6(g.df1_mm, lang)}; {_g6(g.df2_mm, lang)}"),
         ("d_{b1}; d_{b2}", f"{_n(g.db1_mm, lang)}; {_n(g.db2_mm, lang)}"),
-        (pick(lang, "a_{w}; contact ratio ε_{α}", "a_{w}; коэффициент перекрытия ε_{α}"), f"{g.a_mm:g}; {_n(g.eps_alpha, lang, 3)}"),
+        (pick(lang, "a_{w}; contact ratio ε_{α}", "a_{w}; коэффициент перекрытия ε_{α}") if not g.shifted
+         else pick(lang, "a; contact ratio ε_{α}", "a; коэффициент перекрытия ε_{α}"),
+         f"{_g6(g.a_mm, lang)}; {_n(g.eps_alpha, lang, 3)}"),
     ]
     table(sh, BOX_TABLE, pick(lang, "Gear data", "Параметры зубчатых механизмов"), rows, col1=0.55, h=H_SMALL)
 
