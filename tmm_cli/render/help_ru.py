@@ -61,6 +61,88 @@ OPTIONS: dict[str, str] = {
         "Папка с файлом результатов каждого студента (СТУДЕНТ.toml или СТУДЕНТ.csv).",
     "Tolerance for graphical quantities [%].": "Допуск для графически определяемых величин [%].",
     "List the answer keys and exit.": "Показать ключи результатов и выйти.",
+    # the student's choices of the cam (issue 8) and the spur pair (issue 12)
+    "Your base radius r0 of the pitch curve [mm] (checked, not replaced).":
+        "Свой радиус теоретического профиля r0 [мм] (проверяется, но не заменяется).",
+    "Your offset e of a translating follower [mm] (e > 0: axis right of the cam centre).":
+        "Свой эксцентриситет (дезаксиал) e поступательного толкателя [мм] (e > 0: ось толкателя правее центра "
+        "кулачка).",
+    "Your distance l_OC from the cam centre to the rocker pivot [mm].":
+        "Своё межцентровое расстояние l_OC от центра кулачка до оси качания коромысла [мм].",
+    "Rocker turns on the rise the same way as the cam or opposite.":
+        "Коромысло на фазе удаления вращается в ту же сторону, что и кулачок (same), или в противоположную "
+        "(opposite).",
+    "Your roller radius [mm] (default: 0.2·r0, at most 0.8·ρ_min).":
+        "Свой радиус ролика [мм] (по умолчанию 0,2·r0, не более 0,8·ρ_min).",
+    "Also write the A1 drawing sheet (DXF and PDF, ESKD frame and title block).":
+        "Записать также чертёж листа формата А1 (DXF и PDF, рамка и основная надпись по ЕСКД).",
+    "Profile shifts of the spur pair (beyond the book), e.g. 0.3,-0.3; auto: no undercut, then a balanced split.":
+        "Коэффициенты смещения x1, x2 простой передачи (сверх пособия), например 0.3,-0.3; auto — без подрезания, "
+        "затем равномерное распределение.",
+    "Required centre distance of the spur pair a_w [mm]: x1 + x2 from it, split as auto.":
+        "Заданное межосевое расстояние простой передачи a_w [мм]: по нему x1 + x2, распределение как при auto.",
+    "Which reducer to carry: the most accurate ratio among sets at most one tooth larger than the smallest, or the smallest.":
+        "Какой редуктор принять: accurate — с наиболее точным передаточным отношением среди наборов чисел зубьев, "
+        "не более чем на зуб больших наименьшего; smallest — наименьший.",
+    # the note and the drawing sheets (issues 10, 11)
+    "pdf: the explanatory note (note.pdf and its source note.typ); md: report.md.":
+        "pdf — пояснительная записка (note.pdf и её исходный текст note.typ); md — отчёт report.md.",
+    "A typst style file replacing the note's (see docs/note.md).":
+        "Файл стиля typst вместо стиля записки (см. docs/note.md).",
+    "Do not write the A1 drawing sheets sheet3/sheet4 (.dxf, .pdf).":
+        "Не записывать чертежи листов 3 и 4 формата А1 (sheet3/sheet4, .dxf и .pdf).",
+    # teachers (issue 7)
+    "summary.csv for a Russian (';', decimal comma) or English spreadsheet (default: from --lang).":
+        "summary.csv для русской (';', десятичная запятая) или английской электронной таблицы (по умолчанию — "
+        "по --lang).",
+    "Which sheet's required keys a student must give.":
+        "Результаты какого листа студент обязан сдать (3, 4 или all — оба).",
+    "Group check: folder for check.csv and check.md (default ./tmm-out).":
+        "Проверка группы: папка для check.csv и check.md (по умолчанию ./tmm-out).",
+    "check.csv for a Russian (';', decimal comma) or English spreadsheet (default: from --lang).":
+        "check.csv для русской (';', десятичная запятая) или английской электронной таблицы (по умолчанию — "
+        "по --lang).",
+    # tmm linkage (issue 13): the article's symbols (Goban, Monková, Šmeringaiová)
+    "Crank O21A [m].": "Длина кривошипа O21A [м].",
+    "The slotted link's pivot O41 lies h below the crank centre O21 [m].":
+        "Ось качания кулисы O41 лежит на h ниже центра кривошипа O21 [м].",
+    "... and c to the left of it [m] (default 0; negative: to the right).":
+        "… и на c левее него [м] (по умолчанию 0; отрицательное — правее).",
+    "O41B: the point B of the link that drives the rod [m].":
+        "Длина O41B до точки B кулисы, к которой присоединён шатун [м].",
+    "Rod BC [m].": "Длина шатуна BC [м].",
+    "The ram's guide is the line y = b [m] (y up from O21).":
+        "Направляющая ползуна — прямая y = b [м] (y вверх от O21).",
+    "Crank speed n21 [rpm] (φ21 grows with time).": "Частота вращения кривошипа n21 [об/мин] (φ21 растёт со временем).",
+    "Crank speed ω21 [rad/s], instead of --rpm.": "Угловая скорость кривошипа ω21 [рад/с], вместо --rpm.",
+    "Crank angular acceleration ε21 [rad/s²] (default 0: uniform).":
+        "Угловое ускорение кривошипа ε21 [рад/с²] (по умолчанию 0 — равномерное вращение).",
+    "Number of crank positions, from the start of the working stroke (default 12).":
+        "Число положений кривошипа, начиная с начала рабочего хода (по умолчанию 12).",
+    "Crank angle φ21 [deg] of the velocity and acceleration plans (default 45, the article's).":
+        "Угол поворота кривошипа φ21 [град] для планов скоростей и ускорений (по умолчанию 45°, как в статье).",
+    "TOML file with the same keys (r1, h, c, r2, r3, b, rpm, …); options beat it.":
+        "Файл TOML с теми же ключами (r1, h, c, r2, r3, b, rpm, …); параметры командной строки важнее.",
+    "With --input holding [variants.N] tables: the variant to take.":
+        "Если в --input есть таблицы [variants.N]: номер варианта.",
+    "Output folder (default ./tmm-out); files go to DIR/linkage/.":
+        "Папка результатов (по умолчанию ./tmm-out); файлы пишутся в DIR/linkage/.",
+    # tmm planetary (issue 12): S. N. Kavetsky's synthesis of the mechanism AA̅
+    "Ratio i = i_1H^(4) of the AA̅ mechanism as a fraction, 0 < i < 1, e.g. 1/10.":
+        "Передаточное отношение механизма AA̅ i = i_1H^(4) в виде дроби, 0 < i < 1, например 1/10.",
+    "C = cos α_w12/cos α_w34 as a fraction, 1 < C < 1/(1 − i), e.g. 26/25.":
+        "Отношение C = cos α_w12/cos α_w34 углов зацепления ступеней в виде дроби, 1 < C < 1/(1 − i), "
+        "например 26/25.",
+    "Number of planets k.": "Число сателлитов k.",
+    "Module m [mm].": "Модуль зацепления m [мм].",
+    "Shift of the sun 1.": "Коэффициент смещения x1 центрального колеса 1.",
+    "Shift of the planet (x3 = x2).": "Коэффициент смещения x2 сателлита (x3 = x2).",
+    "Fewest teeth of any wheel.": "Наименьшее допустимое число зубьев колеса.",
+    "Most teeth of any wheel.": "Наибольшее допустимое число зубьев колеса.",
+    "Take the K-th multiple of the smallest tooth set (default: the smallest within the limits).":
+        "Взять K-й кратный набор чисел зубьев (по умолчанию — наименьший в заданных пределах).",
+    "Output folder (default ./tmm-out); files go to DIR/planetary/.":
+        "Папка результатов (по умолчанию ./tmm-out); файлы пишутся в DIR/planetary/.",
 }
 
 # command path → Russian help (the English one is the command's docstring) -----------------------
@@ -73,11 +155,26 @@ COMMANDS: dict[str, str] = {
     "tmm cam": "Лист 3: диаграммы движения толкателя, основные размеры, профиль кулачка, угол давления.",
     "tmm gears": "Лист 4: двигатель, разбивка передаточного отношения, синтез планетарного редуктора, простая "
                  "передача к кулачку.",
-    "tmm project": "Весь проект для одного варианта: лист 4, затем лист 3, рисунки, results.json и отчёт.",
+    "tmm project": "Весь проект для одного варианта: лист 4, затем лист 3, рисунки, results.json, пояснительная "
+                   "записка и чертежи листов.",
     "tmm batch": "Преподавателю: расчёт многих вариантов или списка группы параллельно, со сводкой summary.csv.",
     "tmm check": "Преподавателю: проверка результатов студента по расчётным значениям.",
-    "tmm linkage": "Лист 1: кулисный механизм — положения, скорости, ускорения (в разработке).",
-    "tmm planetary": "Планетарный механизм со смещёнными колёсами и разными углами зацепления (в разработке).",
+    "tmm linkage": "Лист 1: кулисный механизм (механизм Витворта) — положения, скорости, ускорения.\n\n"
+                   "Система координат статьи J. Goban, K. Monková, A. Šmeringaiová «The numerical and computer "
+                   "aided confrontation of kinematic analysis of mechanism» (2010): начало в центре кривошипа O21, ось x "
+                   "вправо, y вверх; угол φ21 отсчитывается от +y к +x. Пример (механизм Витворта):\n\n"
+                   "\b\n    tmm linkage --r1 0.10 --h 0.04 --c 0 --r2 0.08 --r3 0.30 --b -0.04 --rpm 60",
+    "tmm planetary": "Планетарный механизм AA̅ со смещёнными колёсами и разными углами зацепления ступеней "
+                     "(С. Н. Кавецкий, 2010).\n\n"
+                     "Числа зубьев по передаточному отношению i и C = cos α_w12/cos α_w34, общее межосевое "
+                     "расстояние, углы зацепления и коэффициенты смещения обеих ступеней, проверка по блокирующим "
+                     "контурам, картина скоростей и рисунок механизма.\n\n"
+                     "Источник: С. Н. Кавецкий. Порядок проведения синтеза планетарного механизма AA̅ с учётом углов "
+                     "зацепления зубчатых колёс первой и второй ступеней // Вестник НТУ «ХПИ». Тем. вып. "
+                     "«Машиноведение и САПР». — 2010. Пример из статьи:\n\n"
+                     "\b\ntmm planetary --ratio 1/10 --c 26/25 --planets 3 --module 5 --x1 -0.4 --x2 0.4",
+    "tmm note": "Пересобрать пояснительную записку после правки: note.typ → note.pdf (по умолчанию — в текущей "
+                "папке).",
 }
 
 # click's own messages (msgid → Russian); plural ones as (one, few, many) --------------------------
