@@ -81,3 +81,57 @@ def test_a_roster_rows_error_is_translated_inside_its_frame():
     from tmm_cli.render.help_ru import translate_error
 
     assert translate_error("roster line 3: the variant column is empty") == "список группы, строка 3: столбец варианта пуст"
+
+
+# every message these modules raise, rebuilt from their source with each field set to 7 -------------
+MODULES = ("limits", "check", "batch", "tabular", "names", "variants", "titleblock", "render/files", "gears/shifted",
+           "gears/aa_bar", "linkage/inputs", "linkage/geometry", "render/note/__init__", "render/sheets/__init__",
+           "commands/linkage", "commands/planetary", "cli")
+
+
+def _sample(node):
+    import ast
+
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return node.value
+    if isinstance(node, ast.JoinedStr):
+        return "".join(v.value if isinstance(v, ast.Constant) else "7" for v in node.values)
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+        left, right = _sample(node.left), _sample(node.right)
+        return None if left is None or right is None else left + right
+    if isinstance(node, ast.IfExp):
+        return _sample(node.body)
+    return "7"
+
+
+def _messages():
+    import ast
+    from pathlib import Path
+
+    import tmm_cli
+
+    root = Path(tmm_cli.__file__).parent
+    for mod in MODULES:
+        path = root / f"{mod}.py"
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Call) and node.args and (
+                    (isinstance(node.func, ast.Name) and node.func.id == "TmmError")
+                    or (isinstance(node.func, ast.Attribute) and node.func.attr == "fail")):
+                text = _sample(node.args[0])
+                if text and text != "7":
+                    yield f"{mod}:{node.lineno}", text
+
+
+MESSAGES = list(_messages())
+
+
+def test_the_scan_finds_the_messages():
+    assert len(MESSAGES) > 100
+
+
+@pytest.mark.parametrize("where,text", MESSAGES, ids=[w for w, _ in MESSAGES])
+def test_every_message_has_a_russian_template(where, text):
+    from tmm_cli.render.help_ru import translate_error
+
+    ru = translate_error(text)
+    assert ru != text and CYRILLIC.search(ru), f"{where}: no Russian for {text!r}; add it to help_ru.TEMPLATES"

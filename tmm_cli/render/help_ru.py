@@ -343,6 +343,7 @@ ERRORS: list[tuple[str, str]] = [
 # The modules build their messages from these f-strings; a template here is the f-string with its
 # fields named. Listed before ERRORS' generic patterns (the first match wins).
 TEMPLATES: list[tuple[str, str]] = [
+    ("roster line {n}: {rest}", "список группы, строка {n}: {rest}"),  # a roster row's error (batch.py)
     # limits.py: the options' ranges (click type Range) and check_range / check_int_range
     ("'{v}' is not a whole number; give one from {lo} to {hi}", "'{v}' — не целое число; задайте целое от {lo} до {hi}"),
     ("{v} is out of range; give a whole number from {lo} to {hi} (docs/limits.md)",
@@ -397,7 +398,6 @@ TEMPLATES: list[tuple[str, str]] = [
      "знаками препинания, делят один файл); сделайте имена различными"),
     ("roster {p} has a header but no students; add one row per student",
      "в списке группы {p} есть заголовок, но нет студентов; добавьте по строке на студента"),
-    ("roster line {n}: {rest}", "список группы, строка {n}: {rest}"),
     # tabular.py: reading CSV and numbers
     ("{w} starts like UTF-16 but cannot be decoded; save it again as CSV UTF-8",
      "{w} начинается как UTF-16, но не декодируется; сохраните его заново как CSV UTF-8"),
@@ -412,6 +412,8 @@ TEMPLATES: list[tuple[str, str]] = [
     ("{w} is over the limit of {m} bytes; is it the right file? (limits: docs/limits.md)",
      "{w} больше предела {m} байт; тот ли это файл? (пределы: docs/limits.md)"),
     ("{w} is a folder, not a file; give the file", "{w} — папка, а не файл; укажите файл"),
+    ("{w} does not exist; check the path", "{w} не существует; проверьте путь"),
+    ("{w} cannot be read ({why}); check the path", "{w} не читается ({why}); проверьте путь"),
     ("{w} has more than {m} rows, over the limit; split it (limits: docs/limits.md)",
      "в {w} больше {m} строк, это сверх предела; разделите его (пределы: docs/limits.md)"),
     ("{w} is not valid CSV ({why}); check the quotes", "{w} — не CSV ({why}); проверьте кавычки"),
@@ -604,6 +606,7 @@ TEMPLATES: list[tuple[str, str]] = [
     ("no {src} here; run tmm note in the folder of the note (or give the .typ file)",
      "здесь нет {src}; запустите tmm note в папке записки (или укажите файл .typ)"),
     ("{src} is not a typst file (.typ)", "{src} — не файл typst (.typ)"),
+    ("cannot write {p} ({why})", "не удалось записать {p} ({why})"),
 ]
 
 
@@ -636,9 +639,15 @@ WORDS = {"error": "ошибка", "internal error": "внутренняя оши
 
 
 _PLACES = [(re.compile(p), ru) for p, ru in (
-    (r"(\S) line (\d+)", r"\1, строка \2"),  # "table.csv line 3" → "table.csv, строка 3"
     (r"^answers file ", "файл результатов "), (r"^roster ", "список группы "), (r"^variants file ", "файл заданий "),
+    (r"(\S) line (\d+)", r"\1, строка \2"),  # "table.csv line 3" → "table.csv, строка 3"
     (r" \(variant (\d+)\)", r" (вариант \1)"), (r"^the ratio i$", "передаточное отношение i"),
+    (r"^note template ", "файл стиля записки "),
+    # the system's reasons (OSError.strerror) in parentheses
+    (r"^Permission denied$", "нет прав доступа"), (r"^No such file or directory$", "нет такого файла или папки"),
+    (r"^Read-only file system$", "файловая система только для чтения"), (r"^No space left on device$", "нет места на диске"),
+    (r"^Is a directory$", "это папка"), (r"^Not a directory$", "это не папка"),
+    (r"^Disk quota exceeded$", "превышена дисковая квота"), (r"^File name too long$", "слишком длинное имя файла"),
 )]
 
 
@@ -669,6 +678,11 @@ def translate_error(message: str) -> str:
     if m and translate_error(m.group(2)) != m.group(2):
         return m.group(1) + translate_error(m.group(2))
     return text
+
+
+def error_text(message: str, lang: str) -> str:
+    """An error shown inside a table (a roster row's, a student's) in the output language."""
+    return translate_error(message) if lang == "ru" else message
 
 
 def _gettext(message: str) -> str:
