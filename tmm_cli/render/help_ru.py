@@ -63,15 +63,14 @@ OPTIONS: dict[str, str] = {
     "List the answer keys and exit.": "Показать ключи результатов и выйти.",
     # the student's choices of the cam (issue 8) and the spur pair (issue 12)
     "Your base radius r0 of the pitch curve [mm] (checked, not replaced).":
-        "Свой радиус теоретического профиля r0 [мм] (проверяется, но не заменяется).",
+        "Свой минимальный радиус кулачка r0 (радиус теоретического профиля) [мм] (проверяется, но не заменяется).",
     "Your offset e of a translating follower [mm] (e > 0: axis right of the cam centre).":
-        "Свой эксцентриситет (дезаксиал) e поступательного толкателя [мм] (e > 0: ось толкателя правее центра "
-        "кулачка).",
+        "Свой эксцентриситет e поступательного толкателя [мм] (e > 0: ось толкателя правее центра кулачка).",
     "Your distance l_OC from the cam centre to the rocker pivot [mm].":
-        "Своё межцентровое расстояние l_OC от центра кулачка до оси качания коромысла [мм].",
+        "Своё межцентровое расстояние l_OC от центра кулачка до оси качающегося толкателя [мм].",
     "Rocker turns on the rise the same way as the cam or opposite.":
-        "Коромысло на фазе удаления вращается в ту же сторону, что и кулачок (same), или в противоположную "
-        "(opposite).",
+        "Качающийся толкатель на фазе удаления поворачивается в ту же сторону, что и кулачок (same), или в "
+        "противоположную (opposite).",
     "Your roller radius [mm] (default: 0.2·r0, at most 0.8·ρ_min).":
         "Свой радиус ролика [мм] (по умолчанию 0,2·r0, не более 0,8·ρ_min).",
     "Also write the A1 drawing sheet (DXF and PDF, ESKD frame and title block).":
