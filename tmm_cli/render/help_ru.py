@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 from contextlib import contextmanager
+from functools import cache
 
 # English help of an option → Russian help ------------------------------------------------------
 OPTIONS: dict[str, str] = {
@@ -626,7 +627,14 @@ def _template_pattern(template: str) -> str:
 
 
 ERRORS += [(_template_pattern(en), ru) for en, ru in TEMPLATES]
-_ERRORS = [(re.compile(p + r"\Z", re.S), t) for p, t in ERRORS]
+
+
+@cache
+def _errors() -> list:
+    """ERRORS compiled, on the first error (compiling them all costs ~50 ms: not for `--help`)."""
+    return [(re.compile(p + r"\Z", re.S), t) for p, t in ERRORS]
+
+
 _CLICK_INVALID = re.compile(r"(Недопустимое значение(?: [^:]*)?: )(.*)\Z", re.S)  # click's frame, ours inside
 
 
@@ -666,7 +674,7 @@ def translate_error(message: str) -> str:
     "Недопустимое значение '--jobs': 0 вне допустимого диапазона; задайте целое число от 1 до 64 (docs/limits.md)"
     """
     text = " ".join(str(message).split())
-    for pattern, template in _ERRORS:
+    for pattern, template in _errors():
         m = pattern.match(text)
         if m:  # "table.csv line 3" inside a quoted place → "table.csv, строка 3"
             parts = {k: _place(v or "") for k, v in m.groupdict().items()}
