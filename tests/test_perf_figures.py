@@ -95,37 +95,73 @@ def test_side_by_side_redraws_here_what_the_child_failed_to_draw(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["c1.png", "g1.png"]
 
 
-def test_json_path_lays_out_no_table_and_imports_no_matplotlib(tmp_path):
+def _json_run(tmp_path, *extra):
     code = (
         "import sys\n"
         "from tmm_cli.cli import main\n"
         "try:\n"
-        f"    main(['project', '--variant', '17', '--json', '--no-plots', '--out', {str(tmp_path)!r}])\n"
+        f"    main(['project', '--variant', '17', '--json', '--no-plots', '--out', {str(tmp_path)!r}, *{list(extra)!r}])\n"
         "except SystemExit:\n"
         "    pass\n"
         "sys.stderr.write(repr(sorted(m for m in ('rich.table', 'rich.console', 'matplotlib') if m in sys.modules)))\n"
     )
     res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert json.loads(res.stdout)["variant"] == 17
-    assert res.stderr.strip() == "[]"
-    report = (tmp_path / "variant-17" / "report.md").read_text(encoding="utf-8")
+    return res.stderr.strip()
+
+
+def test_json_path_lays_out_no_table_and_imports_no_matplotlib(tmp_path):
+    """--json changes only what goes to stdout; the folder is written as without it. With --no-plots and
+    no drawing sheets (they are drawn by matplotlib, so --no-sheets) nothing imports matplotlib or lays
+    out a rich table, whether the report is Markdown or the typeset note (typst)."""
+    assert _json_run(tmp_path / "md", "--report", "md", "--no-sheets") == "[]"
+    report = (tmp_path / "md" / "variant-17" / "report.md").read_text(encoding="utf-8")
     assert "| Quantity | Value |" in report or "| Величина | Значение |" in report  # Markdown tables
+    assert _json_run(tmp_path / "note", "--no-sheets") == "[]"
+    assert (tmp_path / "note" / "variant-17" / "note.pdf").is_file()
 
 
 def test_project_folder_has_every_figure_once(tmp_path):
+    """The default project: each figure once as PNG; the note embeds SVG copies of exactly its figures,
+    each once; the only hidden file is tmm's manifest of the files it wrote."""
     from click.testing import CliRunner
 
     from tmm_cli.cli import cli
+    from tmm_cli.render.note import NOTE_FIGURES
 
-    res = CliRunner().invoke(cli, ["project", "--variant", "17", "--out", str(tmp_path), "--lang", "ru"])
+    res = CliRunner().invoke(cli, ["project", "--variant", "17", "--out", str(tmp_path), "--lang", "ru", "--no-sheets"])
     assert res.exit_code == 0, res.output
     folder = tmp_path / "variant-17"
     names = sorted(p.name for p in folder.iterdir())
     pngs = [n for n in names if n.endswith(".png")]
-    assert len(pngs) == 8 and not [n for n in names if n.startswith(".")]
+    assert len(pngs) == 8 and [n for n in names if n.startswith(".")] == [".tmm-files.json"]
+    svgs = [n for n in names if n.endswith(".svg")]
+    assert sorted(svgs) == sorted(f"{n}.svg" for n in NOTE_FIGURES)
+    assert all(f"{n[:-4]}.png" in pngs for n in svgs)
+    note = (folder / "note.typ").read_text(encoding="utf-8")
+    assert all(note.count(f'image("{n}"') == 1 for n in svgs)
+    assert ".png" not in note
+
+
+def test_markdown_report_shows_the_notes_figures_once_in_its_order(tmp_path):
+    from click.testing import CliRunner
+
+    from tmm_cli.cli import cli
+    from tmm_cli.render.note import NOTE_FIGURES
+
+    res = CliRunner().invoke(cli, ["project", "--variant", "17", "--out", str(tmp_path), "--lang", "ru", "--no-sheets",
+                                   "--report", "md"])
+    assert res.exit_code == 0, res.output
+    folder = tmp_path / "variant-17"
+    pngs = sorted(p.name for p in folder.glob("*.png"))
+    assert len(pngs) == 8 and not list(folder.glob("*.svg"))
     report = (folder / "report.md").read_text(encoding="utf-8")
-    assert all(f"({n})" in report for n in pngs)
-    assert report.index("gears_planetary.png") < report.index("cam_motion.png")
+    # report.md is the note as Markdown (issue 11): the note's figures, each once; the profile at its
+    # standard scale is a file to print at 100 %, not a figure of the note
+    assert all(report.count(f"({n}.png)") == 1 for n in NOTE_FIGURES)
+    assert "cam_profile_scaled.png" in pngs and "cam_profile_scaled" not in report
+    # in the note's order (issue 11): the cam's section (sheet 3), then the gears' (sheet 4)
+    assert [n for n in NOTE_FIGURES if f"({n}.png)" in report] == sorted(NOTE_FIGURES, key=lambda n: report.index(f"({n}.png)"))
 
 
 def test_opaque_figures_go_to_png_as_rgb_transparent_ones_keep_alpha(tmp_path):

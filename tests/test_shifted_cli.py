@@ -81,7 +81,7 @@ def test_shifted_mesh_figure_draws():
     FigureCanvasAgg(fig)
     fig.canvas.draw()
     titles = " ".join(ax.get_title() for ax in fig.axes)
-    assert "x1 = 0.5" in titles and "a_w" in titles
+    assert "x1 = 0,5" in titles and "a_w" in titles  # ru: decimal commas (num(), issue 9)
     o2 = [ln for ln in fig.axes[0].lines if len(ln.get_xdata()) == 1]
     assert any(math.isclose(float(ln.get_ydata()[0]), r.spur.a_w_mm) for ln in o2)  # O2 at a_w
 

@@ -16,7 +16,7 @@ from .limits import FILE_NAME_CHARS, NAME_CHARS
 
 # characters that end a line in some reader: str.splitlines() splits on all of these
 LINE_BREAKS = "\n\r\v\f\x1c\x1d\x1e\x85\u2028\u2029"
-_RESERVED = re.compile(r"(variant-\d+|summary|check|con|prn|aux|nul|com\d|lpt\d)", re.IGNORECASE)
+_RESERVED = re.compile(r"(variant-.*|summary|check|con|prn|aux|nul|com\d|lpt\d)", re.IGNORECASE)
 
 
 def clean_text(text: str, limit: int | None = None) -> str:

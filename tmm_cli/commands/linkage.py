@@ -52,9 +52,11 @@ def _metres(name: str, help_text: str):
 def linkage_cmd(r1, h, c, r2, r3, b, rpm, omega, eps_crank, n_positions, at_deg, input_file, variant, as_json, no_plots, out, fmt, lang):
     """Sheet 1: slotted-link (Whitworth) mechanism — positions, velocities, accelerations.
 
-    Seed 003's frame: origin at the crank centre O21, x right, y up; φ21 from +y towards +x.
+    The frame of J. Goban, K. Monková, A. Šmeringaiová, “The numerical and computer aided confrontation of
+    kinematic analysis of mechanism” (2010): origin at the crank centre O21, x right, y up; φ21 from +y towards +x.
     Example (a true Whitworth mechanism):
 
+    \b
         tmm linkage --r1 0.10 --h 0.04 --c 0 --r2 0.08 --r3 0.30 --b -0.04 --rpm 60
     """
     given = {"r1": r1, "h": h, "c": c, "r2": r2, "r3": r3, "b": b, "rpm": rpm, "omega": omega,

@@ -1,4 +1,4 @@
-"""`tmm planetary`: planetary synthesis with different meshing angles, shifted gears (seed 000)."""
+"""`tmm planetary`: planetary synthesis with different meshing angles, shifted gears (seed 000: Kavetsky, 2010)."""
 
 from __future__ import annotations
 
@@ -27,11 +27,15 @@ from ..cli import CONTEXT, _emit, _lang, format_option, json_option, lang_option
 @json_option
 @lang_option
 def planetary_cmd(ratio, c_text, planets, module_mm, x1, x2, z_min, z_max, multiple, out, fmt, no_plots, as_json, lang):
-    """Planetary mechanism AA̅ with shifted gears and different meshing angles (seed 000).
+    """Planetary mechanism AA̅ with shifted gears and different meshing angles (S. N. Kavetsky, 2010).
 
     Tooth numbers from the ratio i and C = cos α_w12/cos α_w34, the common centre distance,
     the working angles and shifts of both stages, the blocking-contour checks, the velocity
-    picture and a figure of the mechanism. Example (the seed's):
+    picture and a figure of the mechanism.
+
+    Source: S. N. Kavetsky, “The procedure of synthesis of the planetary mechanism AA̅ with regard to the
+    meshing angles of the first and second stages”, Vestnik NTU «KhPI», thematic issue “Machine science
+    and CAD”, 2010. Example (the article's):
 
     \b
     tmm planetary --ratio 1/10 --c 26/25 --planets 3 --module 5 --x1 -0.4 --x2 0.4

@@ -82,9 +82,11 @@ def print_batch(console, summary, out_dir: Path, lang: str) -> None:
             _num(r["r0_mm"], lang, 2), _num(other, lang, 2), nu, escape(warn),
         )
     console.print(t)
+    from .help_ru import error_text
+
     for r in summary.failed:
         if r["status"] == "failed":
-            console.print(f"[red]✘[/] {escape(str(r['student']))}: {escape(str(r['error']))}")
+            console.print(f"[red]✘[/] {escape(str(r['student']))}: {escape(error_text(str(r['error']), lang))}")
     ok = len(summary.rows) - len(summary.failed)
     n_failed = sum(r["status"] == "failed" for r in summary.rows)
     path = escape(str(Path(out_dir) / "summary.csv"))

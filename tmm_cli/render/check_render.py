@@ -160,13 +160,15 @@ def print_group(console, group, lang: str) -> None:
     from rich.markup import escape
     from rich.table import Table
 
+    from .help_ru import error_text
+
     t = Table(title=pick(lang, "Group check", "Проверка группы"), header_style="bold")
     for head in (pick(lang, "Student", "Студент"), pick(lang, "Variant", "Вариант"), pick(lang, "Correct", "Верно"),
                  pick(lang, "Wrong or missing", "Неверно или нет ответа"), pick(lang, "Verdict", "Итог")):
         t.add_column(head)
     for rep in group.reports:
         if rep.error:
-            t.add_row(escape(rep.label), str(rep.variant or "—"), "—", "—", f"[red]{escape(rep.error)}[/]")
+            t.add_row(escape(rep.label), str(rep.variant or "—"), "—", "—", f"[red]{escape(error_text(rep.error, lang))}[/]")
             continue
         good = sum(r.status.startswith("pass") for r in rep.rows)
         wrong = ", ".join(r.key + (pick(lang, " (missing)", " (нет)") if r.status == "missing" else "")

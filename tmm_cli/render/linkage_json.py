@@ -16,7 +16,8 @@ from .i18n import note_text
 
 POSITION_KEYS = ("phi_deg", "link_angle_deg", "rho_m", "x_c_m", "omega_link_rad_s", "eps_link_rad_s2",
                  "v_rel_m_s", "a_cor_m_s2", "v_c_m_s", "a_c_m_s2")
-CONVENTIONS = ("origin O21, x right, y up (seed 003, Fig. 1); phi21 and phi41 from +y towards +x, phi21 grows with "
+CONVENTIONS = ("origin O21, x right, y up (Goban, Monkova, Smeringaiova, The numerical and computer aided confrontation of "
+               "kinematic analysis of mechanism, 2010, Fig. 1); phi21 and phi41 from +y towards +x, phi21 grows with "
                "time; O41 = (-c, -h); rho = O41A; v_rel = d(rho)/dt; a_cor = 2*omega_link*v_rel; SI units")
 
 

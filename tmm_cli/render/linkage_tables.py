@@ -25,7 +25,7 @@ def _mm(x: float, lang: str) -> str:
 def _input_table(r: LinkageResult, lang: str):
     g = r.geometry
     mm = pick(lang, "mm", "мм")
-    t = _table(pick(lang, "Slotted-link mechanism: input (seed 003, Fig. 1)", "Кулисный механизм: исходные данные (seed 003, рис. 1)"),
+    t = _table(pick(lang, "Slotted-link mechanism: input (Goban, Monková, Šmeringaiová, 2010, Fig. 1)", "Кулисный механизм: исходные данные (Goban, Monková, Šmeringaiová, 2010, рис. 1)"),
                (pick(lang, "Quantity", "Величина"), "left"), (pick(lang, "Value", "Значение"), "right"),
                (pick(lang, "Meaning", "Смысл"), "left"))
     rows = [

@@ -67,10 +67,10 @@ MESSAGES: dict[str, dict[str, str]] = {
               "--shift auto даёт x1 = {x1}, x2 = {x2}.",
     },
     "aa_bar_hint": {
-        "en": "Beyond the book: the planetary mechanism AA̅ with shifted gears (seed 000), driven at its carrier H "
+        "en": "Beyond the book: the planetary mechanism AA̅ with shifted gears (S. N. Kavetsky, Vestnik NTU KhPI, 2010), driven at its carrier H "
               "with the output on wheel 1, gives i_H1 = 1/i = {ratio} ({err} %) with Z = {teeth}, k = 3: "
               "tmm planetary --ratio {i} --c {c} --x1 {x1} --x2 {x2} (α_w34 = {aw34}°; every blocking-contour line holds).",
-        "ru": "Сверх пособия: планетарный механизм AA̅ со смещёнными колёсами (статья 000) с входом на водило H и "
+        "ru": "Сверх пособия: планетарный механизм AA̅ со смещёнными колёсами (С. Н. Кавецкий, Вестник НТУ «ХПИ», 2010) с входом на водило H и "
               "выходом на колесо 1 даёт i_H1 = 1/i = {ratio} ({err} %) при Z = {teeth}, k = 3: "
               "tmm planetary --ratio {i} --c {c} --x1 {x1} --x2 {x2} (α_w34 = {aw34}°; блокирующий контур соблюдён).",
     },

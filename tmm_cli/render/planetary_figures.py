@@ -112,10 +112,10 @@ def _mechanism_figure(d, lang):
     _scheme(ax0, d, lang)
     _front(ax1, d, lang)
     a12, a34 = d.alpha_w_deg
-    fig.suptitle(pick(lang, f"Planetary mechanism AA̅ (seed 000): i = {d.i}, C = {d.c}; $\\alpha_{{w12}}$ = "
+    fig.suptitle(pick(lang, f"Planetary mechanism AA̅ (Kavetsky, 2010): i = {d.i}, C = {d.c}; $\\alpha_{{w12}}$ = "
                             f"{num(a12, lang, decimals=3)}°, $\\alpha_{{w34}}$ = {num(a34, lang, decimals=3)}°; x = "
                             + ", ".join(num(v, lang, decimals=3, minus='−') for v in d.x),
-                      f"Планетарный механизм AA̅ (статья 000): i = {d.i}, C = {d.c}; $\\alpha_{{w12}}$ = "
+                      f"Планетарный механизм AA̅ (Кавецкий, 2010): i = {d.i}, C = {d.c}; $\\alpha_{{w12}}$ = "
                       f"{num(a12, lang, decimals=3)}°, $\\alpha_{{w34}}$ = {num(a34, lang, decimals=3)}°; x = "
                       + "; ".join(num(v, lang, decimals=3, minus='−') for v in d.x)), fontsize=11)
     handles = [

@@ -48,7 +48,7 @@ def planetary_to_json(d, lang: str, examples=()) -> dict:
     lo, hi = d.c_feasible
     return {
         "mechanism": "AA-bar (two external meshes, linked planet Z3 = Z2, wheel 4 fixed, carrier H out)",
-        "source": "Kavetsky S. N., Vestnik NTU KhPI, 2010 (seed 000)",
+        "source": ("Kavetsky S. N. The procedure of synthesis of the planetary mechanism AA-bar with regard to the meshing angles of the first and second stages. Vestnik NTU KhPI, thematic issue Machine science and CAD, 2010"),
         "ratio": {"fraction": _frac(d.i), "value": _r(float(d.i), 12)},
         "c": {"fraction": _frac(d.c), "value": _r(float(d.c), 12), "from_angles": _r(d.c_check, 9)},
         "c_feasible": {"min": _frac(lo), "max": _frac(hi), "max_value": _r(float(hi), 9),

@@ -101,8 +101,8 @@ def print_planetary(console, d, lang: str, examples=()) -> None:
     """Everything `tmm planetary` prints: the synthesis, both pairs, the checks, the ratio checks."""
     lo, hi = d.c_feasible
     div = d.div
-    t = _table(pick(lang, "Planetary mechanism AA̅ with different meshing angles (seed 000): tooth numbers",
-                    "Планетарный механизм AA̅ с учётом углов зацепления (статья 000): числа зубьев"),
+    t = _table(pick(lang, "Planetary mechanism AA̅ with different meshing angles (S. N. Kavetsky, Vestnik NTU KhPI, 2010): tooth numbers",
+                    "Планетарный механизм AA̅ с учётом углов зацепления (С. Н. Кавецкий, Вестник НТУ «ХПИ», 2010): числа зубьев"),
                pick(lang, "Step", "Шаг"), pick(lang, "Computation", "Расчёт"), left=(0, 1))
     t.add_row(pick(lang, "given", "дано"),
               f"i = i_1H⁽⁴⁾ = {_frac(d.i)};  C = cos α_w12/cos α_w34 = {_frac(d.c)} = {num(float(d.c), lang, sig=6)};  "
@@ -134,8 +134,8 @@ def print_planetary(console, d, lang: str, examples=()) -> None:
         for c, teeth in examples:
             e.add_row(f"{_frac(c)} ≈ {num(float(c), lang, decimals=4)}", "/".join(map(str, teeth)))
         console.print(e)
-    s = _table(pick(lang, "Shifts from the common centre distance (seed 000, Fig. 2)",
-                    "Смещения по общему межосевому расстоянию (статья 000, рис. 2)"),
+    s = _table(pick(lang, "Shifts from the common centre distance (Kavetsky, 2010, Fig. 2)",
+                    "Смещения по общему межосевому расстоянию (Кавецкий, 2010, рис. 2)"),
                pick(lang, "Step", "Шаг"), pick(lang, "Computation", "Расчёт"), left=(0, 1))
     p12, p34 = d.pair12, d.pair34
     s.add_row("1", f"x_Σ12 = x1 + x2 = {_n(d.x[0], lang)} + {_n(d.x[1], lang)} = {_n(p12.x_sum, lang)};  "
