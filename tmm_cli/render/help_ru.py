@@ -121,6 +121,8 @@ OPTIONS: dict[str, str] = {
         "Число положений кривошипа, начиная с начала рабочего хода (по умолчанию 12).",
     "Crank angle φ21 [deg] of the velocity and acceleration plans (default 45, the article's).":
         "Угол поворота кривошипа φ21 [град] для планов скоростей и ускорений (по умолчанию 45°, как в статье).",
+    "Crank angle φ21 [deg], 0…360, of the velocity and acceleration plans (default 45, the article's).":
+        "Угол поворота кривошипа φ21 [град], 0…360, для планов скоростей и ускорений (по умолчанию 45°, как в статье).",
     "TOML file with the same keys (r1, h, c, r2, r3, b, rpm, …); options beat it.":
         "Файл TOML с теми же ключами (r1, h, c, r2, r3, b, rpm, …); параметры командной строки важнее.",
     "With --input holding [variants.N] tables: the variant to take.":
@@ -498,6 +500,10 @@ TEMPLATES: list[tuple[str, str]] = [
     ("tooth numbers must be positive, got {z1}, {z2}", "числа зубьев должны быть положительными, заданы {z1}, {z2}"),
     ("a tip circle lies inside its base circle: the shifts are far too negative for these teeth",
      "окружность вершин лежит внутри основной окружности: смещения слишком отрицательны для этих чисел зубьев"),
+    ("the shift sum x1 + x2 = {x} is so large that the tip reduction Δy = {y} puts a tip circle inside its base circle; "
+     "take a smaller shift sum (a_w closer to a = {a} mm)",
+     "сумма смещений x1 + x2 = {x} так велика, что уравнительное смещение Δy = {y} уводит окружность вершин внутрь "
+     "основной окружности; уменьшите сумму смещений (a_w ближе к a = {a} мм)"),
     ("cannot read --shift {t}: write two shift coefficients with decimal dots, e.g. --shift 0.3,-0.3, or --shift auto",
      "не удалось прочитать --shift {t}: запишите два коэффициента смещения с десятичной точкой, например "
      "--shift 0.3,-0.3, или --shift auto"),
@@ -507,6 +513,8 @@ TEMPLATES: list[tuple[str, str]] = [
      "be x1 + x2 = {xs})",
      "--shift {s} даёт a_w = {a} мм, а не заданное --aw {x}: задайте что-то одно (для a_w = {x2} мм сумма смещений "
      "должна быть x1 + x2 = {xs})"),
+    ("--{o} is {v} m, over the limit of {m} m; give metres (e.g. 0.1 for a 100 mm crank)",
+     "--{o} = {v} м — больше предела {m} м; задайте длины в метрах (например, 0.1 для кривошипа 100 мм)"),
     # gears/aa_bar.py: tmm planetary
     ("cannot read {w} = {t}: write it as a positive fraction, e.g. {e}",
      "не удалось прочитать {w} = {t}: запишите положительную дробь, например {e}"),
@@ -520,6 +528,10 @@ TEMPLATES: list[tuple[str, str]] = [
      "модуль должен быть положительным числом мм, задано {x}; например --module 5"),
     ("tooth limits {lo} … {hi} are empty; give 1 ≤ --z-min ≤ --z-max, e.g. --z-min 18 --z-max 180",
      "пределы чисел зубьев {lo} … {hi} пусты; задайте 1 ≤ --z-min ≤ --z-max, например --z-min 18 --z-max 180"),
+    ("C = {c} is outside its feasible range for i = {i}: 1 < C < 1/(1 − i) = {hi} ≈ {h} (else Z2 ≤ 0); choose C "
+     "inside it, e.g. --c {e}",
+     "C = {c} вне области существования для i = {i}: 1 < C < 1/(1 − i) = {hi} ≈ {h} (иначе Z2 ≤ 0); выберите C "
+     "внутри неё, например --c {e}"),
     ("C = {c} = {x} is outside its feasible range for i = {i}: 1 < C < 1/(1 − i) = {hi} ≈ {h} (else Z2 ≤ 0); choose C "
      "inside it, e.g. --c {e}",
      "C = {c} = {x} вне области существования для i = {i}: 1 < C < 1/(1 − i) = {hi} ≈ {h} (иначе Z2 ≤ 0); выберите C "
