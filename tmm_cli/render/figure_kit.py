@@ -209,3 +209,96 @@ def save_side_by_side(folder, fmt: str, first, second, save) -> dict:
     theirs = first()  # the child failed: draw its figures here (an error now surfaces normally)
     save(folder, theirs, fmt)
     return {**theirs, **mine}
+
+
+def can_fork() -> bool:
+    """Whether work may be spread over a forked child process (Linux, more than one core)."""
+    return sys.platform.startswith("linux") and (os.cpu_count() or 1) > 1 and hasattr(os, "fork")
+
+
+class ForkedTasks:
+    """Tasks run in order by a forked child process while this process does other work.
+
+    ``wait(k)`` returns once the first `k` tasks are done (all by default); a task the child did
+    not finish (it failed, or was killed) is run here instead, so the files come out the same and
+    an error surfaces here as usual. ``abort()`` kills the child at once (SIGKILL) and reaps it:
+    the child writes only into the caller's staging folder, which the caller removes.
+    Without fork (other systems, one core, ``fork=False``) the tasks run here, in ``wait``.
+
+    The child reports each finished task's index through a pipe and leaves with ``os._exit``,
+    so it runs none of this process's ``finally`` blocks or exit handlers.
+    """
+
+    def __init__(self, tasks, fork: bool = True):
+        self.tasks = list(tasks)
+        self.done: set[int] = set()  # finished (by the child or here)
+        self.pid = None
+        self._r = None
+        if not (fork and self.tasks and can_fork()):
+            return
+        sys.stdout.flush()
+        sys.stderr.flush()
+        r, w = os.pipe()
+        pid = os.fork()
+        if pid == 0:  # the child
+            code = 1
+            try:
+                os.close(r)
+                for i, task in enumerate(self.tasks):
+                    task()
+                    os.write(w, b"%d\n" % i)
+                code = 0
+            finally:
+                os._exit(code)
+        os.close(w)
+        self.pid, self._r = pid, r
+        self._buf = b""
+
+    def _read_until(self, k: int) -> None:
+        """Read the child's reports until tasks 0..k-1 are reported or the child is gone."""
+        while self._r is not None and not all(i in self.done for i in range(k)):
+            data = os.read(self._r, 64)
+            if not data:  # the child has left (finished or failed)
+                self._reap()
+                return
+            self._buf += data
+            *lines, self._buf = self._buf.split(b"\n")
+            self.done.update(int(x) for x in lines if x)
+
+    def _reap(self) -> None:
+        if self._r is not None:
+            os.close(self._r)
+            self._r = None
+        if self.pid is not None:
+            os.waitpid(self.pid, 0)
+            self.pid = None
+
+    def wait(self, k: int | None = None) -> None:
+        k = len(self.tasks) if k is None else k
+        self._read_until(k)
+        if k == len(self.tasks) and self._r is not None:
+            self._read_until(k + 1)  # to the end of the pipe: the child has left
+        for i in range(k):
+            if i not in self.done:
+                if self._r is not None:  # the child is still at it but cannot be waited for: stop it
+                    self.abort()
+                self.tasks[i]()
+                self.done.add(i)
+
+    def abort(self) -> None:
+        if self.pid is not None:
+            try:
+                os.kill(self.pid, 9)
+            except ProcessLookupError:
+                pass
+        self._reap()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, exc_type, exc, tb):
+        if exc_type is None:
+            self.wait()
+        else:
+            self.abort()
+        return False
