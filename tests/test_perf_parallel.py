@@ -39,36 +39,38 @@ def _writer(folder: Path, name: str, fail_in_child: bool = False, parent: int = 
 
 
 @fork_only
-def test_forked_tasks_run_in_a_child_and_are_waited_for_in_order(tmp_path):
-    with figure_kit.ForkedTasks([_writer(tmp_path, "a"), _writer(tmp_path, "b")]) as work:
+def test_shared_work_runs_every_task_once_in_either_process(tmp_path):
+    names = [f"f{i}" for i in range(6)]
+    with figure_kit.SharedWork([_writer(tmp_path, n) for n in names], [_writer(tmp_path, "sheets")]) as work:
         assert work.pid is not None
-        work.wait(1)
-        assert (tmp_path / "a").read_text() == "a by child"
-    assert (tmp_path / "b").read_text() == "b by child"
+        work.wait_shared()
+        assert all((tmp_path / n).exists() for n in names)
     assert work.pid is None  # reaped
+    assert (tmp_path / "sheets").read_text() == "sheets by child"
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(names + ["sheets"])
 
 
 @fork_only
 def test_a_failed_child_task_is_redone_here_whole(tmp_path):
-    work = figure_kit.ForkedTasks([_writer(tmp_path, "a"), _writer(tmp_path, "b", fail_in_child=True),
-                                   _writer(tmp_path, "c")])
+    work = figure_kit.SharedWork([_writer(tmp_path, "a"), _writer(tmp_path, "b")],
+                                 [_writer(tmp_path, "sheets", fail_in_child=True)])
     work.wait()
-    assert [(tmp_path / n).read_text() for n in "abc"] == ["a by child", "b by parent", "c by parent"]
+    assert [(tmp_path / n).read_text() for n in ("a", "b", "sheets")] == ["a by parent", "b by parent", "sheets by parent"]
 
 
-def test_without_fork_the_tasks_run_here_in_wait(tmp_path):
-    work = figure_kit.ForkedTasks([_writer(tmp_path, "a"), _writer(tmp_path, "b")], fork=False)
+def test_without_fork_the_tasks_run_here_in_order(tmp_path):
+    work = figure_kit.SharedWork([_writer(tmp_path, "a"), _writer(tmp_path, "b")], [_writer(tmp_path, "c")], fork=False)
     assert work.pid is None and not (tmp_path / "a").exists()
-    work.wait(1)
-    assert (tmp_path / "a").read_text() == "a by parent" and not (tmp_path / "b").exists()
+    work.wait_shared()
+    assert (tmp_path / "b").read_text() == "b by parent" and not (tmp_path / "c").exists()
     work.wait()
-    assert (tmp_path / "b").read_text() == "b by parent"
+    assert (tmp_path / "c").read_text() == "c by parent"
 
 
 @fork_only
 def test_an_error_here_kills_and_reaps_the_child(tmp_path):
     with pytest.raises(KeyboardInterrupt):
-        with figure_kit.ForkedTasks([lambda: time.sleep(60)]) as work:
+        with figure_kit.SharedWork([], [lambda: time.sleep(60)]) as work:
             pid = work.pid
             raise KeyboardInterrupt
     assert work.pid is None and _gone(pid)
@@ -113,7 +115,7 @@ def test_a_child_that_fails_drawing_is_replaced_here(project17, tmp_path, monkey
     original = report._draw_and_save
 
     def flaky(tmp, result, lang, fmt, names, svg):
-        if os.getpid() != parent:
+        if os.getpid() != parent:  # the child draws one figure, and dies half-way
             (Path(tmp) / f"{names[0]}.{fmt}").write_bytes(b"half")  # a half-written file, then a crash
             os._exit(3)
         return original(tmp, result, lang, fmt, names, svg)

@@ -130,40 +130,40 @@ GEAR_FIGURES = ("gears_planetary", "gears_assembly", "gears_mesh")
 CAM_FIGURES = ("cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle", "cam_profile_scaled")
 ALL_FIGURES = GEAR_FIGURES + CAM_FIGURES  # sheet 4 first, as in the report
 
-# Rough time [s] of drawing and saving each figure here (PNG at 120 dpi, its SVG copy for the
-# note), of the sheets and of the note (variant 17, 2 cores): only to share the work between two
-# processes evenly, so that neither waits long for the other.
+# Rough time [s] of drawing and saving each figure (PNG at 120 dpi, its SVG copy for the note),
+# variant 17: only to draw the long ones first.
 _COST = {"gears_planetary": (0.45, 0.2), "gears_assembly": (0.25, 0.1), "gears_mesh": (0.6, 0.35),
          "cam_motion": (0.65, 0.15), "cam_zone": (0.45, 0.2), "cam_profile": (0.3, 0.15),
          "cam_pressure_angle": (0.2, 0.1), "cam_profile_scaled": (0.1, 0.05)}
-_SHEETS_COST, _NOTE_COST = 1.6, 0.45
 
 
-def _split(names, svg, sheets: bool) -> tuple[list, list]:
-    """(this process's figures, the child's): the child draws its figures, then the sheets; this
-    process draws its own, then the note (which needs every figure). Largest first, each to the
-    side that would finish sooner.
+def _largest_first(names, svg) -> list:
+    """The figures to draw, the longest first (so that the last ones, taken by whichever process
+    is free, are short).
 
-    >>> _split(list(ALL_FIGURES), set(), False)[0]
-    ['cam_motion', 'cam_zone', 'gears_assembly', 'cam_pressure_angle']
-    >>> _split(list(ALL_FIGURES), set(), True)[1]  # the sheets are about half the work
-    ['cam_zone', 'cam_pressure_angle']
+    >>> _largest_first(["cam_profile_scaled", "gears_assembly", "gears_mesh"], set())
+    ['gears_mesh', 'gears_assembly', 'cam_profile_scaled']
     """
     def cost(n):
         png, copy = _COST.get(n, (0.4, 0.2))
         return png + (copy if n in svg else 0.0)
 
-    here, there = [], []
-    load_here = _NOTE_COST if svg else 0.0
-    load_there = _SHEETS_COST if sheets else 0.0
-    for n in sorted(names, key=cost, reverse=True):
-        if load_there < load_here:
-            there.append(n)
-            load_there += cost(n)
-        else:
-            here.append(n)
-            load_here += cost(n)
-    return here, there
+    return sorted(names, key=cost, reverse=True)
+
+
+def _figure_task(tmp: Path, result, lang: str, fmt: str, name: str, svg):
+    return lambda: _draw_and_save(tmp, result, lang, fmt, [name], svg)
+
+
+def _before_fork(svg) -> None:
+    """What both processes need, built once before the fork: the figure modules, mathtext and the
+    fonts, the SVG backend if the note wants SVG copies."""
+    from . import cam_figures, gears_figures  # noqa: F401
+    from .figure_kit import _warm_up
+
+    _warm_up()
+    if svg:
+        import matplotlib.backends.backend_svg  # noqa: F401
 
 
 def _draw_and_save(tmp: Path, result, lang: str, fmt: str, names, svg) -> None:
@@ -239,28 +239,23 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
         cached = _from_cache(tmp, result, lang, fmt, svg, figure_cache) if plots and figure_cache is not None else set()
         names = [n for n in ALL_FIGURES if n not in cached] if plots else []
         files = [f"{n}.{fmt}" for n in ALL_FIGURES] if plots else []
-        # Two processes (one project, not a batch worker): a forked child draws part of the figures,
-        # then the sheets; this process draws the rest, then writes the report once the child's
-        # figures are there. Inside a batch worker (or without fork) the same tasks run one by one.
-        from .figure_kit import ForkedTasks, can_fork
+        # Two processes (one project, not a batch worker): a forked child writes the sheets, then
+        # both draw figures from one queue, each figure once (PNG and the note's SVG from the same
+        # drawn figure); the report waits for the last figure, not for the sheets. Inside a batch
+        # worker (or without fork) the same tasks run here one by one.
+        from .figure_kit import SharedWork, can_fork
 
-        parallel = figure_cache is None and can_fork() and bool(names or sheets)
-        mine, theirs = _split(names, svg, sheets) if parallel else (names, [])
-        tasks = []
-        if theirs:
-            tasks.append(lambda: _draw_and_save(tmp, result, lang, fmt, theirs, svg))
+        parallel = figure_cache is None and can_fork() and (len(names) > 1 or (sheets and (names or report == "pdf")))
+        draw = [_figure_task(tmp, result, lang, fmt, n, svg) for n in _largest_first(names, svg)]
+        later = []
         if sheets:  # the A1 drawing sheets 3 and 4 (issue 10): DXF + PDF from one ezdxf model
             from .sheets import write_sheets
 
-            tasks.append(lambda: write_sheets(tmp, result, lang, title))
-        if mine and theirs:
-            from .figure_kit import _warm_up
-
-            _warm_up()  # mathtext and fonts once, before the fork
-        with ForkedTasks(tasks, fork=parallel) as work:
-            if mine:
-                _draw_and_save(tmp, result, lang, fmt, mine, svg)
-            work.wait(1 if theirs else 0)  # every figure is there
+            later.append(lambda: write_sheets(tmp, result, lang, title))
+        if parallel and names:
+            _before_fork(svg)
+        with SharedWork(draw, later, fork=parallel) as work:
+            work.wait_shared()  # every figure is there
             # --- the report: Markdown or the typeset note (issue 11) ------------------------------
             note_error = None
             if report == "md":
