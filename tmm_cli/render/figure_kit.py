@@ -166,7 +166,8 @@ def _warm_up() -> None:
 
 
 def save_side_by_side(folder, fmt: str, first, second, save) -> dict:
-    """Draw and save two groups of figures at once: a forked child process draws `first()`, this
+    """Draw and save two groups of figures at once (write_project_folder now uses :class:`SharedWork`,
+    which balances single figures and the sheets): a forked child process draws `first()`, this
     process `second()`; `save(folder, figures, fmt)` writes a group. Returns {name: Figure or None}
     (None for the child's figures, which exist only as files).
 
