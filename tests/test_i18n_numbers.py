@@ -4,7 +4,7 @@ import pytest
 from babel import Locale
 from babel.numbers import get_decimal_symbol
 
-from tmm_cli.render.numbers import DECIMAL_SIGN, num, plural
+from tmm_cli.render.numbers import DECIMAL_SIGN, PLURAL_RULES, num, plural, plural_category
 from tmm_cli.render.i18n import note_text
 from tmm_cli.notes import Note
 
@@ -14,6 +14,14 @@ VARIANTS = {"one": "вариант", "few": "варианта", "many": "вар�
 def test_decimal_signs_are_cldr_s():
     for lang, sign in DECIMAL_SIGN.items():
         assert get_decimal_symbol(Locale.parse(lang)) == sign
+
+
+def test_plural_rules_are_cldr_s():
+    """The embedded rules are Babel's locale data, and pick the same category for 0 … 2000."""
+    for lang, rules in PLURAL_RULES.items():
+        cldr = Locale.parse(lang).plural_form
+        assert cldr.rules == rules
+        assert all(plural_category(n, lang) == cldr(n) for n in range(2001))
 
 
 @pytest.mark.parametrize("n,word", [(1, "вариант"), (2, "варианта"), (5, "вариантов"), (11, "вариантов"),

@@ -358,8 +358,8 @@ def summary_row(job: BatchJob, doc: dict, folder: str, codes=()) -> dict:
     return row
 
 
-_FIGURE_CACHE: dict = {}  # per worker process: reducer drawings shared by rows with one crank speed
-_FIGURE_CACHE_SIZE = 8  # drawings of this many reducers kept (a roster of 1000 crank speeds stays small)
+_FIGURE_CACHE: dict = {}  # per worker process: drawings shared by rows (the reducer's at one crank speed, a spur mesh)
+_FIGURE_CACHE_SIZE = 48  # drawings kept, the least recently used dropped first (a few MB; a roster stays small)
 
 
 def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, fmt: str, plots: bool, report: str | None,

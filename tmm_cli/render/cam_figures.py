@@ -368,19 +368,21 @@ def _scaled_profile_figure(r: CamResult, lang: str):
     return fig
 
 
-def cam_figures(result: CamResult, lang: str) -> dict:
+def cam_figures(result: CamResult, lang: str, names=None) -> dict:
     """Figures "cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle" and "cam_profile_scaled".
 
     "cam_profile_scaled" is the profile at its standard scale (Table 1.1): a figure whose page is
     the drawing itself, so a PDF/SVG printed at 100 % gives M exactly (check bar 50 mm).
+    `names` limits the drawing to some of them (all five by default).
     """
-    figs = {
-        "cam_motion": _motion_figure(result, lang),
-        "cam_zone": _zone_figure(result, lang),
-        "cam_profile": _profile_figure(result, lang),
-        "cam_pressure_angle": _pressure_figure(result, lang),
-        "cam_profile_scaled": _scaled_profile_figure(result, lang),
+    makers = {
+        "cam_motion": _motion_figure,
+        "cam_zone": _zone_figure,
+        "cam_profile": _profile_figure,
+        "cam_pressure_angle": _pressure_figure,
+        "cam_profile_scaled": _scaled_profile_figure,
     }
+    figs = {name: make(result, lang) for name, make in makers.items() if names is None or name in names}
     for fig in figs.values():
         decimal_commas(fig, lang)
     return figs

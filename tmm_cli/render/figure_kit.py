@@ -166,7 +166,8 @@ def _warm_up() -> None:
 
 
 def save_side_by_side(folder, fmt: str, first, second, save) -> dict:
-    """Draw and save two groups of figures at once: a forked child process draws `first()`, this
+    """Draw and save two groups of figures at once (write_project_folder now uses :class:`SharedWork`,
+    which balances single figures and the sheets): a forked child process draws `first()`, this
     process `second()`; `save(folder, figures, fmt)` writes a group. Returns {name: Figure or None}
     (None for the child's figures, which exist only as files).
 
@@ -183,6 +184,8 @@ def save_side_by_side(folder, fmt: str, first, second, save) -> dict:
     sys.stderr.flush()
     pid = os.fork()
     if pid == 0:  # the child: draw, save, leave without running any exit handler of the parent
+        global _FORKED
+        _FORKED = True
         code = 1
         try:
             figs = first()
@@ -209,3 +212,137 @@ def save_side_by_side(folder, fmt: str, first, second, save) -> dict:
     theirs = first()  # the child failed: draw its figures here (an error now surfaces normally)
     save(folder, theirs, fmt)
     return {**theirs, **mine}
+
+
+_FORKED = False  # set in a child forked here: it never forks again (two cores are busy already)
+
+
+def can_fork() -> bool:
+    """Whether work may be spread over a forked child process (Linux, more than one core, and not
+    inside such a child already)."""
+    return sys.platform.startswith("linux") and (os.cpu_count() or 1) > 1 and hasattr(os, "fork") and not _FORKED
+
+
+class SharedWork:
+    """Tasks shared by this process and a forked child, each run once, whoever is free first.
+
+    `shared` tasks (largest first) go into a queue both processes take from; `child_first` tasks
+    the child runs before it takes from the queue (the sheets, which no report waits for). This
+    process takes its part with :meth:`run_here`; :meth:`wait_shared` returns once every shared
+    task is done, :meth:`wait` once everything is. A task the child took but did not finish (it
+    failed, or was killed) is run here instead, so the files come out the same and an error
+    surfaces here as usual. :meth:`abort` kills the child at once (SIGKILL) and reaps it: the child
+    writes only into the caller's staging folder, which the caller removes. Used as a context
+    manager, an exception in the body aborts; a normal exit waits for everything.
+
+    The queue is a pipe holding one byte per task (a read of one byte is atomic); the child
+    reports each finished task through a second pipe and leaves with ``os._exit``, so it runs
+    none of this process's ``finally`` blocks or exit handlers. Without fork (other systems, one
+    core, ``fork=False``) everything runs here, in order.
+    """
+
+    def __init__(self, shared=(), child_first=(), fork: bool = True):
+        self.tasks = list(shared) + list(child_first)
+        self.n_shared = len(shared)
+        if len(self.tasks) > 255:
+            raise ValueError("at most 255 tasks")
+        self.done: set[int] = set()
+        self.pid = self._r = self._q = None
+        self._buf = b""
+        if not (fork and self.tasks and can_fork()):
+            return
+        q_r, q_w = os.pipe()
+        os.write(q_w, bytes(range(self.n_shared)))
+        os.close(q_w)
+        r, w = os.pipe()
+        sys.stdout.flush()
+        sys.stderr.flush()
+        pid = os.fork()
+        if pid == 0:  # the child
+            global _FORKED
+            _FORKED = True
+            code = 1
+            try:
+                os.close(r)
+                for i in range(self.n_shared, len(self.tasks)):
+                    self.tasks[i]()
+                    os.write(w, bytes([i]))
+                while True:
+                    got = os.read(q_r, 1)
+                    if not got:
+                        break
+                    self.tasks[got[0]]()
+                    os.write(w, got)
+                code = 0
+            finally:
+                os._exit(code)
+        os.close(w)
+        self.pid, self._r, self._q = pid, r, q_r
+
+    def run_here(self) -> None:
+        """Take shared tasks from the queue and run them here until it is empty."""
+        if self._q is None:
+            for i in range(self.n_shared):
+                if i not in self.done:
+                    self.tasks[i]()
+                    self.done.add(i)
+            return
+        while True:
+            got = os.read(self._q, 1)
+            if not got:
+                break
+            self.tasks[got[0]]()
+            self.done.add(got[0])
+
+    def _read_until(self, needed) -> None:
+        """Read the child's reports until `needed` are done or the child is gone."""
+        while self._r is not None and not needed <= self.done:
+            data = os.read(self._r, 64)
+            if not data:  # the child has left (finished or failed)
+                self._reap()
+                return
+            self.done.update(data)
+
+    def _reap(self) -> None:
+        for fd in (self._r, self._q):
+            if fd is not None:
+                os.close(fd)
+        self._r = self._q = None
+        if self.pid is not None:
+            os.waitpid(self.pid, 0)
+            self.pid = None
+
+    def _finish(self, needed) -> None:
+        self.run_here()
+        self._read_until(needed)
+        for i in sorted(needed - self.done):  # the child left without them: run them here
+            self.tasks[i]()
+            self.done.add(i)
+
+    def wait_shared(self) -> None:
+        """Every shared task done (this process takes what is left in the queue first)."""
+        self._finish(set(range(self.n_shared)))
+
+    def wait(self) -> None:
+        """Everything done and the child reaped."""
+        self._finish(set(range(len(self.tasks))))
+        if self._r is not None:
+            self._read_until(set(range(len(self.tasks) + 1)))  # to the end of the pipe: the child left
+
+    def abort(self) -> None:
+        if self.pid is not None:
+            try:
+                os.kill(self.pid, 9)
+            except ProcessLookupError:
+                pass
+        self._reap()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, exc_type, exc, tb):
+        if exc_type is None:
+            self.wait()
+        else:
+            self.abort()
+        return False

@@ -110,6 +110,45 @@ def gear_outline(z: int, m: float, centre=(0.0, 0.0), rot: float = 0.0, **kw) ->
     return p + np.asarray(centre)
 
 
+def _drawn_outline(outline, z: int, centre, rot: float, m: float, window=None):
+    """(line, area): what of a whole gear's outline (z teeth of equal length, as gear_outline
+    gives it) a picture needs, for speed only: the same pixels from fewer vertices.
+
+    Whole gear (`window` None): a vertex every m/40 along the outline (a fraction of a pixel at
+    the sizes drawn). Zoomed (`window` = ((x0, x1), (y0, y1)) not holding the centre): only the
+    teeth seen through the window and one more on each side, the area closed through the centre
+    (its radial edges lie outside the window). The full outline has 720 vertices a tooth.
+    """
+    if window is None:
+        seg = np.hypot(*np.diff(outline, axis=0).T)
+        s = np.concatenate([[0.0], np.cumsum(seg)])
+        _, keep = np.unique(np.floor(s / (m / 40)), return_index=True)
+        keep = np.union1d(keep, [len(outline) - 1])
+        thin = outline[keep]
+        return thin, thin
+    (x0, x1), (y0, y1) = window
+    cx, cy = float(centre[0]), float(centre[1])
+    pad = 0.1 * max(x1 - x0, y1 - y0)
+    if x0 - pad <= cx <= x1 + pad and y0 - pad <= cy <= y1 + pad:
+        return outline, outline
+    towards = math.atan2((y0 + y1) / 2 - cy, (x0 + x1) / 2 - cx)
+    corners = [math.atan2(y - cy, x - cx) - towards for x in (x0, x1) for y in (y0, y1)]
+    corners = [(a + math.pi) % (2 * math.pi) - math.pi for a in corners]
+    tau = 2 * math.pi / z
+    lo, hi = min(corners) - 1.5 * tau, max(corners) + 1.5 * tau
+    n = (len(outline) - 1) // z  # vertices of one tooth
+    teeth = []
+    for j in range(z):
+        d = (rot + j * tau - towards + math.pi) % (2 * math.pi) - math.pi
+        if lo <= d <= hi:
+            teeth.append((d, j))
+    if len(teeth) >= z - 1:
+        return outline, outline
+    line = np.vstack([outline[j * n:(j + 1) * n] for _, j in sorted(teeth)])
+    area = np.vstack([[[cx, cy]], line, [[cx, cy]]])
+    return line, area
+
+
 # ----------------------------------------------------------------------------------------------
 # the mesh
 
@@ -182,12 +221,15 @@ def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
     rot1, rot2 = math.pi / 2, -math.pi / 2 + math.pi / g.z2
     g1 = gear_outline(g.z1, m, o1, rot=rot1, **_shift_kw(g, 1))
     g2 = gear_outline(g.z2, m, o2, rot=rot2, **_shift_kw(g, 2))
+    half = min(max(1.25 * g.g_alpha_mm, 0.6 * g.n1n2_mm * math.cos(math.radians(g.alpha_w_deg))),
+               2.2 * g.g_alpha_mm)  # the zoomed window: P ± half across, ± 0.85 half up and down
+    window = ((p[0] - half, p[0] + half), (p[1] - 0.85 * half, p[1] + 0.85 * half)) if zoom else None
     # add_artist, not fill(): fill() updates the data limits vertex by vertex through Bezier
     # extrema (0.4 s per gear); the outlines plotted beside them set the limits anyway
-    ax.add_artist(Polygon(g1, closed=True, color=C_SUN, alpha=0.18, lw=0))
-    ax.plot(g1[:, 0], g1[:, 1], color=C_SUN, lw=1.0)
-    ax.add_artist(Polygon(g2, closed=True, color=C_PLANET, alpha=0.15, lw=0))
-    ax.plot(g2[:, 0], g2[:, 1], color=C_PLANET, lw=1.0)
+    for gg, centre, z, rot, col, alpha in ((g1, o1, g.z1, rot1, C_SUN, 0.18), (g2, o2, g.z2, rot2, C_PLANET, 0.15)):
+        line, area = _drawn_outline(gg, z, centre, rot, m, window)
+        ax.add_artist(Polygon(area, closed=True, color=col, alpha=alpha, lw=0))
+        ax.plot(line[:, 0], line[:, 1], color=col, lw=1.0)
     styles = (("d", "-", 0.9), ("d_b", "--", 0.8), ("d_a", ":", 0.8), ("d_f", "-.", 0.8))
     t = np.linspace(0, 2 * math.pi, 721)
     for (centre, col, d, db, da, df, idx) in ((o1, C_SUN, g.d1_mm, g.db1_mm, g.da1_mm, g.df1_mm, 1),
@@ -250,10 +292,8 @@ def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
             sel = (rad >= rmin - 1e-6) & (rad <= rmax - 0.02 * m) & near & (sx * delta < 0)
             pts = np.where(sel[:, None], gg, np.nan)
             ax.plot(pts[:, 0], pts[:, 1], color=col, lw=2.6)
-        half = min(max(1.25 * g.g_alpha_mm, 0.6 * g.n1n2_mm * math.cos(math.radians(g.alpha_w_deg))),
-                   2.2 * g.g_alpha_mm)
-        ax.set_xlim(p[0] - half, p[0] + half)
-        ax.set_ylim(p[1] - 0.85 * half, p[1] + 0.85 * half)
+        ax.set_xlim(*window[0])
+        ax.set_ylim(*window[1])
     ax.set_aspect("equal")
 
 

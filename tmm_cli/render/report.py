@@ -126,6 +126,87 @@ def _reducer_key(gears, lang: str, fmt: str) -> tuple:
     return (gears.crank_rpm, gears.motor_rpm, gears.tolerance_pct, gears.forced_ratio, gears.forced_planets, lang, fmt)
 
 
+GEAR_FIGURES = ("gears_planetary", "gears_assembly", "gears_mesh")
+CAM_FIGURES = ("cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle", "cam_profile_scaled")
+ALL_FIGURES = GEAR_FIGURES + CAM_FIGURES  # sheet 4 first, as in the report
+
+# Rough time [s] of drawing and saving each figure (PNG at 120 dpi, its SVG copy for the note),
+# variant 17: only to draw the long ones first.
+_COST = {"gears_planetary": (0.45, 0.2), "gears_assembly": (0.25, 0.1), "gears_mesh": (0.6, 0.35),
+         "cam_motion": (0.65, 0.15), "cam_zone": (0.45, 0.2), "cam_profile": (0.3, 0.15),
+         "cam_pressure_angle": (0.2, 0.1), "cam_profile_scaled": (0.1, 0.05)}
+
+
+def _largest_first(names, svg) -> list:
+    """The figures to draw, the longest first (so that the last ones, taken by whichever process
+    is free, are short).
+
+    >>> _largest_first(["cam_profile_scaled", "gears_assembly", "gears_mesh"], set())
+    ['gears_mesh', 'gears_assembly', 'cam_profile_scaled']
+    """
+    def cost(n):
+        png, copy = _COST.get(n, (0.4, 0.2))
+        return png + (copy if n in svg else 0.0)
+
+    return sorted(names, key=cost, reverse=True)
+
+
+def _figure_task(tmp: Path, result, lang: str, fmt: str, name: str, svg):
+    return lambda: _draw_and_save(tmp, result, lang, fmt, [name], svg)
+
+
+def _before_fork(svg) -> None:
+    """What both processes need, built once before the fork: the figure modules, mathtext and the
+    fonts, the SVG backend if the note wants SVG copies."""
+    from . import cam_figures, gears_figures  # noqa: F401
+    from .figure_kit import _warm_up
+
+    _warm_up()
+    if svg:
+        import matplotlib.backends.backend_svg  # noqa: F401
+
+
+def _draw_and_save(tmp: Path, result, lang: str, fmt: str, names, svg) -> None:
+    """Draw the figures `names` once and save each as `fmt`, and as SVG too if it is in `svg`."""
+    from .cam_figures import cam_figures
+    from .files import save_figures
+    from .gears_figures import gears_figures
+
+    gear = [n for n in names if n in GEAR_FIGURES]
+    cam = [n for n in names if n in CAM_FIGURES]
+    figs = {**(gears_figures(result.gears, lang, names=gear) if gear else {}),
+            **(cam_figures(result.cam, lang, names=cam) if cam else {})}
+    save_figures(tmp, figs, fmt)
+    for name, fig in figs.items():
+        if name in svg:
+            fig.savefig(tmp / f"{name}.svg", format="svg")  # the same drawn figure, another renderer
+
+
+def _mesh_key(gears, lang: str, fmt: str) -> tuple:
+    return ("mesh", repr(gears.spur), gears.directions, lang, fmt)
+
+
+def _from_cache(tmp: Path, result, lang: str, fmt: str, svg, cache: dict) -> set:
+    """Write the figures a batch worker drew already for another variant (the reducer's two,
+    which depend only on the reducer; the spur mesh, which depends only on the spur pair and
+    the senses of rotation); draw and keep them on a miss. Returns the names written."""
+    written = set()
+    for group, key in ((REDUCER_FIGURES, _reducer_key(result.gears, lang, fmt)),
+                       (("gears_mesh",), _mesh_key(result.gears, lang, fmt))):
+        key = (*key, tuple(sorted(n for n in group if n in svg)))
+        entry = cache.pop(key, None)
+        if entry is None:
+            _draw_and_save(tmp, result, lang, fmt, group, svg)
+            paths = [f"{n}.{fmt}" for n in group] + [f"{n}.svg" for n in group if n in svg]
+            entry = {p: (tmp / p).read_bytes() for p in paths}
+        else:
+            for p, data in entry.items():
+                (tmp / p).write_bytes(data)
+        cache[key] = entry  # the most recently used last (the batch drops the oldest)
+        written.update(group)
+    return written
+
+
 def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", plots: bool = True,
                          report: str | None = "md", figure_cache: dict | None = None, title=None,
                          note_template: str | None = None, sheets: bool = False):
@@ -146,49 +227,41 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     Returns (the JSON document, the sorted list of file names written).
     """
     from .cam_json import profile_csv
-    from .files import save_figures, staged_dir, staged_names, write_json, write_text
+    from .files import staged_dir, staged_names, write_json, write_text
+    from .note import NOTE_FIGURES
 
     doc = project_document(result, lang)
     # the project owns its folder: nothing of an earlier run (other options) stays beside it
     with staged_dir(folder, owns=("*",)) as tmp:
         write_json(tmp / "results.json", doc)
         write_text(tmp / "cam_profile.csv", profile_csv(result.cam))
-        figures, files = {}, []
-        if plots:
-            from .cam_figures import cam_figures
-            from .gears_figures import gears_figures
+        svg = set(NOTE_FIGURES) if report == "pdf" and fmt != "svg" else set()  # SVG copies for the note
+        cached = _from_cache(tmp, result, lang, fmt, svg, figure_cache) if plots and figure_cache is not None else set()
+        names = [n for n in ALL_FIGURES if n not in cached] if plots else []
+        files = [f"{n}.{fmt}" for n in ALL_FIGURES] if plots else []
+        # Two processes (one project, not a batch worker): a forked child writes the sheets, then
+        # both draw figures from one queue, each figure once (PNG and the note's SVG from the same
+        # drawn figure); the report waits for the last figure, not for the sheets. Inside a batch
+        # worker (or without fork) the same tasks run here one by one.
+        from .figure_kit import SharedWork, can_fork
 
-            cached = {}
-            if figure_cache is not None and report != "pdf":
-                key = _reducer_key(result.gears, lang, fmt)
-                if key not in figure_cache:
-                    reducer = gears_figures(result.gears, lang, names=REDUCER_FIGURES)
-                    figure_cache[key] = {n: save_figures(tmp, {n: f}, fmt)[0].read_bytes() for n, f in reducer.items()}
-                cached = figure_cache[key]
-                for name, data in cached.items():
-                    (tmp / f"{name}.{fmt}").write_bytes(data)
-            names = [n for n in ("gears_planetary", "gears_assembly", "gears_mesh") if n not in cached]
-            if figure_cache is None and report != "pdf":  # one project: sheet 4 and sheet 3 drawn side by side
-                from .figure_kit import save_side_by_side
-
-                figures = save_side_by_side(tmp, fmt, lambda: gears_figures(result.gears, lang, names=names),
-                                            lambda: cam_figures(result.cam, lang), save_figures)
-            else:
-                figures = {**gears_figures(result.gears, lang, names=names), **cam_figures(result.cam, lang)}
-                save_figures(tmp, figures, fmt)
-            files = [f"{n}.{fmt}" for n in (*REDUCER_FIGURES, "gears_mesh") if n in cached or n in figures]
-            files += [f"{n}.{fmt}" for n in figures if n.startswith("cam_")]
-        # --- the report: Markdown or the typeset note (issue 11) ------------------------------------
-        note_error = None
-        if report == "md":
-            write_text(tmp / "report.md", markdown_report(result, lang, files))
-        elif report == "pdf":
-            note_error = _write_note(tmp, result, lang, title, figures, fmt, note_template)
-        # --- the A1 drawing sheets 3 and 4 (issue 10): DXF + PDF from one ezdxf model ---------
-        if sheets:
+        parallel = figure_cache is None and can_fork() and (len(names) > 1 or (sheets and (names or report == "pdf")))
+        draw = [_figure_task(tmp, result, lang, fmt, n, svg) for n in _largest_first(names, svg)]
+        later = []
+        if sheets:  # the A1 drawing sheets 3 and 4 (issue 10): DXF + PDF from one ezdxf model
             from .sheets import write_sheets
 
-            write_sheets(tmp, result, lang, title)
+            later.append(lambda: write_sheets(tmp, result, lang, title))
+        if parallel and names:
+            _before_fork(svg)
+        with SharedWork(draw, later, fork=parallel) as work:
+            work.wait_shared()  # every figure is there
+            # --- the report: Markdown or the typeset note (issue 11) ------------------------------
+            note_error = None
+            if report == "md":
+                write_text(tmp / "report.md", markdown_report(result, lang, files))
+            elif report == "pdf":
+                note_error = _write_note(tmp, result, lang, title, fmt, note_template)
         # ----------------------------------------------------------------------------------------
         written = staged_names(tmp)
     if note_error is not None:
@@ -196,21 +269,18 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     return doc, written
 
 
-def _write_note(tmp: Path, result, lang: str, title, figures: dict, fmt: str, template: str | None):
-    """The note into the staging folder; returns the TmmError of a failed note (its files removed)."""
+def _write_note(tmp: Path, result, lang: str, title, fmt: str, template: str | None):
+    """The note into the staging folder; returns the TmmError of a failed note (its files removed).
+
+    The figures it embeds are the SVG files beside it, saved from the figures drawn once for the
+    PNGs (or the figures themselves under ``--format svg``); a figure not drawn (``--no-plots``)
+    is left out.
+    """
     from ..errors import TmmError
     from .note import NOTE_FIGURES, write_note
 
-    made, files = [], {}
-    for name in NOTE_FIGURES:
-        if name in figures:
-            path = tmp / f"{name}.svg"
-            if fmt != "svg":
-                figures[name].savefig(path, format="svg")
-                made.append(path)
-            files[name] = path.name
-        elif (tmp / f"{name}.svg").exists():  # drawn once per batch worker (figure cache)
-            files[name] = f"{name}.svg"
+    files = {name: f"{name}.svg" for name in NOTE_FIGURES if (tmp / f"{name}.svg").exists()}
+    made = [tmp / f for f in files.values()] if fmt != "svg" else []
     try:
         write_note(tmp, result, lang, title, files, template)
     except TmmError as exc:

@@ -43,11 +43,10 @@ def _fork_ok() -> bool:
     """Draw the two sheets in two processes: on Linux with more than one core, and not inside a
     batch worker (a worker of ``tmm batch`` already keeps every core busy)."""
     import multiprocessing
-    import os
-    import sys
 
-    return (sys.platform.startswith("linux") and (os.cpu_count() or 1) > 1
-            and multiprocessing.parent_process() is None)
+    from ..figure_kit import can_fork
+
+    return can_fork() and multiprocessing.parent_process() is None
 
 
 def _warm_up() -> None:
