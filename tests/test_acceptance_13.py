@@ -16,6 +16,7 @@ import pytest
 from click.testing import CliRunner
 
 from tmm_cli.cli import cli
+from cli_helpers import assert_one_line_error
 
 WHITWORTH = dict(r1=0.10, h=0.04, c=0.0, r2=0.08, r3=0.30, b=-0.04)
 SHAPER = dict(r1=0.10, h=0.30, c=0.02, r2=0.45, r3=0.30, b=0.25)
@@ -64,13 +65,6 @@ def derivs(d, phi, omega, step=1e-4):
     return p0, first, second
 
 
-def assert_one_line_error(res, *words):
-    assert res.exit_code == 2, (res.exit_code, res.output)
-    err = res.stderr.strip()
-    assert "Traceback" not in res.output
-    assert len(err.splitlines()) == 1 and err.startswith("tmm: error:"), err
-    for w in words:
-        assert w in err, (w, err)
 
 
 # --- Acceptance numbers ------------------------------------------------------------------------

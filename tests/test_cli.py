@@ -11,20 +11,13 @@ from click.testing import CliRunner
 
 from tmm_cli.cli import cli
 from tmm_cli.variants import COLUMNS
+from cli_helpers import assert_one_line_error
 
 
 def run(*args):
     return CliRunner().invoke(cli, [str(a) for a in args])
 
 
-def assert_one_line_error(res, *words):
-    assert res.exit_code == 2, (res.exit_code, res.output)
-    err = res.stderr.strip()
-    assert "Traceback" not in res.output and "Traceback" not in err
-    assert len(err.splitlines()) == 1, err
-    assert err.startswith("tmm: error:")
-    for w in words:
-        assert w in err, (w, err)
 
 
 def files_under(path: Path):

@@ -14,6 +14,7 @@ from click.testing import CliRunner
 
 from tmm_cli.cli import cli
 from tmm_cli.render.files import MANIFEST
+from cli_helpers import assert_one_line_error
 
 ACCEPT = ["--r1", "0.10", "--h", "0.04", "--c", "0", "--r2", "0.08", "--r3", "0.30", "--b", "-0.04"]
 KEYS = {"phi_deg", "link_angle_deg", "rho_m", "x_c_m", "omega_link_rad_s", "eps_link_rad_s2", "v_rel_m_s",
@@ -28,14 +29,6 @@ def files_under(path: Path):
     return sorted(p.relative_to(path) for p in path.rglob("*")) if path.exists() else []
 
 
-def assert_one_line_error(res, *words):
-    assert res.exit_code == 2, (res.exit_code, res.output)
-    err = res.stderr.strip()
-    assert "Traceback" not in res.output and "Traceback" not in err
-    assert len(err.splitlines()) == 1, err
-    assert err.startswith("tmm: error:")
-    for w in words:
-        assert w in err, (w, err)
 
 
 def test_json_acceptance(tmp_path):

@@ -15,6 +15,7 @@ from tmm_cli.cli import cli
 from tmm_cli.errors import TmmError
 from tmm_cli.gears.aa_bar import c_range, divisibility, family, synthesize, teeth_for
 from tmm_cli.render.files import MANIFEST
+from cli_helpers import assert_one_line_error
 
 SEED_ARGS = ["planetary", "--ratio", "1/10", "--c", "26/25", "--planets", "3", "--module", "5", "--x1", "-0.4",
              "--x2", "0.4"]
@@ -24,12 +25,6 @@ def run(*args):
     return CliRunner().invoke(cli, [str(a) for a in args])
 
 
-def assert_one_line_error(res, *words):
-    assert res.exit_code == 2, (res.exit_code, res.output)
-    err = res.stderr.strip()
-    assert "Traceback" not in err and len(err.splitlines()) == 1 and err.startswith("tmm: error:"), err
-    for w in words:
-        assert w in err, (w, err)
 
 
 # ----------------------------------------------------------------------------------------------
