@@ -3,7 +3,6 @@ and properties over many pairs."""
 
 import math
 
-import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 

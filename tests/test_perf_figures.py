@@ -4,19 +4,15 @@ by side with the same files as one after the other, and `project --json --no-plo
 terminal tables nor imports matplotlib."""
 
 import json
-import os
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 from matplotlib.figure import Figure
 
-from tmm_cli.gears.design import design_gears
 from tmm_cli.project import run_project
 from tmm_cli.render import figure_kit
 from tmm_cli.render.cam_figures import cam_figures
-from tmm_cli.render.files import save_figures
 from tmm_cli.render.gears_figures import gears_figures
 from tmm_cli.variants import get_variant
 
@@ -55,44 +51,6 @@ def test_png_is_encoded_at_zlib_level_1(tmp_path, monkeypatch):
     seen.clear()
     fig.savefig(tmp_path / "a.svg", format="svg")
     assert seen == {}
-
-
-def _tiny(names):
-    def make():
-        out = {}
-        for n in names:
-            f = figure_kit.new_figure(1, 1)
-            f.text(0.5, 0.5, n)
-            out[n] = f
-        return out
-    return make
-
-
-def _save(folder, figs, fmt):
-    save_figures(folder, figs, fmt, dpi=20)
-
-
-def test_side_by_side_writes_what_serial_writes(tmp_path):
-    a, b = tmp_path / "a", tmp_path / "b"
-    a.mkdir()
-    b.mkdir()
-    got = figure_kit.save_side_by_side(a, "png", _tiny(["g1", "g2"]), _tiny(["c1"]), _save)
-    assert list(got) == ["g1", "g2", "c1"]
-    _save(b, {**_tiny(["g1", "g2"])(), **_tiny(["c1"])()}, "png")
-    assert sorted(p.name for p in a.iterdir()) == sorted(p.name for p in b.iterdir()) == ["c1.png", "g1.png", "g2.png"]
-
-
-def test_side_by_side_redraws_here_what_the_child_failed_to_draw(tmp_path):
-    parent = os.getpid()
-
-    def first():
-        if os.getpid() != parent:
-            raise RuntimeError("the child fails")
-        return _tiny(["g1"])()
-
-    got = figure_kit.save_side_by_side(tmp_path, "png", first, _tiny(["c1"]), _save)
-    assert set(got) == {"g1", "c1"} and got["g1"] is not None
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["c1.png", "g1.png"]
 
 
 def _json_run(tmp_path, *extra):

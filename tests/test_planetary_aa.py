@@ -5,7 +5,6 @@ rechecks of the exported JSON, and hostile inputs driving the CLI."""
 import json
 import math
 from fractions import Fraction
-from pathlib import Path
 
 import numpy as np
 import pytest

@@ -1,6 +1,5 @@
 """Table 1.2: transcription against the seed text, and the validation rules."""
 
-import re
 
 import pytest
 

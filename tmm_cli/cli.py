@@ -11,7 +11,6 @@ if __name__ == "__main__":  # `python -m tmm_cli.cli`: run the importable module
 
     main()
 
-import json
 import os
 import sys
 from pathlib import Path

@@ -18,7 +18,7 @@ them with room for forced fractions while the scheme-2 table stays at ~4·10⁵ 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from fractions import Fraction
 from functools import lru_cache
 

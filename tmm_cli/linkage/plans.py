@@ -79,7 +79,7 @@ def plans(g: Geometry, phi: float, omega: float, eps: float = 0.0) -> Plans:
     a_pt = pos.a
     b_pt = pos.b
     c_pt = np.array([float(pos.x_c), g.b])
-    w4, e4 = float(m.omega_link), float(m.eps_link)
+    w4 = float(m.omega_link)
     v_rel, a_rel = float(m.v_rel), float(m.a_rel)
     w5 = float(m.omega_rod)
 

@@ -165,55 +165,6 @@ def _warm_up() -> None:
     fig.savefig(io.BytesIO(), format="png", dpi=10)
 
 
-def save_side_by_side(folder, fmt: str, first, second, save) -> dict:
-    """Draw and save two groups of figures at once (write_project_folder now uses :class:`SharedWork`,
-    which balances single figures and the sheets): a forked child process draws `first()`, this
-    process `second()`; `save(folder, figures, fmt)` writes a group. Returns {name: Figure or None}
-    (None for the child's figures, which exist only as files).
-
-    On two cores this halves the time of the figures of one project. Only on Linux (fork after
-    matplotlib is imported is cheap and safe there); elsewhere, or if the child fails, the first
-    group is drawn here after the second, so the result is the same.
-    """
-    if not (sys.platform.startswith("linux") and (os.cpu_count() or 1) > 1):
-        figs = {**first(), **second()}
-        save(folder, figs, fmt)
-        return figs
-    _warm_up()
-    sys.stdout.flush()
-    sys.stderr.flush()
-    pid = os.fork()
-    if pid == 0:  # the child: draw, save, leave without running any exit handler of the parent
-        global _FORKED
-        _FORKED = True
-        code = 1
-        try:
-            figs = first()
-            save(folder, figs, fmt)
-            names = "\n".join(figs)
-            code = 0
-            with open(os.path.join(folder, f".tmm-child-{os.getpid()}"), "w", encoding="utf-8") as f:
-                f.write(names)
-        finally:
-            os._exit(code)
-    try:
-        mine = second()
-        save(folder, mine, fmt)
-    finally:
-        _, status = os.waitpid(pid, 0)
-    marker = os.path.join(folder, f".tmm-child-{pid}")
-    if status == 0 and os.path.exists(marker):
-        with open(marker, encoding="utf-8") as f:
-            theirs = {name: None for name in f.read().split("\n") if name}
-        os.remove(marker)
-        return {**theirs, **mine}
-    if os.path.exists(marker):
-        os.remove(marker)
-    theirs = first()  # the child failed: draw its figures here (an error now surfaces normally)
-    save(folder, theirs, fmt)
-    return {**theirs, **mine}
-
-
 _FORKED = False  # set in a child forked here: it never forks again (two cores are busy already)
 
 

@@ -353,7 +353,6 @@ def _gear_bar(ax, x, y0, y1, col, lw=2.2, tick=0.9, internal=False):
 
 def _scheme(ax, result, lang):
     d = result.planetary
-    ch = result.checks
     x = 0.0
     span = []
     labels = []
@@ -652,7 +651,6 @@ def _assembly_figure(result, lang):
         title = (pick(lang, f"Stage {j + 1}: ", f"Ступень {j + 1}: ") if n > 1 else "") + \
             pick(lang, f"{lab}, k = {st.planets} planets", f"{lab}, k = {plural(st.planets, 'ru', SATELLITES)}")
         _assembly_stage(ax, st, ch, lang, title)
-    k = d.planets
     order = pick(lang, "Assembly order: fit planet 1; turn the carrier by 2β = 360°/k (the sun turns by a whole number "
                        "of teeth, condition (2.4)); fit the next planet in the same place; repeat.",
                  "Порядок сборки: установить сателлит 1; повернуть водило на 2β = 360°/k (центральное колесо "

@@ -93,7 +93,7 @@ def cam_section(c: Ctx) -> None:
             f"Для этого закона $f'_max = {q(f1, sig=4)}$, $f''_max = {q(f2, sig=4)}$; при $h = {h_sym} = {h_val}$ "
             "наибольшие скорость и ускорение на удалении равны"))
     h_num = math.radians(v.stroke) if rocker else v.stroke
-    phr, phb = math.radians(v.phi_rise_deg), math.radians(v.phi_return_deg)
+    phr = math.radians(v.phi_rise_deg)
     doc.formula(f'{vs}_("у" max) = (f\'_max dot h dot ω_k)/φ_"у" = ({q(f1, sig=4)} dot {q(h_num, sig=4)} dot '
                 f'{q(m.omega, sig=5)})/{q(phr, sig=4)} = {q(mx.v_rise_max, sig=4)} {c.u(vu)}', None)
     a_rise = max(abs(mx.a_rise_max), abs(mx.a_rise_min))

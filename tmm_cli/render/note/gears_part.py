@@ -199,7 +199,7 @@ def _formula_math(text: str) -> str:
 
 
 def _book_scheme1(c: Ctx, st) -> None:
-    doc, t, q = c.doc, c.t, c.q
+    doc, t = c.doc, c.t
     row = st.chosen
     a_, d_ = row.a, row.d
     half = Fraction(d_ - a_, 2)
@@ -283,7 +283,7 @@ def _book_planets(c: Ctx, st) -> None:
 
 def _conditions(c: Ctx) -> None:
     g = c.r.gears
-    doc, t, n, q = c.doc, c.t, c.n, c.q
+    doc, t, q = c.doc, c.t, c.q
     ch = g.checks
     pl = t("pl", "пл")
     doc.h(2, t("Conditions of synthesis for the reducer taken", "Проверка условий синтеза принятого редуктора"))

@@ -64,7 +64,7 @@ def write_sheets(folder: Path, result, lang: str, title=None) -> list[str]:
 
     On two cores a forked child draws and writes sheet 3 while this process does sheet 4 (the
     PDF rendering is most of the time); if the child fails, sheet 3 is drawn here afterwards, so
-    the files are the same either way (the pattern of ``figure_kit.save_side_by_side``)."""
+    the files are the same either way."""
     import os
     import sys
 

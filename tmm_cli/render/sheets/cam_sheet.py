@@ -516,7 +516,6 @@ def _profile_field(sh: Sheet, r, lang: str):
     qm = np.add(f.p(0, 0), ((rr + 4) * math.cos(math.radians(225)), (rr + 4) * math.sin(math.radians(225))))
     sh.text(qm[0], qm[1], "ω_{к}" if lang == "ru" else "ω_{c}", H_LABEL, align="right", valign="top")
     # captions
-    mm = pick(lang, "mm", "мм")
     txt = [f"k_{{Sk}} = {_g(0.001 / fac, lang)} {pick(lang, 'm/mm', 'м/мм')};  {pick(lang, 'r_{r}', 'r_{р}')} = {_roller_text(p, lang)}"]
     if abs(fac - 0.001 / d.k_sk) > 1e-12:
         why = pick(lang, "the pivot circle", "окружность центров качания") if p.pivot_path is not None else \
