@@ -1,4 +1,22 @@
-"""Shared assertions of the CLI tests."""
+"""Shared helpers and assertions of the CLI tests."""
+
+import json
+
+from click.testing import CliRunner
+
+from tmm_cli.cli import cli
+
+
+def run(*args):
+    """`tmm ARGS` in process (numbers and paths given as any type)."""
+    return CliRunner().invoke(cli, [str(a) for a in args])
+
+
+def run_json(*args):
+    """`tmm ARGS --json --no-plots --lang en`, which must succeed: its JSON document."""
+    res = run(*args, "--json", "--no-plots", "--lang", "en")
+    assert res.exit_code == 0, res.output
+    return json.loads(res.stdout)
 
 
 def assert_one_line_error(res, *words):

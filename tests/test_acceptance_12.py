@@ -10,22 +10,13 @@ import math
 from fractions import Fraction
 
 import pytest
-from click.testing import CliRunner
 
-from tmm_cli.cli import cli
 
 ALPHA = math.radians(20.0)
 SEED = ["--ratio", "1/10", "--c", "26/25", "--planets", "3", "--module", "5", "--x1", "-0.4", "--x2", "0.4"]
 
 
-def run(*args):
-    return CliRunner().invoke(cli, [str(a) for a in args])
-
-
-def run_json(*args):
-    res = run(*args, "--json", "--no-plots", "--lang", "en")
-    assert res.exit_code == 0, res.output
-    return json.loads(res.stdout)
+from cli_helpers import run, run_json  # noqa: E402
 
 
 def inv(a):

@@ -14,19 +14,10 @@ import json
 from fractions import Fraction
 
 import pytest
-from click.testing import CliRunner
-
-from tmm_cli.cli import cli
 
 
-def run(*args):
-    return CliRunner().invoke(cli, [str(a) for a in args])
 
-
-def run_json(*args):
-    res = run(*args, "--json", "--no-plots", "--lang", "en")
-    assert res.exit_code == 0, res.output
-    return json.loads(res.stdout)
+from cli_helpers import run, run_json  # noqa: E402
 
 
 def willis(zk, zc, zc2, zn):

@@ -522,10 +522,7 @@ def _profile_field(sh: Sheet, r, lang: str):
             pick(lang, "the profile with its constructions", "профиль с построениями")
         txt.append(pick(lang, f"(Table 1.1 gives {d.scale.replace(',', '.')}; a smaller ГОСТ 2.302 scale here to fit {why})",
                         f"(по табл. 1.1 — {d.scale}; здесь меньший масштаб ГОСТ 2.302, чтобы уместить {why})"))
-    y = y0b + 2.0 + 4.6 * (len(txt) - 1)
-    for t in txt:
-        sh.text(x0b + 2.0, y, t, H_SMALL, width=x1b - x0b - 4.0)
-        y -= 4.6
+    sh.caption(x0b, x1b, y0b + 2.0, txt, H_SMALL, 4.6)
     return f
 
 

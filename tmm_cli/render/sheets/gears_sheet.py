@@ -616,10 +616,7 @@ def _mesh_field(sh: Sheet, r, lang: str):
         + pick(lang, "zones: 2 — two pairs, 1 — one pair; active profiles — double line",
                "зоны: 2 — двухпарное, 1 — однопарное зацепление; активные профили — двойная линия"),
     ]
-    y = y0b + 3.0 + 4.8 * (len(lines) - 1)
-    for t in lines:
-        sh.text(x0b + 2.0, y, t, H_SMALL, width=x1b - x0b - 4.0)
-        y -= 4.8
+    sh.caption(x0b, x1b, y0b + 3.0, lines, H_SMALL, 4.8)
     return fld
 
 

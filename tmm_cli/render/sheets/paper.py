@@ -414,6 +414,14 @@ class Sheet:
             w += self.font(hh, wf).text_width(part)
         return w
 
+    def caption(self, x0: float, x1: float, y_bottom: float, lines: list[str], h: float, step: float) -> None:
+        """`lines` of height `h` stacked `step` mm apart upwards from `y_bottom`, the last one lowest,
+        each kept within x0 … x1 (2 mm in from either side)."""
+        y = y_bottom + step * (len(lines) - 1)
+        for t in lines:
+            self.text(x0 + 2.0, y, t, h, width=x1 - x0 - 4.0)
+            y -= step
+
     def text(self, x, y, text: str, h: float = 3.5, *, align: str = "left", valign: str = "base",
              width: float | None = None, rot: float = 0.0, layer: str = "Текст", max_lines: int = 1,
              line_gap: float = 0.5, height_max: float | None = None) -> list:
