@@ -478,15 +478,33 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
         ratio=_parse_ratio(ratio), tolerance_pct=tolerance_pct, planets=planets, stiffness=stiffness,
         shift=_parse_shift(shift), a_w_mm=a_w_mm, select=select, cam_choice=choice,
     )
+    console = None if as_json else _console(lang)
+    shown: list[str] = []
+
+    def render_report() -> None:
+        """The terminal report, rendered into a string while the figures are drawn (≈ 0.3 s),
+        printed once the folder is in place (nothing is printed for a run that fails)."""
+        from .render.report import print_project
+
+        if console.legacy_windows:  # the old Windows console takes no ANSI text: printed afterwards
+            return
+        with console.capture() as capture:
+            print_project(console, result, lang)
+        shown.append(capture.get())
+
     doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report, title=title,
-                                        note_template=template, sheets=not no_sheets)
+                                        note_template=template, sheets=not no_sheets,
+                                        meanwhile=None if as_json else render_report)
     if as_json:  # the very text of results.json (encoding 180 kB of JSON twice costs ~0.1 s)
         click.echo((folder / "results.json").read_text(encoding="utf-8"), nl=False)
         return
-    from .render.report import print_project
+    if shown:
+        console.file.write(shown[0])
+        console.file.flush()
+    else:
+        from .render.report import print_project
 
-    console = _console(lang)
-    print_project(console, result, lang)
+        print_project(console, result, lang)
     _print_files(console, folder, written, lang)
 
 

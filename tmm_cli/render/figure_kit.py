@@ -60,9 +60,41 @@ def _canvas_class():
     import numpy as np
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
+    from matplotlib.backends.backend_agg import RendererAgg
+    from matplotlib.mathtext import MathTextParser
+
+    cached = getattr(MathTextParser._parse_cached, "__wrapped__", None)
+    if cached is not None:  # one variant's ~30 formulas, the batch's repeated ones (matplotlib keeps 50)
+        import functools
+
+        MathTextParser._parse_cached = functools.lru_cache(_MATHTEXT_CACHE)(cached)
+    parsers: list = []  # the first renderer's parser, given to every other one
+
     class TmmCanvas(FigureCanvasAgg):
         """Agg, but an opaque figure goes to PNG as RGB, not RGBA: a quarter less to encode, and
-        the file (zlib level 1) is as small as matplotlib's RGBA at level 6. Pixels are the same."""
+        the file (zlib level 1) is as small as matplotlib's RGBA at level 6. Pixels are the same.
+
+        Figures of one size share a renderer (drawing is one figure at a time in a process), and
+        every renderer one mathtext parser: matplotlib caches text metrics per renderer and parsed
+        formulas per parser, so a label, a tick value or a formula met before is not laid out again
+        (the batch's figures repeat most of theirs)."""
+
+        def get_renderer(self):
+            w, h = self.get_width_height(physical=True)
+            key = (w, h, self.figure.dpi)
+            if self._lastKey != key:
+                renderer = _RENDERERS.pop(key, None)
+                if renderer is None:
+                    renderer = RendererAgg(w, h, self.figure.dpi)
+                    if parsers:
+                        renderer.mathtext_parser = parsers[0]
+                    else:
+                        parsers.append(renderer.mathtext_parser)
+                _RENDERERS[key] = renderer  # the most recently used last
+                while len(_RENDERERS) > _RENDERERS_KEPT:
+                    _RENDERERS.pop(next(iter(_RENDERERS)))
+                self.renderer, self._lastKey = renderer, key
+            return self.renderer
 
         def print_png(self, filename_or_obj, *, metadata=None, pil_kwargs=None, **_):
             FigureCanvasAgg.draw(self)
@@ -91,6 +123,9 @@ def _canvas_class():
 
 
 _CLASS = []
+_RENDERERS: dict = {}  # (width px, height px, dpi) -> a RendererAgg shared by the figures of that size
+_RENDERERS_KEPT = 6  # a few MB each; the figures of a project come in five sizes
+_MATHTEXT_CACHE = 512  # parsed formulas kept (matplotlib's default is 50)
 
 
 def new_figure(width_in: float, height_in: float):

@@ -209,7 +209,7 @@ def _from_cache(tmp: Path, result, lang: str, fmt: str, svg, cache: dict) -> set
 
 def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", plots: bool = True,
                          report: str | None = "md", figure_cache: dict | None = None, title=None,
-                         note_template: str | None = None, sheets: bool = False):
+                         note_template: str | None = None, sheets: bool = False, meanwhile=None):
     """Write results.json, cam_profile.csv, the figures and the report into `folder`, atomically.
 
     `report`: "md" writes report.md, "pdf" the typeset note (note.pdf, its source note.typ and
@@ -224,6 +224,8 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     `figure_cache` (a dict the caller keeps between calls, as `tmm batch` does) lets variants
     that share a reducer reuse its two drawings instead of drawing them again.
     `sheets` adds the A1 drawings sheet3.dxf/.pdf and sheet4.dxf/.pdf (render/sheets).
+    `meanwhile` (no arguments) runs in this process while a forked child starts on the figures,
+    before this process takes its share (`tmm project` renders its terminal report there).
     Returns (the JSON document, the sorted list of file names written).
     """
     from .cam_json import profile_csv
@@ -233,8 +235,6 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     doc = project_document(result, lang)
     # the project owns its folder: nothing of an earlier run (other options) stays beside it
     with staged_dir(folder, owns=("*",)) as tmp:
-        write_json(tmp / "results.json", doc)
-        write_text(tmp / "cam_profile.csv", profile_csv(result.cam))
         svg = set(NOTE_FIGURES) if report == "pdf" and fmt != "svg" else set()  # SVG copies for the note
         cached = _from_cache(tmp, result, lang, fmt, svg, figure_cache) if plots and figure_cache is not None else set()
         names = [n for n in ALL_FIGURES if n not in cached] if plots else []
@@ -255,12 +255,17 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
         if parallel and names:
             _before_fork(svg)
         with SharedWork(draw, later, fork=parallel) as work:
-            work.wait_shared()  # every figure is there
-            # --- the report: Markdown or the typeset note (issue 11) ------------------------------
-            note_error = None
-            if report == "md":
+            # what needs no figure, here while the child starts on them (the queue balances the rest)
+            write_json(tmp / "results.json", doc)
+            write_text(tmp / "cam_profile.csv", profile_csv(result.cam))
+            if report == "md":  # names the figure files, which need not exist yet
                 write_text(tmp / "report.md", markdown_report(result, lang, files))
-            elif report == "pdf":
+            if meanwhile is not None:
+                meanwhile()
+            work.wait_shared()  # every figure is there
+            # --- the typeset note (issue 11) embeds the figures' SVG copies --------------------------
+            note_error = None
+            if report == "pdf":
                 note_error = _write_note(tmp, result, lang, title, fmt, note_template)
         # ----------------------------------------------------------------------------------------
         written = staged_names(tmp)
