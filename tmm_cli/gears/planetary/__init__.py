@@ -24,7 +24,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..errors import TmmError
+from ...errors import TmmError
 
 Z_MAX = 200
 K_MAX = 40  # no set within Z_MAX fits more planets (neighbouring): 19/183 > sin(π/31)
