@@ -6,7 +6,7 @@ import random
 
 import pytest
 
-from tmm_cli.gears.planetary import (
+from tmm_cli.gears.planetary.conditions import (
     assembly_book,
     assembly_ok,
     check_stage,

@@ -358,7 +358,8 @@ def accept_valid_reducer(rows: tuple[CheckRow, ...], answers: dict, gears) -> tu
     largest number of planets the set admits, pass as "pass (valid set)": the book's hand procedure and the
     search may rightly give different sets (e.g. variant 17 at 95 rpm: 18/47/112 by the book,
     17/46/109 by the search)."""
-    from .gears.planetary import PlanetaryDesign, Stage, check_design
+    from .gears.planetary.conditions import PlanetaryDesign, Stage
+    from .gears.planetary.velocity import check_design
 
     failed = {r.key for r in rows if r.status == "fail"}
     n_stages = 2 if gears.scheme == "1+1" else 1

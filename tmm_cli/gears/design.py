@@ -15,24 +15,20 @@ from ..errors import TmmError
 from ..notes import Note
 from . import drive
 from .drive import SCHEMES, MotorPower, SchemeInfo
-from .planetary import (
+from .planetary.book import BookDerivation, PrintedCheck, book_derivation, check_printed
+from .planetary.conditions import PlanetaryDesign
+from .planetary.search import (
     SELECT_RULES,
     SELECT_SLACK,
     STAGE_RANGE_1,
     Z_MAX,
-    BookDerivation,
-    DesignChecks,
-    PlanetaryDesign,
-    PrintedCheck,
     SearchResult,
     _NoCandidates,
     _NoPlanets,
-    book_derivation,
-    check_design,
-    check_printed,
     closest_ratio,
     search_designs,
 )
+from .planetary.velocity import DesignChecks, check_design
 from .spur import SpurGeometry, design_spur
 from .stiffness import SpurPairStiffness, spur_pair_stiffness
 
