@@ -155,9 +155,9 @@ def _figure_task(tmp: Path, result, lang: str, fmt: str, name: str, svg):
     return lambda: _draw_and_save(tmp, result, lang, fmt, [name], svg)
 
 
-def _before_fork(svg) -> None:
-    """What both processes need, built once before the fork: the figure modules, mathtext and the
-    fonts, the SVG backend if the note wants SVG copies."""
+def prepare_figures(svg) -> None:
+    """What every process that draws needs, built once before a fork: the figure modules, mathtext
+    and the fonts, the SVG backend if the note wants SVG copies (`svg` true)."""
     from . import cam_figures, gears_figures  # noqa: F401
     from .figure_kit import _warm_up
 
@@ -253,7 +253,7 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
 
             later.append(lambda: write_sheets(tmp, result, lang, title))
         if parallel and names:
-            _before_fork(svg)
+            prepare_figures(svg)
         with SharedWork(draw, later, fork=parallel) as work:
             # what needs no figure, here while the child starts on them (the queue balances the rest)
             write_json(tmp / "results.json", doc)
