@@ -124,7 +124,7 @@ def _canvas_class():
 
 _CLASS = []
 _RENDERERS: dict = {}  # (width px, height px, dpi) -> a RendererAgg shared by the figures of that size
-_RENDERERS_KEPT = 6  # a few MB each; the figures of a project come in five sizes
+_RENDERERS_KEPT = 8  # 2–9 MB each; the eight figures of a project come in at most eight sizes
 _MATHTEXT_CACHE = 512  # parsed formulas kept (matplotlib's default is 50)
 
 
