@@ -1,5 +1,5 @@
 """What keeps the figures and the JSON path cheap, checked without timing anything (timings live in
-bench/bench.py): fixed layouts (one draw per save), PNG at zlib level 1, the two sheets drawn side
+bench/bench.py): fixed layouts (one draw per save), our PNG writer, the two sheets drawn side
 by side with the same files as one after the other, and `project --json --no-plots` neither lays out
 terminal tables nor imports matplotlib."""
 
@@ -7,6 +7,7 @@ import json
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
@@ -35,22 +36,34 @@ def test_every_figure_has_a_fixed_layout_and_is_drawn_once_per_save(project17, t
         assert draws == [fig], name  # the constrained layout drew every figure twice
 
 
-def test_png_is_encoded_at_zlib_level_1(tmp_path, monkeypatch):
-    seen = {}
-    original = Figure.savefig
+def test_png_has_the_drawn_pixels_as_rgb_with_its_resolution(tmp_path):
+    """Our PNG writer (rows unfiltered, zlib) read back by Pillow: RGB, the very pixels Agg drew, the dpi."""
+    from PIL import Image
 
-    def spy(self, fname, *args, **kwargs):
-        seen.update(kwargs.get("pil_kwargs") or {})
-        return original(self, fname, *args, **kwargs)
-
-    monkeypatch.setattr(Figure, "savefig", spy)
-    fig = figure_kit.new_figure(2, 2)
-    fig.savefig(tmp_path / "a.png", dpi=20)
-    assert seen == {"compress_level": 1}
-    assert (tmp_path / "a.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    seen.clear()
+    fig = figure_kit.new_figure(2, 1.5)
+    ax = fig.add_axes((0.1, 0.1, 0.8, 0.8))
+    ax.plot([0, 1, 2], [0, 1, 0.5], color="tab:red")
+    ax.set_title(figure_kit.mt("i_пл = 3,26"))
+    fig.savefig(tmp_path / "a.png", dpi=50)
+    drawn = np.asarray(fig.canvas.buffer_rgba())[..., :3]
+    with Image.open(tmp_path / "a.png") as back:
+        assert back.mode == "RGB" and back.size == (100, 75)
+        assert round(back.info["dpi"][0]) == 50
+        assert "Matplotlib" in back.info["Software"]
+        assert np.array_equal(np.asarray(back), drawn)
+    assert len(np.unique(drawn.reshape(-1, 3), axis=0)) > 10  # a real drawing, not a blank page
     fig.savefig(tmp_path / "a.svg", format="svg")
-    assert seen == {}
+    assert (tmp_path / "a.svg").read_text(encoding="utf-8").lstrip().startswith("<?xml")
+
+
+def test_a_transparent_figure_keeps_matplotlibs_rgba_png(tmp_path):
+    from PIL import Image
+
+    fig = figure_kit.new_figure(1, 1)
+    fig.patch.set_alpha(0.0)
+    fig.savefig(tmp_path / "t.png", dpi=20)
+    with Image.open(tmp_path / "t.png") as back:
+        assert back.mode == "RGBA"
 
 
 def _json_run(tmp_path, *extra):

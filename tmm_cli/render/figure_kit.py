@@ -37,24 +37,6 @@ def mt(text: str) -> str:
     return _SYMBOL.sub(lambda m: f"${m.group(1)}_{{\\mathregular{{{m.group(2)}}}}}$", text)
 
 
-def _figure_class():
-    from matplotlib.figure import Figure
-
-    class TmmFigure(Figure):
-        """A Figure whose PNG is encoded with zlib level 1: about a third faster than the default
-        level 6 for files some 10–15 % larger (the pixels are the same)."""
-
-        def savefig(self, fname, *args, **kwargs):
-            fmt = kwargs.get("format")
-            if fmt is None:
-                fmt = os.path.splitext(os.fspath(fname))[1][1:].lower() if isinstance(fname, (str, os.PathLike)) else "png"
-            if fmt == "png":
-                kwargs.setdefault("pil_kwargs", {"compress_level": 1})
-            return super().savefig(fname, *args, **kwargs)
-
-    return TmmFigure
-
-
 def _canvas_class():
     import matplotlib
     import numpy as np
@@ -97,29 +79,55 @@ def _canvas_class():
             return self.renderer
 
         def print_png(self, filename_or_obj, *, metadata=None, pil_kwargs=None, **_):
+            """An opaque figure as RGB by :func:`png_rgb`; anything transparent, or asked with
+            Pillow's options, by matplotlib's own path."""
             FigureCanvasAgg.draw(self)
             rgba = np.asarray(self.buffer_rgba())
-            if int(rgba[..., 3].min()) < 255:  # something transparent: matplotlib's own RGBA path
+            if pil_kwargs or int(rgba[..., 3].min()) < 255:
                 matplotlib.image.imsave(filename_or_obj, rgba, format="png", origin="upper", dpi=self.figure.dpi,
                                         metadata=metadata, pil_kwargs=pil_kwargs)
                 return
-            from PIL import Image, PngImagePlugin
-
-            kwargs = dict(pil_kwargs or {})
-            if "pnginfo" not in kwargs:
-                info = PngImagePlugin.PngInfo()
-                meta = {"Software": f"Matplotlib version{matplotlib.__version__}, https://matplotlib.org/",
-                        **(metadata or {})}
-                for key, value in meta.items():
-                    if value is not None:
-                        info.add_text(key, value)
-                kwargs["pnginfo"] = info
-            h, w = rgba.shape[:2]
-            image = Image.frombuffer("RGBA", (w, h), rgba, "raw", "RGBA", 0, 1).convert("RGB")
-            dpi = round(self.figure.dpi)
-            image.save(filename_or_obj, format="png", dpi=(dpi, dpi), **kwargs)
+            meta = {"Software": f"Matplotlib version{matplotlib.__version__}, https://matplotlib.org/", **(metadata or {})}
+            data = png_rgb(rgba[..., :3], self.figure.dpi, {k: v for k, v in meta.items() if v is not None})
+            with matplotlib.cbook.open_file_cm(filename_or_obj, "wb") as fh:
+                fh.write(data)
 
     return TmmCanvas
+
+
+def png_rgb(rgb, dpi: float, text: dict | None = None, level: int = 3) -> bytes:
+    """An 8-bit RGB image (numpy array h × w × 3) as a PNG file (ISO/IEC 15948): rows unfiltered,
+    zlib at `level`, the resolution in pHYs, `text` as tEXt chunks (Latin-1).
+
+    Why not Pillow: its PNG encoder tries the five row filters on every row, which is most of its
+    time on a figure (≈ 20 ms each); a plot is mostly flat colour, which zlib packs as well unfiltered.
+    Measured on the eight figures of variant 17: 0.07 s and 857 kB against Pillow's 0.17–0.21 s and
+    930 kB at zlib level 1; the pixels are the same.
+
+    >>> import io, numpy as np; from PIL import Image
+    >>> img = np.arange(2 * 3 * 3, dtype=np.uint8).reshape(2, 3, 3)
+    >>> back = Image.open(io.BytesIO(png_rgb(img, 120, {"Software": "tmm"})))
+    >>> back.mode, back.size, bool((np.asarray(back) == img).all()), round(back.info["dpi"][0])
+    ('RGB', (3, 2), True, 120)
+    """
+    import struct
+    import zlib
+
+    import numpy as np
+
+    h, w = rgb.shape[:2]
+    raw = np.zeros((h, 3 * w + 1), np.uint8)  # each row: filter type 0 (none), then the pixels
+    raw[:, 1:] = rgb.reshape(h, 3 * w)
+
+    def chunk(kind: bytes, body: bytes) -> bytes:
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF)
+
+    ppm = round(dpi / 0.0254)  # pixels per metre
+    out = [b"\x89PNG\r\n\x1a\n", chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0)),
+           chunk(b"pHYs", struct.pack(">IIB", ppm, ppm, 1))]
+    out += [chunk(b"tEXt", k.encode("latin-1") + b"\0" + v.encode("latin-1", "replace")) for k, v in (text or {}).items()]
+    out += [chunk(b"IDAT", zlib.compress(raw.tobytes(), level)), chunk(b"IEND", b"")]
+    return b"".join(out)
 
 
 _CLASS = []
@@ -131,7 +139,9 @@ _MATHTEXT_CACHE = 512  # parsed formulas kept (matplotlib's default is 50)
 def new_figure(width_in: float, height_in: float):
     """An empty figure of the given size with no layout engine (the caller places the axes)."""
     if not _CLASS:
-        _CLASS.extend((_figure_class(), _canvas_class()))
+        from matplotlib.figure import Figure
+
+        _CLASS.extend((Figure, _canvas_class()))
     fig = _CLASS[0](figsize=(width_in, height_in), layout="none")
     _CLASS[1](fig)
     return fig
