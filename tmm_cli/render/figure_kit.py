@@ -52,6 +52,20 @@ def _canvas_class():
         MathTextParser._parse_cached = functools.lru_cache(_MATHTEXT_CACHE)(cached)
     parsers: list = []  # the first renderer's parser, given to every other one
 
+    def forget_fonts() -> None:
+        """In a forked child: drop the parser and its formulas, which hold the parent's FreeType
+        fonts. A font object must never cross a fork (it reads its file through a descriptor the
+        two processes share: interleaved reads give "FT_Load_Glyph … invalid outline");
+        matplotlib drops its own font cache in the child for the same reason."""
+        parsers.clear()
+        _RENDERERS.clear()
+        clear = getattr(MathTextParser._parse_cached, "cache_clear", None)
+        if clear is not None:
+            clear()
+
+    if hasattr(os, "register_at_fork"):
+        os.register_at_fork(after_in_child=forget_fonts)
+
     class TmmCanvas(FigureCanvasAgg):
         """Agg, but an opaque figure goes to PNG as RGB, not RGBA: a quarter less to encode, and
         the file (zlib level 1) is as small as matplotlib's RGBA at level 6. Pixels are the same.
