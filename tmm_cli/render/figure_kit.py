@@ -165,8 +165,11 @@ def png_rgb(rgb, dpi: float, text: dict | None = None, level: int = 3) -> bytes:
     import numpy as np
 
     h, w = rgb.shape[:2]
-    raw = np.zeros((h, 3 * w + 1), np.uint8)  # each row: filter type 0 (none), then the pixels
-    raw[:, 1:] = rgb.reshape(h, 3 * w)
+    raw = np.empty((h, 3 * w + 1), np.uint8)  # each row: filter type 0 (none), then the pixels
+    raw[:, 0] = 0
+    pixels = raw[:, 1:].reshape(h, w, 3)
+    for k in range(3):  # channel by channel: ~8x faster than one strided copy out of RGBA
+        pixels[..., k] = rgb[..., k]
 
     def chunk(kind: bytes, body: bytes) -> bytes:
         return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF)
@@ -175,7 +178,7 @@ def png_rgb(rgb, dpi: float, text: dict | None = None, level: int = 3) -> bytes:
     out = [b"\x89PNG\r\n\x1a\n", chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0)),
            chunk(b"pHYs", struct.pack(">IIB", ppm, ppm, 1))]
     out += [chunk(b"tEXt", k.encode("latin-1") + b"\0" + v.encode("latin-1", "replace")) for k, v in (text or {}).items()]
-    out += [chunk(b"IDAT", zlib.compress(raw.tobytes(), level)), chunk(b"IEND", b"")]
+    out += [chunk(b"IDAT", zlib.compress(raw, level)), chunk(b"IEND", b"")]
     return b"".join(out)
 
 
