@@ -319,10 +319,10 @@ def _mesh_figure(result, lang):
                              f"ω1: motor ({_sense_text(dirs.motor, lang)}), ω2: cam ({_sense_text(dirs.cam, lang)})",
                        f"Зубчатая передача z1 = {g.z1}, z2 = {g.z2}, m = {f(g.m_mm)} мм, a = {f(g.a_mm)} мм{_shift_title(g, lang)}\n"
                        f"ω1: двигатель ({_sense_text(dirs.motor, lang)}), ω2: кулачок ({_sense_text(dirs.cam, lang)})"),
-                  fontsize=10.5)
+                  fontsize=10.5, y=1.0)
     zone = (f"ε_α = P1P2/p_b = {f(g.g_alpha_mm, decimals=1)}/{f(g.pb_mm, decimals=2)} = {f(g.eps_alpha, decimals=3)};  "
             f"φ_α1 = {f(g.phi_alpha1_deg, decimals=2)}°, φ_α2 = {f(g.phi_alpha2_deg, decimals=2)}°")
-    ax1.set_title(mt(pick(lang, "Mesh zone: ", "Зона зацепления: ") + zone), fontsize=11)
+    ax1.set_title(mt(pick(lang, "Mesh zone: ", "Зона зацепления: ") + zone), fontsize=11, y=1.0)
     for ax in (ax0, ax1):
         ax.set_xlabel(pick(lang, "mm", "мм"))
         ax.grid(alpha=0.15)
@@ -412,7 +412,7 @@ def _scheme(ax, result, lang):
     teeth = "  +  ".join(
         ", ".join(f"{n} = {v}" for n, v in zip(("z_k", "z_c", "z_c′", "z_n") if s.z_planet2 is not None else ("z_k", "z_c", "z_n"), s.teeth))
         + f", k = {s.planets}" for s in d.stages)
-    ax.set_title(mt(pick(lang, f"Scheme {d.scheme}: {teeth}", f"Схема {d.scheme}: {teeth}")), fontsize=10)
+    ax.set_title(mt(pick(lang, f"Scheme {d.scheme}: {teeth}", f"Схема {d.scheme}: {teeth}")), fontsize=10, y=1.0)
 
 
 def _velocity(ax, result, lang, ylim):
@@ -487,7 +487,7 @@ def _velocity(ax, result, lang, ylim):
     ratios = " · ".join(num(s.ratio, lang, sig=4) for s in v.stages)
     ax.set_title(mt(pick(lang, f"Linear velocities: i = tg φ_k/tg φ_H = {ratios}; below: angular velocities",
                          f"План линейных скоростей: i = tg φ_k/tg φ_H = {ratios}; ниже — план угловых скоростей")),
-                 fontsize=10)
+                 fontsize=10, y=1.0)
     ax.tick_params(axis="y", labelleft=False)
 
 
@@ -638,7 +638,7 @@ def _assembly_stage(ax, stage, checks, lang, title):
     else:
         asm = f"(z_k·z_c′ + z_c·z_n)/(k·{c.assembly_g}) = {c.assembly_t}/{k * c.assembly_g} = {num(c.assembly_t / (k * c.assembly_g), lang, sig=4)}"
     nb = f"sin(π/{k}) = {num(c.neighbour_sin, lang, decimals=3)} > {num(c.neighbour_q, lang, decimals=3)}"
-    ax.set_title(f"{title}\n{mt(asm)}\n{nb}", fontsize=9.5)
+    ax.set_title(f"{title}\n{mt(asm)}\n{nb}", fontsize=9.5, y=1.0)
 
 
 def _assembly_figure(result, lang):
