@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 from ..cam.design import CamResult
-from .figure_kit import bottom_legend, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
+from .figure_kit import bare_xaxis, bottom_legend, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
 from .i18n import pick
 
 C_RISE = "#1f77b4"
@@ -21,19 +21,30 @@ C_BOOK = "#9467bd"
 
 
 def _phase_marks(ax, r: CamResult, lang: str, labels: bool = False) -> None:
+    """The four phases as faint bands over the whole height, dotted lines at their bounds, and
+    (`labels`) their names at the top: one collection for the bands and one line for the bounds
+    (a zero-length phase adds neither a band nor a second line at its bound)."""
+    from matplotlib.collections import PolyCollection
+    from matplotlib.lines import Line2D
+
     v = r.variant
     bounds = [0.0, v.phi_rise_deg, v.phi_rise_deg + v.phi_far_dwell_deg, v.phi_working_deg, 360.0]
     names = [pick(lang, "rise", "удаление"), pick(lang, "far dwell", "дал. стояние"), pick(lang, "return", "возвращение"), pick(lang, "near dwell", "бл. стояние")]
     colors = [C_RISE, C_DWELL, C_RET, C_DWELL]
+    bands, band_colors = [], []
     for i in range(4):
         a, b = bounds[i], bounds[i + 1]
         if b - a <= 0:
             continue
-        ax.axvspan(a, b, color=colors[i], alpha=0.06, lw=0)
+        bands.append([(a, 0.0), (b, 0.0), (b, 1.0), (a, 1.0), (a, 0.0)])  # as axvspan's Rectangle
+        band_colors.append(colors[i])
         if labels and b - a >= 25:
             ax.text((a + b) / 2, 0.97, names[i], transform=ax.get_xaxis_transform(), ha="center", va="top", fontsize=8, color=colors[i])
-    for x in bounds[1:4]:
-        ax.axvline(x, color="k", lw=0.6, ls=":")
+    ax.add_collection(PolyCollection(bands, facecolors=band_colors, alpha=0.06, linewidths=0, zorder=1,
+                                     transform=ax.get_xaxis_transform()), autolim=False)
+    xs = sorted(set(bounds[1:4]))
+    ax.add_artist(Line2D(np.repeat(xs, 3), np.tile([0.0, 1.0, np.nan], len(xs)), color="k", lw=0.6, ls=":",
+                         transform=ax.get_xaxis_transform()))
 
 
 def _motion_figure(r: CamResult, lang: str):
@@ -43,7 +54,10 @@ def _motion_figure(r: CamResult, lang: str):
     fig = new_figure(W, H)
     top = title_height(2) + 0.62  # two-line title, then the time axis with its label
     fig.subplots_adjust(left=0.95 / W, right=1 - 0.2 / W, bottom=0.5 / H, top=1 - top / H, hspace=0.055)
-    axes = fig.subplots(3, 1, sharex=True)
+    axes = fig.subplots(3, 1)
+    for ax in axes[:-1]:  # the upper panels show the bottom panel's φ scale as grid lines only
+        ax.sharex(axes[-1])
+        bare_xaxis(ax, np.arange(0, 361, 30), grid_alpha=0.3)
     deg = np.degrees(m.phi)
     rows = [(x.phi_deg, x) for x in m.table]
     if v.is_rocker:
@@ -77,7 +91,7 @@ def _motion_figure(r: CamResult, lang: str):
         ax.plot(xs, pts, "o", ms=3, color="tab:orange", label=pick(lang, "table positions", "положения таблицы"))
         ax.axhline(0, color="k", lw=0.5)
         ax.set_ylabel(ylabel)
-        ax.grid(alpha=0.3)
+        (ax.grid if k == 2 else ax.yaxis.grid)(alpha=0.3)  # ax.grid would make a Tick on a bare x axis
         ax.legend(loc="lower right" if k == 0 else "upper right", fontsize=8, framealpha=0.85)
     axes[-1].set_xlabel(pick(lang, "cam angle φ, °", "угол поворота кулачка φ, °"))
     axes[-1].set_xlim(0, 360)
