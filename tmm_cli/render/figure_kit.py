@@ -338,3 +338,14 @@ def bare_xaxis(ax, ticks, grid_alpha: float | None = None) -> None:
     ax.add_artist(marks)
     marks.set_clip_path(None)
     marks.set_clip_on(False)
+
+
+def hide_axis(*axes_axis) -> None:
+    """Axes' x or y Axis objects with no ticks and no label, hidden: nothing of them is made or
+    drawn (``set_xticks([])`` still makes a major and a minor Tick, five artists each, and lays
+    them out at every save). The spines stay."""
+    from matplotlib.ticker import NullLocator
+
+    for axis in axes_axis:
+        axis.set_major_locator(NullLocator())
+        axis.set_visible(False)

@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from .figure_kit import bottom_legend, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
+from .figure_kit import bottom_legend, hide_axis, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
 from .i18n import pick
 from .numbers import num, plural
 
@@ -408,7 +408,7 @@ def _scheme(ax, result, lang):
     ax.set_xlim(shaft_in0 - 0.1 * rmax, prev_out + 0.35 * rmax)
     ax.set_ylim(-1.3 * rmax, 1.3 * rmax)
     ax.set_ylabel(pick(lang, "radius r = z/2, modules", "радиус r = z/2, в модулях"))
-    ax.set_xticks([])
+    hide_axis(ax.xaxis)
     teeth = "  +  ".join(
         ", ".join(f"{n} = {v}" for n, v in zip(("z_k", "z_c", "z_c′", "z_n") if s.z_planet2 is not None else ("z_k", "z_c", "z_n"), s.teeth))
         + f", k = {s.planets}" for s in d.stages)
@@ -630,8 +630,7 @@ def _assembly_stage(ax, stage, checks, lang, title):
     ax.set_xlim(-lim, lim)
     ax.set_ylim(-lim, lim)
     ax.set_aspect("equal")
-    ax.set_xticks([])
-    ax.set_yticks([])
+    hide_axis(ax.xaxis, ax.yaxis)
     c = checks
     if stage.z_planet2 is None:
         asm = f"(z_k + z_n)/k = {stage.z_sun + stage.z_ring}/{k} = {num((stage.z_sun + stage.z_ring) / k, lang, sig=4)}"
