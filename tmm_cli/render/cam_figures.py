@@ -138,9 +138,8 @@ def _zone_figure(r: CamResult, lang: str):
     lab = pick(lang, "D-curve, return", "кривая D, возвращение") + ("" if z.closure == "form" else pick(lang, " (not constrained)", " (не ограничивается)"))
     ax.plot(d[ret, 0], d[ret, 1], color=C_RET, lw=1.4, ls=ls, label=lab)
     # a few segments B_i D_i
-    for idx in (np.nonzero(rise)[0], np.nonzero(ret)[0]):
-        for i in idx[:: max(1, len(idx) // 8)]:
-            ax.plot([b[i, 0], d[i, 0]], [b[i, 1], d[i, 1]], color="0.5", lw=0.6)
+    seg = np.concatenate([idx[:: max(1, len(idx) // 8)] for idx in (np.nonzero(rise)[0], np.nonzero(ret)[0])])
+    ax.add_collection(_segments(np.stack([b[seg], d[seg]], axis=1), color="0.5", lw=0.6), autolim=False)
     # the book's bounding lines
     for L in zn.lines:
         p0 = np.array(L.point) * k
@@ -148,11 +147,12 @@ def _zone_figure(r: CamResult, lang: str):
         t = np.linspace(-3 * span, 3 * span, 2)
         ax.plot(p0[0] + t * dd[0], p0[1] + t * dd[1], color=C_BOOK, lw=1.0, ls="-.")
         # label the line where it enters the window
-        for tt in np.linspace(-3 * span, 3 * span, 400):
-            q = p0 + tt * dd
-            if xlim[0] + 0.04 * span < q[0] < xlim[1] - 0.2 * span and ylim[0] + 0.04 * span < q[1] < ylim[1] - 0.04 * span:
-                ax.text(q[0], q[1], " " + pick(lang, "line ", "прямая ") + L.name, color=C_BOOK, fontsize=11, weight="bold", va="bottom")
-                break
+        q = p0 + np.linspace(-3 * span, 3 * span, 400)[:, None] * dd
+        inside = np.nonzero((xlim[0] + 0.04 * span < q[:, 0]) & (q[:, 0] < xlim[1] - 0.2 * span)
+                            & (ylim[0] + 0.04 * span < q[:, 1]) & (q[:, 1] < ylim[1] - 0.04 * span))[0]
+        if len(inside):
+            qx, qy = q[inside[0]]
+            ax.text(qx, qy, " " + pick(lang, "line ", "прямая ") + L.name, color=C_BOOK, fontsize=11, weight="bold", va="bottom")
     ax.plot([], [], color=C_BOOK, lw=1.0, ls="-.", label=mt(pick(lang, "book's bounding lines (ν_max)", "ограничивающие прямые по пособию (ν_max)")))
     ax.plot([0, o[0]], [0, o[1]], color="k", lw=1.0, ls="--")
     ax.plot(*o, marker="*", ms=16, color=C_ZONE, mec="k", ls="none", zorder=5, label=mt(pick(lang, f"chosen centre O: r_0 = {f(z.r0_m * k, decimals=2)} mm", f"принятый центр O: r_0 = {f(z.r0_m * k, decimals=2)} мм")))
@@ -184,6 +184,7 @@ def _zone_figure(r: CamResult, lang: str):
 
 
 def _profile_figure(r: CamResult, lang: str):
+    from matplotlib.collections import PatchCollection
     from matplotlib.patches import Circle, FancyArrowPatch
 
     v, z, p = r.variant, r.sizing, r.profile
@@ -206,16 +207,16 @@ def _profile_figure(r: CamResult, lang: str):
     idxs = [int(round(math.radians(row.phi_deg) / (2 * math.pi) * n)) % n for row in r.motion.table]
     idxs = idxs[:: max(1, len(idxs) // 8)]
     stem = 0.45 * r0
-    for j, i in enumerate(idxs):
-        c = P[i]
-        ax.add_patch(Circle(c, rp, fill=False, color="tab:orange", lw=0.9))
-        if p.pivot_path is not None:
-            q = p.pivot_path[i] * k
-            ax.plot([q[0], c[0]], [q[1], c[1]], color="tab:brown", lw=1.0, alpha=0.8)
-            ax.plot(*q, "s", color="tab:brown", ms=3)
-        else:
-            u = p.axis_dir[i]
-            ax.plot([c[0], c[0] + stem * u[0]], [c[1], c[1] + stem * u[1]], color="tab:brown", lw=1.0, alpha=0.8)
+    # the rollers and the follower links as two collections
+    ax.add_collection(PatchCollection([Circle(P[i], rp) for i in idxs], facecolors="none", edgecolors="tab:orange",
+                                      linewidths=0.9), autolim=False)
+    c = P[idxs]
+    far = p.pivot_path[idxs] * k if p.pivot_path is not None else c + stem * np.asarray(p.axis_dir)[idxs]
+    near = c if p.pivot_path is None else far
+    far = far if p.pivot_path is None else c
+    ax.add_collection(_segments(np.stack([near, far], axis=1), color="tab:brown", lw=1.0, alpha=0.8), autolim=False)
+    if p.pivot_path is not None:
+        ax.plot(near[:, 0], near[:, 1], "s", color="tab:brown", ms=3)
     ax.plot([], [], color="tab:orange", lw=0.9, label=pick(lang, "roller at table positions", "ролик в положениях таблицы"))
     ax.plot([], [], color="tab:brown", lw=1.0, label=pick(lang, "follower in inverted motion", "толкатель в обращённом движении"))
     if p.pivot_path is not None:
@@ -400,6 +401,14 @@ def cam_figures(result: CamResult, lang: str, names=None) -> dict:
     for fig in figs.values():
         decimal_commas(fig, lang)
     return figs
+
+
+def _segments(segs, **kw):
+    """Straight segments (N, 2, 2) as one LineCollection drawn as so many separate Line2Ds would be
+    (each blended on its own, so crossings look the same; Line2D's caps and joins)."""
+    from matplotlib.collections import LineCollection
+
+    return LineCollection(segs, capstyle="projecting", joinstyle="round", zorder=2, **kw)
 
 
 def _signed(f, x: float) -> str:
