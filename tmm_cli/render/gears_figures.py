@@ -259,9 +259,10 @@ def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
     ax.plot([o2[0], n2[0]], [o2[1], n2[1]], color=C_PLANET, lw=0.7)
     off = {"N1": (-14, 6), "N2": (4, -12), "P1": (-6, 8), "P2": (2, -14), "U1": (2, -14), "U2": (-6, 8), "P": (6, -14)}
     fs = 10 if zoom else 8
+    pts = np.array([at(s) for s in s_pts.values()])
+    ax.plot(pts[:, 0], pts[:, 1], "o", color="k", ms=3.5 if zoom else 2.5, zorder=5)  # one line of seven markers
     for name, s in s_pts.items():
         q = at(s)
-        ax.plot(*q, "o", color="k", ms=3.5 if zoom else 2.5, zorder=5)
         if zoom or name in ("N1", "N2", "P"):
             dx, dy = off[name]
             ax.annotate(name, q, xytext=(sx * dx, dy), textcoords="offset points", fontsize=fs, fontweight="bold",
