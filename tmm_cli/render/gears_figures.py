@@ -531,7 +531,12 @@ def _angular(ax, result, lang, y0: float):
                 (0, y0 - h), xytext=(0, -18), textcoords="offset points", fontsize=9.5, ha="left")
 
 
-def _checks_text(ax, result, lang):
+def _checks_text(fig, box, result, lang):
+    """The ratio checks as lines of text in `box` (a figure-fraction Bbox): figure texts placed as
+    an axes' texts would be, without an Axes (with its axis, ticks and spines) to carry them."""
+    from matplotlib.transforms import BboxTransformTo, TransformedBbox
+
+    place = BboxTransformTo(TransformedBbox(box, fig.transSubfigure))  # what an Axes at `box` calls transAxes
     ch = result.checks
     v = ch.velocity
     d = result.planetary
@@ -554,9 +559,9 @@ def _checks_text(ax, result, lang):
                       f"габарит max(z_k + 2z_c, z_n) = {plural(d.size, 'ru', MODULES)}; сателлитов k = {d.planets}"))
     # one text per line: mathtext sets a line, not a paragraph
     for i, line in enumerate(lines):
-        ax.text(0.02, 0.95 - i * 0.13, mt(line), va="top", ha="left", fontsize=10, transform=ax.transAxes,
-                weight="bold" if i == 0 else "normal")
-    ax.axis("off")
+        if line:
+            fig.text(0.02, 0.95 - i * 0.13, mt(line), va="top", ha="left", fontsize=10, transform=place,
+                     weight="bold" if i == 0 else "normal")
 
 
 def _planetary_figure(result, lang):
@@ -566,7 +571,6 @@ def _planetary_figure(result, lang):
                           bottom=0.02, top=1 - (title_height(1) + title_height(1, 10)) / H, wspace=0.04, hspace=0.1)
     ax_s = fig.add_subplot(gs[0, 0])
     ax_v = fig.add_subplot(gs[0, 1], sharey=ax_s)
-    ax_t = fig.add_subplot(gs[1, :])
     _scheme(ax_s, result, lang)
     ylim = ax_s.get_ylim()
     _velocity(ax_v, result, lang, ylim)
@@ -576,7 +580,7 @@ def _planetary_figure(result, lang):
     for st in result.checks.velocity.stages:
         for ry in (st.r_a, st.r_c, st.r_b):
             ax_s.axhline(ry, color="0.75", lw=0.6, ls=":", zorder=0)
-    _checks_text(ax_t, result, lang)
+    _checks_text(fig, gs[1, :].get_position(fig), result, lang)
     f = fmt(lang)
     err = percent(result.planetary.ratio_error_pct, lang)
     suptitle(fig, mt(pick(lang, f"Planetary reducer: i_пл = n_д/n_кр = {result.motor_rpm}/{f(result.crank_rpm)} = "
