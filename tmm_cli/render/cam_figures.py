@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 from ..cam.design import CamResult
-from .figure_kit import bottom_legend, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
+from .figure_kit import bare_xaxis, bottom_legend, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
 from .i18n import pick
 
 C_RISE = "#1f77b4"
@@ -21,19 +21,30 @@ C_BOOK = "#9467bd"
 
 
 def _phase_marks(ax, r: CamResult, lang: str, labels: bool = False) -> None:
+    """The four phases as faint bands over the whole height, dotted lines at their bounds, and
+    (`labels`) their names at the top: one collection for the bands and one line for the bounds
+    (a zero-length phase adds neither a band nor a second line at its bound)."""
+    from matplotlib.collections import PolyCollection
+    from matplotlib.lines import Line2D
+
     v = r.variant
     bounds = [0.0, v.phi_rise_deg, v.phi_rise_deg + v.phi_far_dwell_deg, v.phi_working_deg, 360.0]
     names = [pick(lang, "rise", "удаление"), pick(lang, "far dwell", "дал. стояние"), pick(lang, "return", "возвращение"), pick(lang, "near dwell", "бл. стояние")]
     colors = [C_RISE, C_DWELL, C_RET, C_DWELL]
+    bands, band_colors = [], []
     for i in range(4):
         a, b = bounds[i], bounds[i + 1]
         if b - a <= 0:
             continue
-        ax.axvspan(a, b, color=colors[i], alpha=0.06, lw=0)
+        bands.append([(a, 0.0), (b, 0.0), (b, 1.0), (a, 1.0), (a, 0.0)])  # as axvspan's Rectangle
+        band_colors.append(colors[i])
         if labels and b - a >= 25:
             ax.text((a + b) / 2, 0.97, names[i], transform=ax.get_xaxis_transform(), ha="center", va="top", fontsize=8, color=colors[i])
-    for x in bounds[1:4]:
-        ax.axvline(x, color="k", lw=0.6, ls=":")
+    ax.add_collection(PolyCollection(bands, facecolors=band_colors, alpha=0.06, linewidths=0, zorder=1,
+                                     transform=ax.get_xaxis_transform()), autolim=False)
+    xs = sorted(set(bounds[1:4]))
+    ax.add_artist(Line2D(np.repeat(xs, 3), np.tile([0.0, 1.0, np.nan], len(xs)), color="k", lw=0.6, ls=":",
+                         transform=ax.get_xaxis_transform()))
 
 
 def _motion_figure(r: CamResult, lang: str):
@@ -43,7 +54,10 @@ def _motion_figure(r: CamResult, lang: str):
     fig = new_figure(W, H)
     top = title_height(2) + 0.62  # two-line title, then the time axis with its label
     fig.subplots_adjust(left=0.95 / W, right=1 - 0.2 / W, bottom=0.5 / H, top=1 - top / H, hspace=0.055)
-    axes = fig.subplots(3, 1, sharex=True)
+    axes = fig.subplots(3, 1)
+    for ax in axes[:-1]:  # the upper panels show the bottom panel's φ scale as grid lines only
+        ax.sharex(axes[-1])
+        bare_xaxis(ax, np.arange(0, 361, 30), grid_alpha=0.3)
     deg = np.degrees(m.phi)
     rows = [(x.phi_deg, x) for x in m.table]
     if v.is_rocker:
@@ -77,7 +91,7 @@ def _motion_figure(r: CamResult, lang: str):
         ax.plot(xs, pts, "o", ms=3, color="tab:orange", label=pick(lang, "table positions", "положения таблицы"))
         ax.axhline(0, color="k", lw=0.5)
         ax.set_ylabel(ylabel)
-        ax.grid(alpha=0.3)
+        (ax.grid if k == 2 else ax.yaxis.grid)(alpha=0.3)  # ax.grid would make a Tick on a bare x axis
         ax.legend(loc="lower right" if k == 0 else "upper right", fontsize=8, framealpha=0.85)
     axes[-1].set_xlabel(pick(lang, "cam angle φ, °", "угол поворота кулачка φ, °"))
     axes[-1].set_xlim(0, 360)
@@ -124,9 +138,8 @@ def _zone_figure(r: CamResult, lang: str):
     lab = pick(lang, "D-curve, return", "кривая D, возвращение") + ("" if z.closure == "form" else pick(lang, " (not constrained)", " (не ограничивается)"))
     ax.plot(d[ret, 0], d[ret, 1], color=C_RET, lw=1.4, ls=ls, label=lab)
     # a few segments B_i D_i
-    for idx in (np.nonzero(rise)[0], np.nonzero(ret)[0]):
-        for i in idx[:: max(1, len(idx) // 8)]:
-            ax.plot([b[i, 0], d[i, 0]], [b[i, 1], d[i, 1]], color="0.5", lw=0.6)
+    seg = np.concatenate([idx[:: max(1, len(idx) // 8)] for idx in (np.nonzero(rise)[0], np.nonzero(ret)[0])])
+    ax.add_collection(_segments(np.stack([b[seg], d[seg]], axis=1), color="0.5", lw=0.6), autolim=False)
     # the book's bounding lines
     for L in zn.lines:
         p0 = np.array(L.point) * k
@@ -134,11 +147,12 @@ def _zone_figure(r: CamResult, lang: str):
         t = np.linspace(-3 * span, 3 * span, 2)
         ax.plot(p0[0] + t * dd[0], p0[1] + t * dd[1], color=C_BOOK, lw=1.0, ls="-.")
         # label the line where it enters the window
-        for tt in np.linspace(-3 * span, 3 * span, 400):
-            q = p0 + tt * dd
-            if xlim[0] + 0.04 * span < q[0] < xlim[1] - 0.2 * span and ylim[0] + 0.04 * span < q[1] < ylim[1] - 0.04 * span:
-                ax.text(q[0], q[1], " " + pick(lang, "line ", "прямая ") + L.name, color=C_BOOK, fontsize=11, weight="bold", va="bottom")
-                break
+        q = p0 + np.linspace(-3 * span, 3 * span, 400)[:, None] * dd
+        inside = np.nonzero((xlim[0] + 0.04 * span < q[:, 0]) & (q[:, 0] < xlim[1] - 0.2 * span)
+                            & (ylim[0] + 0.04 * span < q[:, 1]) & (q[:, 1] < ylim[1] - 0.04 * span))[0]
+        if len(inside):
+            qx, qy = q[inside[0]]
+            ax.text(qx, qy, " " + pick(lang, "line ", "прямая ") + L.name, color=C_BOOK, fontsize=11, weight="bold", va="bottom")
     ax.plot([], [], color=C_BOOK, lw=1.0, ls="-.", label=mt(pick(lang, "book's bounding lines (ν_max)", "ограничивающие прямые по пособию (ν_max)")))
     ax.plot([0, o[0]], [0, o[1]], color="k", lw=1.0, ls="--")
     ax.plot(*o, marker="*", ms=16, color=C_ZONE, mec="k", ls="none", zorder=5, label=mt(pick(lang, f"chosen centre O: r_0 = {f(z.r0_m * k, decimals=2)} mm", f"принятый центр O: r_0 = {f(z.r0_m * k, decimals=2)} мм")))
@@ -170,6 +184,7 @@ def _zone_figure(r: CamResult, lang: str):
 
 
 def _profile_figure(r: CamResult, lang: str):
+    from matplotlib.collections import PatchCollection
     from matplotlib.patches import Circle, FancyArrowPatch
 
     v, z, p = r.variant, r.sizing, r.profile
@@ -192,16 +207,16 @@ def _profile_figure(r: CamResult, lang: str):
     idxs = [int(round(math.radians(row.phi_deg) / (2 * math.pi) * n)) % n for row in r.motion.table]
     idxs = idxs[:: max(1, len(idxs) // 8)]
     stem = 0.45 * r0
-    for j, i in enumerate(idxs):
-        c = P[i]
-        ax.add_patch(Circle(c, rp, fill=False, color="tab:orange", lw=0.9))
-        if p.pivot_path is not None:
-            q = p.pivot_path[i] * k
-            ax.plot([q[0], c[0]], [q[1], c[1]], color="tab:brown", lw=1.0, alpha=0.8)
-            ax.plot(*q, "s", color="tab:brown", ms=3)
-        else:
-            u = p.axis_dir[i]
-            ax.plot([c[0], c[0] + stem * u[0]], [c[1], c[1] + stem * u[1]], color="tab:brown", lw=1.0, alpha=0.8)
+    # the rollers and the follower links as two collections
+    ax.add_collection(PatchCollection([Circle(P[i], rp) for i in idxs], facecolors="none", edgecolors="tab:orange",
+                                      linewidths=0.9), autolim=False)
+    c = P[idxs]
+    far = p.pivot_path[idxs] * k if p.pivot_path is not None else c + stem * np.asarray(p.axis_dir)[idxs]
+    near = c if p.pivot_path is None else far
+    far = far if p.pivot_path is None else c
+    ax.add_collection(_segments(np.stack([near, far], axis=1), color="tab:brown", lw=1.0, alpha=0.8), autolim=False)
+    if p.pivot_path is not None:
+        ax.plot(near[:, 0], near[:, 1], "s", color="tab:brown", ms=3)
     ax.plot([], [], color="tab:orange", lw=0.9, label=pick(lang, "roller at table positions", "ролик в положениях таблицы"))
     ax.plot([], [], color="tab:brown", lw=1.0, label=pick(lang, "follower in inverted motion", "толкатель в обращённом движении"))
     if p.pivot_path is not None:
@@ -386,6 +401,14 @@ def cam_figures(result: CamResult, lang: str, names=None) -> dict:
     for fig in figs.values():
         decimal_commas(fig, lang)
     return figs
+
+
+def _segments(segs, **kw):
+    """Straight segments (N, 2, 2) as one LineCollection drawn as so many separate Line2Ds would be
+    (each blended on its own, so crossings look the same; Line2D's caps and joins)."""
+    from matplotlib.collections import LineCollection
+
+    return LineCollection(segs, capstyle="projecting", joinstyle="round", zorder=2, **kw)
 
 
 def _signed(f, x: float) -> str:

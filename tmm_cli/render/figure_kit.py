@@ -424,3 +424,55 @@ class SharedWork:
         else:
             self.abort()
         return False
+
+
+def bare_xaxis(ax, ticks, grid_alpha: float | None = None) -> None:
+    """The x axis of `ax` drawn as its grid lines and bottom tick marks at `ticks` only, for the
+    upper panels of stacked axes whose x tick labels show on the bottom panel alone.
+
+    Two Line2Ds (the grid lines joined by NaN gaps, the tick marks as one marker line) instead of a
+    Tick per position, each of five artists created and laid out at every save: the same pixels
+    (the same colours, widths, transforms and drawing order as matplotlib's own) at a fraction of
+    the cost. The Axis itself is hidden, so nothing of it is created or drawn.
+    """
+    import matplotlib as mpl
+    import numpy as np
+    from matplotlib.lines import TICKDOWN, TICKUP, Line2D
+
+    rc = mpl.rcParams
+
+    def rc_or(key, fallback):
+        value = rc.get(key)
+        return rc[fallback] if value is None else value
+
+    xs = np.asarray(ticks, dtype=float)
+    zorder = ax.xaxis.get_zorder()  # the Axis draws its ticks at its own zorder
+    ax.xaxis.set_visible(False)
+    gx = np.repeat(xs, 3)
+    gx[2::3] = np.nan
+    gy = np.tile([0.0, 1.0, np.nan], len(xs))
+    alpha = rc_or("grid.major.alpha", "grid.alpha") if grid_alpha is None else grid_alpha
+    grid = Line2D(gx, gy, color=rc_or("grid.major.color", "grid.color"), alpha=alpha,
+                  linestyle=rc_or("grid.major.linestyle", "grid.linestyle"),
+                  linewidth=rc_or("grid.major.linewidth", "grid.linewidth"), marker="", zorder=zorder,
+                  transform=ax.get_xaxis_transform("grid"))
+    ax.add_artist(grid)  # clipped to the axes patch, like a grid line; the data limits stay
+    color = rc["xtick.color"]
+    marker = {"out": TICKDOWN, "in": TICKUP, "inout": "|"}[rc["xtick.direction"]]
+    marks = Line2D(xs, np.zeros_like(xs), color=color, linestyle="none", marker=marker, markeredgecolor=color,
+                   markersize=rc["xtick.major.size"], markeredgewidth=rc["xtick.major.width"], zorder=zorder,
+                   transform=ax.get_xaxis_transform("tick1"), clip_on=False)
+    ax.add_artist(marks)
+    marks.set_clip_path(None)
+    marks.set_clip_on(False)
+
+
+def hide_axis(*axes_axis) -> None:
+    """Axes' x or y Axis objects with no ticks and no label, hidden: nothing of them is made or
+    drawn (``set_xticks([])`` still makes a major and a minor Tick, five artists each, and lays
+    them out at every save). The spines stay."""
+    from matplotlib.ticker import NullLocator
+
+    for axis in axes_axis:
+        axis.set_major_locator(NullLocator())
+        axis.set_visible(False)

@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from .figure_kit import bottom_legend, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
+from .figure_kit import bottom_legend, hide_axis, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
 from .i18n import pick
 from .numbers import num, plural
 
@@ -259,9 +259,10 @@ def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
     ax.plot([o2[0], n2[0]], [o2[1], n2[1]], color=C_PLANET, lw=0.7)
     off = {"N1": (-14, 6), "N2": (4, -12), "P1": (-6, 8), "P2": (2, -14), "U1": (2, -14), "U2": (-6, 8), "P": (6, -14)}
     fs = 10 if zoom else 8
+    pts = np.array([at(s) for s in s_pts.values()])
+    ax.plot(pts[:, 0], pts[:, 1], "o", color="k", ms=3.5 if zoom else 2.5, zorder=5)  # one line of seven markers
     for name, s in s_pts.items():
         q = at(s)
-        ax.plot(*q, "o", color="k", ms=3.5 if zoom else 2.5, zorder=5)
         if zoom or name in ("N1", "N2", "P"):
             dx, dy = off[name]
             ax.annotate(name, q, xytext=(sx * dx, dy), textcoords="offset points", fontsize=fs, fontweight="bold",
@@ -319,10 +320,10 @@ def _mesh_figure(result, lang):
                              f"ω1: motor ({_sense_text(dirs.motor, lang)}), ω2: cam ({_sense_text(dirs.cam, lang)})",
                        f"Зубчатая передача z1 = {g.z1}, z2 = {g.z2}, m = {f(g.m_mm)} мм, a = {f(g.a_mm)} мм{_shift_title(g, lang)}\n"
                        f"ω1: двигатель ({_sense_text(dirs.motor, lang)}), ω2: кулачок ({_sense_text(dirs.cam, lang)})"),
-                  fontsize=10.5)
+                  fontsize=10.5, y=1.0)
     zone = (f"ε_α = P1P2/p_b = {f(g.g_alpha_mm, decimals=1)}/{f(g.pb_mm, decimals=2)} = {f(g.eps_alpha, decimals=3)};  "
             f"φ_α1 = {f(g.phi_alpha1_deg, decimals=2)}°, φ_α2 = {f(g.phi_alpha2_deg, decimals=2)}°")
-    ax1.set_title(mt(pick(lang, "Mesh zone: ", "Зона зацепления: ") + zone), fontsize=11)
+    ax1.set_title(mt(pick(lang, "Mesh zone: ", "Зона зацепления: ") + zone), fontsize=11, y=1.0)
     for ax in (ax0, ax1):
         ax.set_xlabel(pick(lang, "mm", "мм"))
         ax.grid(alpha=0.15)
@@ -408,11 +409,11 @@ def _scheme(ax, result, lang):
     ax.set_xlim(shaft_in0 - 0.1 * rmax, prev_out + 0.35 * rmax)
     ax.set_ylim(-1.3 * rmax, 1.3 * rmax)
     ax.set_ylabel(pick(lang, "radius r = z/2, modules", "радиус r = z/2, в модулях"))
-    ax.set_xticks([])
+    hide_axis(ax.xaxis)
     teeth = "  +  ".join(
         ", ".join(f"{n} = {v}" for n, v in zip(("z_k", "z_c", "z_c′", "z_n") if s.z_planet2 is not None else ("z_k", "z_c", "z_n"), s.teeth))
         + f", k = {s.planets}" for s in d.stages)
-    ax.set_title(mt(pick(lang, f"Scheme {d.scheme}: {teeth}", f"Схема {d.scheme}: {teeth}")), fontsize=10)
+    ax.set_title(mt(pick(lang, f"Scheme {d.scheme}: {teeth}", f"Схема {d.scheme}: {teeth}")), fontsize=10, y=1.0)
 
 
 def _velocity(ax, result, lang, ylim):
@@ -487,7 +488,7 @@ def _velocity(ax, result, lang, ylim):
     ratios = " · ".join(num(s.ratio, lang, sig=4) for s in v.stages)
     ax.set_title(mt(pick(lang, f"Linear velocities: i = tg φ_k/tg φ_H = {ratios}; below: angular velocities",
                          f"План линейных скоростей: i = tg φ_k/tg φ_H = {ratios}; ниже — план угловых скоростей")),
-                 fontsize=10)
+                 fontsize=10, y=1.0)
     ax.tick_params(axis="y", labelleft=False)
 
 
@@ -530,7 +531,12 @@ def _angular(ax, result, lang, y0: float):
                 (0, y0 - h), xytext=(0, -18), textcoords="offset points", fontsize=9.5, ha="left")
 
 
-def _checks_text(ax, result, lang):
+def _checks_text(fig, box, result, lang):
+    """The ratio checks as lines of text in `box` (a figure-fraction Bbox): figure texts placed as
+    an axes' texts would be, without an Axes (with its axis, ticks and spines) to carry them."""
+    from matplotlib.transforms import BboxTransformTo, TransformedBbox
+
+    place = BboxTransformTo(TransformedBbox(box, fig.transSubfigure))  # what an Axes at `box` calls transAxes
     ch = result.checks
     v = ch.velocity
     d = result.planetary
@@ -553,9 +559,9 @@ def _checks_text(ax, result, lang):
                       f"габарит max(z_k + 2z_c, z_n) = {plural(d.size, 'ru', MODULES)}; сателлитов k = {d.planets}"))
     # one text per line: mathtext sets a line, not a paragraph
     for i, line in enumerate(lines):
-        ax.text(0.02, 0.95 - i * 0.13, mt(line), va="top", ha="left", fontsize=10, transform=ax.transAxes,
-                weight="bold" if i == 0 else "normal")
-    ax.axis("off")
+        if line:
+            fig.text(0.02, 0.95 - i * 0.13, mt(line), va="top", ha="left", fontsize=10, transform=place,
+                     weight="bold" if i == 0 else "normal")
 
 
 def _planetary_figure(result, lang):
@@ -565,7 +571,6 @@ def _planetary_figure(result, lang):
                           bottom=0.02, top=1 - (title_height(1) + title_height(1, 10)) / H, wspace=0.04, hspace=0.1)
     ax_s = fig.add_subplot(gs[0, 0])
     ax_v = fig.add_subplot(gs[0, 1], sharey=ax_s)
-    ax_t = fig.add_subplot(gs[1, :])
     _scheme(ax_s, result, lang)
     ylim = ax_s.get_ylim()
     _velocity(ax_v, result, lang, ylim)
@@ -575,7 +580,7 @@ def _planetary_figure(result, lang):
     for st in result.checks.velocity.stages:
         for ry in (st.r_a, st.r_c, st.r_b):
             ax_s.axhline(ry, color="0.75", lw=0.6, ls=":", zorder=0)
-    _checks_text(ax_t, result, lang)
+    _checks_text(fig, gs[1, :].get_position(fig), result, lang)
     f = fmt(lang)
     err = percent(result.planetary.ratio_error_pct, lang)
     suptitle(fig, mt(pick(lang, f"Planetary reducer: i_пл = n_д/n_кр = {result.motor_rpm}/{f(result.crank_rpm)} = "
@@ -630,15 +635,14 @@ def _assembly_stage(ax, stage, checks, lang, title):
     ax.set_xlim(-lim, lim)
     ax.set_ylim(-lim, lim)
     ax.set_aspect("equal")
-    ax.set_xticks([])
-    ax.set_yticks([])
+    hide_axis(ax.xaxis, ax.yaxis)
     c = checks
     if stage.z_planet2 is None:
         asm = f"(z_k + z_n)/k = {stage.z_sun + stage.z_ring}/{k} = {num((stage.z_sun + stage.z_ring) / k, lang, sig=4)}"
     else:
         asm = f"(z_k·z_c′ + z_c·z_n)/(k·{c.assembly_g}) = {c.assembly_t}/{k * c.assembly_g} = {num(c.assembly_t / (k * c.assembly_g), lang, sig=4)}"
     nb = f"sin(π/{k}) = {num(c.neighbour_sin, lang, decimals=3)} > {num(c.neighbour_q, lang, decimals=3)}"
-    ax.set_title(f"{title}\n{mt(asm)}\n{nb}", fontsize=9.5)
+    ax.set_title(f"{title}\n{mt(asm)}\n{nb}", fontsize=9.5, y=1.0)
 
 
 def _assembly_figure(result, lang):
