@@ -31,12 +31,20 @@ def mt(text: str) -> str:
 
     >>> mt("i_пл = n_д/n_кр")
     '$i_\\\\mathregular{пл}$ = $n_\\\\mathregular{д}$/$n_\\\\mathregular{кр}$'
+    >>> mt("r_0 = 48,9; z_12")
+    '$r_0$ = 48,9; $z_{12}$'
     >>> mt("2z_c")
     '2$z_\\\\mathregular{c}$'
     >>> mt("rise, max 31°")
     'rise, max 31°'
     """
-    return _SYMBOL.sub(lambda m: f"${m.group(1)}_\\mathregular{{{m.group(2)}}}$", text)
+    def sub(m) -> str:
+        x, s = m.group(1), m.group(2)
+        if s.isdigit():  # digits are upright in mathtext anyway: no font switch to parse
+            return f"${x}_{s}$" if len(s) == 1 else f"${x}_{{{s}}}$"
+        return f"${x}_\\mathregular{{{s}}}$"
+
+    return _SYMBOL.sub(sub, text)
 
 
 def _canvas_class():
