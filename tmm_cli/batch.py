@@ -516,13 +516,13 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
     results: dict[int, dict] = {}
     stopped: KeyboardInterrupt | None = None
 
-    if n_workers > 1:  # what every worker needs, loaded once here: the forked workers share it
-        from . import project  # noqa: F401
+    # what every row needs, loaded once here (forked workers share it; the collector is calmed)
+    from . import project  # noqa: F401
 
-        if plots:
-            from .render.report import prepare_figures
+    if plots:
+        from .render.report import prepare_figures
 
-            prepare_figures(svg=report == "pdf")
+        prepare_figures(svg=report == "pdf")
     bar = None
     if progress:
         from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
