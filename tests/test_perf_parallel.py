@@ -110,6 +110,27 @@ def test_two_processes_write_what_one_writes(project17, tmp_path, monkeypatch, r
 
 
 @fork_only
+@pytest.mark.parametrize("command, n", [("cam", 5), ("gears", 3)])
+def test_cam_and_gears_draw_over_two_processes_what_one_draws(tmp_path, monkeypatch, command, n):
+    from click.testing import CliRunner
+    from PIL import Image, ImageChops
+
+    from tmm_cli.cli import cli
+
+    args = [command, "--variant", "17", "--lang", "ru"]
+    assert CliRunner().invoke(cli, [*args, "--out", str(tmp_path / "two")]).exit_code == 0
+    monkeypatch.setattr(figure_kit, "can_fork", lambda: False)
+    assert CliRunner().invoke(cli, [*args, "--out", str(tmp_path / "one")]).exit_code == 0
+    one, two = tmp_path / "one" / "variant-17", tmp_path / "two" / "variant-17"
+    assert _names(one) == _names(two)
+    pngs = [p.name for p in one.glob("*.png")]
+    assert len(pngs) == n
+    for name in pngs:
+        a, b = Image.open(one / name).convert("RGB"), Image.open(two / name).convert("RGB")
+        assert a.size == b.size and ImageChops.difference(a, b).getbbox() is None, name
+
+
+@fork_only
 def test_a_child_that_fails_drawing_is_replaced_here(project17, tmp_path, monkeypatch):
     parent = os.getpid()
     original = report._draw_and_save

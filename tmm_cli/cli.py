@@ -165,16 +165,21 @@ def _print_files(console, folder: Path, names: list[str], lang: str) -> None:
         console.print(pick(lang, "Files written to ", "Файлы записаны в ") + f"[bold]{folder}[/]: " + ", ".join(names))
 
 
-def _emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, lang: str, owns=(), extra=None) -> None:
+def _emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, lang: str, owns=(), extra=None,
+          figure_names=()) -> None:
     """Write `files` (name -> JSON object or text) and the figures atomically, then either print
-    `json_doc` alone or the tables (`show(console)`), the notes and the list of files."""
+    `json_doc` alone or the tables (`show(console)`), the notes and the list of files.
+
+    `figures(names=None)` draws the figures (a dict name -> Figure); given their `figure_names`,
+    they are drawn and saved one by one over two processes where a fork is possible, as
+    `tmm project` does."""
     from .render.files import save_figures, staged_dir, staged_names, write_json, write_text
 
     with staged_dir(folder, owns) as tmp:
         for name, content in files.items():
             (write_text if isinstance(content, str) else write_json)(tmp / name, content)
         if figures is not None:
-            save_figures(tmp, figures(), fmt)
+            _save_figures(tmp, figures, figure_names, fmt)
         if extra is not None:  # e.g. the A1 drawing sheet (--sheets)
             extra(tmp)
         written = staged_names(tmp)
@@ -185,6 +190,27 @@ def _emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, l
     show(console)
     _print_notes(console, notes, lang)
     _print_files(console, folder, written, lang)
+
+
+def _figure_names(sheet: str) -> tuple:
+    from .render.report import CAM_FIGURES, GEAR_FIGURES
+
+    return CAM_FIGURES if sheet == "cam" else GEAR_FIGURES
+
+
+def _save_figures(tmp: Path, figures, names, fmt: str) -> None:
+    from .render.figure_kit import SharedWork, can_fork
+    from .render.files import save_figures
+
+    if len(names) < 2 or not can_fork():
+        save_figures(tmp, figures(), fmt)
+        return
+    from .render.report import _largest_first, prepare_figures
+
+    prepare_figures(set())
+    tasks = [lambda n=n: save_figures(tmp, figures([n]), fmt) for n in _largest_first(names, set())]
+    with SharedWork(tasks) as work:
+        work.wait_shared()
 
 
 # Shared options -----------------------------------------------------------------------------
@@ -350,10 +376,10 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, sheet
     result = design_cam(v, step_deg=step_deg, choice=choice)
     doc = cam_document(v, result, lang)
 
-    def figures():
+    def figures(names=None):
         from .render.cam_figures import cam_figures
 
-        return cam_figures(result, lang)
+        return cam_figures(result, lang, names=names)
 
     def show(console):
         from .render.cam_tables import print_cam
@@ -367,7 +393,7 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, sheet
 
     _emit(folder, {"cam.json": doc, "cam_profile.csv": profile_csv(result)}, None if no_plots else figures,
           fmt, doc if as_json else None, show, result.notes, lang, owns=("cam_*.*", "sheet3.*"),
-          extra=sheet if sheets else None)
+          extra=sheet if sheets else None, figure_names=_figure_names("cam"))
 
 
 # tmm gears ---------------------------------------------------------------------------------
@@ -409,10 +435,10 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
     )
     doc = gears_document(v, result, lang)
 
-    def figures():
+    def figures(names=None):
         from .render.gears_figures import gears_figures
 
-        return gears_figures(result, lang)
+        return gears_figures(result, lang, names=names)
 
     def show(console):
         from .render.gears_tables import print_gears
@@ -425,7 +451,8 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
         save_sheet(sheet4(result, v.number, lang, title), tmp, "sheet4")
 
     _emit(folder, {"gears.json": doc}, None if no_plots else figures, fmt, doc if as_json else None, show,
-          result.notes, lang, owns=("gears_*.*", "sheet4.*"), extra=sheet if sheets else None)
+          result.notes, lang, owns=("gears_*.*", "sheet4.*"), extra=sheet if sheets else None,
+          figure_names=_figure_names("gears"))
 
 
 # tmm project -------------------------------------------------------------------------------
