@@ -90,7 +90,7 @@ def _canvas_class():
         """
 
         def draw_text(self, gc, x, y, s, prop, angle, ismath=False, mtext=None):
-            if ismath or (mtext is not None and (mtext.get_fontfeatures() or mtext.get_language())):
+            if ismath or _shaped(mtext):
                 return super().draw_text(gc, x, y, s, prop, angle, ismath=ismath, mtext=mtext)
             flags = get_hinting_flag()
             aa = bool(gc.get_antialiased())
@@ -216,8 +216,15 @@ def _shared_fontsets(parser):
 
         return fontset
 
+    if getattr(parser, "_output_type", None) != "vector":  # matplotlib < 3.11: Agg's formulas are bitmaps,
+        return parser  # drawn from glyph objects a shared font forgets (“glyph num is out of range”)
     parser._font_type_mapping = {name: keeping(make) for name, make in type(parser)._font_type_mapping.items()}
     return parser
+
+
+def _shaped(mtext) -> bool:
+    """Whether a Text asks for font features or a language (matplotlib ≥ 3.11 only)."""
+    return mtext is not None and any(getattr(mtext, get, lambda: None)() for get in ("get_fontfeatures", "get_language"))
 
 
 def _font_key(prop) -> tuple:
