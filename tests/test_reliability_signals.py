@@ -105,3 +105,28 @@ def test_two_batches_never_write_into_one_folder_at_once(tmp_path):
     assert a.returncode == 0
     rows = list(csv.DictReader((out / "summary.csv").open(encoding="utf-8")))
     assert [r["variant"] for r in rows] == [str(n) for n in range(1, 7)]
+
+
+def test_an_error_a_signal_caused_is_an_interruption_not_a_bug(monkeypatch, tmp_path):
+    """A Ctrl-C landing inside a C extension can come out as another error (matplotlib once turned
+    one into "ValueError: Invalid affine transformation matrix" and the run said "internal error",
+    exit 1): after a signal, the run exits 130 / "interrupted" whatever surfaced; without one, a
+    bug is still a bug."""
+    import tmm_cli.project as project
+    from cli_helpers import run
+
+    def swallowing(*args, **kwargs):
+        try:
+            os.kill(os.getpid(), signal.SIGINT)
+            time.sleep(5)  # the handler raises here
+        except KeyboardInterrupt:
+            raise ValueError("Invalid affine transformation matrix") from None
+
+    monkeypatch.setattr(project, "run_project", swallowing)
+    res = run("project", "--variant", "17", "--out", tmp_path / "o", "--lang", "en")
+    assert res.exit_code == 130, res.output
+    assert "interrupted" in res.stderr and "internal error" not in res.stderr
+    monkeypatch.setattr(project, "run_project", lambda *a, **k: 1 / 0)
+    res = run("project", "--variant", "17", "--out", tmp_path / "o", "--lang", "en")
+    assert res.exit_code == 1 and "internal error: ZeroDivisionError" in res.stderr
+    assert not (tmp_path / "o").exists()

@@ -28,13 +28,25 @@ class Interrupted(KeyboardInterrupt):
         return EXIT_CODES.get(self.signum, 130)
 
 
+_RECEIVED: list[int] = []  # the signals this process was stopped by (see :func:`received`)
+
+
 def _raise(signum, frame):
+    _RECEIVED.append(signum)
     raise Interrupted(signum)
+
+
+def received() -> Interrupted | None:
+    """The interruption of this run, if a signal arrived: whatever error surfaced after it is its
+    consequence, not a bug (a KeyboardInterrupt raised inside a C extension can come out as
+    another error: matplotlib turned one into "ValueError: Invalid affine transformation matrix")."""
+    return Interrupted(_RECEIVED[-1]) if _RECEIVED else None
 
 
 @contextmanager
 def handle_signals():
     """In the main process: SIGINT and SIGTERM raise :class:`Interrupted` (handlers restored after)."""
+    _RECEIVED.clear()  # a new run (tests run many in one process)
     try:
         old = {s: signal.signal(s, _raise) for s in (signal.SIGINT, signal.SIGTERM)}
     except ValueError:  # not the main thread (e.g. an embedding program): leave signals alone

@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 from ..cam.design import CamResult
-from .figure_kit import bare_xaxis, bottom_legend, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
+from .figure_kit import bare_xaxis, bottom_legend, copying_ticks, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
 from .i18n import pick
 
 C_RISE = "#1f77b4"
@@ -98,6 +98,7 @@ def _motion_figure(r: CamResult, lang: str):
     axes[-1].set_xticks(np.arange(0, 361, 30))
     w = m.omega
     top = axes[0].secondary_xaxis("top", functions=(lambda d: np.radians(d) / w * 1000.0, lambda t: np.degrees(np.asarray(t) / 1000.0 * w)))
+    copying_ticks(top)
     top.set_xlabel(pick(lang, "time t, ms", "время t, мс"))
     law = pick(lang, f"law {v.law}", f"закон {v.law}")
     suptitle(fig, mt(pick(lang, f"Variant {v.number}: follower motion diagrams\n({law}, n_k = {f(v.n_cam_rpm, minus='−')} rpm)",
