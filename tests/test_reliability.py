@@ -385,3 +385,25 @@ def test_any_numbers_give_a_design_or_one_line(tmp_path_factory, crank, torque, 
     else:
         assert len(res.stderr.strip().splitlines()) == 1 and "internal error" not in res.stderr
         assert tree(out) == []
+
+
+def test_json_text_is_the_json_of_any_document():
+    """Our indented writer (rows of numbers on one line) reads back as the standard library's
+    output, whatever the nesting, the texts ("], [" in a string too) and the non-finite floats."""
+    from hypothesis import given, settings
+    from hypothesis import strategies as st
+
+    from tmm_cli.render.files import json_safe, json_text
+
+    scalars = st.none() | st.booleans() | st.integers() | st.floats() | st.text(alphabet="ab], [\"ж\\\n", max_size=8)
+    docs = st.recursive(scalars, lambda inner: st.lists(inner, max_size=4) | st.tuples(inner, inner)
+                        | st.dictionaries(st.text(max_size=4), inner, max_size=4), max_leaves=25)
+
+    @settings(max_examples=300, deadline=None)
+    @given(docs)
+    def check(doc):
+        text = json_text(doc)
+        assert json.loads(text, parse_constant=lambda c: pytest.fail(f"bare {c}")) == json.loads(
+            json.dumps(json_safe(doc), ensure_ascii=False))
+
+    check()

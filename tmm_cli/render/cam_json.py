@@ -10,6 +10,8 @@ from __future__ import annotations
 import io
 import math
 
+import numpy as np
+
 from ..cam.design import CamResult
 from ..cam.profile import ROLLER_LIMIT
 from .i18n import note_text
@@ -36,7 +38,7 @@ def _pt_mm(p, nd: int = 4):
 def _curve_mm(arr, nd: int = 4) -> list[list[float]] | None:
     if arr is None:
         return None
-    return [[round(float(x) * 1000.0, nd), round(float(y) * 1000.0, nd)] for x, y in arr]
+    return [[round(x, nd), round(y, nd)] for x, y in (np.asarray(arr, dtype=float) * 1000.0).tolist()]
 
 
 def _follower_geometry(result: CamResult) -> dict:
@@ -290,11 +292,11 @@ def profile_csv(result: CamResult) -> str:
         head += ["outer_x_mm", "outer_y_mm"]
     head += ["pressure_angle_deg"]
     buf.write(",".join(head) + "\n")
-    for i, phi in enumerate(p.phi):
-        cols = [f"{math.degrees(float(phi)):.2f}"]
-        cols += [f"{float(c) * 1000.0:.4f}" for c in (*p.pitch[i], *p.inner[i])]
-        if p.outer is not None:
-            cols += [f"{float(c) * 1000.0:.4f}" for c in p.outer[i]]
-        cols.append(f"{float(p.nu_deg[i]):.3f}")
+    mm = [(np.asarray(a, dtype=float) * 1000.0).tolist() for a in (p.pitch, p.inner, p.outer) if a is not None]
+    nu = np.asarray(p.nu_deg, dtype=float).tolist()
+    for i, phi in enumerate(np.asarray(p.phi, dtype=float).tolist()):
+        cols = [f"{math.degrees(phi):.2f}"]
+        cols += [f"{c:.4f}" for curve in mm for c in curve[i]]
+        cols.append(f"{nu[i]:.3f}")
         buf.write(",".join(cols) + "\n")
     return buf.getvalue()

@@ -29,15 +29,16 @@ def pick(lang: str, en: str, ru: str) -> str:
     return ru if lang == "ru" else en
 
 
+_CATALOGUE: dict[str, dict[str, str]] = {}
+
+
 def _catalogue() -> dict[str, dict[str, str]]:
-    merged: dict[str, dict[str, str]] = {}
-    for mod in ("messages_cam", "messages_gears", "messages_project", "messages_linkage", "messages_shifted"):
-        try:
+    """Every note's sentences (the messages_* modules), gathered once."""
+    if not _CATALOGUE:
+        for mod in ("messages_cam", "messages_gears", "messages_linkage", "messages_shifted"):
             module = __import__(f"tmm_cli.render.{mod}", fromlist=["MESSAGES"])
-        except ImportError:
-            continue
-        merged.update(getattr(module, "MESSAGES", {}))
-    return merged
+            _CATALOGUE.update(getattr(module, "MESSAGES", {}))
+    return _CATALOGUE
 
 
 _NUMBER = re.compile(r"[+-]?\d+\.\d+")

@@ -76,6 +76,10 @@ _WORDS = {"thin": " ", "space": " ", "quad": "  ", "dot": "·", "times": "×", "
           "min": "min", "ln": "ln", "log": "log", "pi": "π", "mod": "mod", "eq.not": "≠", "degree": "°"}
 
 
+_TOKEN = re.compile(r"[A-Za-z]+|\d+|.")
+_NAME = re.compile(r"[A-Za-z]+(\.[a-z]+)*")
+
+
 def _group(s: str, i: int) -> tuple[str, int]:
     """The operand of _ or ^ starting at s[i]: (…), "…" or one word/char; returns (text, next index)."""
     if i >= len(s):
@@ -92,8 +96,8 @@ def _group(s: str, i: int) -> tuple[str, int]:
     if s[i] == '"':
         j = s.index('"', i + 1)
         return s[i:j + 1], j + 1
-    m = re.match(r"[A-Za-z]+|\d+|.", s[i:])
-    return m.group(0), i + len(m.group(0))
+    m = _TOKEN.match(s, i)
+    return m.group(0), m.end()
 
 
 def math_to_text(s: str, html: bool = True) -> str:
@@ -126,7 +130,7 @@ def math_to_text(s: str, html: bool = True) -> str:
             body, i = _group(s, i + 3)
             out.append("|" + math_to_text(body, html) + "|")
             continue
-        m = re.match(r"[A-Za-z]+(\.[a-z]+)*", s[i:])
+        m = _NAME.match(s, i)
         if m and len(m.group(0)) > 1 and m.group(0) in _WORDS:
             out.append(_WORDS[m.group(0)])
             i += len(m.group(0))
