@@ -61,3 +61,25 @@ def test_kept_font_heights_are_matplotlibs(size, weight, lines):
     assert hasattr(mine, "_get_font_height_metrics")
     theirs = RendererAgg(*fig.canvas.get_width_height(physical=True), fig.dpi)
     assert np.allclose(text.get_window_extent(mine).extents, text.get_window_extent(theirs).extents, rtol=0, atol=1e-9)
+
+
+def test_a_formula_is_kerned_the_same_whatever_was_drawn_before():
+    """The kept mathtext fontsets kern at the formula's own size: a formula drawn again after
+    texts of other sizes in the same font (which move FreeType's size) draws the same pixels; it
+    once came out a pixel wider or narrower, batch rows differing with the rows drawn before."""
+    from tmm_cli.render.figure_kit import mt
+
+    def formula(tail: str):  # a new string (parsed anew: parses are kept by string), the same ink
+        fig = new_figure(4, 0.8)
+        fig.text(0.02, 0.3, mt("AVATAR To Wa LT, l_BC = 80 mm, rocker CB₀") + tail, fontsize=9)
+        fig.canvas.draw()
+        return np.asarray(fig.canvas.buffer_rgba()).copy()
+
+    first = formula("")
+    other = new_figure(4, 2)
+    other.text(0.02, 0.6, mt("AVATAR To Wa LT, l_BC, CB₀ ∂"), fontsize=23)
+    other.text(0.02, 0.2, "AVATAR To Wa LT BC", fontsize=17)
+    other.canvas.draw()
+    again = formula(" ")
+    assert (first != again).any(axis=2).sum() == 0
+    assert (first[..., 0] < 128).sum() > 100  # ink was drawn

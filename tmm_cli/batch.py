@@ -359,6 +359,20 @@ def summary_row(job: BatchJob, doc: dict, folder: str, codes=()) -> dict:
 
 
 _FIGURE_CACHE: dict = {}  # per worker process: drawings shared by rows (the reducer's at one crank speed, a spur mesh)
+_SHARED: list = []  # this worker's SharedFigures: the same drawings, between the batch's workers
+
+
+def _worker_start(shared_root: str | None) -> None:
+    """Initializer of a batch worker process: signals (interrupt.worker_init) and the batch's
+    folder of shared drawings."""
+    from .interrupt import worker_init
+
+    worker_init()
+    _SHARED.clear()
+    if shared_root:
+        from .render.shared_figures import SharedFigures
+
+        _SHARED.append(SharedFigures(shared_root))
 _FIGURE_CACHE_SIZE = 48  # drawings kept, the least recently used dropped first (a few MB; a roster stays small)
 
 
@@ -376,7 +390,8 @@ def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, f
         folder = Path(out_dir) / job.folder
         title = TitleFields(student=job.label, group=job.group) if job.fname else None
         doc, _ = write_project_folder(result, folder, lang, fmt=fmt, plots=plots, report=report,
-                                      figure_cache=_FIGURE_CACHE, title=title, sheets=sheets)
+                                      figure_cache=_FIGURE_CACHE, title=title, sheets=sheets,
+                                      shared_figures=_SHARED[0] if _SHARED else None)
         while len(_FIGURE_CACHE) > _FIGURE_CACHE_SIZE:
             _FIGURE_CACHE.pop(next(iter(_FIGURE_CACHE)))
         codes = [n.code for n in result.notes if n.level == "warning"]
@@ -530,7 +545,7 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
         bar = Progress(TextColumn("[bold]{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), transient=False)
         bar.start()
         task = bar.add_task("tmm batch", total=len(jobs))
-    pool = None
+    pool = shared_root = None
     try:
         if n_workers == 1:
             for i, job in enumerate(jobs):
@@ -541,10 +556,13 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
             import multiprocessing as mp
             from concurrent.futures import ProcessPoolExecutor, as_completed
 
-            from .interrupt import worker_init
-
             ctx = mp.get_context("fork") if "fork" in mp.get_all_start_methods() else None
-            pool = ProcessPoolExecutor(max_workers=n_workers, mp_context=ctx, initializer=worker_init)
+            if plots:  # drawings one worker made serve the others (render/shared_figures), removed below
+                import tempfile
+
+                shared_root = tempfile.mkdtemp(prefix="tmm-figures-")
+            pool = ProcessPoolExecutor(max_workers=n_workers, mp_context=ctx, initializer=_worker_start,
+                                       initargs=(shared_root,))
             futures = {pool.submit(run_job, job, *args): i for i, job in enumerate(jobs)}
             for fut in as_completed(futures):
                 i = futures[fut]
@@ -570,6 +588,10 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
     finally:
         if bar is not None:
             bar.stop()
+        if shared_root is not None:
+            import shutil
+
+            shutil.rmtree(shared_root, ignore_errors=True)
     rows = list(bad) + [results.get(i) or _failure_row(job, "", status="not run") for i, job in enumerate(jobs)]
     rows.sort(key=lambda r: r.get("line") or 0)  # roster order (stable: --variants rows keep theirs)
     write_summary_csv(out_dir / "summary.csv", rows, lang, csv_locale)

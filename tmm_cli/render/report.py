@@ -199,30 +199,64 @@ def _mesh_key(gears, lang: str, fmt: str) -> tuple:
     return ("mesh", repr(gears.spur), gears.directions, lang, fmt)
 
 
-def _from_cache(tmp: Path, result, lang: str, fmt: str, svg, cache: dict) -> set:
+def _from_cache(tmp: Path, result, lang: str, fmt: str, svg, cache: dict, shared=None):
     """Write the figures a batch worker drew already for another variant (the reducer's two,
     which depend only on the reducer; the spur mesh, which depends only on the spur pair and
-    the senses of rotation); draw and keep them on a miss. Returns the names written."""
-    written = set()
+    the senses of rotation); draw and keep them on a miss.
+
+    `shared` (a :class:`~tmm_cli.render.shared_figures.SharedFigures`, the batch's workers' common
+    folder) is asked on a miss: a drawing another worker published is taken from it; one another
+    worker is drawing now is put off to the end of the row. Returns (the names written or put
+    off, a function that writes the put-off ones: call it once the row's other figures are done).
+    """
+    written, later = set(), []
+
+    def draw(group, key):
+        _draw_and_save(tmp, result, lang, fmt, group, svg)
+        paths = [f"{n}.{fmt}" for n in group] + [f"{n}.svg" for n in group if n in svg]
+        return {p: (tmp / p).read_bytes() for p in paths}
+
+    def write(entry):
+        for p, data in entry.items():
+            (tmp / p).write_bytes(data)
+
     for group, key in ((REDUCER_FIGURES, _reducer_key(result.gears, lang, fmt)),
                        (("gears_mesh",), _mesh_key(result.gears, lang, fmt))):
         key = (*key, tuple(sorted(n for n in group if n in svg)))
-        entry = cache.pop(key, None)
-        if entry is None:
-            _draw_and_save(tmp, result, lang, fmt, group, svg)
-            paths = [f"{n}.{fmt}" for n in group] + [f"{n}.svg" for n in group if n in svg]
-            entry = {p: (tmp / p).read_bytes() for p in paths}
-        else:
-            for p, data in entry.items():
-                (tmp / p).write_bytes(data)
-        cache[key] = entry  # the most recently used last (the batch drops the oldest)
         written.update(group)
-    return written
+        entry = cache.pop(key, None)
+        if entry is None and shared is not None:
+            entry = shared.get(key)
+            if entry is None and not shared.claim(key):  # another worker draws it right now
+                later.append((group, key))
+                continue
+            if entry is None:
+                entry = draw(group, key)
+                shared.put(key, entry)
+            else:
+                write(entry)
+        elif entry is None:
+            entry = draw(group, key)
+        else:
+            write(entry)
+        cache[key] = entry  # the most recently used last (the batch drops the oldest)
+
+    def finish() -> None:
+        for group, key in later:
+            entry = shared.wait(key)
+            if entry is None:  # the other worker failed or was stopped: draw it here
+                entry = draw(group, key)
+            else:
+                write(entry)
+            cache[key] = entry
+
+    return written, finish
 
 
 def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", plots: bool = True,
                          report: str | None = "md", figure_cache: dict | None = None, title=None,
-                         note_template: str | None = None, sheets: bool = False, meanwhile=None):
+                         note_template: str | None = None, sheets: bool = False, meanwhile=None,
+                         shared_figures=None):
     """Write results.json, cam_profile.csv, the figures and the report into `folder`, atomically.
 
     `report`: "md" writes report.md, "pdf" the typeset note (note.pdf, its source note.typ and
@@ -235,7 +269,8 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     title blocks and the note's title page.
 
     `figure_cache` (a dict the caller keeps between calls, as `tmm batch` does) lets variants
-    that share a reducer reuse its two drawings instead of drawing them again.
+    that share a reducer reuse its two drawings instead of drawing them again; `shared_figures`
+    (render/shared_figures) shares them between the batch's worker processes too.
     `sheets` adds the A1 drawings sheet3.dxf/.pdf and sheet4.dxf/.pdf (render/sheets).
     `meanwhile` (no arguments) runs in this process while a forked child starts on the figures,
     before this process takes its share (`tmm project` renders its terminal report there).
@@ -249,7 +284,9 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     # the project owns its folder: nothing of an earlier run (other options) stays beside it
     with staged_dir(folder, owns=("*",)) as tmp:
         svg = set(NOTE_FIGURES) if report == "pdf" and fmt != "svg" else set()  # SVG copies for the note
-        cached = _from_cache(tmp, result, lang, fmt, svg, figure_cache) if plots and figure_cache is not None else set()
+        cached, finish_cached = set(), lambda: None
+        if plots and figure_cache is not None:
+            cached, finish_cached = _from_cache(tmp, result, lang, fmt, svg, figure_cache, shared_figures)
         names = [n for n in ALL_FIGURES if n not in cached] if plots else []
         files = [f"{n}.{fmt}" for n in ALL_FIGURES] if plots else []
         # Two processes (one project, not a batch worker): a forked child writes the sheets, then
@@ -276,6 +313,7 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
             if meanwhile is not None:
                 meanwhile()
             work.wait_shared()  # every figure is there
+            finish_cached()  # and those another batch worker was drawing
             # --- the typeset note (issue 11) embeds the figures' SVG copies --------------------------
             note_error = None
             if report == "pdf":
