@@ -359,6 +359,7 @@ def summary_row(job: BatchJob, doc: dict, folder: str, codes=()) -> dict:
 
 
 _FIGURE_CACHE: dict = {}  # per worker process: drawings shared by rows (the reducer's at one crank speed, a spur mesh)
+_FIGURE_CACHE_SIZE = 48  # drawings kept, the least recently used dropped first (a few MB; a roster stays small)
 _SHARED: list = []  # this worker's SharedFigures: the same drawings, between the batch's workers
 
 
@@ -373,7 +374,6 @@ def _worker_start(shared_root: str | None) -> None:
         from .render.shared_figures import SharedFigures
 
         _SHARED.append(SharedFigures(shared_root))
-_FIGURE_CACHE_SIZE = 48  # drawings kept, the least recently used dropped first (a few MB; a roster stays small)
 
 
 def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, fmt: str, plots: bool, report: str | None,

@@ -62,12 +62,6 @@ class TmmGroup(click.Group):
             click.echo(f"tmm: {say(getattr(exc, 'message', '') or 'interrupted')}", err=True)
             sys.exit(getattr(exc, "exit_code", 130))
         except Exception as exc:  # a bug: one line, not a traceback, unless TMM_DEBUG is set
-            from .interrupt import received
-
-            stop = received()
-            if stop is not None:  # not a bug: the error a Ctrl-C / SIGTERM caused on its way out
-                click.echo(f"tmm: {say('interrupted')}", err=True)
-                sys.exit(stop.exit_code)
             if os.environ.get("TMM_DEBUG"):
                 raise
             click.echo(f"tmm: {say('internal error')}: {exc.__class__.__name__}: {exc} "

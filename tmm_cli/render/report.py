@@ -211,7 +211,7 @@ def _from_cache(tmp: Path, result, lang: str, fmt: str, svg, cache: dict, shared
     """
     written, later = set(), []
 
-    def draw(group, key):
+    def draw(group):
         _draw_and_save(tmp, result, lang, fmt, group, svg)
         paths = [f"{n}.{fmt}" for n in group] + [f"{n}.svg" for n in group if n in svg]
         return {p: (tmp / p).read_bytes() for p in paths}
@@ -231,12 +231,12 @@ def _from_cache(tmp: Path, result, lang: str, fmt: str, svg, cache: dict, shared
                 later.append((group, key))
                 continue
             if entry is None:
-                entry = draw(group, key)
+                entry = draw(group)
                 shared.put(key, entry)
             else:
                 write(entry)
         elif entry is None:
-            entry = draw(group, key)
+            entry = draw(group)
         else:
             write(entry)
         cache[key] = entry  # the most recently used last (the batch drops the oldest)
@@ -245,7 +245,7 @@ def _from_cache(tmp: Path, result, lang: str, fmt: str, svg, cache: dict, shared
         for group, key in later:
             entry = shared.wait(key)
             if entry is None:  # the other worker failed or was stopped: draw it here
-                entry = draw(group, key)
+                entry = draw(group)
             else:
                 write(entry)
             cache[key] = entry

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import shutil
 import time
 from pathlib import Path
 
@@ -62,7 +63,7 @@ class SharedFigures:
                 (part / file_name).write_bytes(data)
             part.rename(self.root / name)
         except OSError:
-            _remove(part)
+            shutil.rmtree(part, ignore_errors=True)
 
     def wait(self, key) -> dict | None:
         """The drawing `key` once another worker publishes it, or None after `wait_s`."""
@@ -75,11 +76,3 @@ class SharedFigures:
             time.sleep(delay)
             delay = min(0.05, delay * 2)
 
-
-def _remove(folder: Path) -> None:
-    try:
-        for p in folder.iterdir():
-            p.unlink()
-        folder.rmdir()
-    except OSError:
-        pass
