@@ -10,6 +10,7 @@ import math
 import re
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 from ..errors import TmmError
 from ..notes import Note
@@ -30,7 +31,9 @@ from .planetary.search import (
 )
 from .planetary.velocity import DesignChecks, check_design
 from .spur import SpurGeometry, design_spur
-from .stiffness import SpurPairStiffness, spur_pair_stiffness
+
+if TYPE_CHECKING:  # the mesh stiffness (seed 002) is loaded only when asked for (--stiffness)
+    from .stiffness import SpurPairStiffness
 
 _RATIO_RE = re.compile(r"^\s*(\d+)\s*(?:/\s*(\d+)\s*)?$")
 
@@ -383,6 +386,8 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
     spur_stiff = None
     if stiffness and zero_pair:  # seed 002's model is for zero gears
         motor_torque = None if power is None else power.power_kw * 1e3 / drive.omega_rad_s(n_d)
+        from .stiffness import spur_pair_stiffness
+
         spur_stiff = spur_pair_stiffness(spur.z1, spur.z2, spur.m_mm, motor_torque)
 
     sign = 1 if n_cam_rpm > 0 else -1
