@@ -130,3 +130,54 @@ def test_an_error_a_signal_caused_is_an_interruption_not_a_bug(monkeypatch, tmp_
     res = run("project", "--variant", "17", "--out", tmp_path / "o", "--lang", "en")
     assert res.exit_code == 1 and "internal error: ZeroDivisionError" in res.stderr
     assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize("where", ["manifest", "owned"])
+def test_a_worker_stopped_while_writing_a_file_leaves_no_temporary_file(tmp_path, where):
+    """The flaky CI failure: a batch worker got its SIGTERM between writing ``.tmm-files.json.tmp-PID``
+    and moving it into place, and the temporary file outlived the batch. Here the signal arrives at
+    exactly that moment, in a forked child with the batch worker's handlers."""
+    from tmm_cli.render import files
+
+    folder = tmp_path / "f"
+    folder.mkdir()
+    pid = os.fork()
+    if pid == 0:  # the worker
+        try:
+            from tmm_cli.interrupt import worker_init
+
+            worker_init()
+
+            real_replace = files.os.replace
+            victim = files.MANIFEST if where == "manifest" else "summary.csv"
+
+            def replace_after_signal(src, dst):
+                if Path(dst).name != victim:
+                    return real_replace(src, dst)
+                os.kill(os.getpid(), signal.SIGTERM)  # the handler runs here and exits
+                time.sleep(5)
+                os._exit(7)  # not reached when the handler works
+
+            files.os.replace = replace_after_signal
+            if where == "manifest":
+                files.write_manifest(folder, ["a.png"])
+            else:
+                files.write_owned(folder, "summary.csv", b"x")
+        finally:
+            os._exit(9)
+    _, status = os.waitpid(pid, 0)
+    assert os.waitstatus_to_exitcode(status) == 143
+    assert [q.name for q in folder.iterdir() if ".tmp-" in q.name] == []
+
+
+def test_an_error_while_writing_the_manifest_leaves_no_temporary_file(tmp_path, monkeypatch):
+    from tmm_cli.render import files
+
+    def failing(src, dst):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(files.os, "replace", failing)
+    with pytest.raises(OSError):
+        files.write_manifest(tmp_path, ["a.png"])
+    assert list(tmp_path.iterdir()) == []
+    assert files._ACTIVE == set()

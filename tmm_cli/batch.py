@@ -454,11 +454,14 @@ def _cleanup_after_stop(out_dir: Path, jobs: list[BatchJob], done: set[int], dea
     """After the workers were stopped: their staging folders, and the folders of rows whose result
     never reached the summary (a worker killed while moving its files in, or just after), so the
     summary describes exactly the folders beside it."""
-    from .render.files import remove_stale_staging, remove_written_tree
+    from .render.files import MANIFEST, remove_stale_staging, remove_temp_file, remove_written_tree
 
     parents = {out_dir} | {(out_dir / j.folder).parent for j in jobs}
     for p in parents:
         remove_stale_staging(p, only_dead=True, dead_pids=set(dead_pids))
+    for folder in parents | {out_dir / j.folder for j in jobs}:  # a worker killed while writing a manifest
+        for pid in dead_pids:
+            remove_temp_file(folder / f".{MANIFEST}.tmp-{pid}")
     for i, j in enumerate(jobs):
         if i not in done:
             remove_written_tree(out_dir, j.folder)

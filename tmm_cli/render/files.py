@@ -28,7 +28,7 @@ from ..errors import TmmError
 FIGURE_FORMATS = ("png", "svg", "pdf")
 MANIFEST = ".tmm-files.json"
 STAGING_MARK = ".tmm-staging"  # inside each staging folder: the writer's pid
-_ACTIVE: set[str] = set()  # staging folders of this process (removed on a signal)
+_ACTIVE: set[str] = set()  # staging folders and temporary files of this process (removed on a signal)
 
 
 # checks and folders ------------------------------------------------------------------------------
@@ -154,9 +154,31 @@ def write_manifest(folder: Path, files=(), dirs=()) -> None:
     folder = Path(folder)
     data = {"tool": "tmm", "note": "files written by tmm; tmm removes only these", "files": sorted(set(files)),
             "dirs": sorted(set(dirs))}
-    tmp = folder / f".{MANIFEST}.tmp-{os.getpid()}"
-    tmp.write_text(json.dumps(data, ensure_ascii=False, indent=1) + "\n", encoding="utf-8")
-    os.replace(tmp, folder / MANIFEST)
+    with _temp_file(folder / f".{MANIFEST}.tmp-{os.getpid()}") as tmp:
+        tmp.write_text(json.dumps(data, ensure_ascii=False, indent=1) + "\n", encoding="utf-8")
+        os.replace(tmp, folder / MANIFEST)
+
+
+@contextmanager
+def _temp_file(tmp: Path) -> Iterator[Path]:
+    """A temporary file beside its target, removed however the block ends: on an error, and from a
+    signal handler too (:func:`remove_active_staging`): a batch worker stopped between writing it
+    and moving it into place left ``..tmm-files.json.tmp-PID`` behind."""
+    _ACTIVE.add(str(tmp))  # before the file exists: a signal can come at any moment after this
+    try:
+        yield tmp
+    finally:
+        remove_temp_file(tmp)
+        _ACTIVE.discard(str(tmp))
+
+
+def remove_temp_file(tmp: Path) -> None:
+    """Remove the file `tmp` if it is a file (never a folder, nothing followed); quietly."""
+    if _is_real_file(tmp) or os.path.islink(tmp):
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
 
 
 def refuse_foreign(target: Path, names, manifest: set[str]) -> None:
@@ -221,9 +243,13 @@ def remove_stale_staging(parent: Path, only_dead: bool = True, dead_pids=()) -> 
 
 
 def remove_active_staging() -> None:
-    """Remove this process's staging folders (called from signal handlers before exiting)."""
+    """Remove this process's staging folders and temporary files (called from signal handlers
+    before exiting)."""
     for p in list(_ACTIVE):
-        shutil.rmtree(p, ignore_errors=True)
+        if _is_real_dir(Path(p)):
+            shutil.rmtree(p, ignore_errors=True)
+        else:
+            remove_temp_file(Path(p))
         _ACTIVE.discard(p)
 
 
@@ -301,16 +327,13 @@ def write_owned(folder: Path, name: str, data: bytes) -> Path:
     make_dirs(folder)
     man = read_manifest(folder)
     refuse_foreign(folder, [name], man["files"])
-    tmp = folder / f".{name}.tmp-{os.getpid()}"
     try:
         write_manifest(folder, man["files"] | {name}, man["dirs"])
-        tmp.write_bytes(data)
-        os.replace(tmp, folder / name)
+        with _temp_file(folder / f".{name}.tmp-{os.getpid()}") as tmp:
+            tmp.write_bytes(data)
+            os.replace(tmp, folder / name)
     except OSError as exc:
         raise TmmError(f"cannot write {folder / name} ({exc.strerror}); choose a writable folder with --out") from None
-    finally:
-        if os.path.lexists(tmp):
-            tmp.unlink()
     return folder / name
 
 
