@@ -17,6 +17,7 @@ CASES = {
     "s1": dict(n_cam_rpm=-1000, crank_rpm=220, ratio=(13, 4)),
     "s2": dict(n_cam_rpm=-1000, crank_rpm=67, ratio=(53, 5)),
     "s11": dict(n_cam_rpm=-1000, crank_rpm=40),
+    "s11_30": dict(n_cam_rpm=-1000, crank_rpm=30),  # "H1 = k2" fell on the arrow V_A1 and its label
     "ccw_cam": dict(n_cam_rpm=800, crank_rpm=220),
 }
 
@@ -59,6 +60,24 @@ def test_labels_do_not_overlap(drawn, key, lang):
             for (a, ba), (b, bb) in itertools.combinations(boxes, 2):
                 if ba.overlaps(bb):
                     bad.append((name, a, b))
+    assert not bad
+
+
+@pytest.mark.parametrize("key", list(CASES))
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_every_label_stays_inside_its_axes(drawn, key, lang):
+    """No label leaves the picture it belongs to (the Russian caption of the angular-velocity picture
+    ran from the pole to the very edge of the figure)."""
+    _, figs = drawn[key, lang]
+    bad = []
+    for name, f in figs.items():
+        rend = f.canvas.get_renderer()
+        for ax in f.axes:
+            frame = ax.get_window_extent(rend).padded(1)
+            for t in _shown_texts(ax, rend):
+                box = t.get_window_extent(rend)
+                if not (frame.contains(box.x0, box.y0) and frame.contains(box.x1, box.y1)):
+                    bad.append((name, t.get_text()))
     assert not bad
 
 

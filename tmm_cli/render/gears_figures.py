@@ -444,14 +444,17 @@ def _velocity(ax, result, lang, ylim):
         if last:
             ax.annotate(f"H{suf}", (0.8 * s.v_c, 0.8 * s.r_c), xytext=(-6, 2), textcoords="offset points", color=chc,
                         fontsize=10, fontweight="bold", ha="right")
-        else:  # right of the line, below the next sun's point A
-            ax.annotate(f"H{suf} = k{j + 2}", (0.45 * s.v_c, 0.45 * s.r_c), xytext=(6, -2), textcoords="offset points",
-                        color=chc, fontsize=10, fontweight="bold", ha="left", va="top")
+        else:  # right of the line, below the next sun's point A and below this stage's arrow V_A
+            r_lab = min(0.45 * s.r_c, s.r_a)
+            ax.annotate(f"H{suf} = k{j + 2}", (s.v_c * r_lab / s.r_c, r_lab), xytext=(6, -3),
+                        textcoords="offset points", color=chc, fontsize=10, fontweight="bold", ha="left", va="top")
         # the planet's label between A and C (C is the midpoint of AB in a single row: keep off it)
         r_lab = s.r_a + 0.5 * (s.r_c - s.r_a)
         ax.annotate(f"c{suf}", (slope * (r_lab - s.r_b), r_lab), xytext=(6, 0),
                     textcoords="offset points", color=cc, fontsize=10, fontweight="bold", va="center")
-        ax.annotate(mt(f"V_A{suf}"), (s.v_a, s.r_a), xytext=(-8, 3), textcoords="offset points", fontsize=8, ha="right")
+        # over the middle of its arrow (beside A it sat on the planet's line rising from A)
+        ax.annotate(mt(f"V_A{suf}"), (0.5 * s.v_a, s.r_a), xytext=(0, 2), textcoords="offset points", fontsize=8,
+                    ha="center", va="bottom")
     groups: list[list] = []
     tol = 1e-6 * max(1.0, vmax)
     for vx, ry, name in named:
@@ -513,22 +516,25 @@ def _angular(ax, result, lang, y0: float):
     xs = [p[0] for p in pts]
     # labels above the line; one that would run into its left neighbour goes below it
     span = max(xs + [0]) - min(xs + [0])
-    prev_x, prev_up = None, False
+    prev_x, prev_up, prev_name = None, False, ""
     for xv, name, col in sorted(pts, key=lambda p: p[0]):
         ax.plot([0, xv], [y0 - h, y0], color=col, lw=1.4)
         ax.plot(xv, y0, "o", color=col, ms=4)
-        up = not (prev_x is not None and prev_up and xv - prev_x < 0.09 * span)
+        room = 0.0225 * span * (len(prev_name) + len(name))  # two centred labels of these lengths touch
+        up = not (prev_x is not None and prev_up and xv - prev_x < room)
         ax.annotate(name, (xv, y0), xytext=(0, 6) if up else (0, -8), textcoords="offset points", ha="center",
                     va="bottom" if up else "top", color=col, fontsize=10, fontweight="bold")
-        prev_x, prev_up = xv, up
+        prev_x, prev_up, prev_name = xv, up, name
     ax.plot([min(xs + [0]) - 0.05 * h, max(xs) + 0.05 * h], [y0, y0], color="k", lw=0.9)
     ax.plot(0, y0 - h, "ko", ms=4)
     ax.annotate("P", (0, y0 - h), xytext=(6, -4), textcoords="offset points", fontsize=10)
     ax.annotate("o", (0, y0), xytext=(-10, 6), textcoords="offset points", fontsize=10)
     f = fmt(lang)
     ratio = f"i = ok/oh = {f(v.ok, decimals=1)}/{f(v.oh, decimals=2)} = {f(v.ratio, sig=4)}"
+    # centred under the picture (from the pole rightwards the Russian caption ran off the figure)
     ax.annotate(pick(lang, f"angular velocities: {ratio}", f"план угловых скоростей: {ratio}"),
-                (0, y0 - h), xytext=(0, -18), textcoords="offset points", fontsize=9.5, ha="left")
+                (0.5, y0 - h), xycoords=("axes fraction", "data"), xytext=(0, -18), textcoords="offset points",
+                fontsize=9.5, ha="center")
 
 
 def _checks_text(fig, box, result, lang):
