@@ -12,12 +12,13 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass, field
+from dataclasses import field
 from pathlib import Path
 
 from . import limits
 from .errors import TmmError
 from .names import collision_key, display_name, file_name
+from .records import record
 from .render.i18n import pick
 
 # key, English header, Russian header, numeric
@@ -117,7 +118,7 @@ HEADER_ALIASES = {
 ROSTER_COLUMNS = ("student", "variant", "group", "crank_rpm", "torque")
 
 
-@dataclass(frozen=True)
+@record
 class BatchJob:
     """One row of work: who, which variant (as given), the per-student inputs, its folder."""
 
@@ -131,7 +132,7 @@ class BatchJob:
     line: int = 0  # the roster line (rows are reported in roster order)
 
 
-@dataclass(frozen=True)
+@record
 class Roster:
     jobs: list
     bad: list
@@ -140,7 +141,7 @@ class Roster:
     delimiter: str
 
 
-@dataclass(frozen=True)
+@record
 class BatchSummary:
     rows: tuple[dict, ...]
     failed: tuple[dict, ...] = field(default=())

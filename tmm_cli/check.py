@@ -12,14 +12,15 @@ import math
 import os
 import re
 import tomllib
-from dataclasses import dataclass, field
+from dataclasses import field
 from pathlib import Path
 
 from .errors import TmmError
+from .records import record
 from .render.i18n import note_text
 
 
-@dataclass(frozen=True)
+@record
 class AnswerKey:
     key: str
     path: tuple  # path into the project JSON document
@@ -83,7 +84,7 @@ SHEETS = ("3", "4")
 _KEY = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,39}")
 
 
-@dataclass(frozen=True)
+@record
 class CheckRow:
     key: str
     expected: object
@@ -92,7 +93,7 @@ class CheckRow:
     status: str  # "pass", "pass (book)", "pass (valid set)", "fail", "missing", "unknown key", "not computed"
 
 
-@dataclass(frozen=True)
+@record
 class CheckReport:
     label: str
     variant: int
@@ -125,7 +126,7 @@ class CheckReport:
         }
 
 
-@dataclass(frozen=True)
+@record
 class GroupReport:
     reports: tuple[CheckReport, ...] = field(default=())
     roster_encoding: str = ""

@@ -8,11 +8,13 @@ no warning is ever lost.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import Literal
 
+from .records import record
 
-@dataclass(frozen=True)
+
+@record
 class Note:
     """One warning (a possible but poor design) or assumption (what the program chose)."""
 

@@ -6,13 +6,13 @@ No printing, plotting or files here: :func:`run_project` calls the same core fun
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 
 from .notes import Note
+from .records import record
 from .variants import Variant
 
 
-@dataclass(frozen=True)
+@record
 class ProjectResult:
     """Both sheets of one variant; `notes` gathers the notes of both, assumptions first."""
 

@@ -17,16 +17,16 @@ import csv
 import io
 import math
 import os
-from dataclasses import dataclass
 from pathlib import Path
 
 from .errors import TmmError
 from .names import clean_text
+from .records import record
 
 ENCODING_NAMES = {"utf-8": "UTF-8", "utf-8-sig": "UTF-8 (BOM)", "utf-16": "UTF-16", "cp1251": "cp1251 (Windows Cyrillic)"}
 
 
-@dataclass(frozen=True)
+@record
 class TextFile:
     path: Path
     text: str

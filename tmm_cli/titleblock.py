@@ -16,17 +16,18 @@ stay empty: the sheets leave the cell blank, the note leaves a line to fill in b
 from __future__ import annotations
 
 import datetime as _dt
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from pathlib import Path
 
 from .errors import TmmError
+from .records import record
 
 FIELDS = ("student", "group", "teacher", "org", "designation")
 SETTINGS_FILE = "tmm.toml"
 MAX_FIELD = 200  # characters; longer text is refused (a title block cell holds far less)
 
 
-@dataclass(frozen=True)
+@record
 class TitleFields:
     """The title-block / title-page fields; empty strings where the user gave nothing."""
 

@@ -9,11 +9,11 @@ from __future__ import annotations
 
 import csv
 import math
-from dataclasses import dataclass
 from pathlib import Path
 
 from .errors import TmmError
 from .limits import L_BC_M, N_CAM_RPM, S_MAX_M, VARIANTS_FILE_BYTES, VARIANTS_ROWS
+from .records import record
 
 COLUMNS = (
     "variant",
@@ -33,7 +33,7 @@ SCHEME_FOLLOWER = {1: "translating", 2: "translating", 3: "rocker", 4: "rocker"}
 SCHEME_CLOSURE = {1: "force", 2: "form", 3: "force", 4: "form"}
 
 
-@dataclass(frozen=True)
+@record
 class Variant:
     """One row of Table 1.2, validated. Units as in the book: m, deg, rpm."""
 

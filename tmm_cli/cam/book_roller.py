@@ -37,10 +37,10 @@ zone's nearest point, so R is finite from the start.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
+from ..records import record
 from .motion import CamProgram
 from .sizing import Sizing, _inside, follower_state, rot90
 
@@ -49,7 +49,7 @@ CHECK_STEP_DEG = 0.05  # cam angles on which a found centre is verified
 CAP_R0 = 4.0  # the search covers the zone up to this many times the smallest r0
 
 
-@dataclass(frozen=True)
+@record
 class RollerFix:
     """The smallest cam keeping a roller ratio·r0, in the canonical frame [m]."""
 

@@ -11,12 +11,12 @@ True
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import TmmError
 from ..notes import Note
+from ..records import record
 from ..variants import Variant
 from .drawing import ProfileDrawing, profile_drawing
 from .motion import LAYOUT_B_MM, LAYOUT_Y_S_MAX_MM, Motion, follower_motion
@@ -41,7 +41,7 @@ LONG_STROKE_M = 0.2  # Table 1.2's strokes are 20…130 mm; 0.25 m (variant 65) 
 R0_MAX_MM = 5000.0  # a student's r0 above 5 m is a typo
 
 
-@dataclass(frozen=True)
+@record
 class CamChoice:
     """The student's say over the design, in millimetres (None: the program decides).
 
@@ -72,7 +72,7 @@ class CamChoice:
         return " ".join(out)
 
 
-@dataclass(frozen=True)
+@record
 class CamChecks:
     """The conditions a carried (or the student's) cam must meet, as computed for the output.
 
@@ -112,7 +112,7 @@ class CamChecks:
         return self.nu_rise_ok and self.nu_return_ok and self.undercut_ok and self.pivot_ok is not False
 
 
-@dataclass(frozen=True)
+@record
 class BookRollerFix:
     """Where the book's 0.2·r0 roller would undercut: the smallest cam of the same zone that keeps
     it (certified, :mod:`tmm_cli.cam.book_roller`), as the options that carry it [m]."""
@@ -126,7 +126,7 @@ class BookRollerFix:
     cells: int
 
 
-@dataclass(frozen=True, eq=False)
+@record(eq=False)
 class CamResult:
     """Everything sheet 3 needs, in SI (m, rad, s); mm/deg only in names that say so."""
 

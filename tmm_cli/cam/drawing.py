@@ -20,10 +20,10 @@ intermediate sizes y_Si, x_i can be checked against the student's diagrams.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
+from ..records import record
 from .motion import Motion
 from .profile import Profile
 from .sizing import Sizing
@@ -102,7 +102,7 @@ def profile_bbox(profile: Profile) -> tuple[float, float, float, float]:
     return float(a[:, 0].min()), float(a[:, 0].max()), float(a[:, 1].min()), float(a[:, 1].max())
 
 
-@dataclass(frozen=True)
+@record
 class DrawnSize:
     """One length as the student draws it: real [m], at k_S′ (x_i / y_Si) [mm], at k_Sk [mm]."""
 
@@ -113,7 +113,7 @@ class DrawnSize:
     drawn_mm: float  # x_ik or y_Sik
 
 
-@dataclass(frozen=True)
+@record
 class DrawnPosition:
     """(1.26) at one position of the motion table: B_i B'_i laid off on the profile drawing."""
 
@@ -125,7 +125,7 @@ class DrawnPosition:
     chord_mm: float | None  # rocker: the exact chord 2·l_BC·sin(γ_i/2)/k_Sk (the book lays off y_Sik)
 
 
-@dataclass(frozen=True)
+@record
 class ProfileDrawing:
     """The profile's drawing scale (Table 1.1) and the sizes at it, (1.26)–(1.27)."""
 

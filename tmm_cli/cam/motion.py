@@ -10,11 +10,11 @@ V_B = ω·l_BC, a_B = ε·l_BC.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import TmmError
+from ..records import record
 from ..variants import Variant
 from .laws import law_values
 
@@ -30,7 +30,7 @@ PHASES = ("rise", "far_dwell", "return", "near_dwell")
 _EPS = 1e-12  # [rad] phase ends are sums of rounded radians
 
 
-@dataclass(frozen=True)
+@record
 class CamProgram:
     """Follower displacement over one cam turn [m or rad] against cam angle φ [rad].
 
@@ -116,7 +116,7 @@ def omega_cam(n_rpm: float) -> float:
     return math.pi * abs(n_rpm) / 30.0
 
 
-@dataclass(frozen=True)
+@record
 class MotionRow:
     """One position of the book's table (positions 0, 1, … of Fig. 1.3/1.4)."""
 
@@ -132,7 +132,7 @@ class MotionRow:
     a_b_m_s2: float | None
 
 
-@dataclass(frozen=True)
+@record
 class MotionMaxima:
     """Extremes on rise and return (follower units: m or rad; per s, s²)."""
 
@@ -148,7 +148,7 @@ class MotionMaxima:
     accel_ratio_book: float  # (φ_у/φ_в)², (1.7)
 
 
-@dataclass(frozen=True)
+@record
 class DrawingScales:
     """Scales (1.9)–(1.18) for the stated layout; lengths in mm on the sheet.
 
@@ -174,7 +174,7 @@ class DrawingScales:
     y_a_return_max_mm: float  # Y_a.в.max = Y_a.у.max·(φ_у/φ_в)², (1.8)
 
 
-@dataclass(frozen=True, eq=False)
+@record(eq=False)
 class Motion:
     """Follower diagrams over one cam turn on the dense grid, plus the book's table and scales."""
 

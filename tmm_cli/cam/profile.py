@@ -34,10 +34,10 @@ the smallest cam of the zone that keeps it, with a certificate that no smaller o
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
+from ..records import record
 from .motion import DENSE_STEP_DEG, CamProgram
 from .sizing import Sizing, follower_state, rot90
 
@@ -51,7 +51,7 @@ def _rotate(v: np.ndarray, angle: np.ndarray) -> np.ndarray:
     return np.stack([c * v[:, 0] - s * v[:, 1], s * v[:, 0] + c * v[:, 1]], axis=-1)
 
 
-@dataclass(frozen=True, eq=False)
+@record(eq=False)
 class _Pitch:
     p: np.ndarray
     q1: np.ndarray
@@ -98,7 +98,7 @@ def pressure_angle_deg(q1: np.ndarray, u: np.ndarray) -> np.ndarray:
     return np.degrees(np.arccos(np.clip(cross / np.hypot(q1[:, 0], q1[:, 1]), 0.0, 1.0)))
 
 
-@dataclass(frozen=True, eq=False)
+@record(eq=False)
 class Profile:
     """Pitch curve and working profile(s) in the cam frame [m], angles [deg] where named."""
 

@@ -25,11 +25,11 @@ choice — the vertex where its two bounding lines meet — is computed beside i
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import TmmError
+from ..records import record
 from .motion import CamProgram
 
 SAMPLE_DEG = 0.2  # spacing of the sampled wedges
@@ -44,7 +44,7 @@ def rot90(v: np.ndarray) -> np.ndarray:
     return np.stack([-v[..., 1], v[..., 0]], axis=-1)
 
 
-@dataclass(frozen=True, eq=False)
+@record(eq=False)
 class FollowerState:
     """Roller centre B, dB/dφ, d²B/dφ² and unit rise direction u in the canonical frame [m]."""
 
@@ -191,7 +191,7 @@ def _constrained_phis(program: CamProgram, closure: str, step_deg: float) -> tup
     return np.concatenate(phis), np.concatenate(phase)
 
 
-@dataclass(frozen=True, eq=False)
+@record(eq=False)
 class _Solve:
     sigma: int
     centre: np.ndarray
@@ -247,7 +247,7 @@ def _solve(program, rocker, l_bc_m, nu_max_deg, closure, sigma) -> _Solve:
     return _Solve(sigma, o, r0, math.degrees(nu_used), poly, nu_r, nu_b)
 
 
-@dataclass(frozen=True)
+@record
 class BookLine:
     """A bounding line of the book's construction: a point on it and its unit direction (zone frame)."""
 
@@ -256,7 +256,7 @@ class BookLine:
     direction: tuple[float, float]
 
 
-@dataclass(frozen=True, eq=False)
+@record(eq=False)
 class Zone:
     """Geometry of the centre-zone construction (Fig. 1.3, 1.4), zone frame [m]."""
 
@@ -270,7 +270,7 @@ class Zone:
     lines: tuple[BookLine, ...]
 
 
-@dataclass(frozen=True, eq=False)
+@record(eq=False)
 class Sizing:
     """Main dimensions (1.22)–(1.25): the true smallest r0 and, beside it, the book's vertex.
 

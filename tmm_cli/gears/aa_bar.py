@@ -30,11 +30,11 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
 from fractions import Fraction
 
 from ..errors import TmmError
 from ..notes import Note
+from ..records import record
 from .blocking import Check, PairChecks, check_neighbours, check_pair, pair_notes
 from .shifted import ALPHA_DEG, C_STAR, HA_STAR, PairGeometry, pair_geometry, shift_sum_for_distance
 
@@ -69,7 +69,7 @@ def c_range(i: Fraction) -> tuple[Fraction, Fraction]:
     return Fraction(1), 1 / (1 - i)
 
 
-@dataclass(frozen=True)
+@record
 class Divisibility:
     """The multiples Z1 must take and the tooth numbers per unit of Z1."""
 
@@ -140,7 +140,7 @@ def family(div: Divisibility, z_min: int = Z_MIN, z_max: int = Z_MAX) -> tuple[i
     return tuple(out)
 
 
-@dataclass(frozen=True)
+@record
 class AAVelocity:
     """The velocity picture along the line from the central axis through a planet's centre, with
     ω_H = 1 rad/s (velocities in mm/s): the planet's velocity is zero at the pitch point P34
@@ -158,7 +158,7 @@ class AAVelocity:
     ratio: float
 
 
-@dataclass(frozen=True)
+@record
 class AABarDesign:
     """The synthesis result: tooth numbers, shifts, both pairs, their checks and the velocity picture."""
 
@@ -339,7 +339,7 @@ def feasible_c_examples(i: Fraction, planets: int, z_min: int = Z_MIN, z_max: in
     return tuple(out[:count])
 
 
-@dataclass(frozen=True)
+@record
 class ReducerSuggestion:
     """An AA̅ mechanism driven at its carrier (motor on H, output on sun 1, wheel 4 fixed) that
     gives a required reducer ratio i_H1 = 1/i more exactly than the zero-gear reducer, with shifts

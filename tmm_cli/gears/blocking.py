@@ -16,9 +16,9 @@ a chart the program computes the lines that bound it, for the pair at hand:
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from ..notes import Note
+from ..records import record
 from .shifted import PairGeometry
 
 SA_MIN_FACTOR = 0.25
@@ -29,7 +29,7 @@ EPS_HARD = 1.05
 _TOL = 1e-9
 
 
-@dataclass(frozen=True)
+@record
 class Check:
     """One line of the contour: ``value`` against ``limit``; ``gear`` is 1 or 2 within the pair (None
     for the pair as a whole); ``hard`` marks a failed hard limit (ε_α < 1.05)."""
@@ -42,7 +42,7 @@ class Check:
     hard: bool = False
 
 
-@dataclass(frozen=True)
+@record
 class PairChecks:
     """All checks of one pair plus the per-gear verdicts (True means the defect is present)."""
 

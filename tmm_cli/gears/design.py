@@ -8,13 +8,13 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING
 
 from ..errors import TmmError
 from ..notes import Note
 from . import drive
+from ..records import record
 from .drive import SCHEMES, MotorPower, SchemeInfo
 from .planetary.book import BookDerivation, PrintedCheck, book_derivation, check_printed
 from .planetary.conditions import PlanetaryDesign
@@ -56,7 +56,7 @@ def parse_ratio(text: str) -> tuple[int, int]:
     return p, q
 
 
-@dataclass(frozen=True)
+@record
 class Directions:
     """Senses of rotation ('cw'/'ccw'): the cam's from the sign of n_k (Table 1.2); the spur pair
     is an external mesh (i_12 < 0), so the motor turns the other way; schemes 1, 2 and 1+1 have
@@ -69,7 +69,7 @@ class Directions:
     i_planetary_signed: float  # +i
 
 
-@dataclass(frozen=True)
+@record
 class GearsResult:
     """Everything sheet 4 needs.
 

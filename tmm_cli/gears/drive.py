@@ -7,9 +7,9 @@ book writes (2.6).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from ..errors import TmmError
+from ..records import record
 
 MOTOR_RPM = (720, 920, 1420, 2880)
 """Standard motor speeds n_d [rpm] of §2.2."""
@@ -44,7 +44,7 @@ def choose_motor_rpm(crank_rpm: float) -> int:
                    f"has n_d ≥ 3·n_cr = {3 * crank_rpm:g} rpm; use a crank speed of at most 960 rpm")
 
 
-@dataclass(frozen=True)
+@record
 class SchemeInfo:
     """One scheme of Fig. 2.4 (ratio range, efficiency range, formula, coaxiality)."""
 
@@ -103,7 +103,7 @@ def omega_rad_s(n_rpm: float) -> float:
     return math.pi * n_rpm / 30.0
 
 
-@dataclass(frozen=True)
+@record
 class MotorPower:
     """(2.6): N = M·ω_cr/(η1·η2)·10⁻³ [kW] and the next standard rating."""
 

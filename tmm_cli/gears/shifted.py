@@ -15,9 +15,9 @@ pairs ``(gear 1, gear 2)``. The core never prints; bad input raises :class:`~tmm
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from ..errors import TmmError
+from ..records import record
 from .involute import inv, inv_inverse
 
 ALPHA_DEG = 20.0
@@ -79,7 +79,7 @@ def lower_limit_roll_mm(z: int, m_mm: float, x: float, alpha_deg: float = ALPHA_
     return m_mm * z / 2 * math.sin(alpha) - (ha_star - x) * m_mm / math.sin(alpha)
 
 
-@dataclass(frozen=True)
+@record
 class PairGeometry:
     """A shifted external pair. Line-of-action positions are measured from N1 towards N2 [mm]:
     P1 (contact starts, tip circle of gear 2), P (pole), P2 (contact ends, tip circle of gear 1).

@@ -9,10 +9,10 @@ degrees carry ``_deg``.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from fractions import Fraction
 
 from ..errors import TmmError
+from ..records import record
 
 M_MM = 20.0
 ALPHA_DEG = 20.0
@@ -64,7 +64,7 @@ def spur_teeth(n_motor_rpm: float, n_cam_rpm: float) -> tuple[int, int]:
     return round_half_up(Z_SMALL / i), Z_SMALL
 
 
-@dataclass(frozen=True)
+@record
 class SpurGeometry:
     """Items 3–11 of §2.3, the contact ratio and the zones on the line of action.
 

@@ -25,8 +25,8 @@ SI units inside: lengths [m], forces [N], moments [N·m], moduli [Pa], angles [r
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from ..records import record
 from .involute import inv
 
 E_STEEL_PA = 2.1e11
@@ -270,7 +270,7 @@ def specific_stiffness(force_n: float, deflection_m: float, b_w_m: float) -> flo
 
 # ---------------------------------------------------------------- the whole method
 
-@dataclass(frozen=True)
+@record
 class MeshStiffness:
     """The paper's method for one spur pair. Pairs are (gear 1 = driving pinion, gear 2 = wheel).
 
@@ -394,7 +394,7 @@ NOMINAL_LINE_LOAD_N_PER_M = 1.0e5
 """Nominal line load q = F/b_w [N/m] when no moment is given: the paper's example (1000 N / 10 mm)."""
 
 
-@dataclass(frozen=True)
+@record
 class SpurPairStiffness:
     """The paper's method applied to the course's spur pair — informative, beyond the course.
 

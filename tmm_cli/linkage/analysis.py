@@ -8,12 +8,12 @@ for the diagrams and the CSV, one extra position `at` with its velocity and acce
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import TmmError
 from ..notes import Note
+from ..records import record
 from .geometry import WHITWORTH, Geometry, positions
 from .kinematics import motion, transfer
 from .plans import Plans, plans
@@ -24,7 +24,7 @@ ROD_ANGLE_WARN_DEG = 45.0  # the rod pushes the ram at a poor angle beyond this
 NEAR_PIVOT = 0.1  # warn when the block comes closer than this share of r1 to the link's pivot
 
 
-@dataclass(frozen=True)
+@record
 class State:
     """The mechanism at one crank angle: positions, velocities, accelerations (SI)."""
 
@@ -46,7 +46,7 @@ class State:
     a_c: float  # [m/s²]
 
 
-@dataclass(frozen=True)
+@record
 class Curve:
     """Dense curve over one crank turn from the start of the working stroke (arrays)."""
 
@@ -65,7 +65,7 @@ class Curve:
     a_c: np.ndarray
 
 
-@dataclass(frozen=True)
+@record
 class LinkageResult:
     geometry: Geometry
     omega: float  # crank ω21 [rad/s]

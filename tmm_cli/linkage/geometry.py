@@ -22,17 +22,17 @@ SI units throughout: metres and radians.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import TmmError
+from ..records import record
 
 WHITWORTH = "whitworth"
 CRANK_SHAPER = "crank_shaper"
 
 
-@dataclass(frozen=True)
+@record
 class Geometry:
     """The mechanism's dimensions [m], the article's symbols (seed 003, Fig. 1)."""
 
@@ -180,7 +180,7 @@ def link_angle(g: Geometry, phi):
     return ref + _wrap(raw - ref)
 
 
-@dataclass(frozen=True)
+@record
 class Positions:
     """Positions of the mechanism at crank angles `phi` (arrays, or 0-d arrays for one angle)."""
 

@@ -19,14 +19,14 @@ wherever h + r1·cos φ21 > 0 and the crank turns uniformly (checked in the test
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 
 import numpy as np
 
+from ..records import record
 from .geometry import Geometry, Positions
 
 
-@dataclass(frozen=True)
+@record
 class Transfer:
     """First and second derivatives with respect to φ21 (per radian of crank turn)."""
 
@@ -69,7 +69,7 @@ def transfer(g: Geometry, p: Positions) -> Transfer:
     return Transfer(link1, link2, rho1, rho2, psi1, psi2, x1, x2)
 
 
-@dataclass(frozen=True)
+@record
 class Motion:
     """Velocities and accelerations for a crank at ω21, ε21 (arrays like the positions)."""
 

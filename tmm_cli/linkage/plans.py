@@ -19,15 +19,15 @@ Vectors in SI (m/s, m/s²) in the article's frame (x right, y up).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from ..records import record
 from .geometry import Geometry, positions
 from .kinematics import motion, transfer
 
 Vec = tuple[float, float]
 
 
-@dataclass(frozen=True)
+@record
 class Plan:
     """A vector polygon: the tips of its vectors (pole at the origin) and the segments drawn.
 
@@ -47,7 +47,7 @@ class Plan:
         return math.hypot(*self.vector(start, end))
 
 
-@dataclass(frozen=True)
+@record
 class Plans:
     phi: float  # crank angle φ21 [rad]
     velocity: Plan

@@ -5,9 +5,9 @@ stages by §2.4 twice, the choice of that fraction, and the recheck of the answe
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from fractions import Fraction
 
+from ...records import record
 from .conditions import (
     REL_EPS,
     Z_DIFF,
@@ -26,7 +26,7 @@ from .conditions import (
 # the book's hand procedure (§2.4, §2.5)
 
 
-@dataclass(frozen=True)
+@record
 class BookRow:
     """One row of the book's procedure: the factors, the multiplier y_min and the tooth numbers.
 
@@ -53,7 +53,7 @@ class BookRow:
         return max(self.gamma1, self.gamma2)
 
 
-@dataclass(frozen=True)
+@record
 class BookStage:
     """The book's derivation for one stage: fraction, rows, the chosen row and its planets."""
 
@@ -178,7 +178,7 @@ def _book_planets(scheme: str, fraction: Fraction, red: Fraction, r1, r2, rows, 
                      float(neighbour_ratio(zk, zc, zc2)), lim, k_max, k_exact)
 
 
-@dataclass(frozen=True)
+@record
 class BookDerivation:
     """The book's procedure, for the fraction(s) it starts from.
 
@@ -320,7 +320,7 @@ BOOK_PRINTED = {
 """The answers printed in §2.4 and §2.5 (z_k, z_c, [z_c′,] z_n, k)."""
 
 
-@dataclass(frozen=True)
+@record
 class PrintedCheck:
     section: str
     stage: Stage

@@ -9,8 +9,9 @@ scheme 1 both are z_n. For two stages it is the larger of the stages' sizes (one
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from fractions import Fraction
+
+from ...records import record
 
 K_MAX = 40  # no set within search.Z_MAX fits more planets (neighbouring): 19/183 > sin(π/31)
 HA_STAR = 1
@@ -26,7 +27,7 @@ REL_EPS = 1e-12  # relative slack of a ratio window (the search, the book's simp
 # one stage and its conditions
 
 
-@dataclass(frozen=True)
+@record
 class Stage:
     """Tooth numbers of one planetary stage and its number of planets.
 
@@ -173,7 +174,7 @@ def max_planets(z_sun: int, z_planet: int, z_planet2: int | None, z_ring: int, b
     return 1
 
 
-@dataclass(frozen=True)
+@record
 class InterferenceItem:
     """One row of Table 2.2: what, the value, the limit."""
 
@@ -209,7 +210,7 @@ def interference_items(z_sun: int, z_planet: int, z_planet2: int | None, z_ring:
     )
 
 
-@dataclass(frozen=True)
+@record
 class StageChecks:
     """Conditions 2–5 of §2.1.3 for one stage, with their numbers."""
 
@@ -294,7 +295,7 @@ def check_stage(stage: Stage) -> StageChecks:
 # designs
 
 
-@dataclass(frozen=True)
+@record
 class PlanetaryDesign:
     """A reducer: scheme key and its stages (one, or two in series for "1+1")."""
 

@@ -10,13 +10,13 @@ them with room for forced fractions while the scheme-2 table stays at ~4·10⁵ 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from fractions import Fraction
 from functools import lru_cache
 
 import numpy as np
 
 from ...errors import TmmError
+from ...records import record
 from .conditions import HA_STAR, K_MAX, REL_EPS, Z_DIFF, Z_EXT_EXT, Z_EXT_INT, Z_RING, PlanetaryDesign, Stage
 
 Z_MAX = 200
@@ -29,7 +29,7 @@ STAGE_RANGE_1 = (3.0, 8.0)  # Fig. 2.4, scheme 1: the ratio range of one single-
 # tables of all tooth sets (precomputed once per process)
 
 
-@dataclass(frozen=True)
+@record
 class _Table:
     zk: np.ndarray
     zc: np.ndarray
@@ -125,7 +125,7 @@ def _stage_from(tab: _Table, i: int, k: int, double: bool) -> Stage:
 # the search
 
 
-@dataclass(frozen=True)
+@record
 class SearchResult:
     """Outcome of the exhaustive search in the chosen scheme.
 

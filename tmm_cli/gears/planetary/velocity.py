@@ -5,9 +5,9 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from fractions import Fraction
 
+from ...records import record
 from .conditions import PlanetaryDesign, Stage, StageChecks, check_stage
 
 
@@ -15,7 +15,7 @@ from .conditions import PlanetaryDesign, Stage, StageChecks, check_stage
 # the checks: (2.1) and the velocity pictures (2.3)
 
 
-@dataclass(frozen=True)
+@record
 class VelocityStage:
     """Linear-velocity picture of one stage in module units (radius r = z/2 per module).
 
@@ -39,7 +39,7 @@ class VelocityStage:
     ratio: float  # tg φ_k / tg φ_H
 
 
-@dataclass(frozen=True)
+@record
 class VelocityPicture:
     """The linear-velocity picture of all stages and the angular-velocity picture (pole at
     distance ``pole_mm`` from the line on which the rays of each link cut segments ok, oh)."""
@@ -88,7 +88,7 @@ def velocity_picture(stages: tuple[Stage, ...], v_a_first: float | None = None, 
     return VelocityPicture(tuple(out), pole, ok, oh, ok / oh)
 
 
-@dataclass(frozen=True)
+@record
 class DesignChecks:
     """The five conditions for the carried design, and the two ratio checks."""
 
