@@ -365,7 +365,10 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
     zmin = min(spur.z1, spur.z2)
     zero_pair = spur.x1 == 0 and spur.x2 == 0  # also --shift auto for two gears of 17 teeth or more
     if zmin < spur.z_min_undercut and zero_pair:
-        notes.append(Note.make("undercut", "warning", z=zmin, zmin=f"{spur.z_min_undercut:.2f}",
+        # z = 17 is the book's own smallest gear (§2.3): said, as an assumption, not flagged as a warning
+        # (it was on every row of a group's summary and hid the undercuts that matter)
+        notes.append(Note.make("undercut", "assumption" if zmin >= 17 else "warning", z=zmin,
+                               zmin=f"{spur.z_min_undercut:.2f}",
                                x=f"{(spur.z_min_undercut - zmin) / spur.z_min_undercut:.4f}"))
     notes += _spur_shift_notes(spur)
     if spur.eps_alpha < 1.2 and zero_pair:  # a shifted pair has its own blocking-contour notes
