@@ -58,6 +58,14 @@ def test_help_of_every_command_in_russian(path, cmd):
             assert first in " ".join(out.split()), (path, p.name)
 
 
+def test_defaults_in_russian_help_take_a_decimal_comma():
+    ru = " ".join(run("--lang", "ru", "project", "--help").output.split())
+    assert "[по умолчанию: 5,0]" in ru and "5.0]" not in ru  # --tolerance
+    assert "[по умолчанию: png]" in ru and "./tmm-out" in ru  # words and paths untouched
+    en = " ".join(run("--lang", "en", "project", "--help").output.split())
+    assert "[default: 5.0]" in en
+
+
 def test_help_language_from_the_locale_then_english_again():
     ru = run("project", "--help", env={"LC_ALL": None, "LC_MESSAGES": None, "LANG": "ru_RU.UTF-8"})
     assert "Номер варианта по табл. 1.2" in ru.output

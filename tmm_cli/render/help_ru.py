@@ -704,8 +704,20 @@ def error_text(message: str, lang: str) -> str:
     return translate_error(message) if lang == "ru" else message
 
 
+class _DefaultRu(str):
+    """"по умолчанию: {default}" whose number takes a decimal comma (click formats the default as
+    ``str(5.0)``): ``[по умолчанию: 5,0]``."""
+
+    def format(self, *args, **kwargs):
+        import re
+
+        kwargs = {k: re.sub(r"(?<=\d)\.(?=\d)", ",", v) if isinstance(v, str) else v for k, v in kwargs.items()}
+        return str.format(self, *args, **kwargs)
+
+
 def _gettext(message: str) -> str:
-    return CLICK.get(message, message)
+    text = CLICK.get(message, message)
+    return _DefaultRu(text) if message == "default: {default}" else text
 
 
 def _ngettext(singular: str, plural: str, n: int) -> str:
