@@ -76,6 +76,26 @@ def test_an_error_here_kills_and_reaps_the_child(tmp_path):
     assert work.pid is None and _gone(pid)
 
 
+@fork_only
+def test_a_signal_while_waiting_for_the_child_kills_and_reaps_it(tmp_path):
+    """The body ends normally and the wait for the child (the sheets) is cut by Ctrl-C: the child
+    must not go on writing into a staging folder the caller is removing (a leftover
+    ``.variant-17.tmp-…`` under load)."""
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    old = signal.signal(signal.SIGALRM, interrupt)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.3)
+        with pytest.raises(KeyboardInterrupt):
+            with figure_kit.SharedWork([], [lambda: time.sleep(60)]) as work:
+                pid = work.pid
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+    assert work.pid is None and _gone(pid)
+
+
 @pytest.fixture(scope="module")
 def project17():
     return run_project(get_variant("17", None))

@@ -181,3 +181,46 @@ def test_an_error_while_writing_the_manifest_leaves_no_temporary_file(tmp_path, 
         files.write_manifest(tmp_path, ["a.png"])
     assert list(tmp_path.iterdir()) == []
     assert files._ACTIVE == set()
+
+
+def test_a_worker_stopped_as_it_makes_its_staging_folder_leaves_none(tmp_path):
+    """Under load a batch left ``.variant-05.tmp-…``: the worker got its SIGTERM after making the
+    staging folder and before registering it. Now it is registered before it exists."""
+    from tmm_cli.render import files
+
+    pid = os.fork()
+    if pid == 0:  # the worker
+        try:
+            from tmm_cli.interrupt import worker_init
+
+            worker_init()
+            real_mkdir = files.os.mkdir
+
+            def mkdir_then_signal(path, *args):
+                real_mkdir(path, *args)
+                os.kill(os.getpid(), signal.SIGTERM)  # the handler runs here and exits
+                time.sleep(5)
+                os._exit(7)
+
+            files.os.mkdir = mkdir_then_signal
+            with files.staged_dir(tmp_path / "variant-05"):
+                pass
+        finally:
+            os._exit(9)
+    _, status = os.waitpid(pid, 0)
+    assert os.waitstatus_to_exitcode(status) == 143
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_killed_workers_staging_folder_without_its_mark_is_swept(tmp_path):
+    """SIGKILL leaves what it cuts: the batch knows its workers' pids and removes their folders."""
+    from tmm_cli.render.files import remove_stale_staging
+
+    dead = tmp_path / ".variant-05.tmp-4242-0a1b2c3d"
+    dead.mkdir()
+    alive = tmp_path / ".variant-06.tmp-4343-0a1b2c3d"  # not one of the batch's dead workers
+    alive.mkdir()
+    user = tmp_path / ".variant-07.tmp-4242-mine"  # not our name
+    user.mkdir()
+    assert remove_stale_staging(tmp_path, dead_pids={4242}) == [dead]
+    assert alive.is_dir() and user.is_dir() and not dead.exists()

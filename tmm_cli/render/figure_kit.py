@@ -548,7 +548,11 @@ class SharedWork:
 
     def __exit__(self, exc_type, exc, tb):
         if exc_type is None:
-            self.wait()
+            try:
+                self.wait()
+            except BaseException:  # a signal while waiting for the child: it must not outlive this
+                self.abort()
+                raise
         else:
             self.abort()
         return False

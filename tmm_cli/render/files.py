@@ -16,9 +16,9 @@ import fnmatch
 import json
 import math
 import os
+import re
 import shutil
 import stat
-import tempfile
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator
@@ -193,6 +193,7 @@ def refuse_foreign(target: Path, names, manifest: set[str]) -> None:
 
 
 STALE_AFTER_S = 24 * 3600  # a staging folder this old is stale whoever wrote it
+_STAGING_NAME = re.compile(r"\..+\.tmp-(\d+)-[0-9a-f]{8}")  # see _new_staging
 
 
 def _pid_alive(pid: int) -> bool:
@@ -224,6 +225,10 @@ def remove_stale_staging(parent: Path, only_dead: bool = True, dead_pids=()) -> 
         return removed
     for p in entries:
         if not is_our_staging(p):
+            m = _STAGING_NAME.fullmatch(p.name)
+            if m and int(m.group(1)) in dead_pids and _is_real_dir(p):  # a killed worker's, before its mark
+                shutil.rmtree(p, ignore_errors=True)
+                removed.append(p)
             continue
         try:
             pid = int((p / STAGING_MARK).read_text().split()[0])
@@ -273,11 +278,10 @@ def staged_dir(target: Path, owns: tuple[str, ...] = ()) -> Iterator[Path]:
     created = make_dirs(parent)
     try:
         remove_stale_staging(parent)
-        tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.tmp-", dir=parent))
+        tmp = _new_staging(parent, target.name)
     except OSError as exc:
         remove_empty_dirs(created)
         raise TmmError(f"cannot write to output folder {parent} ({exc.strerror}); choose a writable folder with --out") from None
-    _ACTIVE.add(str(tmp))
     try:
         (tmp / STAGING_MARK).write_text(f"{os.getpid()}\n")
         yield tmp
@@ -297,6 +301,24 @@ def staged_dir(target: Path, owns: tuple[str, ...] = ()) -> Iterator[Path]:
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
         _ACTIVE.discard(str(tmp))
+
+
+def _new_staging(parent: Path, name: str) -> Path:
+    """Create the empty staging folder ``parent/.NAME.tmp-PID-XXXXXXXX``, registered for removal
+    on a signal before it exists (a batch worker stopped between ``mkdtemp`` and the registration
+    left one behind under load); the pid in its name lets the batch recognise a killed worker's
+    folder before its mark is written."""
+    while True:
+        tmp = Path(parent) / f".{name}.tmp-{os.getpid()}-{os.urandom(4).hex()}"
+        _ACTIVE.add(str(tmp))
+        try:
+            os.mkdir(tmp, 0o700)
+            return tmp
+        except FileExistsError:
+            _ACTIVE.discard(str(tmp))
+        except BaseException:
+            _ACTIVE.discard(str(tmp))
+            raise
 
 
 def _commit(tmp: Path, target: Path, fresh: set[str], owns) -> None:

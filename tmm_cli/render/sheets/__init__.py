@@ -94,8 +94,14 @@ def write_sheets(folder: Path, result, lang: str, title=None) -> list[str]:
             os._exit(code)
     try:
         mine = second()
-    finally:
         _, status = os.waitpid(pid, 0)
+    except BaseException:  # an error or a signal here: the child must not write on into `folder`
+        try:
+            os.kill(pid, 9)
+        except ProcessLookupError:
+            pass
+        os.waitpid(pid, 0)
+        raise
     if status == 0 and all((folder / n).is_file() for n in ("sheet3.dxf", "sheet3.pdf")):
         return ["sheet3.dxf", "sheet3.pdf"] + mine
     return first() + mine  # the child failed: draw sheet 3 here (an error now surfaces normally)
