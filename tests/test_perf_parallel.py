@@ -252,3 +252,21 @@ def test_interrupted_project_leaves_no_staging_and_no_child(tmp_path, sig, code,
         pytest.fail("the child process outlived tmm project")
     assert [q for q in tmp_path.rglob("*") if ".tmp-" in q.name] == []
     assert not (out / "variant-17").exists()
+
+
+def test_batch_forks_its_workers_before_any_thread_starts(tmp_path):
+    """The progress bar's refresh thread ran when the pool forked its workers (Python 3.12+ warns:
+    a child can inherit a lock that thread held). Every fork of a batch sees one thread."""
+    probe = ("import os, sys, threading\n"
+             "real = os.fork\n"
+             "def fork():\n"
+             "    print('threads at fork:', threading.active_count(), file=sys.stderr, flush=True)\n"
+             "    return real()\n"
+             "os.fork = fork\n"
+             "from tmm_cli.cli import main; main()\n")
+    res = subprocess.run([sys.executable, "-c", probe, "batch", "--variants", "1-3", "--jobs", "2", "--no-plots",
+                          "--report", "none", "--out", str(tmp_path / "o")], capture_output=True, text=True,
+                         env=dict(os.environ, MPLBACKEND="Agg"), timeout=300)
+    assert res.returncode == 0, res.stderr
+    counts = [line.split(":")[1].strip() for line in res.stderr.splitlines() if line.startswith("threads at fork:")]
+    assert counts and set(counts) == {"1"}, res.stderr

@@ -547,11 +547,12 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
         from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
         bar = Progress(TextColumn("[bold]{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), transient=False)
-        bar.start()
         task = bar.add_task("tmm batch", total=len(jobs))
     pool = shared_root = None
     try:
         if n_workers == 1:
+            if bar is not None:
+                bar.start()
             for i, job in enumerate(jobs):
                 results[i] = run_job(job, *args)
                 if bar is not None:
@@ -568,6 +569,8 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
             pool = ProcessPoolExecutor(max_workers=n_workers, mp_context=ctx, initializer=_worker_start,
                                        initargs=(shared_root,))
             futures = {pool.submit(run_job, job, *args): i for i, job in enumerate(jobs)}
+            if bar is not None:  # its refresh thread only now: the workers are forked at the first submit,
+                bar.start()      # and a fork beside a running thread can inherit a lock it holds
             for fut in as_completed(futures):
                 i = futures[fut]
                 try:
