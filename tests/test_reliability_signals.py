@@ -224,3 +224,20 @@ def test_a_killed_workers_staging_folder_without_its_mark_is_swept(tmp_path):
     user.mkdir()
     assert remove_stale_staging(tmp_path, dead_pids={4242}) == [dead]
     assert alive.is_dir() and user.is_dir() and not dead.exists()
+
+
+def test_a_stop_between_making_a_staging_folder_and_using_it_removes_it(monkeypatch, tmp_path):
+    """The main process's Ctrl-C can land after a staging folder exists and before the block that
+    removes it on error: the command's exit removes what is still registered."""
+    import tmm_cli.project as project
+    from cli_helpers import run
+    from tmm_cli.render import files
+
+    def stopped_after_staging(*args, **kwargs):
+        files._new_staging(tmp_path, "variant-17")
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(project, "run_project", stopped_after_staging)
+    res = run("project", "--variant", "17", "--out", tmp_path / "o", "--lang", "en")
+    assert res.exit_code == 130 and "interrupted" in res.stderr
+    assert list(tmp_path.iterdir()) == [] and files._ACTIVE == set()

@@ -56,9 +56,11 @@ class TmmGroup(click.Group):
         except click.ClickException as exc:
             _fail(exc.format_message(), lang)
         except Stopped as exc:  # Ctrl-C (130) or SIGTERM (143) during a command, see interrupt.py
+            _remove_what_a_stop_left()
             click.echo(f"tmm: {say(exc.message)}", err=True)
             sys.exit(exc.exit_code)
         except KeyboardInterrupt as exc:  # Ctrl-C (130) or SIGTERM (143), see interrupt.py
+            _remove_what_a_stop_left()
             click.echo(f"tmm: {say(getattr(exc, 'message', '') or 'interrupted')}", err=True)
             sys.exit(getattr(exc, "exit_code", 130))
         except Exception as exc:  # a bug: one line, not a traceback, unless TMM_DEBUG is set
@@ -83,6 +85,14 @@ class TmmGroup(click.Group):
             if stop is None:
                 raise
             raise Stopped(stop) from None  # the error a signal caused: an interruption (see received)
+
+
+def _remove_what_a_stop_left() -> None:
+    """After Ctrl-C/SIGTERM: the staging folders and temporary files this process still has
+    registered (a signal between creating one and entering the block that removes it)."""
+    files = sys.modules.get("tmm_cli.render.files")  # nothing was staged if it was never imported
+    if files is not None:
+        files.remove_active_staging()
 
 
 def _requested_lang(args: list[str]) -> str:

@@ -316,7 +316,11 @@ def _new_staging(parent: Path, name: str) -> Path:
             return tmp
         except FileExistsError:
             _ACTIVE.discard(str(tmp))
-        except BaseException:
+        except BaseException:  # mkdir failed, or a signal came just after it
+            try:
+                os.rmdir(tmp)
+            except OSError:
+                pass
             _ACTIVE.discard(str(tmp))
             raise
 
