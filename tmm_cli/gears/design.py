@@ -13,8 +13,8 @@ from typing import TYPE_CHECKING
 
 from ..errors import TmmError
 from ..notes import Note
-from . import drive
 from ..records import record
+from . import drive
 from .drive import SCHEMES, MotorPower, SchemeInfo
 from .planetary.book import BookDerivation, PrintedCheck, book_derivation, check_printed
 from .planetary.conditions import PlanetaryDesign

@@ -531,7 +531,7 @@ def _angular(ax, result, lang, y0: float):
     ax.annotate("o", (0, y0), xytext=(-10, 6), textcoords="offset points", fontsize=10)
     f = fmt(lang)
     ratio = f"i = ok/oh = {f(v.ok, decimals=1)}/{f(v.oh, decimals=2)} = {f(v.ratio, sig=4)}"
-    # centred under the picture (from the pole rightwards the Russian caption ran off the figure)
+    # centred under the picture (from the pole rightwards the Russian caption reached the figure's edge)
     ax.annotate(pick(lang, f"angular velocities: {ratio}", f"план угловых скоростей: {ratio}"),
                 (0.5, y0 - h), xycoords=("axes fraction", "data"), xytext=(0, -18), textcoords="offset points",
                 fontsize=9.5, ha="center")
