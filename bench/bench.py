@@ -99,10 +99,10 @@ def note_time(variant: int = 17) -> tuple[float, float]:
     import io
 
     from tmm_cli.project import run_project
-    from tmm_cli.render.cam_figures import cam_figures
-    from tmm_cli.render.gears_figures import gears_figures
+    from tmm_cli.render.figures.cam import cam_figures
+    from tmm_cli.render.figures.gears import gears_figures
     from tmm_cli.render.note import NOTE_FIGURES, write_note
-    from tmm_cli.titleblock import TitleFields
+    from tmm_cli.inputs.titleblock import TitleFields
     from tmm_cli.variants import get_variant
 
     r = run_project(get_variant(variant))

@@ -22,8 +22,8 @@ def main() -> int:
 
     from tmm_cli.project import run_project
     from tmm_cli.render.note import write_note
-    from tmm_cli.render.numbers import num
-    from tmm_cli.titleblock import TitleFields
+    from tmm_cli.i18n.numbers import num
+    from tmm_cli.inputs.titleblock import TitleFields
     from tmm_cli.variants import load_table
 
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)

@@ -254,7 +254,7 @@ def test_r0_within_half_percent_of_brute_force(results, table, n):
 
 
 def test_notes_are_data(results):
-    from tmm_cli.render.i18n import note_text
+    from tmm_cli.i18n.lang import note_text
 
     for r in results.values():
         for note in r.notes:

@@ -92,9 +92,9 @@ def test_sizes_1_26_1_27_are_si_over_k_sk(results, table):
 def test_note_json_and_table(results):
     from rich.console import Console
 
-    from tmm_cli.render.cam_json import cam_to_json
-    from tmm_cli.render.cam_tables import print_cam
-    from tmm_cli.render.i18n import note_text
+    from tmm_cli.render.data.cam import cam_to_json
+    from tmm_cli.render.terminal.cam import print_cam
+    from tmm_cli.i18n.lang import note_text
 
     for n in (1, 4, 13, 54):
         r = results[n]
@@ -122,8 +122,8 @@ def _mediabox_pt(pdf: bytes) -> tuple[float, float]:
 
 @pytest.mark.parametrize("n", [1, 2, 4, 13, 43, 54])  # all four schemes; scales 1:5, 1:2, 1:1, 2:1
 def test_scaled_figure_is_true_to_scale(results, n, tmp_path):
-    from tmm_cli.render.cam_figures import cam_figures, scaled_layout
-    from tmm_cli.render.files import save_figures
+    from tmm_cli.render.figures.cam import cam_figures, scaled_layout
+    from tmm_cli.output.folder import save_figures
 
     r = results[n]
     d = r.drawing

@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 from tmm_cli.cam.design import design_cam
-from tmm_cli.render.cam_json import cam_to_json
+from tmm_cli.render.data.cam import cam_to_json
 from reference_laws import law_f
 
 PRESSURE_TOL_DEG = 0.05  # tangents fitted to points rounded to 1e-4 mm

@@ -21,7 +21,7 @@ def some(table):
 
 
 def test_json_all_variants_serialisable(table):
-    from tmm_cli.render.cam_json import cam_to_json
+    from tmm_cli.render.data.cam import cam_to_json
 
     for n, v in table.items():
         r = design_cam(v)
@@ -42,7 +42,7 @@ def test_json_all_variants_serialisable(table):
 
 
 def test_json_warnings_name_the_undercut(some):
-    from tmm_cli.render.cam_json import cam_to_json
+    from tmm_cli.render.data.cam import cam_to_json
 
     from tmm_cli.cam.design import CamChoice, design_cam
 
@@ -58,7 +58,7 @@ def test_json_warnings_name_the_undercut(some):
 
 
 def test_profile_csv(some):
-    from tmm_cli.render.cam_json import profile_csv
+    from tmm_cli.render.data.cam import profile_csv
 
     for n, r in some.items():
         text = profile_csv(r)
@@ -76,7 +76,7 @@ def test_profile_csv(some):
 def test_print_cam(some, lang):
     from rich.console import Console
 
-    from tmm_cli.render.cam_tables import print_cam
+    from tmm_cli.render.terminal.cam import print_cam
 
     for n in (1, 3, 4):
         buf = io.StringIO()
@@ -93,7 +93,7 @@ def test_print_cam(some, lang):
 def test_figures_each_scheme(some):
     from matplotlib.figure import Figure
 
-    from tmm_cli.render.cam_figures import cam_figures
+    from tmm_cli.render.figures.cam import cam_figures
 
     for n in (1, 2, 3, 4):
         figs = cam_figures(some[n], "ru" if n % 2 else "en")
@@ -112,6 +112,6 @@ def test_module_import_does_not_pull_matplotlib():
     import subprocess
     import sys
 
-    code = "import sys, tmm_cli.render.cam_figures, tmm_cli.cam.design; print('matplotlib' in sys.modules, 'scipy' in sys.modules)"
+    code = "import sys, tmm_cli.render.figures.cam, tmm_cli.cam.design; print('matplotlib' in sys.modules, 'scipy' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.strip()
     assert out == "False False"

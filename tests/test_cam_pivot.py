@@ -3,7 +3,7 @@
 import pytest
 
 from tmm_cli.cam.design import design_cam
-from tmm_cli.render.cam_json import cam_to_json
+from tmm_cli.render.data.cam import cam_to_json
 from tmm_cli.variants import load_table
 
 ROCKERS = [n for n, v in load_table().items() if v.is_rocker]

@@ -58,7 +58,7 @@ def test_printed_scale_units(table, lang):
     from rich.console import Console
 
     from tmm_cli.cam.design import design_cam
-    from tmm_cli.render.cam_tables import _scales_table
+    from tmm_cli.render.terminal.cam import _scales_table
 
     for n in (1, 3):  # translating, rocker (clockwise)
         buf = io.StringIO()
@@ -78,7 +78,7 @@ def test_printed_scale_units(table, lang):
 
 def test_json_scale_units(table):
     from tmm_cli.cam.design import design_cam
-    from tmm_cli.render.cam_json import cam_to_json
+    from tmm_cli.render.data.cam import cam_to_json
 
     for n, units in ((1, ("m/mm", "m/s per mm", "m/s^2 per mm")), (3, ("rad/mm", "rad/s per mm", "rad/s^2 per mm"))):
         sc = cam_to_json(design_cam(table[n]), "en")["scales"]

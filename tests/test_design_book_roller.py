@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from tmm_cli.cam.design import CamChoice, design_cam
-from tmm_cli.render.cam_json import cam_to_json
+from tmm_cli.render.data.cam import cam_to_json
 
 from test_cam_design import constrained_angles, pressure_angles, roller_path
 

@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tmm_cli.gears.design import design_gears
-from tmm_cli.render.gears_json import gears_to_json
+from tmm_cli.render.data.gears import gears_to_json
 
 from reference_gears import max_planets, stage_ok, willis
 
@@ -102,7 +102,7 @@ def test_two_stages_at_40_rpm_inside_3_to_8():
 
 def test_check_accepts_the_old_smallest_and_the_new_accurate_reducer():
     """`tmm check` (check.py, not changed) must accept any valid reducer a student found."""
-    from tmm_cli.check import check_one
+    from tmm_cli.teacher.check import check_one
     from tmm_cli.variants import load_table
 
     v = load_table()[3]
@@ -122,7 +122,7 @@ def test_ratio_error_remark_over_3_pct():
 def test_the_cam_does_not_depend_on_the_crank_speed(table):
     """So the cam checks of test_cam_exported.py (all 68 variants) hold for every n_cr."""
     from tmm_cli.project import run_project
-    from tmm_cli.render.cam_json import cam_to_json
+    from tmm_cli.render.data.cam import cam_to_json
 
     v = table[3]
     docs = [cam_to_json(run_project(v, crank_rpm=n).cam, "en") for n in (30, 333, 960)]

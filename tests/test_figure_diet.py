@@ -8,9 +8,9 @@ import pytest
 from matplotlib.lines import Line2D
 
 from tmm_cli.project import run_project
-from tmm_cli.render.cam_figures import _segments, cam_figures
-from tmm_cli.render.figure_kit import bare_xaxis, hide_axis, new_figure
-from tmm_cli.render.gears_figures import gears_figures
+from tmm_cli.render.figures.cam import _segments, cam_figures
+from tmm_cli.render.figures.kit import bare_xaxis, hide_axis, new_figure
+from tmm_cli.render.figures.gears import gears_figures
 from tmm_cli.variants import get_variant
 
 

@@ -7,7 +7,7 @@ import pytest
 from matplotlib.axis import XAxis, YAxis
 from matplotlib.backends.backend_agg import RendererAgg
 
-from tmm_cli.render.figure_kit import copying_ticks, new_figure
+from tmm_cli.render.figures.kit import copying_ticks, new_figure
 
 SETUPS = {
     "plain": lambda ax: None,
@@ -67,7 +67,7 @@ def test_a_formula_is_kerned_the_same_whatever_was_drawn_before():
     """The kept mathtext fontsets kern at the formula's own size: a formula drawn again after
     texts of other sizes in the same font (which move FreeType's size) draws the same pixels; it
     once came out a pixel wider or narrower, batch rows differing with the rows drawn before."""
-    from tmm_cli.render.figure_kit import mt
+    from tmm_cli.render.figures.kit import mt
 
     def formula(tail: str):  # a new string (parsed anew: parses are kept by string), the same ink
         fig = new_figure(4, 0.8)

@@ -8,7 +8,7 @@ import sys
 
 import pytest
 
-from tmm_cli.render import figure_kit
+from tmm_cli.render.figures import kit as figure_kit
 
 pytestmark = pytest.mark.skipif(not hasattr(os, "fork") or not sys.platform.startswith("linux"), reason="needs fork")
 

@@ -10,7 +10,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.patches import Arc
 
 from tmm_cli.gears.design import design_gears
-from tmm_cli.render.gears_figures import _mesh_geometry, gears_figures
+from tmm_cli.render.figures.gears import _mesh_geometry, gears_figures
 
 # the three reducers of the review (variant 17 has n_k = −1000 rpm) and one cam turning ccw
 CASES = {

@@ -7,8 +7,8 @@ import pytest
 from rich.console import Console
 
 from tmm_cli.gears.design import design_gears
-from tmm_cli.render.gears_json import gears_to_json
-from tmm_cli.render.gears_tables import print_gears
+from tmm_cli.render.data.gears import gears_to_json
+from tmm_cli.render.terminal.gears import print_gears
 
 CASES = {
     "1": dict(n_cam_rpm=600, crank_rpm=220, ratio=(13, 4), torque_nm=100),
@@ -75,7 +75,7 @@ def test_tables_render(results, scheme, lang):
 def test_figures(results, scheme):
     from matplotlib.figure import Figure
 
-    from tmm_cli.render.gears_figures import gears_figures
+    from tmm_cli.render.figures.gears import gears_figures
 
     figs = gears_figures(results[scheme], "ru" if scheme == "2" else "en")
     assert set(figs) == {"gears_planetary", "gears_assembly", "gears_mesh"}
@@ -91,7 +91,7 @@ def test_tooth_outline_is_a_closed_involute_gear():
 
     import numpy as np
 
-    from tmm_cli.render.gears_figures import gear_outline
+    from tmm_cli.render.figures.gears import gear_outline
 
     z, m = 17, 20.0
     p = gear_outline(z, m)

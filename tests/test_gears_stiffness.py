@@ -12,8 +12,8 @@ from scipy.integrate import quad
 from tmm_cli.gears import stiffness as st
 from tmm_cli.gears.design import design_gears
 from tmm_cli.gears.drive import omega_rad_s
-from tmm_cli.render.gears_json import gears_to_json
-from tmm_cli.render.gears_tables import print_gears
+from tmm_cli.render.data.gears import gears_to_json
+from tmm_cli.render.terminal.gears import print_gears
 
 # The paper's example (Table 1 and the text): z = 20/25, m = 2 mm, b_w = 10 mm, M1 = 20 N·m.
 EX = dict(z1=20, z2=25, m_m=2e-3, b_w_m=10e-3, torque1_nm=20.0)

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from tmm_cli.batch import jobs_from_roster
+from tmm_cli.teacher.batch import jobs_from_roster
 from tmm_cli.cli import cli
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
@@ -102,7 +102,7 @@ def test_the_shipped_examples_work_as_documented(tmp_path):
     """docs/teachers.md: the roster and answers/ named after its students."""
     roster = EXAMPLES / "roster.csv"
     students = [r["student"] for r in csv.DictReader(roster.open(encoding="utf-8"))]
-    from tmm_cli.names import file_name
+    from tmm_cli.inputs.names import file_name
 
     names = {p.stem for p in (EXAMPLES / "answers").iterdir()}
     assert {file_name(s) for s in students} == names

@@ -8,7 +8,7 @@ import pytest
 from click.testing import CliRunner
 
 from tmm_cli.cli import cli
-from tmm_cli.render.help_ru import COMMANDS, ERRORS, OPTIONS, translate_error
+from tmm_cli.i18n.help_ru import COMMANDS, ERRORS, OPTIONS, translate_error
 
 CYRILLIC = re.compile("[А-Яа-яЁё]")
 
@@ -32,8 +32,8 @@ def run(*args, env=None):
 def test_every_option_has_a_russian_help(path, cmd):
     """A new option without a line in help_ru.OPTIONS fails here: add its Russian help there."""
     missing = [p.name for p in cmd.params if getattr(p, "help", None) and p.help not in OPTIONS]
-    assert not missing, f"{path}: no Russian help for {missing}; add them to tmm_cli/render/help_ru.py OPTIONS"
-    assert path in COMMANDS, f"{path}: no Russian help text; add it to COMMANDS in tmm_cli/render/help_ru.py"
+    assert not missing, f"{path}: no Russian help for {missing}; add them to tmm_cli/i18n/help_ru.py OPTIONS"
+    assert path in COMMANDS, f"{path}: no Russian help text; add it to COMMANDS in tmm_cli/i18n/help_ru.py"
 
 
 def test_russian_help_texts_are_russian():

@@ -78,15 +78,16 @@ def test_title_fields_file_error_in_russian(tmp_path, monkeypatch):
 
 
 def test_a_roster_rows_error_is_translated_inside_its_frame():
-    from tmm_cli.render.help_ru import translate_error
+    from tmm_cli.i18n.help_ru import translate_error
 
     assert translate_error("roster line 3: the variant column is empty") == "список группы, строка 3: столбец варианта пуст"
 
 
 # every message these modules raise, rebuilt from their source with each field set to 7 -------------
-MODULES = ("limits", "check", "batch", "tabular", "names", "variants", "titleblock", "render/files", "gears/shifted",
+MODULES = ("limits", "teacher/check", "teacher/batch", "inputs/tables", "inputs/names", "variants", "inputs/titleblock",
+           "output/folder", "gears/shifted",
            "gears/aa_bar", "linkage/inputs", "linkage/geometry", "render/note/__init__", "render/sheets/__init__",
-           "commands/linkage", "commands/planetary", "cli")
+           "commands/linkage", "commands/planetary", "commands/options", "commands/batch", "commands/check", "cli")
 
 
 def _sample(node):
@@ -131,7 +132,7 @@ def test_the_scan_finds_the_messages():
 
 @pytest.mark.parametrize("where,text", MESSAGES, ids=[w for w, _ in MESSAGES])
 def test_every_message_has_a_russian_template(where, text):
-    from tmm_cli.render.help_ru import translate_error
+    from tmm_cli.i18n.help_ru import translate_error
 
     ru = translate_error(text)
     assert ru != text and CYRILLIC.search(ru), f"{where}: no Russian for {text!r}; add it to help_ru.TEMPLATES"

@@ -8,9 +8,9 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 
 from tmm_cli.gears.design import design_gears
 from tmm_cli.project import run_project
-from tmm_cli.render.cam_figures import cam_figures
-from tmm_cli.render.figure_kit import _subscript_command, mt
-from tmm_cli.render.gears_figures import gears_figures
+from tmm_cli.render.figures.cam import cam_figures
+from tmm_cli.render.figures.kit import _subscript_command, mt
+from tmm_cli.render.figures.gears import gears_figures
 from tmm_cli.variants import get_variant
 
 MATH = re.compile(r"\$[^$]*\$")
@@ -106,7 +106,7 @@ def test_a_text_subscript_draws_the_pixels_of_mathregular():
     x_\\mathregular{…}, Cyrillic, Latin, Greek and primes alike, at the figures' sizes."""
     import numpy as np
 
-    from tmm_cli.render.figure_kit import new_figure
+    from tmm_cli.render.figures.kit import new_figure
 
     pixels = []
     for command in ("\\mathregular", _subscript_command()):

@@ -4,8 +4,8 @@ import pytest
 from babel import Locale
 from babel.numbers import get_decimal_symbol
 
-from tmm_cli.render.numbers import DECIMAL_SIGN, PLURAL_RULES, num, plural, plural_category
-from tmm_cli.render.i18n import note_text
+from tmm_cli.i18n.numbers import DECIMAL_SIGN, PLURAL_RULES, num, plural, plural_category
+from tmm_cli.i18n.lang import note_text
 from tmm_cli.notes import Note
 
 VARIANTS = {"one": "вариант", "few": "варианта", "many": "вариантов"}
@@ -46,7 +46,7 @@ def test_note_numbers_follow_the_reader():
 
 
 def test_pressure_angle_at_its_limit_shows_the_third_decimal():
-    from tmm_cli.render.cam_tables import _nu
+    from tmm_cli.render.terminal.cam import _nu
 
     assert _nu("ru", 25.001, 25) == "25,001"
     assert _nu("ru", 25.0, 25) == "25,00"
@@ -54,8 +54,8 @@ def test_pressure_angle_at_its_limit_shows_the_third_decimal():
 
 
 def test_percent_error_never_minus_zero():
-    from tmm_cli.render.gears_figures import percent
-    from tmm_cli.render.gears_tables import _pct
+    from tmm_cli.render.figures.gears import percent
+    from tmm_cli.render.terminal.gears import _pct
 
     assert _pct("en", -0.001) == "0.00" and _pct("ru", 1.254) == "+1,25" and _pct("ru", -2.85) == "-2,85"
     assert percent(-0.001, "ru") == "0,00 %" and percent(-2.85, "ru") == "−2,85 %"
@@ -67,8 +67,8 @@ def test_ratios_in_the_table_are_the_json_magnitudes():
     from rich.console import Console
 
     from tmm_cli.gears.design import design_gears
-    from tmm_cli.render.gears_json import gears_to_json
-    from tmm_cli.render.gears_tables import print_gears
+    from tmm_cli.render.data.gears import gears_to_json
+    from tmm_cli.render.terminal.gears import print_gears
 
     r = design_gears(-1000, crank_rpm=220)
     doc = gears_to_json(r, "en")

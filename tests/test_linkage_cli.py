@@ -13,7 +13,7 @@ import pytest
 from click.testing import CliRunner
 
 from tmm_cli.cli import cli
-from tmm_cli.render.files import MANIFEST
+from tmm_cli.output.folder import MANIFEST
 from cli_helpers import assert_one_line_error
 
 ACCEPT = ["--r1", "0.10", "--h", "0.04", "--c", "0", "--r2", "0.08", "--r3", "0.30", "--b", "-0.04"]
@@ -233,7 +233,7 @@ def test_figures_are_figure_objects_with_textbook_labels():
 
     from tmm_cli.linkage.analysis import analyse
     from tmm_cli.linkage.geometry import make_geometry
-    from tmm_cli.render.linkage_figures import linkage_figures
+    from tmm_cli.render.figures.linkage import linkage_figures
 
     r = analyse(make_geometry(0.10, 0.04, 0.0, 0.08, 0.30, -0.04), omega=2 * math.pi, eps=3.0)
     figs = linkage_figures(r, "ru")

@@ -14,10 +14,10 @@ from click.testing import CliRunner
 from tmm_cli.cli import cli
 from tmm_cli.project import run_project
 from tmm_cli.render.note import NOTE_FIGURES, markdown_note, write_note
-from tmm_cli.render.numbers import num
-from tmm_cli.titleblock import TitleFields
+from tmm_cli.i18n.numbers import num
+from tmm_cli.inputs.titleblock import TitleFields
 from tmm_cli.variants import load_table
-from tmm_cli.render.files import MANIFEST
+from tmm_cli.output.folder import MANIFEST
 
 pypdf = pytest.importorskip("pypdf")
 
@@ -152,7 +152,7 @@ def test_broken_template_leaves_no_note_but_the_rest(tmp_path):
 def test_broken_template_removes_the_notes_figures(tmp_path, table):
     r = run_project(table[5])
     from tmm_cli.errors import TmmError
-    from tmm_cli.render.report import write_project_folder
+    from tmm_cli.render.project import write_project_folder
 
     with pytest.raises(TmmError):
         write_project_folder(r, tmp_path / "v", "ru", report="pdf", note_template="#let note(meta) = [",

@@ -12,9 +12,9 @@ import pytest
 from matplotlib.figure import Figure
 
 from tmm_cli.project import run_project
-from tmm_cli.render import figure_kit
-from tmm_cli.render.cam_figures import cam_figures
-from tmm_cli.render.gears_figures import gears_figures
+from tmm_cli.render.figures import kit as figure_kit
+from tmm_cli.render.figures.cam import cam_figures
+from tmm_cli.render.figures.gears import gears_figures
 from tmm_cli.variants import get_variant
 
 

@@ -14,7 +14,8 @@ from pathlib import Path
 import pytest
 
 from tmm_cli.project import run_project
-from tmm_cli.render import figure_kit, report
+from tmm_cli.render.figures import kit as figure_kit
+from tmm_cli.render import project as report
 from tmm_cli.variants import get_variant
 
 fork_only = pytest.mark.skipif(not figure_kit.can_fork(), reason="fork on Linux with two cores")
@@ -108,7 +109,7 @@ def _names(folder: Path):
 @fork_only
 @pytest.mark.parametrize("report_kind", ["md", "pdf"])
 def test_two_processes_write_what_one_writes(project17, tmp_path, monkeypatch, report_kind):
-    from tmm_cli.render.report import write_project_folder
+    from tmm_cli.render.project import write_project_folder
 
     _, two = write_project_folder(project17, tmp_path / "two", "ru", report=report_kind, sheets=True)
     monkeypatch.setattr(figure_kit, "can_fork", lambda: False)
@@ -200,7 +201,7 @@ def test_json_no_plots_without_note_and_sheets_imports_no_matplotlib(tmp_path):
 
 def test_batch_cache_draws_a_shared_spur_mesh_once(tmp_path, monkeypatch):
     """Variants 3 and 21 have one spur pair (and one reducer at the default crank speed)."""
-    from tmm_cli.render import gears_figures as gf
+    from tmm_cli.render.figures import gears as gf
 
     drawn = []
     original = gf.gears_figures

@@ -13,7 +13,7 @@ from click.testing import CliRunner
 from tmm_cli.cli import cli
 from tmm_cli.errors import TmmError
 from tmm_cli.gears.aa_bar import c_range, divisibility, family, synthesize, teeth_for
-from tmm_cli.render.files import MANIFEST
+from tmm_cli.output.folder import MANIFEST
 from cli_helpers import assert_one_line_error
 
 SEED_ARGS = ["planetary", "--ratio", "1/10", "--c", "26/25", "--planets", "3", "--module", "5", "--x1", "-0.4",

@@ -63,7 +63,7 @@ def test_check_never_reads_outside_the_answers_folder(tmp_path, answers17):
 
 def test_names_map_to_files_by_the_shared_rule(tmp_path, answers17):
     """Unicode NFC, control characters gone, long names cut, case collisions reported."""
-    from tmm_cli.names import file_name
+    from tmm_cli.inputs.names import file_name
 
     nfd = "Петро\u0301в"  # combining accent: NFC keeps one spelling
     long = "Я" * 300

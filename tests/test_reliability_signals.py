@@ -137,14 +137,14 @@ def test_a_worker_stopped_while_writing_a_file_leaves_no_temporary_file(tmp_path
     """The flaky CI failure: a batch worker got its SIGTERM between writing ``.tmm-files.json.tmp-PID``
     and moving it into place, and the temporary file outlived the batch. Here the signal arrives at
     exactly that moment, in a forked child with the batch worker's handlers."""
-    from tmm_cli.render import files
+    from tmm_cli.output import folder as files
 
     folder = tmp_path / "f"
     folder.mkdir()
     pid = os.fork()
     if pid == 0:  # the worker
         try:
-            from tmm_cli.interrupt import worker_init
+            from tmm_cli.output.interrupt import worker_init
 
             worker_init()
 
@@ -171,7 +171,7 @@ def test_a_worker_stopped_while_writing_a_file_leaves_no_temporary_file(tmp_path
 
 
 def test_an_error_while_writing_the_manifest_leaves_no_temporary_file(tmp_path, monkeypatch):
-    from tmm_cli.render import files
+    from tmm_cli.output import folder as files
 
     def failing(src, dst):
         raise OSError(28, "No space left on device")
@@ -186,12 +186,12 @@ def test_an_error_while_writing_the_manifest_leaves_no_temporary_file(tmp_path, 
 def test_a_worker_stopped_as_it_makes_its_staging_folder_leaves_none(tmp_path):
     """Under load a batch left ``.variant-05.tmp-…``: the worker got its SIGTERM after making the
     staging folder and before registering it. Now it is registered before it exists."""
-    from tmm_cli.render import files
+    from tmm_cli.output import folder as files
 
     pid = os.fork()
     if pid == 0:  # the worker
         try:
-            from tmm_cli.interrupt import worker_init
+            from tmm_cli.output.interrupt import worker_init
 
             worker_init()
             real_mkdir = files.os.mkdir
@@ -214,7 +214,7 @@ def test_a_worker_stopped_as_it_makes_its_staging_folder_leaves_none(tmp_path):
 
 def test_a_killed_workers_staging_folder_without_its_mark_is_swept(tmp_path):
     """SIGKILL leaves what it cuts: the batch knows its workers' pids and removes their folders."""
-    from tmm_cli.render.files import remove_stale_staging
+    from tmm_cli.output.folder import remove_stale_staging
 
     dead = tmp_path / ".variant-05.tmp-4242-0a1b2c3d"
     dead.mkdir()
@@ -231,7 +231,7 @@ def test_a_stop_between_making_a_staging_folder_and_using_it_removes_it(monkeypa
     removes it on error: the command's exit removes what is still registered."""
     import tmm_cli.project as project
     from cli_helpers import run
-    from tmm_cli.render import files
+    from tmm_cli.output import folder as files
 
     def stopped_after_staging(*args, **kwargs):
         files._new_staging(tmp_path, "variant-17")

@@ -7,8 +7,8 @@ import os
 import pytest
 
 from tmm_cli.project import run_project
-from tmm_cli.render import report
-from tmm_cli.render.shared_figures import SharedFigures
+from tmm_cli.render import project as report
+from tmm_cli.render.figures.shared import SharedFigures
 from tmm_cli.variants import get_variant
 
 KEY = ("reducer", 220.0, "ru", "png", ())

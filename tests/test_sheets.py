@@ -21,10 +21,10 @@ from click.testing import CliRunner
 from tmm_cli.cam.design import design_cam
 from tmm_cli.cli import cli
 from tmm_cli.gears.design import design_gears
-from tmm_cli.render.cam_json import profile_csv
-from tmm_cli.render.report import cam_document, gears_document
+from tmm_cli.render.data.cam import profile_csv
+from tmm_cli.render.project import cam_document, gears_document
 from tmm_cli.render.sheets import save_sheet, sheet3, sheet4
-from tmm_cli.titleblock import TitleFields
+from tmm_cli.inputs.titleblock import TitleFields
 from tmm_cli.variants import load_table
 
 # ГОСТ 2.302 (written out here, independently of the code)

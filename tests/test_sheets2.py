@@ -41,7 +41,7 @@ def test_sheet4_draws_the_pair_the_result_carries(case):
         return
     # the table and the captions carry x1, x2, a_w, α_w of the shifted pair (Russian numbers)
     t = " ".join(texts(doc))
-    from tmm_cli.render.numbers import num
+    from tmm_cli.i18n.numbers import num
 
     for v in (num(sp["x1"], "ru", sig=4), num(sp["x2"], "ru", sig=4), num(sp["alpha_w_deg"], "ru", sig=5)):
         assert v in t, v

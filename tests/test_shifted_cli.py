@@ -74,7 +74,7 @@ def test_suggestion_below_17_teeth():
 def test_shifted_mesh_figure_draws():
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-    from tmm_cli.render.gears_figures import gears_figures
+    from tmm_cli.render.figures.gears import gears_figures
 
     r = design_gears(-1000, 220, shift=(0.5, 0.3))
     fig = gears_figures(r, "ru", names=["gears_mesh"])["gears_mesh"]

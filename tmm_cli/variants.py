@@ -235,7 +235,7 @@ def load_table(path: str | Path | None = None) -> dict[int, Variant]:
     """Load Table 1.2 (the book's, or a teacher's file of the same format)."""
     if path is None:
         return parse_table(default_table_text(), "Table 1.2")
-    from .tabular import read_text
+    from .inputs.tables import read_text
 
     p = Path(path)
     key = _file_key(p)

@@ -1,9 +1,7 @@
 """`tmm linkage`: kinematics of the slotted-link (Whitworth) quick-return mechanism (seed 003).
 
-Only click is imported at module level (``tmm --help`` stays instant); the core, the renderers
-and cli.py's helpers are imported inside the command. Importing ``..cli`` here at module level
-would make ``python -m tmm_cli.cli`` (bench/bench.py) fail on a circular import, so the context
-settings and the shared options are spelled out below exactly as cli.py has them.
+Only click is imported at module level (``tmm --help`` stays instant); the core and the renderers
+are imported inside the command.
 """
 
 from __future__ import annotations
@@ -13,12 +11,15 @@ from pathlib import Path
 import click
 
 from ..errors import TmmError
-
-CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}  # = cli.CONTEXT
-json_option = click.option("--json", "as_json", is_flag=True, help="Print only JSON on stdout.")
-no_plots_option = click.option("--no-plots", is_flag=True, help="Do not draw figures (faster).")
-format_option = click.option("--format", "fmt", type=click.Choice(["png", "svg", "pdf"]), default="png", show_default=True, help="Figure file format.")
-lang_option = click.option("--lang", type=click.Choice(["ru", "en"]), default=None, help="Output language (default: from the locale).")
+from .emit import emit
+from .options import (
+    CONTEXT,
+    format_option,
+    json_option,
+    lang_option,
+    no_plots_option,
+    resolve_lang,
+)
 
 FIGURES = ("linkage_mechanism", "linkage_diagrams", "linkage_velocity_plan", "linkage_acceleration_plan")
 DATA_FILES = ("linkage.json", "linkage_curve.csv")
@@ -83,11 +84,10 @@ def linkage_cmd(r1, h, c, r2, r3, b, rpm, omega, eps_crank, n_positions, at_deg,
 
     import math
 
-    from ..cli import _emit, _lang
     from ..linkage.analysis import analyse
     from ..linkage.geometry import make_geometry
 
-    lang = _lang(lang)
+    lang = resolve_lang(lang)
     speed = float(values["rpm"]) * math.pi / 30.0 if "rpm" in values else float(values["omega"])
     if not (math.isfinite(speed) and speed > 0):
         which = "--rpm" if "rpm" in values else "--omega"
@@ -96,22 +96,22 @@ def linkage_cmd(r1, h, c, r2, r3, b, rpm, omega, eps_crank, n_positions, at_deg,
     result = analyse(geom, speed, float(values.get("eps_crank", 0.0)), int(values.get("positions", 12)),
                      float(values.get("at", 45.0)))
 
-    from ..render.files import ensure_writable_dir
-    from ..render.linkage_json import curve_csv, linkage_document
+    from ..output.folder import ensure_writable_dir
+    from ..render.data.linkage import curve_csv, linkage_document
 
     folder = (Path(out) if out else Path("tmm-out")) / "linkage"
     ensure_writable_dir(folder.parent)
     doc = linkage_document(result, lang)
 
     def figures():
-        from ..render.linkage_figures import linkage_figures
+        from ..render.figures.linkage import linkage_figures
 
         return linkage_figures(result, lang)
 
     def show(console):
-        from ..render.linkage_tables import print_linkage
+        from ..render.terminal.linkage import print_linkage
 
         print_linkage(console, result, lang)
 
-    _emit(folder, {"linkage.json": doc, "linkage_curve.csv": curve_csv(result)}, None if no_plots else figures,
+    emit(folder, {"linkage.json": doc, "linkage_curve.csv": curve_csv(result)}, None if no_plots else figures,
           fmt, doc if as_json else None, show, result.notes, lang, owns=OWNS)

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from ..cli import CONTEXT
+from .options import CONTEXT
 
 
 @click.command("note", context_settings=CONTEXT)

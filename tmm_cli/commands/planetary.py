@@ -4,7 +4,15 @@ from __future__ import annotations
 
 import click
 
-from ..cli import CONTEXT, _emit, _lang, format_option, json_option, lang_option, no_plots_option
+from .emit import emit
+from .options import (
+    CONTEXT,
+    format_option,
+    json_option,
+    lang_option,
+    no_plots_option,
+    resolve_lang,
+)
 
 
 @click.command("planetary", context_settings=CONTEXT)
@@ -43,10 +51,10 @@ def planetary_cmd(ratio, c_text, planets, module_mm, x1, x2, z_min, z_max, multi
     from pathlib import Path
 
     from ..gears.aa_bar import feasible_c_examples, parse_fraction, synthesize
-    from ..render.files import ensure_writable_dir
-    from ..render.planetary_json import planetary_to_json
+    from ..output.folder import ensure_writable_dir
+    from ..render.data.planetary import planetary_to_json
 
-    lang = _lang(lang)
+    lang = resolve_lang(lang)
     i = parse_fraction(ratio, "the ratio i", "--ratio 1/10")
     c = parse_fraction(c_text, "C", "--c 26/25")
     design = synthesize(i, c, planets, module_mm, x1, x2, z_min=z_min, z_max=z_max, multiple=multiple)
@@ -56,14 +64,14 @@ def planetary_cmd(ratio, c_text, planets, module_mm, x1, x2, z_min, z_max, multi
     ensure_writable_dir(folder.parent)
 
     def figures():
-        from ..render.planetary_figures import planetary_figures
+        from ..render.figures.planetary import planetary_figures
 
         return planetary_figures(design, lang)
 
     def show(console):
-        from ..render.planetary_tables import print_planetary
+        from ..render.terminal.planetary import print_planetary
 
         print_planetary(console, design, lang, examples)
 
-    _emit(folder, {"planetary.json": doc}, None if no_plots else figures, fmt, doc if as_json else None, show,
+    emit(folder, {"planetary.json": doc}, None if no_plots else figures, fmt, doc if as_json else None, show,
           design.notes, lang, owns=("planetary*.*",))

@@ -53,7 +53,7 @@ def read_template(path) -> str:
 
 def note_meta(result, lang: str, title) -> dict:
     """The title page's fields and words, as the style's `note` function reads them."""
-    from ..i18n import pick
+    from ...i18n.lang import pick
 
     v = result.variant
     org = [s.strip() for s in (title.org or "").split(",") if s.strip()]
@@ -252,7 +252,7 @@ def write_note(folder: Path, result, lang: str, title, figures: dict[str, str], 
     `figures` maps figure names to files already in `folder`; `template` is the style's text
     (default: the package's). On a typst error the three files are removed and TmmError raised.
     """
-    from ...titleblock import TitleFields
+    from ...inputs.titleblock import TitleFields
 
     folder = Path(folder)
     widths = {name: w for name, file in figures.items() if (w := figure_width(folder / file))}
@@ -271,7 +271,7 @@ def write_note(folder: Path, result, lang: str, title, figures: dict[str, str], 
 
 def markdown_note(result, lang: str, figure_files: list[str]) -> str:
     """The note as Markdown (headings, tables, figures with captions) for report.md."""
-    from ..i18n import pick
+    from ...i18n.lang import pick
 
     by_name = {Path(f).stem: f for f in figure_files}
     doc, _ = build_note(result, lang, by_name)

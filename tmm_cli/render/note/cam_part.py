@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 
 from ...cam.laws import law_impacts, law_max
-from ..variants_tables import law_words, scheme_words
+from ..terminal.variants import law_words, scheme_words
 from .ctx import Ctx
 
 _PHASE = {"rise": ("rise", "удаление"), "far_dwell": ("far dwell", "дальнее стояние"),

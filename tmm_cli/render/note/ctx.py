@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..numbers import num
+from ...i18n.numbers import num
 from .doc import Doc
 
 
@@ -38,7 +38,7 @@ class Ctx:
 
     def planets(self, k: int) -> str:
         """"4 сателлита" / "4 planets"."""
-        from ..numbers import plural
+        from ...i18n.numbers import plural
 
         return plural(k, self.lang, {"one": "planet", "other": "planets"} if self.lang != "ru"
                       else {"one": "сателлит", "few": "сателлита", "many": "сателлитов"})

@@ -1,7 +1,7 @@
 """The run's notes (assumptions, warnings) as sentences of the note: no command-line syntax,
 real subscripts, decimal commas under ru.
 
-The sentences come from the message catalogues through :func:`~tmm_cli.render.i18n.note_text`;
+The sentences come from the message catalogues through :func:`~tmm_cli.i18n.lang.note_text`;
 they are written for the terminal, so some carry a hint such as "(--torque)". A few are replaced
 here by wording for a document; in the rest the hints are dropped.
 """
@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 
-from ..i18n import note_text
+from ...i18n.lang import note_text
 
 # sentences that ask the user to do something at the terminal, reworded for a document
 _FOR_NOTE = {

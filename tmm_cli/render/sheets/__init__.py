@@ -44,7 +44,7 @@ def _fork_ok() -> bool:
     batch worker (a worker of ``tmm batch`` already keeps every core busy)."""
     import multiprocessing
 
-    from ..figure_kit import can_fork
+    from ..figures.kit import can_fork
 
     return can_fork() and multiprocessing.parent_process() is None
 
@@ -68,7 +68,7 @@ def write_sheets(folder: Path, result, lang: str, title=None) -> list[str]:
     import os
     import sys
 
-    from ...titleblock import TitleFields
+    from ...inputs.titleblock import TitleFields
 
     folder = Path(folder)
     title = title or TitleFields()

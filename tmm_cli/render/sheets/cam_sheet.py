@@ -13,8 +13,8 @@ import math
 
 import numpy as np
 
-from ..i18n import pick
-from ..numbers import num
+from ...i18n.lang import pick
+from ...i18n.numbers import num
 from .paper import Sheet, fit_scale, gost_scale
 
 # field boxes (x0, y0, x1, y1) on the A1 sheet [mm]; the frame is 20…836 × 5…589

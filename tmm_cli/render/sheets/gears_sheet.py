@@ -13,9 +13,9 @@ import math
 
 import numpy as np
 
-from ..gears_figures import _mesh_geometry, _shift_kw, tooth_outline
-from ..i18n import pick
-from ..numbers import num
+from ..figures.gears import _mesh_geometry, _shift_kw, tooth_outline
+from ...i18n.lang import pick
+from ...i18n.numbers import num
 from .paper import GOST_SCALES, Sheet, fit_scale, thin_out
 from .cam_sheet import table
 

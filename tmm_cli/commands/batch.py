@@ -1,0 +1,63 @@
+"""`tmm batch`: teachers run many variants or a class roster in parallel."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from ..errors import TmmError
+from .emit import console_for
+from .options import (
+    CONTEXT,
+    crank_option,
+    format_option,
+    lang_option,
+    no_plots_option,
+    out_option,
+    resolve_lang,
+    sheets_option,
+    torque_option,
+    variants_file_option,
+)
+
+
+@click.command("batch", context_settings=CONTEXT)
+@click.option("--variants", "variants_spec", default=None, metavar="LIST", help="Variants, e.g. 1-68 or 3,17,40.")
+@click.option("--roster", type=click.Path(dir_okay=False), default=None, metavar="FILE", help="CSV with columns student,variant[,crank_rpm][,torque].")
+@variants_file_option
+@crank_option
+@torque_option
+@out_option
+@format_option
+@click.option("--jobs", "-j", type=int, default=None, metavar="N", help="Parallel worker processes (default: number of cores).")
+@no_plots_option
+@click.option("--report", "report", type=click.Choice(["md", "pdf", "none"]), default="md", show_default=True, help="Per-variant report format.")
+@click.option("--csv-locale", type=click.Choice(["ru", "en"]), default=None, help="summary.csv for a Russian (';', decimal comma) or English spreadsheet (default: from --lang).")
+@sheets_option
+@lang_option
+def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, fmt, jobs, no_plots, report, csv_locale, sheets, lang):
+    """Teachers: run many variants or a class roster in parallel and write summary.csv."""
+    from ..output.folder import ensure_writable_dir
+    from ..render.terminal.batch import print_batch, print_batch_intro
+    from ..teacher.batch import jobs_from_roster, jobs_from_spec, run_batch
+
+    lang = resolve_lang(lang)
+    if (variants_spec is None) == (roster is None):
+        raise TmmError("give exactly one of --variants (e.g. 1-68) or --roster FILE")
+    out_dir = ensure_writable_dir(Path(out) if out else Path("tmm-out"))
+    console = console_for(lang)
+    if variants_spec is not None:  # the whole list is checked against the table before any work
+        rows, bad = jobs_from_spec(variants_spec, crank_rpm, torque_nm, variants_file), []
+        print_batch_intro(console, lang, default_crank=crank_rpm is None)
+    else:
+        plan = jobs_from_roster(roster, crank_rpm, torque_nm, variants_file)
+        rows, bad = plan.jobs, plan.bad
+        print_batch_intro(console, lang, roster=plan)
+    summary = run_batch(
+        rows, bad, out_dir, variants_file=variants_file, lang=lang, fmt=fmt,
+        plots=not no_plots, report=None if report == "none" else report, jobs_n=jobs, progress=True,
+        csv_locale=csv_locale, sheets=sheets,
+    )
+    print_batch(console, summary, out_dir, lang)
+    return 1 if summary.failed else 0

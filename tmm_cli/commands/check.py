@@ -1,0 +1,87 @@
+"""`tmm check`: teachers compare a student's numbers with the computed ones."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from ..errors import TmmError
+from .emit import console_for, print_files, print_json
+from .options import (
+    CONTEXT,
+    crank_option,
+    json_option,
+    lang_option,
+    resolve_lang,
+    torque_option,
+    variant_row,
+    variants_file_option,
+)
+
+
+@click.command("check", context_settings=CONTEXT)
+@click.option("--variant", "-v", "variant", default=None, metavar="N", help="Variant number (one student).")
+@click.option("--answers", type=click.Path(dir_okay=False), default=None, metavar="FILE", help="The student's numbers (TOML or CSV, keys in `tmm check --keys`).")
+@click.option("--roster", type=click.Path(dir_okay=False), default=None, metavar="FILE", help="Class roster CSV (student,variant[,crank_rpm][,torque]).")
+@click.option("--answers-dir", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Folder with one answers file per student (STUDENT.toml or STUDENT.csv).")
+@variants_file_option
+@crank_option
+@torque_option
+@click.option("--rtol", "rtol_pct", type=float, default=3.0, show_default=True, metavar="PCT", help="Tolerance for graphical quantities [%].")
+@click.option("--keys", "show_keys", is_flag=True, help="List the answer keys and exit.")
+@click.option("--sheet", "sheet", type=click.Choice(["3", "4", "all"]), default="all", show_default=True, help="Which sheet's required keys a student must give.")
+@click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Group check: folder for check.csv and check.md (default ./tmm-out).")
+@click.option("--csv-locale", type=click.Choice(["ru", "en"]), default=None, help="check.csv for a Russian (';', decimal comma) or English spreadsheet (default: from --lang).")
+@json_option
+@lang_option
+def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, torque_nm, rtol_pct, show_keys, sheet, out, csv_locale, as_json, lang):
+    """Teachers: check a student's numbers against the computed ones."""
+    from ..render.terminal.check import print_check, print_group, print_keys
+    from ..teacher.check import SHEETS, check_group, check_one, read_answers
+
+    lang = resolve_lang(lang)
+    console = console_for(lang)
+    if show_keys:
+        print_keys(console, lang)
+        return 0
+    sheets = SHEETS if sheet == "all" else (sheet,)
+    if roster is not None or answers_dir is not None:
+        if roster is None or answers_dir is None:
+            raise TmmError("group check needs both --roster FILE and --answers-dir DIR")
+        from ..output.folder import (
+            ensure_writable_dir,
+            read_manifest,
+            refuse_foreign,
+            write_owned,
+        )
+        from ..render.terminal.check import group_csv, group_markdown
+
+        out_dir = ensure_writable_dir(Path(out) if out else Path("tmm-out"))
+        if out_dir.is_dir():  # a check.csv of the teacher's own is refused before any work
+            refuse_foreign(out_dir, ["check.csv", "check.md"], read_manifest(out_dir)["files"])
+        group = check_group(roster, answers_dir, variants_file=variants_file, crank_rpm=crank_rpm, torque_nm=torque_nm,
+                            rtol_pct=rtol_pct, sheets=sheets)
+        write_owned(out_dir, "check.csv", group_csv(group, lang, csv_locale or lang))
+        write_owned(out_dir, "check.md", group_markdown(group, lang, rtol_pct, sheets).encode("utf-8"))
+        if as_json:
+            print_json(group.to_json())
+        else:
+            from rich.markup import escape
+
+            from ..i18n.lang import pick
+
+            console.print("[cyan]ℹ[/] " + escape(pick(lang, f"Roster {roster}: read as {group.roster_encoding}.",
+                                                         f"Список {roster}: кодировка {group.roster_encoding}.")))
+            print_group(console, group, lang)
+            print_files(console, out_dir, ["check.csv", "check.md"], lang)
+        return 0 if group.all_passed else 1
+    if variant is None or answers is None:
+        raise TmmError("give --variant N and --answers FILE (or --roster FILE with --answers-dir DIR)")
+    v = variant_row(variant, variants_file)
+    report = check_one(v, read_answers(answers), crank_rpm=crank_rpm, torque_nm=torque_nm, rtol_pct=rtol_pct, sheets=sheets)
+    if as_json:
+        print_json(report.to_json())
+    else:
+        print_check(console, report, lang)
+    return 0 if report.passed else 1

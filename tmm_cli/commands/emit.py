@@ -1,0 +1,91 @@
+"""The common last step of a command: write the files atomically, then print the JSON alone or the
+tables, the notes and the list of files written."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+
+def console_for(lang: str):
+    """A rich console; 120 columns when the output is a file or a pipe (rich would assume 80)."""
+    from rich.console import Console
+
+    console = Console(highlight=False)
+    if not console.is_terminal:
+        console = Console(highlight=False, width=120)
+    return console
+
+
+def print_json(obj) -> None:
+    from ..output.folder import json_text
+
+    click.echo(json_text(obj))  # strict JSON: never a bare NaN or Infinity
+
+
+def print_notes(console, notes, lang: str) -> None:
+    from ..render.project import print_notes
+
+    print_notes(console, notes, lang)
+
+
+def print_files(console, folder: Path, names: list[str], lang: str) -> None:
+    from ..i18n.lang import pick
+
+    if names:
+        console.print(pick(lang, "Files written to ", "Файлы записаны в ") + f"[bold]{folder}[/]: " + ", ".join(names))
+
+
+def emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, lang: str, owns=(), extra=None,
+          figure_names=()) -> None:
+    """Write `files` (name -> JSON object or text) and the figures atomically, then either print
+    `json_doc` alone or the tables (`show(console)`), the notes and the list of files.
+
+    `figures(names=None)` draws the figures (a dict name -> Figure); given their `figure_names`,
+    they are drawn and saved one by one over two processes where a fork is possible, as
+    `tmm project` does."""
+    from ..output.folder import (
+        save_figures,
+        staged_dir,
+        staged_names,
+        write_json,
+        write_text,
+    )
+
+    with staged_dir(folder, owns) as tmp:
+        for name, content in files.items():
+            (write_text if isinstance(content, str) else write_json)(tmp / name, content)
+        if figures is not None:
+            save_figures_forked(tmp, figures, figure_names, fmt)
+        if extra is not None:  # e.g. the A1 drawing sheet (--sheets)
+            extra(tmp)
+        written = staged_names(tmp)
+    if json_doc is not None:
+        print_json(json_doc)
+        return
+    console = console_for(lang)
+    show(console)
+    print_notes(console, notes, lang)
+    print_files(console, folder, written, lang)
+
+
+def figure_names(sheet: str) -> tuple:
+    from ..render.project import CAM_FIGURES, GEAR_FIGURES
+
+    return CAM_FIGURES if sheet == "cam" else GEAR_FIGURES
+
+
+def save_figures_forked(tmp: Path, figures, names, fmt: str) -> None:
+    from ..output.folder import save_figures
+    from ..render.figures.kit import SharedWork, can_fork
+
+    if len(names) < 2 or not can_fork():
+        save_figures(tmp, figures(), fmt)
+        return
+    from ..render.project import _largest_first, prepare_figures
+
+    prepare_figures(set())
+    tasks = [lambda n=n: save_figures(tmp, figures([n]), fmt) for n in _largest_first(names, set())]
+    with SharedWork(tasks) as work:
+        work.wait_shared()

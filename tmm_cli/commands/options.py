@@ -1,0 +1,192 @@
+"""What the commands share: the context settings, the options, the reading of their values, and the
+limits set on them (docs/limits.md).
+
+Only click is imported here: ``tmm --help`` stays instant. The core is imported inside the helpers
+that need it.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import click
+
+from ..limits import (
+    CRANK_RPM,
+    JOBS,
+    PLANETS,
+    RTOL_PCT,
+    STEP_DEG,
+    TOLERANCE_PCT,
+    TORQUE_NM,
+)
+
+CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
+
+
+def resolve_lang(lang: str | None) -> str:
+    """--lang of the command, else --lang given before it (`tmm --lang ru cam …`), else the locale."""
+    if lang:
+        return lang
+    ctx = click.get_current_context(silent=True)
+    if ctx is not None and ctx.find_root().params.get("lang"):
+        return ctx.find_root().params["lang"]
+    from ..i18n.lang import default_lang
+
+    return default_lang()
+
+
+def variant_row(number: str, variants_file: str | None):
+    from ..variants import get_variant
+
+    return get_variant(number, variants_file)
+
+
+def variant_folder(out: str | None, number: int) -> Path:
+    base = Path(out) if out else Path("tmm-out")
+    return base / f"variant-{number:02d}"
+
+
+# Shared options --------------------------------------------------------------------------------
+
+variant_option = click.option("--variant", "-v", "variant", required=True, metavar="N", help="Variant number from Table 1.2 (1–68).")
+variants_file_option = click.option(
+    "--variants-file", type=click.Path(dir_okay=False), default=None, metavar="PATH",
+    help="Use your own table in the format of variants/table_1_2.csv.",
+)
+out_option = click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Output folder (default ./tmm-out); files go to DIR/variant-NN/.")
+format_option = click.option("--format", "fmt", type=click.Choice(["png", "svg", "pdf"]), default="png", show_default=True, help="Figure file format.")
+no_plots_option = click.option("--no-plots", is_flag=True, help="Do not draw figures (faster).")
+sheets_option = click.option("--sheets", is_flag=True, help="Also write the A1 drawing sheet (DXF and PDF, ESKD frame and title block).")
+json_option = click.option("--json", "as_json", is_flag=True, help="Print only JSON on stdout.")
+lang_option = click.option("--lang", type=click.Choice(["ru", "en"]), default=None, help="Output language (default: from the locale).")
+step_option = click.option("--step", "step_deg", type=float, default=10.0, show_default=True, metavar="DEG", help="Cam angle step of the printed tables [deg].")
+crank_option = click.option("--crank-rpm", type=float, default=None, metavar="R", help="Crank speed of the linkage n_кр [rpm] (default: the book's 220 rpm, stated in the output).")
+torque_option = click.option("--torque", "torque_nm", type=float, default=None, metavar="NM", help="Mean reduced moment M from sheet 2 [N·m], for the motor power (§2.6).")
+ratio_option = click.option("--ratio", default=None, metavar="P/Q", help="Force the planetary ratio fraction of the book's procedure, e.g. 13/4.")
+tolerance_option = click.option("--tolerance", "tolerance_pct", type=float, default=5.0, show_default=True, metavar="PCT", help="Allowed planetary ratio error [%].")
+planets_option = click.option("--planets", type=int, default=None, metavar="K", help="Force the number of planets.")
+shift_option = click.option("--shift", "shift", default=None, metavar="X1,X2|auto", help="Profile shifts of the spur pair (beyond the book), e.g. 0.3,-0.3; auto: no undercut, then a balanced split.")
+aw_option = click.option("--aw", "a_w_mm", type=float, default=None, metavar="MM", help="Required centre distance of the spur pair a_w [mm]: x1 + x2 from it, split as auto.")
+
+
+def shift_value(shift: str | None):
+    if shift is None:
+        return None
+    from ..gears.shifted import parse_shift
+
+    return parse_shift(shift)
+
+
+select_option = click.option("--select", "select", type=click.Choice(["accurate", "smallest"]), default="accurate", show_default=True,
+                             help="Which reducer to carry: the most accurate ratio among sets at most one tooth larger than the smallest, or the smallest.")
+
+
+def cam_choice_options(f):
+    """The student's say over the cam (issue 8): --r0, --offset, --l-oc, --swing, --roller."""
+    for args, kw in reversed((
+        (("--r0", "cam_r0"), dict(type=float, metavar="MM", help="Your base radius r0 of the pitch curve [mm] (checked, not replaced).")),
+        (("--offset", "cam_offset"), dict(type=float, metavar="MM", help="Your offset e of a translating follower [mm] (e > 0: axis right of the cam centre).")),
+        (("--l-oc", "cam_l_oc"), dict(type=float, metavar="MM", help="Your distance l_OC from the cam centre to the rocker pivot [mm].")),
+        (("--swing", "cam_swing"), dict(type=click.Choice(["same", "opposite"]), help="Rocker turns on the rise the same way as the cam or opposite.")),
+        (("--roller", "cam_roller"), dict(type=float, metavar="MM", help="Your roller radius [mm] (default: 0.2·r0, at most 0.8·ρ_min).")),
+    )):
+        f = click.option(*args, default=None, **kw)(f)
+    return f
+
+
+def cam_choice(kw: dict):
+    from ..cam.design import CamChoice
+
+    c = CamChoice(kw.pop("cam_r0", None), kw.pop("cam_offset", None), kw.pop("cam_l_oc", None),
+                  kw.pop("cam_swing", None), kw.pop("cam_roller", None))
+    return c if c.given else None
+
+
+stiffness_option = click.option("--stiffness", is_flag=True, help="Also compute the spur pair's mesh stiffness (beyond the course, informative; V. P. Tarasik's method).")
+
+
+def title_options(f):
+    """--student, --group, --teacher, --org, --designation: the title block and the note's title page."""
+    helps = {
+        "student": ("TEXT", "Student's name for the title block and the note, e.g. \"Иванов И. И.\" (or in tmm.toml)."),
+        "group": ("TEXT", "Student's group (or in tmm.toml)."),
+        "teacher": ("TEXT", "Teacher's name (or in tmm.toml)."),
+        "org": ("TEXT", "University and department (or in tmm.toml)."),
+        "designation": ("TEXT", "Drawing designation (default: built from the sheet and variant numbers)."),
+    }
+    for name, (metavar, text) in reversed(helps.items()):
+        f = click.option(f"--{name}", f"title_{name}", default=None, metavar=metavar, help=text)(f)
+    return f
+
+
+def title_block(kwargs: dict):
+    """Pop the title_* options out of a command's kwargs and merge them with tmm.toml."""
+    from ..inputs.titleblock import title_fields
+
+    given = {k[len("title_"):]: kwargs.pop(k) for k in list(kwargs) if k.startswith("title_")}
+    return title_fields(given)
+
+
+def ratio_value(ratio: str | None):
+    if ratio is None:
+        return None
+    from ..gears.design import parse_ratio
+
+    return parse_ratio(ratio)
+
+
+# Limits on every number a user gives (docs/limits.md): ranges set on the options by name --------
+
+class Range(click.ParamType):
+    """A click type: a finite number within [lo, hi] (a whole number when `integer`).
+
+    Unlike click.FloatRange it refuses nan and inf, and an integer too large for a float.
+    """
+
+    name = "number"
+
+    def __init__(self, lo, hi, integer: bool = False):
+        self.lo, self.hi, self.integer = lo, hi, integer
+
+    def convert(self, value, param, ctx):
+        if value is None:
+            return None
+        if self.integer:
+            try:
+                x = value if isinstance(value, int) and not isinstance(value, bool) else int(str(value).strip())
+            except ValueError:
+                self.fail(f"'{str(value)[:30]}' is not a whole number; give one from {self.lo} to {self.hi}", param, ctx)
+            if not self.lo <= x <= self.hi:
+                shown = str(x) if abs(x) < 10**15 else f"a {len(str(abs(x)))}-digit number"
+                self.fail(f"{shown} is out of range; give a whole number from {self.lo} to {self.hi} (docs/limits.md)", param, ctx)
+            return x
+        try:
+            x = float(str(value).strip().replace(",", ".")) if not isinstance(value, (int, float)) else float(value)
+        except (ValueError, OverflowError):
+            self.fail(f"'{str(value)[:30]}' is not a number; give one from {self.lo:g} to {self.hi:g}", param, ctx)
+        if not math.isfinite(x) or not self.lo <= x <= self.hi:
+            shown = f"{x:g}" if math.isfinite(x) else str(value)[:30]
+            self.fail(f"{shown} is out of range; give a number from {self.lo:g} to {self.hi:g} (docs/limits.md)", param, ctx)
+        return x
+
+
+OPTION_LIMITS = {
+    "crank_rpm": Range(*CRANK_RPM),
+    "torque_nm": Range(*TORQUE_NM),
+    "tolerance_pct": Range(*TOLERANCE_PCT),
+    "step_deg": Range(*STEP_DEG),
+    "planets": Range(*PLANETS, integer=True),
+    "rtol_pct": Range(*RTOL_PCT),
+    "jobs": Range(*JOBS, integer=True),
+}
+
+
+def apply_option_limits(command) -> None:
+    """Give every option of `command` (and its sub-commands) named in OPTION_LIMITS its range."""
+    for p in getattr(command, "params", ()):
+        if isinstance(p, click.Option) and p.name in OPTION_LIMITS:
+            p.type = OPTION_LIMITS[p.name]
+    for sub in getattr(command, "commands", {}).values():
+        apply_option_limits(sub)

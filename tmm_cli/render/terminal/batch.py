@@ -1,0 +1,94 @@
+"""The batch summary as a rich table (the same rows as summary.csv, the key numbers only)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ...i18n.lang import pick
+from ...i18n.numbers import num
+
+
+def _num(value, lang: str, decimals: int) -> str:
+    if value is None or value == "":
+        return "—"
+    try:
+        return num(float(value), lang, decimals=decimals)
+    except (TypeError, ValueError):
+        return str(value)
+
+
+def print_batch_intro(console, lang: str, *, roster=None, default_crank: bool = False) -> None:
+    """Said once, before the rows: the roster's encoding and separator, or that every row uses
+    the book's crank speed (a --variants run without --crank-rpm)."""
+    from rich.markup import escape
+
+    if roster is not None:
+        sep = pick(lang, "';'", "«;»") if roster.delimiter == ";" else pick(lang, "','", "«,»")
+        console.print("[cyan]ℹ[/] " + escape(pick(lang, f"Roster {roster.path}: read as {roster.encoding}, separator {sep}.",
+                                                     f"Список {roster.path}: кодировка {roster.encoding}, разделитель {sep}.")))
+    from ...gears.drive import DEFAULT_CRANK_RPM
+
+    if roster is not None and roster.jobs and any(j.crank_rpm is None for j in roster.jobs):
+        from ...i18n.numbers import plural
+
+        n = sum(j.crank_rpm is None for j in roster.jobs)
+        if n == len(roster.jobs):
+            default_crank = True
+        else:
+            rows = plural(n, lang, {"one": "row", "other": "rows"} if lang != "ru" else
+                          {"one": "строка", "few": "строки", "many": "строк", "other": "строки"})
+            console.print("[cyan]ℹ[/] " + pick(
+                lang, f"{rows} without crank_rpm use the book's crank speed n_cr = {DEFAULT_CRANK_RPM:g} rpm (§2.4).",
+                f"{rows} без n_кр: принята частота вращения кривошипа по пособию n_кр = {DEFAULT_CRANK_RPM:g} об/мин (п. 2.4)."))
+    if default_crank:
+
+        console.print("[cyan]ℹ[/] " + pick(
+            lang, f"Every row uses the book's crank speed n_cr = {DEFAULT_CRANK_RPM:g} rpm (§2.4); give --crank-rpm "
+                  "or a roster with a crank_rpm column for the students' own speeds.",
+            f"Во всех строках принята частота вращения кривошипа по пособию n_кр = {DEFAULT_CRANK_RPM:g} об/мин "
+            "(п. 2.4); задайте --crank-rpm или список со столбцом n_кр для частот студентов."))
+
+
+def print_batch(console, summary, out_dir: Path, lang: str) -> None:
+    from rich import box
+    from rich.markup import escape
+    from rich.table import Table
+
+    from ...teacher.batch import STATUS, flag_name
+
+    roster = any(not str(r["student"]).startswith("variant ") for r in summary.rows)
+    t = Table(title=pick(lang, "Batch summary", "Сводка по группе"), header_style="bold", box=box.SIMPLE_HEAD, pad_edge=False)
+    heads = ([pick(lang, "Student", "Студент")] if roster else []) + [
+        pick(lang, "Var", "Вар"), "n_d" if lang != "ru" else "n_д", "i_pl" if lang != "ru" else "i_пл",
+        pick(lang, "teeth × k", "зубья × k"), "z1/z2", "ε_α",
+        pick(lang, "r0, mm", "r0, мм"), "e|l_OC", pick(lang, "ν_rise/ν_ret, °", "ν_у/ν_в, °"), pick(lang, "warnings", "предупреждения"),
+    ]
+    for i, head in enumerate(heads):
+        t.add_column(head, justify="left" if (roster and i == 0) or i == len(heads) - 1 else "right",
+                     no_wrap=not ((roster and i == 0) or i == len(heads) - 1))
+    for r in summary.rows:
+        lead = [escape(str(r["student"]))] if roster else []
+        if r["status"] != "ok":
+            colour = "red" if r["status"] == "failed" else "yellow"
+            t.add_row(*lead, escape(str(r["variant"] or "—")), f"[{colour}]{pick(lang, *STATUS[r['status']])}[/]",
+                      *[""] * (len(heads) - len(lead) - 2))
+            continue
+        other = r["e_mm"] if r.get("e_mm") not in (None, "") else r["l_oc_mm"]
+        nu = _num(r["nu_rise_deg"], lang, 1) + "/" + _num(r.get("nu_return_deg"), lang, 1)
+        warn = ", ".join(flag_name(f, lang) for f in r.get("warnings") or ()) or "—"
+        t.add_row(
+            *lead, str(r["variant"]), _num(r["n_motor_rpm"], lang, 0), _num(r["i_planetary"], lang, 3),
+            f"{r['teeth']} × {r['planets']}", f"{r['z1']}/{r['z2']}", _num(r["eps_alpha"], lang, 3),
+            _num(r["r0_mm"], lang, 2), _num(other, lang, 2), nu, escape(warn),
+        )
+    console.print(t)
+    from ...i18n.help_ru import error_text
+
+    for r in summary.failed:
+        if r["status"] == "failed":
+            console.print(f"[red]✘[/] {escape(str(r['student']))}: {escape(error_text(str(r['error']), lang))}")
+    ok = len(summary.rows) - len(summary.failed)
+    n_failed = sum(r["status"] == "failed" for r in summary.rows)
+    path = escape(str(Path(out_dir) / "summary.csv"))
+    console.print(pick(lang, f"{ok} done, {n_failed} failed; summary: {path}",
+                       f"выполнено {ok}, с ошибкой {n_failed}; сводка: {path}"))
