@@ -123,7 +123,7 @@ def _mediabox_pt(pdf: bytes) -> tuple[float, float]:
 @pytest.mark.parametrize("n", [1, 2, 4, 13, 43, 54])  # all four schemes; scales 1:5, 1:2, 1:1, 2:1
 def test_scaled_figure_is_true_to_scale(results, n, tmp_path):
     from tmm_cli.render.figures.cam import cam_figures, scaled_layout
-    from tmm_cli.output.folder import save_figures
+    from tmm_cli.render.figures.save import save_figures
 
     r = results[n]
     d = r.drawing

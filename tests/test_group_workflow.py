@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from tmm_cli.teacher.batch import jobs_from_roster
+from tmm_cli.teacher.roster import jobs_from_roster
 from tmm_cli.cli import cli
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"

@@ -84,7 +84,7 @@ def test_a_roster_rows_error_is_translated_inside_its_frame():
 
 
 # every message these modules raise, rebuilt from their source with each field set to 7 -------------
-MODULES = ("limits", "teacher/check", "teacher/batch", "inputs/tables", "inputs/names", "variants", "inputs/titleblock",
+MODULES = ("limits", "teacher/check", "teacher/batch", "teacher/roster", "teacher/summary", "inputs/tables", "inputs/names", "variants", "inputs/titleblock",
            "output/folder", "gears/shifted",
            "gears/aa_bar", "linkage/inputs", "linkage/geometry", "render/note/__init__", "render/sheets/__init__",
            "commands/linkage", "commands/planetary", "commands/options", "commands/batch", "commands/check", "cli")

@@ -14,8 +14,9 @@ from pathlib import Path
 import pytest
 
 from tmm_cli.project import run_project
-from tmm_cli.render.figures import kit as figure_kit
 from tmm_cli.render import project as report
+from tmm_cli.render.figures import kit as figure_kit
+from tmm_cli.render.figures import pipeline
 from tmm_cli.variants import get_variant
 
 fork_only = pytest.mark.skipif(not figure_kit.can_fork(), reason="fork on Linux with two cores")
@@ -154,7 +155,7 @@ def test_cam_and_gears_draw_over_two_processes_what_one_draws(tmp_path, monkeypa
 @fork_only
 def test_a_child_that_fails_drawing_is_replaced_here(project17, tmp_path, monkeypatch):
     parent = os.getpid()
-    original = report._draw_and_save
+    original = pipeline._draw_and_save
 
     def flaky(tmp, result, lang, fmt, names, svg):
         if os.getpid() != parent:  # the child draws one figure, and dies half-way
@@ -162,7 +163,7 @@ def test_a_child_that_fails_drawing_is_replaced_here(project17, tmp_path, monkey
             os._exit(3)
         return original(tmp, result, lang, fmt, names, svg)
 
-    monkeypatch.setattr(report, "_draw_and_save", flaky)
+    monkeypatch.setattr(pipeline, "_draw_and_save", flaky)
     _, written = report.write_project_folder(project17, tmp_path, "en", report="md", sheets=False)
     pngs = [n for n in written if n.endswith(".png")]
     assert len(pngs) == 8 and not [n for n in _names(tmp_path) if n.startswith(".") and n != ".tmm-files.json"]
@@ -174,7 +175,7 @@ def test_no_plots_draws_nothing(project17, tmp_path, monkeypatch):
     def never(*a, **k):
         raise AssertionError("a figure was drawn under --no-plots")
 
-    monkeypatch.setattr(report, "_draw_and_save", never)
+    monkeypatch.setattr(pipeline, "_draw_and_save", never)
     monkeypatch.setattr(figure_kit, "_warm_up", never)
     _, written = report.write_project_folder(project17, tmp_path / "a", "ru", plots=False, report="md", sheets=False)
     assert written == ["cam_profile.csv", "report.md", "results.json"]

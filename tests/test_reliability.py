@@ -138,7 +138,7 @@ def test_stale_staging_folders_of_a_killed_run_are_removed(tmp_path):
 
 
 def test_json_never_prints_nan_or_infinity(tmp_path):
-    from tmm_cli.output.folder import json_text
+    from tmm_cli.render.data.jsontext import json_text
 
     text = json_text({"a": math.nan, "b": [math.inf, -math.inf, 1.5]})
     assert json.loads(text) == {"a": None, "b": [None, None, 1.5]}
@@ -302,7 +302,7 @@ def test_csv_cells_never_start_a_formula_nor_split_a_row(text):
     import csv
     import io
 
-    from tmm_cli.inputs.tables import csv_text
+    from tmm_cli.render.data.csv import csv_text
 
     data = csv_text(["student", "r0"], [[text, -20.65]], {1}, "en")
     rows = list(csv.reader(io.StringIO(data, newline="")))
@@ -319,7 +319,7 @@ def test_csv_cells_never_start_a_formula_nor_split_a_row(text):
 @settings(max_examples=150, deadline=None)
 @given(st.binary(max_size=300) | st.text(max_size=200).map(lambda t: t.encode("utf-8")))
 def test_any_bytes_as_answers_or_roster(tmp_path_factory, data):
-    from tmm_cli.teacher.batch import jobs_from_roster
+    from tmm_cli.teacher.roster import jobs_from_roster
     from tmm_cli.teacher.check import read_answers
     from tmm_cli.errors import TmmError
 
@@ -393,7 +393,7 @@ def test_json_text_is_the_json_of_any_document():
     from hypothesis import given, settings
     from hypothesis import strategies as st
 
-    from tmm_cli.output.folder import json_safe, json_text
+    from tmm_cli.render.data.jsontext import json_safe, json_text
 
     scalars = st.none() | st.booleans() | st.integers() | st.floats() | st.text(alphabet="ab], [\"ж\\\n", max_size=8)
     docs = st.recursive(scalars, lambda inner: st.lists(inner, max_size=4) | st.tuples(inner, inner)

@@ -8,6 +8,7 @@ import pytest
 
 from tmm_cli.project import run_project
 from tmm_cli.render import project as report
+from tmm_cli.render.figures import pipeline
 from tmm_cli.render.figures.shared import SharedFigures
 from tmm_cli.variants import get_variant
 
@@ -36,7 +37,7 @@ def test_a_gone_folder_means_drawing_here(tmp_path):
 @pytest.fixture(scope="module")
 def rows():
     a, b = run_project(get_variant(17)), run_project(get_variant(4))
-    assert report._reducer_key(a.gears, "ru", "png") == report._reducer_key(b.gears, "ru", "png")
+    assert pipeline._reducer_key(a.gears, "ru", "png") == pipeline._reducer_key(b.gears, "ru", "png")
     return a, b
 
 
@@ -50,12 +51,12 @@ def test_a_second_worker_takes_the_first_ones_drawings(tmp_path, rows, monkeypat
     (tmp_path / "shared").mkdir()
     report.write_project_folder(a, tmp_path / "a", "ru", figure_cache={}, shared_figures=shared)
     drawn = []
-    real = report._draw_and_save
-    monkeypatch.setattr(report, "_draw_and_save", lambda tmp, r, lang, fmt, names, svg: (drawn.extend(names), real(tmp, r, lang, fmt, names, svg)))
+    real = pipeline._draw_and_save
+    monkeypatch.setattr(pipeline, "_draw_and_save", lambda tmp, r, lang, fmt, names, svg: (drawn.extend(names), real(tmp, r, lang, fmt, names, svg)))
     report.write_project_folder(b, tmp_path / "b", "ru", figure_cache={}, shared_figures=shared)  # another worker: own memory
-    assert not set(report.REDUCER_FIGURES) & set(drawn)  # taken from the folder, not drawn
+    assert not set(pipeline.REDUCER_FIGURES) & set(drawn)  # taken from the folder, not drawn
     alone = tmp_path / "alone"
-    monkeypatch.setattr(report, "_draw_and_save", real)
+    monkeypatch.setattr(pipeline, "_draw_and_save", real)
     report.write_project_folder(b, alone, "ru", figure_cache={})
     assert _pngs(tmp_path / "b") == _pngs(alone)  # the very bytes a worker of its own writes
     assert sorted(os.listdir(tmp_path / "b")) == sorted(os.listdir(alone))
@@ -65,10 +66,10 @@ def test_a_drawing_claimed_but_never_published_is_drawn_here(tmp_path, rows):
     a, _ = rows
     shared = SharedFigures(tmp_path / "shared", wait_s=0.2)
     (tmp_path / "shared").mkdir()
-    for group, key in ((report.REDUCER_FIGURES, report._reducer_key(a.gears, "ru", "png")),
-                       (("gears_mesh",), report._mesh_key(a.gears, "ru", "png"))):
+    for group, key in ((pipeline.REDUCER_FIGURES, pipeline._reducer_key(a.gears, "ru", "png")),
+                       (("gears_mesh",), pipeline._mesh_key(a.gears, "ru", "png"))):
         assert shared.claim((*key, ()))  # "another worker" claimed them all, then died
     report.write_project_folder(a, tmp_path / "a", "ru", figure_cache={}, shared_figures=shared)
     alone = tmp_path / "alone"
     report.write_project_folder(a, alone, "ru", figure_cache={})
-    assert _pngs(tmp_path / "a") == _pngs(alone) and len(_pngs(alone)) == len(report.ALL_FIGURES)
+    assert _pngs(tmp_path / "a") == _pngs(alone) and len(_pngs(alone)) == len(pipeline.ALL_FIGURES)

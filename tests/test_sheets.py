@@ -22,7 +22,7 @@ from tmm_cli.cam.design import design_cam
 from tmm_cli.cli import cli
 from tmm_cli.gears.design import design_gears
 from tmm_cli.render.data.cam import profile_csv
-from tmm_cli.render.project import cam_document, gears_document
+from tmm_cli.render.data.project import cam_document, gears_document
 from tmm_cli.render.sheets import save_sheet, sheet3, sheet4
 from tmm_cli.inputs.titleblock import TitleFields
 from tmm_cli.variants import load_table

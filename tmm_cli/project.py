@@ -6,7 +6,6 @@ No printing, plotting or files here: :func:`run_project` calls the same core fun
 
 from __future__ import annotations
 
-
 from .notes import Note
 from .records import record
 from .variants import Variant

@@ -40,7 +40,8 @@ def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, f
     """Teachers: run many variants or a class roster in parallel and write summary.csv."""
     from ..output.folder import ensure_writable_dir
     from ..render.terminal.batch import print_batch, print_batch_intro
-    from ..teacher.batch import jobs_from_roster, jobs_from_spec, run_batch
+    from ..teacher.batch import run_batch
+    from ..teacher.roster import jobs_from_roster, jobs_from_spec
 
     lang = resolve_lang(lang)
     if (variants_spec is None) == (roster is None):

@@ -45,7 +45,7 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, sheet
     from ..cam.design import design_cam
     from ..output.folder import ensure_writable_dir
     from ..render.data.cam import profile_csv
-    from ..render.project import cam_document
+    from ..render.data.project import cam_document
 
     lang = resolve_lang(lang)
     v = variant_row(variant, variants_file)

@@ -19,13 +19,13 @@ def console_for(lang: str):
 
 
 def print_json(obj) -> None:
-    from ..output.folder import json_text
+    from ..render.data.jsontext import json_text
 
     click.echo(json_text(obj))  # strict JSON: never a bare NaN or Infinity
 
 
 def print_notes(console, notes, lang: str) -> None:
-    from ..render.project import print_notes
+    from ..render.terminal.report import print_notes
 
     print_notes(console, notes, lang)
 
@@ -45,13 +45,8 @@ def emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, la
     `figures(names=None)` draws the figures (a dict name -> Figure); given their `figure_names`,
     they are drawn and saved one by one over two processes where a fork is possible, as
     `tmm project` does."""
-    from ..output.folder import (
-        save_figures,
-        staged_dir,
-        staged_names,
-        write_json,
-        write_text,
-    )
+    from ..output.folder import staged_dir, staged_names, write_text
+    from ..render.data.jsontext import write_json
 
     with staged_dir(folder, owns) as tmp:
         for name, content in files.items():
@@ -71,19 +66,19 @@ def emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, la
 
 
 def figure_names(sheet: str) -> tuple:
-    from ..render.project import CAM_FIGURES, GEAR_FIGURES
+    from ..render.figures.pipeline import CAM_FIGURES, GEAR_FIGURES
 
     return CAM_FIGURES if sheet == "cam" else GEAR_FIGURES
 
 
 def save_figures_forked(tmp: Path, figures, names, fmt: str) -> None:
-    from ..output.folder import save_figures
     from ..render.figures.kit import SharedWork, can_fork
+    from ..render.figures.save import save_figures
 
     if len(names) < 2 or not can_fork():
         save_figures(tmp, figures(), fmt)
         return
-    from ..render.project import _largest_first, prepare_figures
+    from ..render.figures.pipeline import _largest_first, prepare_figures
 
     prepare_figures(set())
     tasks = [lambda n=n: save_figures(tmp, figures([n]), fmt) for n in _largest_first(names, set())]

@@ -58,7 +58,7 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
     title = title_block(title_kw)
     from ..gears.design import design_gears
     from ..output.folder import ensure_writable_dir
-    from ..render.project import gears_document
+    from ..render.data.project import gears_document
 
     lang = resolve_lang(lang)
     v = variant_row(variant, variants_file)

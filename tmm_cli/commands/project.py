@@ -89,7 +89,7 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
     def render_report() -> None:
         """The terminal report, rendered into a string while the figures are drawn (≈ 0.3 s),
         printed once the folder is in place (nothing is printed for a run that fails)."""
-        from ..render.project import print_project
+        from ..render.terminal.report import print_project
 
         if console.legacy_windows:  # the old Windows console takes no ANSI text: printed afterwards
             return
@@ -107,7 +107,7 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
         console.file.write(shown[0])
         console.file.flush()
     else:
-        from ..render.project import print_project
+        from ..render.terminal.report import print_project
 
         print_project(console, result, lang)
     print_files(console, folder, written, lang)

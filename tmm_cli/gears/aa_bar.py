@@ -36,7 +36,14 @@ from ..errors import TmmError
 from ..notes import Note
 from ..records import record
 from .blocking import Check, PairChecks, check_neighbours, check_pair, pair_notes
-from .shifted import ALPHA_DEG, C_STAR, HA_STAR, PairGeometry, pair_geometry, shift_sum_for_distance
+from .shifted import (
+    ALPHA_DEG,
+    C_STAR,
+    HA_STAR,
+    PairGeometry,
+    pair_geometry,
+    shift_sum_for_distance,
+)
 
 Z_MIN = 18
 Z_MAX = 180

@@ -731,8 +731,9 @@ def _version_ru(ctx, param, value):
     """`tmm --version` in Russian (click's message is fixed when the option is declared)."""
     if not value or ctx.resilient_parsing:
         return
-    import click
     from importlib.metadata import version
+
+    import click
 
     click.echo(f"tmm, версия {version('tmm')}")
     ctx.exit()

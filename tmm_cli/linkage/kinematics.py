@@ -19,7 +19,6 @@ wherever h + r1·cos φ21 > 0 and the crank turns uniformly (checked in the test
 
 from __future__ import annotations
 
-
 import numpy as np
 
 from ..records import record

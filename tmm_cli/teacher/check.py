@@ -16,8 +16,8 @@ from dataclasses import field
 from pathlib import Path
 
 from ..errors import TmmError
-from ..records import record
 from ..i18n.lang import note_text
+from ..records import record
 
 
 @record
@@ -161,8 +161,8 @@ def read_answers(path: str | Path) -> dict[str, object]:
     is not a finite number, or a nested table is an error. Errors name the line and the key,
     never the content of the file.
     """
-    from ..limits import ANSWERS_BYTES, ANSWERS_ROWS
     from ..inputs.tables import parse_number, read_text, rows
+    from ..limits import ANSWERS_BYTES, ANSWERS_ROWS
 
     p = Path(path)
     src = read_text(p, f"answers file {p.name}", ANSWERS_BYTES)
@@ -262,7 +262,7 @@ def check_one(variant, answers: dict, *, crank_rpm=None, torque_nm=None, rtol_pc
     require (REQUIRED) and the student omitted fail as "missing"."""
     from ..limits import RTOL_PCT, check_range
     from ..project import run_project
-    from ..render.project import project_document
+    from ..render.data.project import project_document
 
     rtol_pct = check_range(rtol_pct, *RTOL_PCT, "--rtol", " per cent")
     if not answers:
@@ -423,15 +423,15 @@ def check_group(roster, answers_dir, *, variants_file=None, crank_rpm=None, torq
                 sheets=SHEETS) -> GroupReport:
     """Check every student of a roster against ``<file name>.toml`` / ``.csv`` in `answers_dir`
     (the name-to-file rule of :func:`tmm_cli.inputs.names.file_name`, as `tmm batch` names folders)."""
-    from .batch import jobs_from_roster
     from ..variants import get_variant
+    from .roster import jobs_from_roster
 
     d = Path(answers_dir)
     if not d.is_dir():
         raise TmmError(f"answers folder {d} does not exist; give the folder with one file per student")
     plan = jobs_from_roster(roster, crank_rpm, torque_nm, variants_file)
-    reports = [(b["line"], CheckReport(label=b["student"], variant=int(b["variant"]) if str(b["variant"]).isdigit() else 0,
-                                       rtol_pct=rtol_pct, rows=(), error=b["error"], group=b.get("group", "")))
+    reports = [(b.job.line, CheckReport(label=b.job.label, variant=int(b.job.variant) if str(b.job.variant).isdigit() else 0,
+                                        rtol_pct=rtol_pct, rows=(), error=b.reason, group=b.job.group))
                for b in plan.bad]
     for job in plan.jobs:
         try:

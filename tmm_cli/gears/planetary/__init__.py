@@ -64,7 +64,14 @@ from .search import (
     scheme2_table,
     search_designs,
 )
-from .velocity import DesignChecks, VelocityPicture, VelocityStage, check_design, ratio_21, velocity_picture
+from .velocity import (
+    DesignChecks,
+    VelocityPicture,
+    VelocityStage,
+    check_design,
+    ratio_21,
+    velocity_picture,
+)
 
 __all__ = [
     # conditions

@@ -17,7 +17,17 @@ import numpy as np
 
 from ...errors import TmmError
 from ...records import record
-from .conditions import HA_STAR, K_MAX, REL_EPS, Z_DIFF, Z_EXT_EXT, Z_EXT_INT, Z_RING, PlanetaryDesign, Stage
+from .conditions import (
+    HA_STAR,
+    K_MAX,
+    REL_EPS,
+    Z_DIFF,
+    Z_EXT_EXT,
+    Z_EXT_INT,
+    Z_RING,
+    PlanetaryDesign,
+    Stage,
+)
 
 Z_MAX = 200
 SELECT_SLACK = 1  # "accurate": compare the sets at most this many teeth larger than the smallest

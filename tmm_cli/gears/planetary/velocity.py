@@ -10,7 +10,6 @@ from fractions import Fraction
 from ...records import record
 from .conditions import PlanetaryDesign, Stage, StageChecks, check_stage
 
-
 # ----------------------------------------------------------------------------------------------
 # the checks: (2.1) and the velocity pictures (2.3)
 

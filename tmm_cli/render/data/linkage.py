@@ -11,8 +11,8 @@ from __future__ import annotations
 import io
 import math
 
-from ...linkage.analysis import LinkageResult, State
 from ...i18n.lang import note_text
+from ...linkage.analysis import LinkageResult, State
 
 POSITION_KEYS = ("phi_deg", "link_angle_deg", "rho_m", "x_c_m", "omega_link_rad_s", "eps_link_rad_s2",
                  "v_rel_m_s", "a_cor_m_s2", "v_c_m_s", "a_c_m_s2")

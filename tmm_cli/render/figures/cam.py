@@ -10,8 +10,19 @@ import math
 import numpy as np
 
 from ...cam.design import CamResult
-from .kit import bare_xaxis, bottom_legend, copying_ticks, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
 from ...i18n.lang import pick
+from .kit import (
+    bare_xaxis,
+    bottom_legend,
+    copying_ticks,
+    decimal_commas,
+    fmt,
+    legend_height,
+    mt,
+    new_figure,
+    suptitle,
+    title_height,
+)
 
 C_RISE = "#1f77b4"
 C_RET = "#d62728"

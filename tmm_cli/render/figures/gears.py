@@ -11,9 +11,19 @@ import math
 
 import numpy as np
 
-from .kit import bottom_legend, hide_axis, decimal_commas, fmt, legend_height, mt, new_figure, suptitle, title_height
 from ...i18n.lang import pick
 from ...i18n.numbers import num, plural
+from .kit import (
+    bottom_legend,
+    decimal_commas,
+    fmt,
+    hide_axis,
+    legend_height,
+    mt,
+    new_figure,
+    suptitle,
+    title_height,
+)
 
 C_SUN = "#1f77b4"
 C_PLANET = "#d62728"

@@ -16,9 +16,9 @@ import re
 
 import numpy as np
 
-from ...linkage.analysis import LinkageResult, State
 from ...i18n.lang import pick
 from ...i18n.numbers import num
+from ...linkage.analysis import LinkageResult, State
 
 C_WORK = "#1f77b4"
 C_RET = "#d62728"

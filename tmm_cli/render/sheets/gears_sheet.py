@@ -13,11 +13,11 @@ import math
 
 import numpy as np
 
-from ..figures.gears import _mesh_geometry, _shift_kw, tooth_outline
 from ...i18n.lang import pick
 from ...i18n.numbers import num
-from .paper import GOST_SCALES, Sheet, fit_scale, thin_out
+from ..figures.gears import _mesh_geometry, _shift_kw, tooth_outline
 from .cam_sheet import table
+from .paper import GOST_SCALES, Sheet, fit_scale, thin_out
 
 BOX_SCHEME = (22.0, 300.0, 252.0, 587.0)
 BOX_LINEAR = (254.0, 300.0, 420.0, 587.0)

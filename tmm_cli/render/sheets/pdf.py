@@ -38,7 +38,12 @@ def _backend(ax):
 def sheet_figure(doc):
     """A matplotlib Figure of the whole sheet at true size (no pyplot)."""
     from ezdxf.addons.drawing import Frontend, RenderContext
-    from ezdxf.addons.drawing.config import BackgroundPolicy, ColorPolicy, Configuration, LineweightPolicy
+    from ezdxf.addons.drawing.config import (
+        BackgroundPolicy,
+        ColorPolicy,
+        Configuration,
+        LineweightPolicy,
+    )
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(SHEET_W / MM_PER_INCH, SHEET_H / MM_PER_INCH))

@@ -124,14 +124,14 @@ def group_table(group, lang: str) -> tuple[list[str], list[list]]:
 
 def group_csv(group, lang: str, csv_locale: str) -> bytes:
     """check.csv: ';' and a BOM for a Russian spreadsheet, ',' for an English one; no formulas."""
-    from ...inputs.tables import csv_encoding, csv_text
+    from ..data.csv import csv_encoding, csv_text
 
     header, body = group_table(group, lang)
     return csv_text(header, body, {2, 4, 5}, csv_locale).encode(csv_encoding(csv_locale))
 
 
 def _md_cell(v) -> str:
-    from ...inputs.tables import safe_cell
+    from ..data.csv import safe_cell
 
     return safe_cell(v).replace("|", "\\|").replace("*", "\\*").replace("_", "\\_").replace("`", "\\`") \
         .replace("<", "&lt;").replace(">", "&gt;").replace("[", "\\[")

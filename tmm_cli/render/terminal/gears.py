@@ -441,7 +441,6 @@ def _print_stiffness(console, r, lang):
         t.add_row(*row)
     console.print(t)
     from ...i18n.lang import note_text
-
     from ...i18n.messages_gears import MESSAGES
 
     console.print("  [dim]" + pick(lang, "Source: ", "Источник: ") + MESSAGES["stiffness_paper"][lang if lang == "ru" else "en"] + "[/]")

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import math
 
-from ...linkage.analysis import LinkageResult, State
 from ...i18n.lang import pick
 from ...i18n.numbers import num
+from ...linkage.analysis import LinkageResult, State
 
 
 def _table(title: str, *cols: tuple[str, str], min_width: int | None = None):

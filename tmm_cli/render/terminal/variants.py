@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from ...variants import Variant
 from ...i18n.lang import pick
 from ...i18n.numbers import num
+from ...variants import Variant
 
 SCHEME_WORDS = {
     1: ("translating roller follower, force closure (spring)", "поступательный роликовый толкатель, силовое замыкание (пружина)"),
