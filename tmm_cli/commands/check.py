@@ -43,7 +43,9 @@ def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, t
     lang = resolve_lang(lang)
     console = console_for(lang)
     if show_keys:
-        print_keys(console, lang)
+        from ..teacher.check import ANSWER_KEYS, REQUIRED
+
+        print_keys(console, lang, ANSWER_KEYS, REQUIRED)
         return 0
     sheets = SHEETS if sheet == "all" else (sheet,)
     if roster is not None or answers_dir is not None:

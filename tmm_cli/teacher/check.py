@@ -139,6 +139,12 @@ class GroupReport:
     def to_json(self) -> dict:
         return {"all_passed": self.all_passed, "students": [r.to_json() for r in self.reports]}
 
+    def keys(self) -> list[str]:
+        """The keys the group's students were checked on: in `tmm check --keys` order, then others."""
+        seen = {r.key for rep in self.reports for r in rep.rows}
+        order = [k.key for k in ANSWER_KEYS if k.key in seen]
+        return order + sorted(seen - set(order))
+
 
 def csv_delimiter(lines: list[str]) -> str:
     """',' or ';' (what a spreadsheet saves under a Russian locale), from the first non-empty line."""

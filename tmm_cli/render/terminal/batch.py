@@ -54,7 +54,7 @@ def print_batch(console, summary, out_dir: Path, lang: str) -> None:
     from rich.markup import escape
     from rich.table import Table
 
-    from ...teacher.summary import STATUS, flag_name
+    from ..data.summary import STATUS, flag_name
 
     roster = any(not str(r["student"]).startswith("variant ") for r in summary.rows)
     t = Table(title=pick(lang, "Batch summary", "Сводка по группе"), header_style="bold", box=box.SIMPLE_HEAD, pad_edge=False)

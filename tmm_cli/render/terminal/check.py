@@ -38,20 +38,18 @@ def _val(v) -> str:
     return str(v)
 
 
-def print_keys(console, lang: str) -> None:
+def print_keys(console, lang: str, keys, required: dict) -> None:
+    """`tmm check --keys`: the answer keys `keys` (AnswerKey records) and the sheet that requires each
+    (`required`: sheet -> its keys)."""
     from rich.table import Table
-
-    from ...teacher.check import ANSWER_KEYS
 
     t = Table(title=pick(lang, "Answer keys for `tmm check`", "Ключи ответов для `tmm check`"), header_style="bold")
     t.add_column(pick(lang, "Key", "Ключ"))
     t.add_column(pick(lang, "Compared", "Сравнение"))
     t.add_column(pick(lang, "Required", "Обязателен"))
     t.add_column(pick(lang, "Meaning", "Смысл"))
-    from ...teacher.check import REQUIRED
-
-    for k in ANSWER_KEYS:
-        sheet = next((s for s, keys in REQUIRED.items() if k.key in keys), "")
+    for k in keys:
+        sheet = next((s for s, names in required.items() if k.key in names), "")
         req = pick(lang, f"sheet {sheet}", f"лист {sheet}") if sheet else "—"
         t.add_row(k.key, pick(lang, "exact", "точно") if k.kind == "int" else pick(lang, "within tolerance", "с допуском"),
                   req, pick(lang, k.en, k.ru))
@@ -92,11 +90,7 @@ def print_check(console, report, lang: str) -> None:
 
 def _keys_of(group) -> list[str]:
     """The keys of the group's columns: the answer keys in `tmm check --keys` order, then others."""
-    from ...teacher.check import ANSWER_KEYS
-
-    seen = {r.key for rep in group.reports for r in rep.rows}
-    order = [k.key for k in ANSWER_KEYS if k.key in seen]
-    return order + sorted(seen - set(order))
+    return group.keys()
 
 
 def _verdict(rep, lang: str) -> str:
