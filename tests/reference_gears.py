@@ -1,6 +1,6 @@
 """An independent checker of a planetary stage (the five conditions of §2.1.3), written without
 tmm_cli: assembly by placing a second planet tooth by tooth, neighbouring by the tip circles,
-ratio by Willis. Shared by test_gears_search.py and test_design_exported.py."""
+ratio by Willis. Shared by test_gears_search.py and test_gears_exported.py."""
 
 import math
 from fractions import Fraction

@@ -1,4 +1,4 @@
-"""Drawings shared by a batch's workers (render/shared_figures): the first to need one draws it,
+"""Drawings shared by a batch's workers (render/figures/shared.py): the first to need one draws it,
 the others take it from the common folder (the same bytes) or, if it never comes, draw it
 themselves; nothing is written into the user's folders but the figures."""
 

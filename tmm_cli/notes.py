@@ -1,8 +1,8 @@
 """Warnings and assumptions carried by result objects, as data (no language, no printing).
 
 The core returns ``Note`` objects; :func:`tmm_cli.i18n.lang.note_text` turns each into a sentence
-in Russian or English from the message catalogues (``render/messages_cam.py``,
-``render/messages_gears.py``). A missing catalogue entry falls back to the code and parameters, so
+in Russian or English from the message catalogues (``i18n/messages_cam.py``,
+``i18n/messages_gears.py``). A missing catalogue entry falls back to the code and parameters, so
 no warning is ever lost.
 """
 

@@ -462,7 +462,7 @@ TEMPLATES: list[tuple[str, str]] = [
     ("{w} is larger than 64 KiB; it should hold only the title fields",
      "{w} больше 64 КиБ; в нём должны быть только поля основной надписи"),
     ("{w}: 'year' must be a year such as 2026", "{w}: 'year' должен быть годом, например 2026"),
-    # render/files.py: the output folder
+    # output/folder.py: the output folder
     ("cannot write to output folder {p} ({q} is not a folder); choose a folder with --out",
      "нельзя записать в папку результатов {p} ({q} — не папка); укажите папку в --out"),
     ("cannot write to output folder {p} (Permission denied); choose a writable folder with --out",

@@ -44,7 +44,7 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
 
     `figure_cache` (a dict the caller keeps between calls, as `tmm batch` does) lets variants
     that share a reducer reuse its two drawings instead of drawing them again; `shared_figures`
-    (render/shared_figures) shares them between the batch's worker processes too.
+    (render/figures/shared.py) shares them between the batch's worker processes too.
     `sheets` adds the A1 drawings sheet3.dxf/.pdf and sheet4.dxf/.pdf (render/sheets).
     `meanwhile` (no arguments) runs in this process while a forked child starts on the figures,
     before this process takes its share (`tmm project` renders its terminal report there).

@@ -230,7 +230,7 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
             from concurrent.futures import ProcessPoolExecutor, as_completed
 
             ctx = mp.get_context("fork") if "fork" in mp.get_all_start_methods() else None
-            if plots:  # drawings one worker made serve the others (render/shared_figures), removed below
+            if plots:  # drawings one worker made serve the others (render/figures/shared.py), removed below
                 import tempfile
 
                 shared_root = tempfile.mkdtemp(prefix="tmm-figures-")

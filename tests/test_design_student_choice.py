@@ -4,10 +4,10 @@ Each test is named after the bullet it proves and drives the CLI. The tooth sets
 the Willis formula written again here; the cam numbers a student "following the book" would find
 are taken from the CLI's own override run (`--swing`), never from the check's code.
 Already covered elsewhere and not repeated: the five conditions for every 10 rpm and the 68
-variants (test_design_exported.py), the carried cam from the exported curve for all 68 variants
+variants (test_gears_exported.py), the carried cam from the exported curve for all 68 variants
 (test_cam_exported.py), the override round trip with independently recomputed pressure angles
-and the out-of-range overrides (test_design_overrides.py), the certified smallest r0
-(test_design_book_roller.py), the pivot (test_cam_pivot.py).
+and the out-of-range overrides (test_cam_overrides.py), the certified smallest r0
+(test_cam_book_roller.py), the pivot (test_cam_pivot.py).
 """
 
 import json

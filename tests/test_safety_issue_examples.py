@@ -1,8 +1,8 @@
 """Acceptance audit of issue 7 ("nothing lost, nothing leaked, nothing hangs"): the issue's own
 examples, with its literal inputs, driven through the CLI — exit status, the one stderr line and
 the files left behind. The classes are covered more widely (hypothesis, signals with the time to
-stop, concurrent batches) in test_reliability.py, test_reliability_group.py and
-test_reliability_signals.py; this file pins the examples as the issue states them.
+stop, concurrent batches) in test_safety_files.py, test_safety_group.py and
+test_safety_signals.py; this file pins the examples as the issue states them.
 """
 
 import csv

@@ -1,4 +1,4 @@
-"""One project's work spread over two processes (render/figure_kit.ForkedTasks, report.write_project_folder):
+"""One project's work spread over two processes (render/figures/kit.SharedWork, render/project.write_project_folder):
 the same files as one process writes, a failed or killed child's work redone here, no orphan
 process and no staging folder after Ctrl-C, nothing drawn that is not written, and a batch
 worker's cache of the drawings several variants share. Nothing here is timed (bench/bench.py)."""

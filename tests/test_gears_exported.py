@@ -1,5 +1,5 @@
 """Issue 8, "must hold": the carried reducer meets the five conditions of §2.1.3 for every crank
-speed 30 … 960 rpm and the 68 variants, checked from the exported JSON (render/gears_json.py) with
+speed 30 … 960 rpm and the 68 variants, checked from the exported JSON (render/data/gears.py) with
 the independent checker of tests/reference_gears.py — nothing of tmm_cli.gears is used beyond
 producing the JSON. The cam does not depend on the crank speed (Table 1.2 gives n_k); its checks
 from the exported curve are in test_cam_exported.py (all 68 variants)."""
