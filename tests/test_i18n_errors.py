@@ -78,7 +78,7 @@ def test_title_fields_file_error_in_russian(tmp_path, monkeypatch):
 
 
 def test_a_roster_rows_error_is_translated_inside_its_frame():
-    from tmm_cli.i18n.help_ru import translate_error
+    from tmm_cli.i18n.errors import translate_error
 
     assert translate_error("roster line 3: the variant column is empty") == "список группы, строка 3: столбец варианта пуст"
 
@@ -132,7 +132,7 @@ def test_the_scan_finds_the_messages():
 
 @pytest.mark.parametrize("where,text", MESSAGES, ids=[w for w, _ in MESSAGES])
 def test_every_message_has_a_russian_template(where, text):
-    from tmm_cli.i18n.help_ru import translate_error
+    from tmm_cli.i18n.errors import translate_error
 
     ru = translate_error(text)
-    assert ru != text and CYRILLIC.search(ru), f"{where}: no Russian for {text!r}; add it to help_ru.TEMPLATES"
+    assert ru != text and CYRILLIC.search(ru), f"{where}: no Russian for {text!r}; add its template to tmm.po (msgctxt \"error\")"

@@ -22,6 +22,7 @@ from .commands.planetary import planetary_cmd
 from .commands.project import project_cmd
 from .commands.variants import variants_cmd
 from .errors import TmmError
+from .i18n import N_
 
 
 class TmmGroup(click.Group):
@@ -31,10 +32,10 @@ class TmmGroup(click.Group):
         """Run the command line; help, click's messages and our errors follow --lang / the locale."""
         lang = _requested_lang(list(sys.argv[1:] if args is None else args))  # args stay as given (click
         # expands wildcards itself on Windows when they are None)
-        if lang == "ru":
-            from .i18n.help_ru import russian
+        if lang != "en":
+            from .i18n.click_lang import translated
 
-            with russian(self):
+            with translated(self, lang):
                 return self._main(args, prog_name, complete_var, standalone_mode, lang, **extra)
         return self._main(args, prog_name, complete_var, standalone_mode, lang, **extra)
 
@@ -115,19 +116,20 @@ def _requested_lang(args: list[str]) -> str:
 
 
 def _words(lang: str):
-    if lang != "ru":
-        return lambda w: w
-    from .i18n.help_ru import WORDS
+    """The shell's few words ("error", "interrupted" …) in `lang`."""
+    from .i18n import tr
 
-    return lambda w: WORDS.get(w, w)
+    return lambda w: tr(lang, w)
+
+
+# the shell's words, for the catalogue (they reach _words as variables)
+_WORDS = (N_("error"), N_("internal error"), N_("aborted"), N_("interrupted"), N_("run with TMM_DEBUG=1 for details"))
 
 
 def _fail(message: str, lang: str = "en") -> None:
-    line = " ".join(str(message).split())
-    if lang == "ru":
-        from .i18n.help_ru import translate_error
+    from .i18n.errors import translate_error
 
-        line = translate_error(line)
+    line = translate_error(message, lang)
     click.echo(f"tmm: {_words(lang)('error')}: {line}", err=True)
     sys.exit(2)
 

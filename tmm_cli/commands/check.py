@@ -71,10 +71,9 @@ def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, t
         else:
             from rich.markup import escape
 
-            from ..i18n.lang import pick
+            from ..i18n import tr
 
-            console.print("[cyan]ℹ[/] " + escape(pick(lang, f"Roster {roster}: read as {group.roster_encoding}.",
-                                                         f"Список {roster}: кодировка {group.roster_encoding}.")))
+            console.print("[cyan]ℹ[/] " + escape(tr(lang, "Roster {roster}: read as {roster_encoding}.").format(roster=roster, roster_encoding=group.roster_encoding)))
             print_group(console, group, lang)
             print_files(console, out_dir, ["check.csv", "check.md"], lang)
         return 0 if group.all_passed else 1

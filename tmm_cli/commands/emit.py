@@ -31,10 +31,10 @@ def print_notes(console, notes, lang: str) -> None:
 
 
 def print_files(console, folder: Path, names: list[str], lang: str) -> None:
-    from ..i18n.lang import pick
+    from ..i18n import tr
 
     if names:
-        console.print(pick(lang, "Files written to ", "Файлы записаны в ") + f"[bold]{folder}[/]: " + ", ".join(names))
+        console.print(tr(lang, "Files written to ") + f"[bold]{folder}[/]: " + ", ".join(names))
 
 
 def emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, lang: str, owns=(), extra=None,

@@ -7,6 +7,7 @@ import os
 import re
 
 from ..notes import Note
+from . import tr
 
 LANGS = ("ru", "en")
 
@@ -29,11 +30,11 @@ def pick(lang: str, en: str, ru: str) -> str:
     return ru if lang == "ru" else en
 
 
-_CATALOGUE: dict[str, dict[str, str]] = {}
+_CATALOGUE: dict[str, str] = {}
 
 
-def _catalogue() -> dict[str, dict[str, str]]:
-    """Every note's sentences (the messages_* modules), gathered once."""
+def _catalogue() -> dict[str, str]:
+    """Every note's sentence (code -> English msgid, the messages_* modules), gathered once."""
     if not _CATALOGUE:
         for mod in ("messages_cam", "messages_gears", "messages_linkage", "messages_shifted"):
             module = __import__(f"tmm_cli.i18n.{mod}", fromlist=["MESSAGES"])
@@ -79,7 +80,7 @@ def note_text(note: Note, lang: str) -> str:
     entry = _catalogue().get(note.code)
     kwargs = {k: _param(v, lang) for k, v in note.kwargs.items()}
     if entry:
-        template = entry.get(lang) or entry.get("en")
+        template = tr(lang, entry)
         try:
             return template.format(**kwargs)
         except (KeyError, IndexError, ValueError):

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+from ...i18n import tr
 from ...i18n.lang import note_text
 
 
@@ -69,7 +70,7 @@ def _pair(t, scale: float = 1.0, nd: int = 6) -> list[float]:
 
 
 def _stiffness(st, lang: str) -> dict | None:
-    from ...i18n.messages_gears import MESSAGES
+    from ...i18n.messages_gears import MESSAGES, PAPER
 
     """The spur pair's mesh stiffness (Tarasik's paper, `tmm gears --stiffness`): beyond the course, informative; lengths in mm."""
     if st is None:
@@ -79,7 +80,7 @@ def _stiffness(st, lang: str) -> dict | None:
         "informative": True,
         "beyond_course": True,
         "method": "variable-section cantilever bending + Nakhatakyan contact, c = c_b*c_H/(c_b + c_H)",
-        "source": MESSAGES["stiffness_paper"]["ru" if lang == "ru" else "en"],
+        "source": tr(lang, MESSAGES[PAPER]),
         "b_w_mm": _r(s.b_w_m * 1e3), "psi_m": st.psi_m, "load": st.load,
         "torque1_nm": _r(s.torque1_nm), "force_n": _r(s.force_n, 3), "line_load_n_per_mm": _r(s.line_load_n_per_m * 1e-3),
         "e_pa": s.e_pa, "nu": s.nu,

@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 from ...cam.design import CamResult
-from ...i18n.lang import pick
+from ...i18n import tr, trc
 from .kit import (
     bare_xaxis,
     bottom_legend,
@@ -40,7 +40,7 @@ def _phase_marks(ax, r: CamResult, lang: str, labels: bool = False) -> None:
 
     v = r.variant
     bounds = [0.0, v.phi_rise_deg, v.phi_rise_deg + v.phi_far_dwell_deg, v.phi_working_deg, 360.0]
-    names = [pick(lang, "rise", "удаление"), pick(lang, "far dwell", "дал. стояние"), pick(lang, "return", "возвращение"), pick(lang, "near dwell", "бл. стояние")]
+    names = [trc(lang, "figure, short", "rise"), trc(lang, "figure, short", "far dwell"), trc(lang, "figure, short", "return"), trc(lang, "figure, short", "near dwell")]
     colors = [C_RISE, C_DWELL, C_RET, C_DWELL]
     bands, band_colors = [], []
     for i in range(4):
@@ -74,15 +74,15 @@ def _motion_figure(r: CamResult, lang: str):
     if v.is_rocker:
         l_mm = v.l_bc_m * 1000
         series = [
-            (np.degrees(m.s), "γ, °", mt(pick(lang, f"γ (S_B = γ·l_BC, l_BC = {f(l_mm)} mm)", f"γ (S_B = γ·l_BC, l_BC = {f(l_mm)} мм)")), [math.degrees(x.s) for _, x in rows]),
-            (m.v, pick(lang, "ω, rad/s", "ω, рад/с"), "ω = dγ/dt", [x.v for _, x in rows]),
-            (m.a, pick(lang, "ε, rad/s²", "ε, рад/с²"), "ε = dω/dt", [x.a for _, x in rows]),
+            (np.degrees(m.s), "γ, °", mt(tr(lang, "γ (S_B = γ·l_BC, l_BC = {l_mm} mm)").format(l_mm=f(l_mm))), [math.degrees(x.s) for _, x in rows]),
+            (m.v, tr(lang, "ω, rad/s"), "ω = dγ/dt", [x.v for _, x in rows]),
+            (m.a, tr(lang, "ε, rad/s²"), "ε = dω/dt", [x.a for _, x in rows]),
         ]
     else:
         series = [
-            (m.s * 1000, pick(lang, "S, mm", "S, мм"), "S", [x.s * 1000 for _, x in rows]),
-            (m.v, pick(lang, "V, m/s", "V, м/с"), "V = dS/dt", [x.v for _, x in rows]),
-            (m.a, pick(lang, "a, m/s²", "a, м/с²"), "a = dV/dt", [x.a for _, x in rows]),
+            (m.s * 1000, tr(lang, "S, mm"), "S", [x.s * 1000 for _, x in rows]),
+            (m.v, tr(lang, "V, m/s"), "V = dS/dt", [x.v for _, x in rows]),
+            (m.a, tr(lang, "a, m/s²"), "a = dV/dt", [x.a for _, x in rows]),
         ]
     xs = [p for p, _ in rows]
     for k, (ax, (y, ylabel, name, pts)) in enumerate(zip(axes, series)):
@@ -99,21 +99,20 @@ def _motion_figure(r: CamResult, lang: str):
             ax.plot(xx, yy, color="k", lw=1.4, label=name)
         else:
             ax.plot(deg, yy, color="k", lw=1.4, label=name)
-        ax.plot(xs, pts, "o", ms=3, color="tab:orange", label=pick(lang, "table positions", "положения таблицы"))
+        ax.plot(xs, pts, "o", ms=3, color="tab:orange", label=tr(lang, "table positions"))
         ax.axhline(0, color="k", lw=0.5)
         ax.set_ylabel(ylabel)
         (ax.grid if k == 2 else ax.yaxis.grid)(alpha=0.3)  # ax.grid would make a Tick on a bare x axis
         ax.legend(loc="lower right" if k == 0 else "upper right", fontsize=8, framealpha=0.85)
-    axes[-1].set_xlabel(pick(lang, "cam angle φ, °", "угол поворота кулачка φ, °"))
+    axes[-1].set_xlabel(tr(lang, "cam angle φ, °"))
     axes[-1].set_xlim(0, 360)
     axes[-1].set_xticks(np.arange(0, 361, 30))
     w = m.omega
     top = axes[0].secondary_xaxis("top", functions=(lambda d: np.radians(d) / w * 1000.0, lambda t: np.degrees(np.asarray(t) / 1000.0 * w)))
     copying_ticks(top)
-    top.set_xlabel(pick(lang, "time t, ms", "время t, мс"))
-    law = pick(lang, f"law {v.law}", f"закон {v.law}")
-    suptitle(fig, mt(pick(lang, f"Variant {v.number}: follower motion diagrams\n({law}, n_k = {f(v.n_cam_rpm, minus='−')} rpm)",
-                          f"Вариант {v.number}: диаграммы движения толкателя\n({law}, n_k = {f(v.n_cam_rpm, minus='−')} об/мин)")))
+    top.set_xlabel(tr(lang, "time t, ms"))
+    law = tr(lang, "law {law}").format(law=v.law)
+    suptitle(fig, mt(tr(lang, "Variant {number}: follower motion diagrams\n({law}, n_k = {n_cam_rpm} rpm)").format(number=v.number, law=law, n_cam_rpm=f(v.n_cam_rpm, minus='−'))))
     return fig
 
 
@@ -143,11 +142,11 @@ def _zone_figure(r: CamResult, lang: str):
     xlim = (mid[0] - span / 2, mid[0] + span / 2)
     ylim = (mid[1] - span / 2, mid[1] + span / 2)
 
-    ax.add_patch(Polygon(zn.polygon * k, closed=True, facecolor=C_ZONE, alpha=0.15, edgecolor=C_ZONE, lw=1.0, label=mt(pick(lang, "feasible zone (ν ≤ ν_max everywhere)", "зона возможного положения центра (ν ≤ ν_max)"))))
-    ax.plot(b[rise, 0], b[rise, 1], color="k", lw=1.2, label=pick(lang, "roller-centre path B", "траектория центра ролика B"))
-    ax.plot(d[rise, 0], d[rise, 1], color=C_RISE, lw=1.6, label=pick(lang, "D-curve, rise", "кривая D, удаление"))
+    ax.add_patch(Polygon(zn.polygon * k, closed=True, facecolor=C_ZONE, alpha=0.15, edgecolor=C_ZONE, lw=1.0, label=mt(tr(lang, "feasible zone (ν ≤ ν_max everywhere)"))))
+    ax.plot(b[rise, 0], b[rise, 1], color="k", lw=1.2, label=tr(lang, "roller-centre path B"))
+    ax.plot(d[rise, 0], d[rise, 1], color=C_RISE, lw=1.6, label=tr(lang, "D-curve, rise"))
     ls = "-" if z.closure == "form" else "--"
-    lab = pick(lang, "D-curve, return", "кривая D, возвращение") + ("" if z.closure == "form" else pick(lang, " (not constrained)", " (не ограничивается)"))
+    lab = tr(lang, "D-curve, return") + ("" if z.closure == "form" else tr(lang, " (not constrained)"))
     ax.plot(d[ret, 0], d[ret, 1], color=C_RET, lw=1.4, ls=ls, label=lab)
     # a few segments B_i D_i
     seg = np.concatenate([idx[:: max(1, len(idx) // 8)] for idx in (np.nonzero(rise)[0], np.nonzero(ret)[0])])
@@ -164,12 +163,12 @@ def _zone_figure(r: CamResult, lang: str):
                             & (ylim[0] + 0.04 * span < q[:, 1]) & (q[:, 1] < ylim[1] - 0.04 * span))[0]
         if len(inside):
             qx, qy = q[inside[0]]
-            ax.text(qx, qy, " " + pick(lang, "line ", "прямая ") + L.name, color=C_BOOK, fontsize=11, weight="bold", va="bottom")
-    ax.plot([], [], color=C_BOOK, lw=1.0, ls="-.", label=mt(pick(lang, "book's bounding lines (ν_max)", "ограничивающие прямые по пособию (ν_max)")))
+            ax.text(qx, qy, " " + tr(lang, "line ") + L.name, color=C_BOOK, fontsize=11, weight="bold", va="bottom")
+    ax.plot([], [], color=C_BOOK, lw=1.0, ls="-.", label=mt(tr(lang, "book's bounding lines (ν_max)")))
     ax.plot([0, o[0]], [0, o[1]], color="k", lw=1.0, ls="--")
-    ax.plot(*o, marker="*", ms=16, color=C_ZONE, mec="k", ls="none", zorder=5, label=mt(pick(lang, f"chosen centre O: r_0 = {f(z.r0_m * k, decimals=2)} mm", f"принятый центр O: r_0 = {f(z.r0_m * k, decimals=2)} мм")))
+    ax.plot(*o, marker="*", ms=16, color=C_ZONE, mec="k", ls="none", zorder=5, label=mt(tr(lang, "chosen centre O: r_0 = {v} mm").format(v=f(z.r0_m * k, decimals=2))))
     book_nu = f(max(z.book_nu_rise_max_deg, z.book_nu_return_max_deg if z.closure == "form" else 0), decimals=1)
-    ax.plot(*bv, marker="X", ms=10, color=C_BOOK, mec="k", ls="none", label=mt(pick(lang, f"book's vertex: r_0 = {f(z.book_r0_m * k, decimals=2)} mm, ν ≤ {book_nu}°", f"вершина по пособию: r_0 = {f(z.book_r0_m * k, decimals=2)} мм, ν ≤ {book_nu}°")))
+    ax.plot(*bv, marker="X", ms=10, color=C_BOOK, mec="k", ls="none", label=mt(tr(lang, "book's vertex: r_0 = {v} mm, ν ≤ {book_nu}°").format(v=f(z.book_r0_m * k, decimals=2), book_nu=book_nu)))
     ax.plot(0, 0, "o", color="k", ms=5)
     ax.annotate("B₀", (0, 0), textcoords="offset points", xytext=(6, 4), fontsize=11)
     ax.annotate("O", o, textcoords="offset points", xytext=(8, -12), fontsize=11)
@@ -178,19 +177,19 @@ def _zone_figure(r: CamResult, lang: str):
         c = np.array(z.pivot) * k
         ax.plot(*c, "s", color="k", ms=6)
         ax.annotate("C", c, textcoords="offset points", xytext=(6, 6), fontsize=11)
-        ax.plot([o[0], c[0]], [o[1], c[1]], color="tab:brown", lw=1.2, label=mt(pick(lang, f"l_OC = {f(z.l_oc_m * k, decimals=2)} mm", f"l_OC = {f(z.l_oc_m * k, decimals=2)} мм")))
-        ax.plot([c[0], 0], [c[1], 0], color="k", lw=2.0, alpha=0.6, label=mt(pick(lang, f"rocker CB₀, l_BC = {f(v.l_bc_m * k)} mm", f"коромысло CB₀, l_BC = {f(v.l_bc_m * k)} мм")))
+        ax.plot([o[0], c[0]], [o[1], c[1]], color="tab:brown", lw=1.2, label=mt(tr(lang, "l_OC = {v} mm").format(v=f(z.l_oc_m * k, decimals=2))))
+        ax.plot([c[0], 0], [c[1], 0], color="k", lw=2.0, alpha=0.6, label=mt(tr(lang, "rocker CB₀, l_BC = {v} mm").format(v=f(v.l_bc_m * k))))
     else:
         ax.axvline(0, color="k", lw=0.8, ls=":")
-        ax.plot([o[0], 0], [o[1], o[1]], color="tab:brown", lw=1.4, label=pick(lang, f"offset e = {_signed(f, z.e_m * k)} mm", f"эксцентриситет e = {_signed(f, z.e_m * k)} мм"))
+        ax.plot([o[0], 0], [o[1], o[1]], color="tab:brown", lw=1.4, label=tr(lang, "offset e = {f} mm").format(f=_signed(f, z.e_m * k)))
     ax.set_xlim(*xlim)
     ax.set_ylim(*ylim)
     ax.set_aspect("equal", adjustable="box")
     ax.grid(alpha=0.3)
-    ax.set_xlabel(pick(lang, "x, mm (B₀ at the origin)", "x, мм (начало в B₀)"))
-    ax.set_ylabel(pick(lang, "y, mm (rise direction at B₀ = +y)", "y, мм (+y — направление удаления в B₀)"))
-    rot = pick(lang, "cam turns counter-clockwise", "кулачок вращается против часовой стрелки") if v.ccw else pick(lang, "cam turns clockwise", "кулачок вращается по часовой стрелке")
-    suptitle(fig, mt(pick(lang, f"Variant {v.number}: zone of the cam centre, ν_max = {f(v.nu_max_deg)}°\n({rot})", f"Вариант {v.number}: зона положения центра кулачка, ν_max = {f(v.nu_max_deg)}°\n({rot})")))
+    ax.set_xlabel(tr(lang, "x, mm (B₀ at the origin)"))
+    ax.set_ylabel(tr(lang, "y, mm (rise direction at B₀ = +y)"))
+    rot = tr(lang, "cam turns counter-clockwise") if v.ccw else tr(lang, "cam turns clockwise")
+    suptitle(fig, mt(tr(lang, "Variant {number}: zone of the cam centre, ν_max = {nu_max_deg}°\n({rot})").format(number=v.number, nu_max_deg=f(v.nu_max_deg), rot=rot)))
     _square_with_legend(fig, ax)
     return fig
 
@@ -208,12 +207,12 @@ def _profile_figure(r: CamResult, lang: str):
     th = np.linspace(0, 2 * math.pi, 361)
     r0 = z.r0_m * k
     rp = p.roller_m * k
-    ax.plot(r0 * np.cos(th), r0 * np.sin(th), color="0.4", lw=0.8, ls="--", label=mt(pick(lang, f"base circle r_0 = {f(r0, decimals=2)} mm", f"окружность r_0 = {f(r0, decimals=2)} мм")))
-    ax.plot(P[:, 0], P[:, 1], color=C_RISE, lw=1.2, ls="-.", label=pick(lang, "pitch curve T", "теоретический профиль T"))
-    ax.plot(p.inner[:, 0] * k, p.inner[:, 1] * k, color="k", lw=1.8, label=mt(pick(lang, f"working profile D1 (roller r_р = {f(rp, decimals=2)} mm)", f"действительный профиль D1 (ролик r_р = {f(rp, decimals=2)} мм)")))
+    ax.plot(r0 * np.cos(th), r0 * np.sin(th), color="0.4", lw=0.8, ls="--", label=mt(tr(lang, "base circle r_0 = {r0} mm").format(r0=f(r0, decimals=2))))
+    ax.plot(P[:, 0], P[:, 1], color=C_RISE, lw=1.2, ls="-.", label=tr(lang, "pitch curve T"))
+    ax.plot(p.inner[:, 0] * k, p.inner[:, 1] * k, color="k", lw=1.8, label=mt(tr(lang, "working profile D1 (roller r_р = {rp} mm)").format(rp=f(rp, decimals=2))))
     if p.outer is not None:
         ax.plot(p.outer[:, 0] * k, p.outer[:, 1] * k, color="k", lw=1.8, ls="-", alpha=0.7)
-        ax.plot([], [], color="k", lw=1.8, alpha=0.7, label=pick(lang, "groove side D2", "вторая сторона паза D2"))
+        ax.plot([], [], color="k", lw=1.8, alpha=0.7, label=tr(lang, "groove side D2"))
     # inverted follower positions and rollers at the table positions
     n = len(p.phi) - 1
     idxs = [int(round(math.radians(row.phi_deg) / (2 * math.pi) * n)) % n for row in r.motion.table]
@@ -229,15 +228,15 @@ def _profile_figure(r: CamResult, lang: str):
     ax.add_collection(_segments(np.stack([near, far], axis=1), color="tab:brown", lw=1.0, alpha=0.8), autolim=False)
     if p.pivot_path is not None:
         ax.plot(near[:, 0], near[:, 1], "s", color="tab:brown", ms=3)
-    ax.plot([], [], color="tab:orange", lw=0.9, label=pick(lang, "roller at table positions", "ролик в положениях таблицы"))
-    ax.plot([], [], color="tab:brown", lw=1.0, label=pick(lang, "follower in inverted motion", "толкатель в обращённом движении"))
+    ax.plot([], [], color="tab:orange", lw=0.9, label=tr(lang, "roller at table positions"))
+    ax.plot([], [], color="tab:brown", lw=1.0, label=tr(lang, "follower in inverted motion"))
     if p.pivot_path is not None:
         pp = p.pivot_path * k
-        ax.plot(pp[:, 0], pp[:, 1], color="tab:brown", lw=0.6, ls=":", label=mt(pick(lang, f"pivot circle l_OC = {f(z.l_oc_m * k, decimals=2)} mm", f"окружность центров качания l_OC = {f(z.l_oc_m * k, decimals=2)} мм")))
+        ax.plot(pp[:, 0], pp[:, 1], color="tab:brown", lw=0.6, ls=":", label=mt(tr(lang, "pivot circle l_OC = {v} mm").format(v=f(z.l_oc_m * k, decimals=2))))
     else:
         e = abs(z.e_m) * k
         if e > 1e-6:
-            ax.plot(e * np.cos(th), e * np.sin(th), color="tab:brown", lw=0.6, ls=":", label=pick(lang, f"offset circle |e| = {f(e, decimals=2)} mm", f"окружность эксцентриситета |e| = {f(e, decimals=2)} мм"))
+            ax.plot(e * np.cos(th), e * np.sin(th), color="tab:brown", lw=0.6, ls=":", label=tr(lang, "offset circle |e| = {e} mm").format(e=f(e, decimals=2)))
         # the follower axis in the drawn position (start of rise)
         ax.plot([z.e_m * k, z.e_m * k], [P[0, 1] - 0.2 * r0, P[0, 1] + stem], color="tab:brown", lw=1.6)
     ax.plot([0], [0], "+", color="k", ms=12, mew=1.5)
@@ -264,12 +263,12 @@ def _profile_figure(r: CamResult, lang: str):
         ax.set_ylim(-max(lim, m), max(top, m))
     ax.set_aspect("equal", adjustable="box")
     ax.grid(alpha=0.25)
-    ax.set_xlabel(pick(lang, "x, mm (cam frame, centre O at the origin)", "x, мм (система кулачка, центр O в начале)"))
-    ax.set_ylabel("y, " + pick(lang, "mm", "мм"))
-    mm = pick(lang, "mm", "мм")
+    ax.set_xlabel(tr(lang, "x, mm (cam frame, centre O at the origin)"))
+    ax.set_ylabel("y, " + tr(lang, "mm"))
+    mm = tr(lang, "mm")
     dims = f"e = {_signed(f, z.e_m * k)} {mm}" if not v.is_rocker else f"l_OC = {f(z.l_oc_m * k, decimals=2)} {mm}, l_BC = {f(v.l_bc_m * k)} {mm}"
-    uc = pick(lang, " — UNDERCUT", " — ПОДРЕЗ") if p.undercut else ""
-    suptitle(fig, mt(pick(lang, f"Variant {v.number}: cam profile{uc}\nr_0 = {f(r0, decimals=2)} mm, {dims}", f"Вариант {v.number}: профиль кулачка{uc}\nr_0 = {f(r0, decimals=2)} мм, {dims}")))
+    uc = tr(lang, " — UNDERCUT") if p.undercut else ""
+    suptitle(fig, mt(tr(lang, "Variant {number}: cam profile{uc}\nr_0 = {r0} mm, {dims}").format(number=v.number, uc=uc, r0=f(r0, decimals=2), dims=dims)))
     _square_with_legend(fig, ax)
     return fig
 
@@ -287,21 +286,21 @@ def _pressure_figure(r: CamResult, lang: str):
     rise = np.where(ph == 0, p.nu_deg, np.nan)
     ret = np.where(ph == 2, p.nu_deg, np.nan)
     dwell = np.where((ph == 1) | (ph == 3), p.nu_deg, np.nan)
-    ax.plot(deg, rise, color=C_RISE, lw=1.8, label=pick(lang, f"rise, max {f(z.nu_rise_max_deg, decimals=2)}°", f"удаление, max {f(z.nu_rise_max_deg, decimals=2)}°"))
-    lab = pick(lang, f"return, max {f(z.nu_return_max_deg, decimals=2)}°", f"возвращение, max {f(z.nu_return_max_deg, decimals=2)}°")
+    ax.plot(deg, rise, color=C_RISE, lw=1.8, label=tr(lang, "rise, max {nu_rise_max_deg}°").format(nu_rise_max_deg=f(z.nu_rise_max_deg, decimals=2)))
+    lab = tr(lang, "return, max {nu_return_max_deg}°").format(nu_return_max_deg=f(z.nu_return_max_deg, decimals=2))
     if z.closure == "force":
-        lab += pick(lang, " (spring: not limited)", " (пружина: не ограничивается)")
+        lab += tr(lang, " (spring: not limited)")
     ax.plot(deg, ret, color=C_RET, lw=1.8, ls="-" if z.closure == "form" else "--", label=lab)
-    ax.plot(deg, dwell, color=C_DWELL, lw=1.0, ls=":", label=pick(lang, "dwells (no motion)", "выстои (нет движения)"))
+    ax.plot(deg, dwell, color=C_DWELL, lw=1.0, ls=":", label=tr(lang, "dwells (no motion)"))
     ax.axhline(v.nu_max_deg, color="k", lw=1.2, ls="-.", label=mt(f"ν_max = {f(v.nu_max_deg)}°"))
     ax.set_xlim(0, 360)
     ax.set_xticks(np.arange(0, 361, 30))
     ax.set_ylim(0, max(90.0 if z.closure == "force" else v.nu_max_deg * 1.35, float(np.nanmax(p.nu_deg)) * 1.08))
-    ax.set_xlabel(pick(lang, "cam angle φ, °", "угол поворота кулачка φ, °"))
-    ax.set_ylabel(pick(lang, "pressure angle ν, °", "угол давления ν, °"))
+    ax.set_xlabel(tr(lang, "cam angle φ, °"))
+    ax.set_ylabel(tr(lang, "pressure angle ν, °"))
     ax.grid(alpha=0.3)
     ax.legend(loc="upper right", fontsize=8, framealpha=0.9)
-    suptitle(fig, pick(lang, f"Variant {v.number}: pressure angle over the cam turn", f"Вариант {v.number}: угол давления за оборот кулачка"))
+    suptitle(fig, tr(lang, "Variant {number}: pressure angle over the cam turn").format(number=v.number))
     return fig
 
 
@@ -375,18 +374,16 @@ def _scaled_profile_figure(r: CamResult, lang: str):
     ax.plot([bx, bx + CHECK_BAR_MM * f], [by, by], color="k", lw=1.0, solid_capstyle="butt")
     for i in range(0, int(CHECK_BAR_MM) + 1, 10):
         ax.plot([bx + i * f, bx + i * f], [by, by + (2.0 if i % 50 else 3.0) * f], color="k", lw=0.5)
-    mm = pick(lang, "mm", "мм")
+    mm = tr(lang, "mm")
     ax.text(bx + CHECK_BAR_MM * f / 2, by - 1.5 * f, f"{CHECK_BAR_MM:g} {mm}", fontsize=6, ha="center", va="top")
-    ax.text(bx, by - 6.0 * f, pick(lang, "print at 100 % (no fit to page): the bar must measure 50 mm",
-                                   "печатать в масштабе 100 % (без подгонки): отрезок должен быть 50 мм"), fontsize=5, ha="left", va="top")
-    m_sign = pick(lang, "M", "М")
+    ax.text(bx, by - 6.0 * f, tr(lang, "print at 100 % (no fit to page): the bar must measure 50 mm"), fontsize=5, ha="left", va="top")
+    m_sign = tr(lang, "M")
     ax.text(bx + (CHECK_BAR_MM + 6.0) * f, by, f"{m_sign} {d.scale}", fontsize=12, weight="bold", ha="left", va="bottom")
-    ax.text(bx + (CHECK_BAR_MM + 6.0) * f, by - 1.5 * f, mt(f"k_Sk = {fm(d.k_sk)} ") + pick(lang, "m/mm", "м/мм"), fontsize=6, ha="left", va="top")
+    ax.text(bx + (CHECK_BAR_MM + 6.0) * f, by - 1.5 * f, mt(f"k_Sk = {fm(d.k_sk)} ") + tr(lang, "m/mm"), fontsize=6, ha="left", va="top")
     dims = f"r_0 = {fm(r0, decimals=2)}, r_р = {fm(rp, decimals=2)}, " + (f"l_OC = {fm(z.l_oc_m * k, decimals=2)}, l_BC = {fm(v.l_bc_m * k)}" if v.is_rocker else f"e = {_signed(fm, z.e_m * k)}") + f" {mm}"
-    dims += "\n" + (pick(lang, "cam turns counter-clockwise", "кулачок вращается против часовой стрелки") if v.ccw else pick(lang, "cam turns clockwise", "кулачок вращается по часовой стрелке"))
+    dims += "\n" + (tr(lang, "cam turns counter-clockwise") if v.ccw else tr(lang, "cam turns clockwise"))
     fig.suptitle(
-        mt(pick(lang, f"Variant {v.number}: cam profile at {m_sign} {d.scale} (Table 1.1)\n{dims}",
-                f"Вариант {v.number}: профиль кулачка, {m_sign} {d.scale} (табл. 1.1)\n{dims}")),
+        mt(tr(lang, "Variant {number}: cam profile at {m_sign} {scale} (Table 1.1)\n{dims}").format(number=v.number, m_sign=m_sign, scale=d.scale, dims=dims)),
         y=1.0 - 1.5 / h_mm, va="top", fontsize=6.5,
     )
     ax.set_xlim(xa, xb)

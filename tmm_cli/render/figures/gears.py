@@ -11,8 +11,8 @@ import math
 
 import numpy as np
 
-from ...i18n.lang import pick
-from ...i18n.numbers import num, plural
+from ...i18n import ntr, tr, trc
+from ...i18n.numbers import num
 from .kit import (
     bottom_legend,
     decimal_commas,
@@ -217,8 +217,7 @@ def _rotation_arrow(ax, centre, radius, sense, mid_deg, color, label):
 
 
 def _sense_text(sense, lang):
-    return pick(lang, "counter-clockwise" if sense == "ccw" else "clockwise",
-                "против часовой" if sense == "ccw" else "по часовой")
+    return (trc(lang, "figure, short", "counter-clockwise") if sense == "ccw" else trc(lang, "figure, short", "clockwise"))
 
 
 def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
@@ -326,26 +325,23 @@ def _mesh_figure(result, lang):
     # senses of rotation: motor (gear 1) and cam (gear 2), opposite in an external mesh
     _rotation_arrow(ax0, (0.0, 0.0), 0.45 * g.d1_mm / 2, dirs.motor, 235.0, C_SUN, "ω1")
     _rotation_arrow(ax0, (0.0, g.a_w_mm or g.a_mm), 0.45 * g.d2_mm / 2, dirs.cam, 55.0, C_PLANET, "ω2")
-    ax0.set_title(pick(lang, f"Spur pair z1 = {g.z1}, z2 = {g.z2}, m = {f(g.m_mm)} mm, a = {f(g.a_mm)} mm{_shift_title(g, lang)}\n"
-                             f"ω1: motor ({_sense_text(dirs.motor, lang)}), ω2: cam ({_sense_text(dirs.cam, lang)})",
-                       f"Зубчатая передача z1 = {g.z1}, z2 = {g.z2}, m = {f(g.m_mm)} мм, a = {f(g.a_mm)} мм{_shift_title(g, lang)}\n"
-                       f"ω1: двигатель ({_sense_text(dirs.motor, lang)}), ω2: кулачок ({_sense_text(dirs.cam, lang)})"),
+    ax0.set_title(tr(lang, "Spur pair z1 = {z1}, z2 = {z2}, m = {m_mm} mm, a = {a_mm} mm{g}\nω1: motor ({motor}), ω2: cam ({cam})").format(z1=g.z1, z2=g.z2, m_mm=f(g.m_mm), a_mm=f(g.a_mm), g=_shift_title(g, lang), motor=_sense_text(dirs.motor, lang), cam=_sense_text(dirs.cam, lang)),
                   fontsize=10.5, y=1.0)
     zone = (f"ε_α = P1P2/p_b = {f(g.g_alpha_mm, decimals=1)}/{f(g.pb_mm, decimals=2)} = {f(g.eps_alpha, decimals=3)};  "
             f"φ_α1 = {f(g.phi_alpha1_deg, decimals=2)}°, φ_α2 = {f(g.phi_alpha2_deg, decimals=2)}°")
-    ax1.set_title(mt(pick(lang, "Mesh zone: ", "Зона зацепления: ") + zone), fontsize=11, y=1.0)
+    ax1.set_title(mt(tr(lang, "Mesh zone: ") + zone), fontsize=11, y=1.0)
     for ax in (ax0, ax1):
-        ax.set_xlabel(pick(lang, "mm", "мм"))
+        ax.set_xlabel(tr(lang, "mm"))
         ax.grid(alpha=0.15)
     handles = [
-        Line2D([], [], color="0.3", ls="-", label=mt(pick(lang, "pitch circle d", "делительная d"))),
-        Line2D([], [], color="0.3", ls="--", label=mt(pick(lang, "base circle d_b", "основная d_b"))),
-        Line2D([], [], color="0.3", ls=":", label=mt(pick(lang, "tip circle d_a", "вершин d_a"))),
-        Line2D([], [], color="0.3", ls="-.", label=mt(pick(lang, "root circle d_f", "впадин d_f"))),
-        Line2D([], [], color="k", lw=0.8, label=pick(lang, "line of action N1N2", "линия зацепления N1N2")),
-        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=pick(lang, "double-pair zones P1U2, U1P2", "двухпарное зацепление P1U2, U1P2")),
-        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=pick(lang, "single-pair zone U2U1", "однопарное зацепление U2U1")),
-        Line2D([], [], color=C_SUN, lw=2.6, label=pick(lang, "active profiles", "активные участки профилей")),
+        Line2D([], [], color="0.3", ls="-", label=mt(tr(lang, "pitch circle d"))),
+        Line2D([], [], color="0.3", ls="--", label=mt(tr(lang, "base circle d_b"))),
+        Line2D([], [], color="0.3", ls=":", label=mt(tr(lang, "tip circle d_a"))),
+        Line2D([], [], color="0.3", ls="-.", label=mt(tr(lang, "root circle d_f"))),
+        Line2D([], [], color="k", lw=0.8, label=tr(lang, "line of action N1N2")),
+        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=tr(lang, "double-pair zones P1U2, U1P2")),
+        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=trc(lang, "figure, short", "single-pair zone U2U1")),
+        Line2D([], [], color=C_SUN, lw=2.6, label=tr(lang, "active profiles")),
     ]
     bottom_legend(fig, handles, [h.get_label() for h in handles], ncol=4, fontsize=9)
     return fig
@@ -412,18 +408,18 @@ def _scheme(ax, result, lang):
         ax.annotate(text, (lx, ly), xytext=(-6, 0), textcoords="offset points", color=col, fontsize=11,
                     fontweight="bold", va="center", ha="right")
     ax.plot([shaft_in0 - 0.05 * rmax, prev_out + 0.3 * rmax], [0, 0], color="0.5", lw=0.7, ls=(0, (10, 3, 2, 3)))
-    ax.annotate(pick(lang, "from the motor", "от двигателя"), (shaft_in0, 0), xytext=(0, 8), textcoords="offset points",
+    ax.annotate(tr(lang, "from the motor"), (shaft_in0, 0), xytext=(0, 8), textcoords="offset points",
                 fontsize=9)
-    ax.annotate(pick(lang, "to the crank", "к кривошипу"), (prev_out + 0.25 * rmax, 0), xytext=(-30, 8),
+    ax.annotate(tr(lang, "to the crank"), (prev_out + 0.25 * rmax, 0), xytext=(-30, 8),
                 textcoords="offset points", fontsize=9)
     ax.set_xlim(shaft_in0 - 0.1 * rmax, prev_out + 0.35 * rmax)
     ax.set_ylim(-1.3 * rmax, 1.3 * rmax)
-    ax.set_ylabel(pick(lang, "radius r = z/2, modules", "радиус r = z/2, в модулях"))
+    ax.set_ylabel(tr(lang, "radius r = z/2, modules"))
     hide_axis(ax.xaxis)
     teeth = "  +  ".join(
         ", ".join(f"{n} = {v}" for n, v in zip(("z_k", "z_c", "z_c′", "z_n") if s.z_planet2 is not None else ("z_k", "z_c", "z_n"), s.teeth))
         + f", k = {s.planets}" for s in d.stages)
-    ax.set_title(mt(pick(lang, f"Scheme {d.scheme}: {teeth}", f"Схема {d.scheme}: {teeth}")), fontsize=10, y=1.0)
+    ax.set_title(mt(tr(lang, "Scheme {scheme}: {teeth}").format(scheme=d.scheme, teeth=teeth)), fontsize=10, y=1.0)
 
 
 def _velocity(ax, result, lang, ylim):
@@ -496,11 +492,10 @@ def _velocity(ax, result, lang, ylim):
     vmin = min(min(s.v_a / (s.r_a - s.r_b) * (max(s.r_b, s.r_a + 2 * s.r_planet) - s.r_b) for s in v.stages), 0)
     ax.plot([min(vmin * 1.2, -0.1 * vmax), vmax * 1.35], [0, 0], alpha=0)  # x data extent
     ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel(pick(lang, "linear velocity (drawing units)", "линейная скорость (в масштабе)"))
+    ax.set_xlabel(tr(lang, "linear velocity (drawing units)"))
     ax.set_xticks([])
     ratios = " · ".join(num(s.ratio, lang, sig=4) for s in v.stages)
-    ax.set_title(mt(pick(lang, f"Linear velocities: i = tg φ_k/tg φ_H = {ratios}; below: angular velocities",
-                         f"План линейных скоростей: i = tg φ_k/tg φ_H = {ratios}; ниже — план угловых скоростей")),
+    ax.set_title(mt(tr(lang, "Linear velocities: i = tg φ_k/tg φ_H = {ratios}; below: angular velocities").format(ratios=ratios)),
                  fontsize=10, y=1.0)
     ax.tick_params(axis="y", labelleft=False)
 
@@ -542,7 +537,7 @@ def _angular(ax, result, lang, y0: float):
     f = fmt(lang)
     ratio = f"i = ok/oh = {f(v.ok, decimals=1)}/{f(v.oh, decimals=2)} = {f(v.ratio, sig=4)}"
     # centred under the picture (from the pole rightwards the Russian caption reached the figure's edge)
-    ax.annotate(pick(lang, f"angular velocities: {ratio}", f"план угловых скоростей: {ratio}"),
+    ax.annotate(tr(lang, "angular velocities: {ratio}").format(ratio=ratio),
                 (0.5, y0 - h), xycoords=("axes fraction", "data"), xytext=(0, -18), textcoords="offset points",
                 fontsize=9.5, ha="center")
 
@@ -557,22 +552,19 @@ def _checks_text(fig, box, result, lang):
     v = ch.velocity
     d = result.planetary
     f = fmt(lang)
-    lines = [pick(lang, "Ratio check", "Проверка передаточного отношения"), ""]
+    lines = [tr(lang, "Ratio check"), ""]
     per = " · ".join(f(x, sig=4) for x in ch.ratio_formula_21)
     lines.append("(2.1): i = 1 + z_c·z_n/(z_k·z_c′)"
                  + (f" = {per}" if len(ch.ratio_formula_21) > 1 else "") + f" = {f(ch.ratio_formula_21_total, decimals=4)}")
     for j, s in enumerate(v.stages, 1):
-        pre = pick(lang, f"stage {j}: ", f"ступень {j}: ") if len(v.stages) > 1 else ""
+        pre = tr(lang, "stage {j}: ").format(j=j) if len(v.stages) > 1 else ""
         lines.append(f"(2.3): {pre}tg φ_k/tg φ_H = tg {f(s.phi_k_deg, decimals=2)}°/tg {f(s.phi_h_deg, decimals=2)}° = "
                      f"{f(s.ratio, decimals=4)}")
     lines.append(f"(2.3): ok/oh = {f(v.ok, decimals=2)}/{f(v.oh, decimals=3)} = {f(v.ratio, decimals=4)}")
     err = percent(d.ratio_error_pct, lang)
-    lines.append(pick(lang, f"required i_пл = {f(result.i_planetary, decimals=4)}, error {err} "
-                            f"(±{f(result.tolerance_pct)} %)",
-                      f"требуемое i_пл = {f(result.i_planetary, decimals=4)}, ошибка {err} "
-                      f"(±{f(result.tolerance_pct)} %)"))
-    lines.append(pick(lang, f"size max(z_k + 2z_c, z_n) = {d.size} modules; planets k = {d.planets}",
-                      f"габарит max(z_k + 2z_c, z_n) = {plural(d.size, 'ru', MODULES)}; сателлитов k = {d.planets}"))
+    lines.append(tr(lang, "required i_пл = {i_planetary}, error {err} (±{tolerance_pct} %)").format(i_planetary=f(result.i_planetary, decimals=4), err=err, tolerance_pct=f(result.tolerance_pct)))
+    lines.append(ntr(lang, "size max(z_k + 2z_c, z_n) = {size} module; planets k = {planets}",
+                     "size max(z_k + 2z_c, z_n) = {size} modules; planets k = {planets}", d.size).format(size=d.size, planets=d.planets))
     # one text per line: mathtext sets a line, not a paragraph
     for i, line in enumerate(lines):
         if line:
@@ -599,10 +591,7 @@ def _planetary_figure(result, lang):
     _checks_text(fig, gs[1, :].get_position(fig), result, lang)
     f = fmt(lang)
     err = percent(result.planetary.ratio_error_pct, lang)
-    suptitle(fig, mt(pick(lang, f"Planetary reducer: i_пл = n_д/n_кр = {result.motor_rpm}/{f(result.crank_rpm)} = "
-                                f"{f(result.i_planetary, sig=4)}, realised {f(result.planetary.ratio, sig=4)} ({err})",
-                          f"Планетарный редуктор: i_пл = n_д/n_кр = {result.motor_rpm}/{f(result.crank_rpm)} = "
-                          f"{f(result.i_planetary, sig=4)}, получено {f(result.planetary.ratio, sig=4)} ({err})")))
+    suptitle(fig, mt(tr(lang, "Planetary reducer: i_пл = n_д/n_кр = {motor_rpm}/{crank_rpm} = {i_planetary}, realised {ratio} ({err})").format(motor_rpm=result.motor_rpm, crank_rpm=f(result.crank_rpm), i_planetary=f(result.i_planetary, sig=4), ratio=f(result.planetary.ratio, sig=4), err=err)))
     return fig
 
 
@@ -668,19 +657,15 @@ def _assembly_figure(result, lang):
     axes = [fig.add_subplot(1, n, j + 1) for j in range(n)]
     for j, (ax, st, ch) in enumerate(zip(axes, d.stages, result.checks.stages)):
         lab = "/".join(map(str, st.teeth))
-        title = (pick(lang, f"Stage {j + 1}: ", f"Ступень {j + 1}: ") if n > 1 else "") + \
-            pick(lang, f"{lab}, k = {st.planets} planets", f"{lab}, k = {plural(st.planets, 'ru', SATELLITES)}")
+        title = (tr(lang, "Stage {v}: ").format(v=j + 1) if n > 1 else "") + \
+            ntr(lang, "{teeth}, k = {planets} planet", "{teeth}, k = {planets} planets", st.planets).format(teeth=lab, planets=st.planets)
         _assembly_stage(ax, st, ch, lang, title)
-    order = pick(lang, "Assembly order: fit planet 1; turn the carrier by 2β = 360°/k (the sun turns by a whole number "
-                       "of teeth, condition (2.4)); fit the next planet in the same place; repeat.",
-                 "Порядок сборки: установить сателлит 1; повернуть водило на 2β = 360°/k (центральное колесо "
-                 "повернётся на целое число зубьев, условие (2.4)); установить следующий сателлит на то же место; "
-                 "повторить.")
+    order = tr(lang, "Assembly order: fit planet 1; turn the carrier by 2β = 360°/k (the sun turns by a whole number of teeth, condition (2.4)); fit the next planet in the same place; repeat.")
     import textwrap
 
     width = int(11 * (7.2 * n + 1.5))  # characters per line that fit the figure at 10.5 pt
     wrapped = textwrap.wrap(order, width)
-    suptitle(fig, pick(lang, "Planets placed at 2β = 360°/k", "Расстановка сателлитов через 2β = 360°/k") + "\n"
+    suptitle(fig, tr(lang, "Planets placed at 2β = 360°/k") + "\n"
              + "\n".join(wrapped), fontsize=10.5)
     W, H = fig.get_size_inches()
     double = any(st.z_planet2 is not None for st in d.stages)
@@ -690,18 +675,11 @@ def _assembly_figure(result, lang):
     if double:
         from matplotlib.lines import Line2D
 
-        handles = [Line2D([], [], color=C_PLANET, label=pick(lang, "planet c (row 1, meshes the sun)",
-                                                                       "сателлит c (1-й ряд, с колесом k)")),
-                            Line2D([], [], color="#8c564b", ls="--", label=pick(lang, "planet c′ (row 2, meshes the ring)",
-                                                                                "сателлит c′ (2-й ряд, с колесом n)")),
-                            Line2D([], [], color="0.4", ls=":", label=pick(lang, "tip circle of the larger planet",
-                                                                            "окружность вершин большего сателлита"))]
+        handles = [Line2D([], [], color=C_PLANET, label=tr(lang, "planet c (row 1, meshes the sun)")),
+                            Line2D([], [], color="#8c564b", ls="--", label=tr(lang, "planet c′ (row 2, meshes the ring)")),
+                            Line2D([], [], color="0.4", ls=":", label=tr(lang, "tip circle of the larger planet"))]
         bottom_legend(fig, handles, [h.get_label() for h in handles], ncol=3, fontsize=9)
     return fig
-
-
-SATELLITES = {"one": "сателлит", "few": "сателлита", "many": "сателлитов", "other": "сателлита"}
-MODULES = {"one": "модуль", "few": "модуля", "many": "модулей", "other": "модуля"}
 
 
 def percent(x: float, lang: str) -> str:

@@ -16,7 +16,7 @@ import re
 
 import numpy as np
 
-from ...i18n.lang import pick
+from ...i18n import tr
 from ...i18n.numbers import num
 from ...linkage.analysis import LinkageResult, State
 
@@ -172,10 +172,10 @@ def _mechanism_figure(Figure, r: LinkageResult, lang: str):
     for rad, mid in ((1.62 * r1, mid_w), (1.58 * r1, mid_r)):
         ax.plot(rad * math.sin(mid), rad * math.cos(mid), alpha=0.0)  # keep the labels inside the axes
     ax.text(1.45 * r1 * math.sin(mid_w), 1.45 * r1 * math.cos(mid_w),
-            pick(lang, "working stroke", "рабочий ход") + "\n" + pick(lang, r"$\varphi_w$", r"$\varphi_{р.х}$") + f" = {num(math.degrees(r.working_rad), lang, decimals=1)}°",
+            tr(lang, "working stroke") + "\n" + tr(lang, "$\\varphi_w$") + f" = {num(math.degrees(r.working_rad), lang, decimals=1)}°",
             color=C_WORK, ha="center", va="center", fontsize=9)
     ax.text(1.40 * r1 * math.sin(mid_r), 1.40 * r1 * math.cos(mid_r),
-            pick(lang, "return stroke", "холостой ход") + "\n" + pick(lang, r"$\varphi_r$", r"$\varphi_{х.х}$") + f" = {num(math.degrees(r.return_rad), lang, decimals=1)}°",
+            tr(lang, "return stroke") + "\n" + tr(lang, "$\\varphi_r$") + f" = {num(math.degrees(r.return_rad), lang, decimals=1)}°",
             color=C_RET, ha="center", va="center", fontsize=9)
     # direction of rotation: φ21 grows (clockwise on the page)
     from matplotlib.patches import FancyArrowPatch
@@ -190,15 +190,14 @@ def _mechanism_figure(Figure, r: LinkageResult, lang: str):
     ax.annotate("", (xmin, yd), (xmax, yd), arrowprops=dict(arrowstyle="<|-|>", lw=0.8, color="k", shrinkA=0, shrinkB=0))
     for x in (xmin, xmax):
         ax.plot([x, x], [y_guide, yd + side * 0.05 * r1], color="k", lw=0.5)
-    ax.text((xmin + xmax) / 2, yd + side * 0.04 * r1, f"$H$ = {num(r.stroke * 1000, lang, decimals=2)} " + pick(lang, "mm", "мм"),
+    ax.text((xmin + xmax) / 2, yd + side * 0.04 * r1, f"$H$ = {num(r.stroke * 1000, lang, decimals=2)} " + tr(lang, "mm"),
             ha="center", va="bottom" if side > 0 else "top", fontsize=10)
     ax.plot([xmin, xmax], [yd + side * 0.3 * r1] * 2, alpha=0.0)  # room for the text
-    regime = pick(lang, "Whitworth mechanism (the link turns fully)", "механизм Витворта (кулиса вращается)") \
-        if r.regime == "whitworth" else pick(lang, "crank-shaper (the link swings)", "кулисный механизм с качающейся кулисой")
-    ax.set_title(pick(lang, f"Mechanism in {n} positions: {regime}; K = {num(r.time_ratio, lang, decimals=4)}",
-                      f"План механизма в {n} положениях: {regime}; K = {num(r.time_ratio, lang, decimals=4)}"), fontsize=11)
-    ax.set_xlabel("x, " + pick(lang, "mm", "мм"))
-    ax.set_ylabel("y, " + pick(lang, "mm", "мм"))
+    regime = tr(lang, "Whitworth mechanism (the link turns fully)") \
+        if r.regime == "whitworth" else tr(lang, "crank-shaper (the link swings)")
+    ax.set_title(tr(lang, "Mechanism in {n} positions: {regime}; K = {time_ratio}").format(n=n, regime=regime, time_ratio=num(r.time_ratio, lang, decimals=4)), fontsize=11)
+    ax.set_xlabel("x, " + tr(lang, "mm"))
+    ax.set_ylabel("y, " + tr(lang, "mm"))
     ax.grid(alpha=0.2)
     ax.margins(0.06)
     box = ax.dataLim
@@ -215,9 +214,9 @@ def _diagrams_figure(Figure, r: LinkageResult, lang: str):
     n = len(r.positions)
     pos_x = [360.0 * k / n for k in range(n)]
     series = [
-        (c.x_c * 1000, r"$x_C$, " + pick(lang, "mm", "мм"), [s.x_c * 1000 for s in r.positions]),
-        (c.v_c, r"$v_C$, " + pick(lang, "m/s", "м/с"), [s.v_c for s in r.positions]),
-        (c.a_c, r"$a_C$, " + pick(lang, "m/s²", "м/с²"), [s.a_c for s in r.positions]),
+        (c.x_c * 1000, r"$x_C$, " + tr(lang, "mm"), [s.x_c * 1000 for s in r.positions]),
+        (c.v_c, r"$v_C$, " + tr(lang, "m/s"), [s.v_c for s in r.positions]),
+        (c.a_c, r"$a_C$, " + tr(lang, "m/s²"), [s.a_c for s in r.positions]),
     ]
     at_x = math.degrees((r.at.phi - r.dead[0]) % (2 * math.pi))
     for k, (ax, (y, label, pts)) in enumerate(zip(axes, series)):
@@ -234,19 +233,18 @@ def _diagrams_figure(Figure, r: LinkageResult, lang: str):
         if k == 0:
             for px, py, i in zip(pos_x, pts, range(n)):
                 ax.annotate(str(i), (px, py), xytext=(0, 6), textcoords="offset points", ha="center", fontsize=7)
-            ax.text(w / 2, 0.97, pick(lang, "working stroke", "рабочий ход"), transform=ax.get_xaxis_transform(),
+            ax.text(w / 2, 0.97, tr(lang, "working stroke"), transform=ax.get_xaxis_transform(),
                     ha="center", va="top", fontsize=8, color=C_WORK)
-            ax.text((w + 360) / 2, 0.97, pick(lang, "return stroke", "холостой ход"), transform=ax.get_xaxis_transform(),
+            ax.text((w + 360) / 2, 0.97, tr(lang, "return stroke"), transform=ax.get_xaxis_transform(),
                     ha="center", va="top", fontsize=8, color=C_RET)
             ax.text(at_x, 0.03, f" $\\varphi_{{21}}$ = {num(math.degrees(r.at.phi), lang, decimals=1)}°", transform=ax.get_xaxis_transform(),
                     fontsize=8, color=C_AT)
     axes[-1].set_xlim(0, 360)
     axes[-1].set_xticks(np.arange(0, 361, 30))
     start = num(math.degrees(r.dead[0]), lang, decimals=2)
-    axes[-1].set_xlabel(pick(lang, f"crank angle from position 0 ($\\varphi_{{21}}$ = {start}°), °", f"угол поворота кривошипа от положения 0 ($\\varphi_{{21}}$ = {start}°), °"))
+    axes[-1].set_xlabel(tr(lang, "crank angle from position 0 ($\\varphi_{{21}}$ = {start}°), °").format(start=start))
     rpm = num(r.rpm, lang, sig=4)
-    fig.suptitle(pick(lang, f"Ram C: position, velocity, acceleration (n21 = {rpm} rpm)",
-                      f"Кинематические диаграммы ползуна C (n21 = {rpm} об/мин)"), fontsize=11)
+    fig.suptitle(tr(lang, "Ram C: position, velocity, acceleration (n21 = {rpm} rpm)").format(rpm=rpm), fontsize=11)
     return fig
 
 
@@ -286,7 +284,7 @@ def _nice(x: float) -> float:
 
 def _plan_figure(Figure, r: LinkageResult, plan, lang: str):
     velocity = plan.kind == "velocity"
-    unit = pick(lang, "m/s", "м/с") if velocity else pick(lang, "m/s²", "м/с²")
+    unit = tr(lang, "m/s") if velocity else tr(lang, "m/s²")
     fig = Figure(figsize=(12, 7), layout="constrained")
     grid = fig.add_gridspec(2, 2, width_ratios=[1, 1.3], height_ratios=[1.1, 1])
     ax_m, ax_t, ax = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[1, 0]), fig.add_subplot(grid[:, 1])
@@ -297,9 +295,8 @@ def _plan_figure(Figure, r: LinkageResult, plan, lang: str):
     _arc(ax_m, g.r1 * 1000, 0.0, 2 * math.pi, color=GREY, lw=0.8, ls="--")
     _guide(ax_m, r, min(r.x_min * 1000, -g.r1 * 1000) - 20, max(r.x_max * 1000, g.r1 * 1000) + 20)
     _mechanism(ax_m, r, r.at, color="k", lw=1.6)
-    ax_m.set_title(pick(lang, f"Mechanism at $\\varphi_{{21}}$ = {num(math.degrees(r.at.phi), lang, decimals=2)}°",
-                        f"Положение механизма при $\\varphi_{{21}}$ = {num(math.degrees(r.at.phi), lang, decimals=2)}°"), fontsize=10)
-    ax_m.set_xlabel("x, " + pick(lang, "mm", "мм"))
+    ax_m.set_title(tr(lang, "Mechanism at $\\varphi_{{21}}$ = {phi}°").format(phi=num(math.degrees(r.at.phi), lang, decimals=2)), fontsize=10)
+    ax_m.set_xlabel("x, " + tr(lang, "mm"))
     ax_m.grid(alpha=0.2)
     ax_m.margins(0.08)
 
@@ -348,9 +345,9 @@ def _plan_figure(Figure, r: LinkageResult, plan, lang: str):
     ax_t.text(0.02, 0.98, "\n".join(lines), transform=ax_t.transAxes, ha="left", va="top", fontsize=10, linespacing=1.5)
     phi = num(math.degrees(r.at.phi), lang, decimals=2)
     if velocity:
-        title = pick(lang, f"Velocity plan (pole p), $\\varphi_{{21}}$ = {phi}°", f"План скоростей (полюс p), $\\varphi_{{21}}$ = {phi}°")
+        title = tr(lang, "Velocity plan (pole p), $\\varphi_{{21}}$ = {phi}°").format(phi=phi)
     else:
-        title = pick(lang, f"Acceleration plan (pole π), $\\varphi_{{21}}$ = {phi}°", f"План ускорений (полюс π), $\\varphi_{{21}}$ = {phi}°")
+        title = tr(lang, "Acceleration plan (pole π), $\\varphi_{{21}}$ = {phi}°").format(phi=phi)
     ax.set_title(title, fontsize=11)
     return fig
 

@@ -4,17 +4,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-FIGURE_TITLES = {
-    "gears_planetary": ("Planetary reducer: scheme and velocity pictures", "Планетарный редуктор: схема и планы скоростей"),
-    "gears_assembly": ("Planets placed at 2β = 360°/k", "Расстановка сателлитов"),
-    "gears_mesh": ("Spur pair and its mesh", "Простая передача и картина зацепления"),
-    "cam_motion": ("Follower motion diagrams", "Диаграммы движения толкателя"),
-    "cam_zone": ("Zone of the cam centre", "Зона положения центра кулачка"),
-    "cam_profile": ("Cam profile", "Профиль кулачка"),
-    "cam_pressure_angle": ("Pressure angle over the cam turn", "Угол давления за оборот кулачка"),
-    "cam_profile_scaled": ("Cam profile at its standard scale", "Профиль кулачка в стандартном масштабе"),
-}
-
 
 # Figures that depend only on the planetary reducer, i.e. on design_gears' inputs other than the
 # cam speed; a batch with one crank speed draws them once per worker process (see figure_cache).

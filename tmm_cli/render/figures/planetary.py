@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from ...i18n.lang import pick
+from ...i18n import tr
 from ...i18n.numbers import num
 
 C_SUN = "#1f77b4"
@@ -59,14 +59,13 @@ def _scheme(ax, d, lang):
                             (x4, 0.6 * r4, "4", C_WHEEL4), (xh, 0.5 * aw, "H", C_CARRIER)):
         ax.annotate(text, (x, y), xytext=(-7, 0), textcoords="offset points", color=col, fontsize=12,
                     fontweight="bold", ha="right", va="center")
-    ax.annotate(pick(lang, "in", "вход"), (-0.6 * gap, 0), xytext=(0, 6), textcoords="offset points", fontsize=9)
-    ax.annotate(pick(lang, "out", "выход"), (xh + 0.6 * gap, 0), xytext=(-20, 6), textcoords="offset points", fontsize=9)
+    ax.annotate(tr(lang, "in"), (-0.6 * gap, 0), xytext=(0, 6), textcoords="offset points", fontsize=9)
+    ax.annotate(tr(lang, "out"), (xh + 0.6 * gap, 0), xytext=(-20, 6), textcoords="offset points", fontsize=9)
     ax.set_aspect("equal")
     ax.set_xticks([])
-    ax.set_ylabel(pick(lang, "radius, mm (working circles)", "радиус, мм (начальные окружности)"))
+    ax.set_ylabel(tr(lang, "radius, mm (working circles)"))
     z = d.teeth
-    ax.set_title(pick(lang, f"Kinematic scheme: Z1 = {z[0]}, Z2 = Z3 = {z[1]}, Z4 = {z[3]}, k = {d.planets}",
-                      f"Кинематическая схема: Z1 = {z[0]}, Z2 = Z3 = {z[1]}, Z4 = {z[3]}, k = {d.planets}"), fontsize=10)
+    ax.set_title(tr(lang, "Kinematic scheme: Z1 = {z}, Z2 = Z3 = {z2}, Z4 = {z3}, k = {planets}").format(z=z[0], z2=z[1], z3=z[3], planets=d.planets), fontsize=10)
 
 
 def _front(ax, d, lang):
@@ -89,17 +88,14 @@ def _front(ax, d, lang):
         ax.plot(*c, "o", color="k", ms=3)
     ax.plot(0, 0, "k+", ms=8)
     nb = d.neighbours
-    mm = pick(lang, "mm", "мм")
+    mm = tr(lang, "mm")
     ax.set_aspect("equal")
     ax.set_xticks([])
     ax.set_yticks([])
     lim = aw + d.da_planet_mm / 2 + 5
     ax.set_xlim(-lim, lim)
     ax.set_ylim(-lim, lim)
-    ax.set_title(pick(lang, f"Front view, a_w = {num(d.a_w_mm, lang, decimals=3)} {mm}; neighbouring d_a = "
-                            f"{num(nb.value, lang, decimals=2)} < 2a_w·sin(π/k) = {num(nb.limit, lang, decimals=2)} {mm}",
-                      f"Вид по оси, a_w = {num(d.a_w_mm, lang, decimals=3)} {mm}; соседство d_a = "
-                      f"{num(nb.value, lang, decimals=2)} < 2a_w·sin(π/k) = {num(nb.limit, lang, decimals=2)} {mm}")
+    ax.set_title(tr(lang, "Front view, a_w = {a_w_mm} {mm}; neighbouring d_a = {value} < 2a_w·sin(π/k) = {limit} {mm}").format(a_w_mm=num(d.a_w_mm, lang, decimals=3), mm=mm, value=num(nb.value, lang, decimals=2), limit=num(nb.limit, lang, decimals=2))
                  + ("" if nb.ok else " ✗"), fontsize=10)
 
 
@@ -112,19 +108,17 @@ def _mechanism_figure(d, lang):
     _scheme(ax0, d, lang)
     _front(ax1, d, lang)
     a12, a34 = d.alpha_w_deg
-    fig.suptitle(pick(lang, f"Planetary mechanism AA̅ (Kavetsky, 2010): i = {d.i}, C = {d.c}; $\\alpha_{{w12}}$ = "
-                            f"{num(a12, lang, decimals=3)}°, $\\alpha_{{w34}}$ = {num(a34, lang, decimals=3)}°; x = "
-                            + ", ".join(num(v, lang, decimals=3, minus='−') for v in d.x),
-                      f"Планетарный механизм AA̅ (Кавецкий, 2010): i = {d.i}, C = {d.c}; $\\alpha_{{w12}}$ = "
-                      f"{num(a12, lang, decimals=3)}°, $\\alpha_{{w34}}$ = {num(a34, lang, decimals=3)}°; x = "
-                      + "; ".join(num(v, lang, decimals=3, minus='−') for v in d.x)), fontsize=11)
+    shifts = ("; " if lang == "ru" else ", ").join(num(v, lang, decimals=3, minus='−') for v in d.x)  # list sep.
+    fig.suptitle(tr(lang, "Planetary mechanism AA̅ (Kavetsky, 2010): i = {i}, C = {c}; $\\alpha_{{w12}}$ = {a12}°, "
+                          "$\\alpha_{{w34}}$ = {a34}°; x = {x}").format(
+        i=d.i, c=d.c, a12=num(a12, lang, decimals=3), a34=num(a34, lang, decimals=3), x=shifts), fontsize=11)
     handles = [
-        Line2D([], [], color=C_SUN, label=pick(lang, "sun 1: working circle $d_{w1}$", "колесо 1: начальная $d_{w1}$")),
-        Line2D([], [], color=C_PLANET, label=pick(lang, "planet: $d_{w2}$ (mesh 1-2)", "сателлит: $d_{w2}$ (пара 1–2)")),
-        Line2D([], [], color=C_PLANET, ls="--", label=pick(lang, "planet: $d_{w3}$ (mesh 3-4)", "сателлит: $d_{w3}$ (пара 3–4)")),
-        Line2D([], [], color=C_WHEEL4, ls="--", label=pick(lang, "wheel 4 (fixed): $d_{w4}$", "колесо 4 (неподвижное): $d_{w4}$")),
-        Line2D([], [], color="0.3", ls=":", label=pick(lang, "tip circles $d_a$", "окружности вершин $d_a$")),
-        Line2D([], [], color=C_CARRIER, lw=2, label=pick(lang, "carrier H", "водило H")),
+        Line2D([], [], color=C_SUN, label=tr(lang, "sun 1: working circle $d_{w1}$")),
+        Line2D([], [], color=C_PLANET, label=tr(lang, "planet: $d_{w2}$ (mesh 1-2)")),
+        Line2D([], [], color=C_PLANET, ls="--", label=tr(lang, "planet: $d_{w3}$ (mesh 3-4)")),
+        Line2D([], [], color=C_WHEEL4, ls="--", label=tr(lang, "wheel 4 (fixed): $d_{w4}$")),
+        Line2D([], [], color="0.3", ls=":", label=tr(lang, "tip circles $d_a$")),
+        Line2D([], [], color=C_CARRIER, lw=2, label=tr(lang, "carrier H")),
     ]
     fig.legend(handles=handles, loc="outside lower center", ncol=3, fontsize=9, frameon=False)
     return fig
@@ -172,12 +166,9 @@ def _velocity_figure(d, lang):
     ax.set_aspect("equal", adjustable="datalim")
     ax.plot([-0.35 * v.v_c, 1.3 * max(v.v_c, slope * (r_hi - v.r_w4_mm))], [0, 0], alpha=0)  # x data extent
     ax.set_xticks([])
-    ax.set_xlabel(pick(lang, r"linear velocity ($\omega_H$ = 1 rad/s, mm/s)", r"линейная скорость ($\omega_H$ = 1 рад/с, мм/с)"))
-    ax.set_ylabel(pick(lang, "radius, mm", "радиус, мм"))
-    ax.set_title(pick(lang, r"Velocity picture: $i = \tan\varphi_1/\tan\varphi_H$ = " + f"{num(v.ratio, lang, decimals=6)} "
-                            f"(1 − Z2·Z4/(Z1·Z3) = {d.ratio_check})",
-                      r"План скоростей: $i = \mathrm{tg}\,\varphi_1/\mathrm{tg}\,\varphi_H$ = " + f"{num(v.ratio, lang, decimals=6)} "
-                      f"(1 − Z2·Z4/(Z1·Z3) = {d.ratio_check})"), fontsize=10)
+    ax.set_xlabel(tr(lang, "linear velocity ($\\omega_H$ = 1 rad/s, mm/s)"))
+    ax.set_ylabel(tr(lang, "radius, mm"))
+    ax.set_title(tr(lang, "Velocity picture: $i = \\tan\\varphi_1/\\tan\\varphi_H$ = {ratio} (1 − Z2·Z4/(Z1·Z3) = {ratio_check})").format(ratio=num(v.ratio, lang, decimals=6), ratio_check=d.ratio_check), fontsize=10)
     return fig
 
 

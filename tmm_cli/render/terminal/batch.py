@@ -82,7 +82,7 @@ def print_batch(console, summary, out_dir: Path, lang: str) -> None:
             _num(r["r0_mm"], lang, 2), _num(other, lang, 2), nu, escape(warn),
         )
     console.print(t)
-    from ...i18n.help_ru import error_text
+    from ...i18n.errors import error_text
 
     for r in summary.failed:
         if r["status"] == "failed":

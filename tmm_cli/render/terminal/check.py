@@ -154,7 +154,7 @@ def print_group(console, group, lang: str) -> None:
     from rich.markup import escape
     from rich.table import Table
 
-    from ...i18n.help_ru import error_text
+    from ...i18n.errors import error_text
 
     t = Table(title=pick(lang, "Group check", "Проверка группы"), header_style="bold")
     for head in (pick(lang, "Student", "Студент"), pick(lang, "Variant", "Вариант"), pick(lang, "Correct", "Верно"),

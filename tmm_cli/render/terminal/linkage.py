@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-from ...i18n.lang import pick
+from ...i18n import tr
 from ...i18n.numbers import num
 from ...linkage.analysis import LinkageResult, State
 
@@ -24,48 +24,48 @@ def _mm(x: float, lang: str) -> str:
 
 def _input_table(r: LinkageResult, lang: str):
     g = r.geometry
-    mm = pick(lang, "mm", "мм")
-    t = _table(pick(lang, "Slotted-link mechanism: input (Goban, Monková, Šmeringaiová, 2010, Fig. 1)", "Кулисный механизм: исходные данные (Goban, Monková, Šmeringaiová, 2010, рис. 1)"),
-               (pick(lang, "Quantity", "Величина"), "left"), (pick(lang, "Value", "Значение"), "right"),
-               (pick(lang, "Meaning", "Смысл"), "left"))
+    mm = tr(lang, "mm")
+    t = _table(tr(lang, "Slotted-link mechanism: input (Goban, Monková, Šmeringaiová, 2010, Fig. 1)"),
+               (tr(lang, "Quantity"), "left"), (tr(lang, "Value"), "right"),
+               (tr(lang, "Meaning"), "left"))
     rows = [
-        ("r1 = O21A", _mm(g.r1, lang) + " " + mm, pick(lang, "crank", "кривошип")),
-        ("h", _mm(g.h, lang) + " " + mm, pick(lang, "O41 below O21", "O41 ниже O21")),
-        ("c", _mm(g.c, lang) + " " + mm, pick(lang, "O41 left of O21", "O41 левее O21")),
-        ("r2 = O41B", _mm(g.r2, lang) + " " + mm, pick(lang, "slotted link to B", "кулиса до точки B")),
-        ("r3 = BC", _mm(g.r3, lang) + " " + mm, pick(lang, "rod", "шатун")),
-        ("b", _mm(g.b, lang) + " " + mm, pick(lang, "ram guide y = b", "направляющая ползуна y = b")),
-        ("n21", num(r.rpm, lang, sig=5) + " " + pick(lang, "rpm", "об/мин"), pick(lang, "crank speed", "частота вращения кривошипа")),
-        ("ω21", num(r.omega, lang, sig=5) + " " + pick(lang, "rad/s", "рад/с"), "ω21 = π·n21/30"),
+        ("r1 = O21A", _mm(g.r1, lang) + " " + mm, tr(lang, "crank")),
+        ("h", _mm(g.h, lang) + " " + mm, tr(lang, "O41 below O21")),
+        ("c", _mm(g.c, lang) + " " + mm, tr(lang, "O41 left of O21")),
+        ("r2 = O41B", _mm(g.r2, lang) + " " + mm, tr(lang, "slotted link to B")),
+        ("r3 = BC", _mm(g.r3, lang) + " " + mm, tr(lang, "rod")),
+        ("b", _mm(g.b, lang) + " " + mm, tr(lang, "ram guide y = b")),
+        ("n21", num(r.rpm, lang, sig=5) + " " + tr(lang, "rpm"), tr(lang, "crank speed")),
+        ("ω21", num(r.omega, lang, sig=5) + " " + tr(lang, "rad/s"), "ω21 = π·n21/30"),
     ]
     if r.eps:
-        rows.append(("ε21", num(r.eps, lang, sig=5) + " " + pick(lang, "rad/s²", "рад/с²"), pick(lang, "crank", "кривошип")))
+        rows.append(("ε21", num(r.eps, lang, sig=5) + " " + tr(lang, "rad/s²"), tr(lang, "crank")))
     for row in rows:
         t.add_row(*row)
     return t
 
 
 def _main_table(r: LinkageResult, lang: str):
-    mm = pick(lang, "mm", "мм")
-    t = _table(pick(lang, "Main results", "Основные результаты"),
-               (pick(lang, "Quantity", "Величина"), "left"), (pick(lang, "Value", "Значение"), "right"),
-               (pick(lang, "Note", "Примечание"), "left"))
-    regime = pick(lang, "Whitworth (link turns fully)", "Витворта (кулиса вращается)") if r.regime == "whitworth" \
-        else pick(lang, "crank-shaper (link swings)", "с качающейся кулисой")
-    direction = pick(lang, "ram moves right (+x)", "ползун движется вправо (+x)") if r.working_direction > 0 \
-        else pick(lang, "ram moves left (−x)", "ползун движется влево (−x)")
-    t.add_row(pick(lang, "Mechanism", "Механизм"), regime, "√(c² + h²) " + ("<" if r.regime == "whitworth" else ">") + " r1")
-    t.add_row(pick(lang, "Stroke H", "Ход ползуна H"), _mm(r.stroke, lang) + " " + mm,
+    mm = tr(lang, "mm")
+    t = _table(tr(lang, "Main results"),
+               (tr(lang, "Quantity"), "left"), (tr(lang, "Value"), "right"),
+               (tr(lang, "Note"), "left"))
+    regime = tr(lang, "Whitworth (link turns fully)") if r.regime == "whitworth" \
+        else tr(lang, "crank-shaper (link swings)")
+    direction = tr(lang, "ram moves right (+x)") if r.working_direction > 0 \
+        else tr(lang, "ram moves left (−x)")
+    t.add_row(tr(lang, "Mechanism"), regime, "√(c² + h²) " + ("<" if r.regime == "whitworth" else ">") + " r1")
+    t.add_row(tr(lang, "Stroke H"), _mm(r.stroke, lang) + " " + mm,
               f"x_C: {_mm(r.x_min, lang)} … {_mm(r.x_max, lang)} {mm}")
-    t.add_row(pick(lang, "Time ratio K", "Коэффициент изменения средней скорости K"), num(r.time_ratio, lang, decimals=6), pick(lang, "K = φ_w/φ_r", "K = φ_р.х/φ_х.х"))
-    t.add_row(pick(lang, "Working stroke φ_w", "Рабочий ход φ_р.х"), num(math.degrees(r.working_rad), lang, decimals=3) + "°", direction)
-    t.add_row(pick(lang, "Return stroke φ_r", "Холостой ход φ_х.х"), num(math.degrees(r.return_rad), lang, decimals=3) + "°", "")
-    t.add_row(pick(lang, "Dead positions φ21", "Крайние положения φ21"),
+    t.add_row(tr(lang, "Time ratio K"), num(r.time_ratio, lang, decimals=6), tr(lang, "K = φ_w/φ_r"))
+    t.add_row(tr(lang, "Working stroke φ_w"), num(math.degrees(r.working_rad), lang, decimals=3) + "°", direction)
+    t.add_row(tr(lang, "Return stroke φ_r"), num(math.degrees(r.return_rad), lang, decimals=3) + "°", "")
+    t.add_row(tr(lang, "Dead positions φ21"),
               "; ".join(num(math.degrees(x), lang, decimals=3) + "°" for x in r.dead),
-              pick(lang, "start of working / return stroke", "начало рабочего / холостого хода"))
-    t.add_row(pick(lang, "Largest rod angle to the guide", "Наибольший угол шатуна к направляющей"),
+              tr(lang, "start of working / return stroke"))
+    t.add_row(tr(lang, "Largest rod angle to the guide"),
               num(math.degrees(r.rod_angle_max), lang, decimals=2) + "°", "")
-    t.add_row(pick(lang, "Loop closure error", "Невязка замыкания контуров"), num(r.residual, lang, sig=2) + " " + pick(lang, "m", "м"), "")
+    t.add_row(tr(lang, "Loop closure error"), num(r.residual, lang, sig=2) + " " + tr(lang, "m"), "")
     return t
 
 
@@ -77,24 +77,23 @@ def _row(label: str, s: State, lang: str) -> list[str]:
 
 
 def _positions_table(r: LinkageResult, lang: str):
-    cols = [("№", "right"), ("φ21, °", "right"), ("φ41, °", "right"), ("ρ, " + pick(lang, "mm", "мм"), "right"),
-            ("x_C, " + pick(lang, "mm", "мм"), "right"), ("ω4, " + pick(lang, "rad/s", "рад/с"), "right"),
-            ("ε4, " + pick(lang, "rad/s²", "рад/с²"), "right"), ("v_rel, " + pick(lang, "m/s", "м/с"), "right"),
-            ("a_k, " + pick(lang, "m/s²", "м/с²"), "right"), ("v_C, " + pick(lang, "m/s", "м/с"), "right"),
-            ("a_C, " + pick(lang, "m/s²", "м/с²"), "right")]
-    t = _table(pick(lang, "Crank positions (0 = start of the working stroke)", "Положения кривошипа (0 — начало рабочего хода)"), *cols)
+    cols = [("№", "right"), ("φ21, °", "right"), ("φ41, °", "right"), ("ρ, " + tr(lang, "mm"), "right"),
+            ("x_C, " + tr(lang, "mm"), "right"), ("ω4, " + tr(lang, "rad/s"), "right"),
+            ("ε4, " + tr(lang, "rad/s²"), "right"), ("v_rel, " + tr(lang, "m/s"), "right"),
+            ("a_k, " + tr(lang, "m/s²"), "right"), ("v_C, " + tr(lang, "m/s"), "right"),
+            ("a_C, " + tr(lang, "m/s²"), "right")]
+    t = _table(tr(lang, "Crank positions (0 = start of the working stroke)"), *cols)
     for k, s in enumerate(r.positions):
         t.add_row(*_row(str(k), s, lang))
-    t.add_row(*_row(pick(lang, "at", "расч."), r.at, lang), style="bold")
+    t.add_row(*_row(tr(lang, "at"), r.at, lang), style="bold")
     return t
 
 
 def _plans_table(r: LinkageResult, lang: str):
-    t = _table(pick(lang, f"Velocity and acceleration plans at φ21 = {num(math.degrees(r.at.phi), lang, decimals=2)}°",
-                    f"Планы скоростей и ускорений при φ21 = {num(math.degrees(r.at.phi), lang, decimals=2)}°"),
-               (pick(lang, "Vector", "Вектор"), "left"), (pick(lang, "On the plan", "На плане"), "left"),
-               (pick(lang, "Magnitude", "Модуль"), "right"), min_width=64)
-    for plan, unit in ((r.plans.velocity, pick(lang, "m/s", "м/с")), (r.plans.acceleration, pick(lang, "m/s²", "м/с²"))):
+    t = _table(tr(lang, "Velocity and acceleration plans at φ21 = {phi}°").format(phi=num(math.degrees(r.at.phi), lang, decimals=2)),
+               (tr(lang, "Vector"), "left"), (tr(lang, "On the plan"), "left"),
+               (tr(lang, "Magnitude"), "right"), min_width=64)
+    for plan, unit in ((r.plans.velocity, tr(lang, "m/s")), (r.plans.acceleration, tr(lang, "m/s²"))):
         for a, b, name in plan.segments:
             t.add_row(name, a + b, num(plan.length(a, b), lang, decimals=4) + " " + unit)
     return t

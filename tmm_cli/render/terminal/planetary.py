@@ -3,7 +3,7 @@ synthesis of `tmm planetary` (seed 000). Numbers through ``num`` (decimal comma 
 
 from __future__ import annotations
 
-from ...i18n.lang import pick
+from ...i18n import tr, trc
 from ...i18n.numbers import num
 
 OK = "[green]✓[/]"
@@ -33,39 +33,39 @@ def _table(title: str, *cols: str, left=(0,)):
 
 def pair_table(g, names: tuple[str, str], lang: str, title: str):
     """Geometry of one shifted pair: the formulas of gears/shifted.py with their numbers."""
-    mm = pick(lang, "mm", "мм")
-    t = _table(title, pick(lang, "Quantity", "Величина"), pick(lang, "Formula", "Формула"),
-               pick(lang, f"Gear {names[0]}", f"Колесо {names[0]}"), pick(lang, f"Gear {names[1]}", f"Колесо {names[1]}"),
+    mm = tr(lang, "mm")
+    t = _table(title, tr(lang, "Quantity"), tr(lang, "Formula"),
+               tr(lang, "Gear {names}").format(names=names[0]), tr(lang, "Gear {names}").format(names=names[1]),
                left=(0, 1))
     rows = [
-        (pick(lang, "teeth", "число зубьев"), "z", str(g.z[0]), str(g.z[1])),
-        (pick(lang, "shift coefficient", "коэффициент смещения"), "x", _n(g.x[0], lang), _n(g.x[1], lang)),
-        (pick(lang, "shift sum", "сумма смещений"), "x_Σ = x1 + x2", _n(g.x_sum, lang, 4), ""),
-        (pick(lang, "working pressure angle, °", "угол зацепления, °"), "inv α_w = inv α + 2x_Σ·tg α/(z1 + z2)",
+        (trc(lang, "singular", "teeth"), "z", str(g.z[0]), str(g.z[1])),
+        (tr(lang, "shift coefficient"), "x", _n(g.x[0], lang), _n(g.x[1], lang)),
+        (tr(lang, "shift sum"), "x_Σ = x1 + x2", _n(g.x_sum, lang, 4), ""),
+        (tr(lang, "working pressure angle, °"), "inv α_w = inv α + 2x_Σ·tg α/(z1 + z2)",
          _n(g.alpha_w_deg, lang, 3), ""),
-        (pick(lang, f"reference centre distance, {mm}", f"делительное межосевое расстояние, {mm}"), "a = m(z1 + z2)/2",
+        (tr(lang, "reference centre distance, {mm}").format(mm=mm), "a = m(z1 + z2)/2",
          _n(g.a_mm, lang), ""),
-        (pick(lang, f"centre distance, {mm}", f"межосевое расстояние, {mm}"), "a_w = a·cos α/cos α_w",
+        (tr(lang, "centre distance, {mm}").format(mm=mm), "a_w = a·cos α/cos α_w",
          f"[bold]{_n(g.a_w_mm, lang)}[/]", ""),
-        (pick(lang, "centre-distance change", "коэффициент воспринимаемого смещения"), "y = (a_w − a)/m",
+        (tr(lang, "centre-distance change"), "y = (a_w − a)/m",
          _n(g.y, lang, 4), ""),
-        (pick(lang, "tip reduction", "коэффициент уравнительного смещения"), "Δy = x_Σ − y", _n(g.dy, lang, 4), ""),
-        (pick(lang, f"pitch diameter, {mm}", f"делительный диаметр, {mm}"), "d = m·z", _n(g.d_mm[0], lang), _n(g.d_mm[1], lang)),
-        (pick(lang, f"base diameter, {mm}", f"основной диаметр, {mm}"), "d_b = d·cos α", _n(g.db_mm[0], lang),
+        (tr(lang, "tip reduction"), "Δy = x_Σ − y", _n(g.dy, lang, 4), ""),
+        (tr(lang, "pitch diameter, {mm}").format(mm=mm), "d = m·z", _n(g.d_mm[0], lang), _n(g.d_mm[1], lang)),
+        (tr(lang, "base diameter, {mm}").format(mm=mm), "d_b = d·cos α", _n(g.db_mm[0], lang),
          _n(g.db_mm[1], lang)),
-        (pick(lang, f"working diameter, {mm}", f"начальный диаметр, {mm}"), "d_w = d·cos α/cos α_w", _n(g.dw_mm[0], lang),
+        (tr(lang, "working diameter, {mm}").format(mm=mm), "d_w = d·cos α/cos α_w", _n(g.dw_mm[0], lang),
          _n(g.dw_mm[1], lang)),
-        (pick(lang, f"tip diameter, {mm}", f"диаметр вершин, {mm}"), "d_a = d + 2(h_a* + x − Δy)m",
+        (tr(lang, "tip diameter, {mm}").format(mm=mm), "d_a = d + 2(h_a* + x − Δy)m",
          _n(g.da_mm[0], lang), _n(g.da_mm[1], lang)),
-        (pick(lang, f"root diameter, {mm}", f"диаметр впадин, {mm}"), "d_f = d − 2(h_a* + c* − x)m",
+        (tr(lang, "root diameter, {mm}").format(mm=mm), "d_f = d − 2(h_a* + c* − x)m",
          _n(g.df_mm[0], lang), _n(g.df_mm[1], lang)),
-        (pick(lang, f"thickness on the pitch circle, {mm}", f"толщина зуба по делительной окружности, {mm}"),
+        (tr(lang, "thickness on the pitch circle, {mm}").format(mm=mm),
          "s = m(π/2 + 2x·tg α)", _n(g.s_mm[0], lang), _n(g.s_mm[1], lang)),
-        (pick(lang, f"thickness on the working circle, {mm}", f"толщина зуба по начальной окружности, {mm}"),
+        (tr(lang, "thickness on the working circle, {mm}").format(mm=mm),
          "s_w = 2r_w(s/d + inv α − inv α_w)", _n(g.sw_mm[0], lang), _n(g.sw_mm[1], lang)),
-        (pick(lang, f"thickness on the tip circle, {mm}", f"толщина зуба по окружности вершин, {mm}"),
+        (tr(lang, "thickness on the tip circle, {mm}").format(mm=mm),
          "s_a = 2r_a(s/d + inv α − inv α_a)", _n(g.sa_mm[0], lang), _n(g.sa_mm[1], lang)),
-        (pick(lang, "transverse contact ratio", "коэффициент перекрытия"),
+        (tr(lang, "transverse contact ratio"),
          "ε_α = (√(r_a1² − r_b1²) + √(r_a2² − r_b2²) − a_w·sin α_w)/p_b", f"[bold]{_n(g.eps_alpha, lang)}[/]", ""),
     ]
     for r in rows:
@@ -75,23 +75,23 @@ def pair_table(g, names: tuple[str, str], lang: str, title: str):
 
 def checks_table(pc, names: tuple[str, str], teeth: tuple[int, int], m: float, lang: str, title: str):
     """The blocking-contour lines of one pair: number, limit, verdict."""
-    mm = pick(lang, "mm", "мм")
-    t = _table(title, pick(lang, "Condition", "Условие"), pick(lang, "Value", "Значение"), pick(lang, "Limit", "Предел"),
+    mm = tr(lang, "mm")
+    t = _table(title, tr(lang, "Condition"), tr(lang, "Value"), tr(lang, "Limit"),
                "", left=(0,))
     for c in pc.checks:
-        who = f" ({pick(lang, 'gear', 'колесо')} {names[c.gear - 1]}, z = {teeth[c.gear - 1]})" if c.gear else ""
+        who = " ({gear} {name}, z = {z})".format(gear=tr(lang, "gear"), name=names[c.gear - 1], z=teeth[c.gear - 1]) \
+            if c.gear else ""
         if c.code == "undercut":
-            label = pick(lang, "no undercut: x ≥ h_a*(17 − z)/17", "нет подрезания: x ≥ h_a*(17 − z)/17")
+            label = tr(lang, "no undercut: x ≥ h_a*(17 − z)/17")
             val, lim = _n(c.value, lang), "≥ " + _n(c.limit, lang)
         elif c.code == "tip_thickness":
-            label = pick(lang, f"tip thickness s_a ≥ 0.25·m, {mm}", f"толщина на вершине s_a ≥ 0,25·m, {mm}")
+            label = tr(lang, "tip thickness s_a ≥ 0.25·m, {mm}").format(mm=mm)
             val, lim = _n(c.value, lang), "≥ " + _n(c.limit, lang)
         elif c.code == "eps_alpha":
-            label = pick(lang, "contact ratio ε_α ≥ 1.2 (hard limit 1.05)", "перекрытие ε_α ≥ 1,2 (предел 1,05)")
+            label = tr(lang, "contact ratio ε_α ≥ 1.2 (hard limit 1.05)")
             val, lim = _n(c.value, lang), "≥ " + _n(c.limit, lang, 2)
         else:
-            label = pick(lang, f"no fillet interference: contact starts beyond the involute's lower limit, {mm}",
-                         f"нет интерференции: контакт выше граничной точки эвольвенты, {mm}")
+            label = tr(lang, "no fillet interference: contact starts beyond the involute's lower limit, {mm}").format(mm=mm)
             val, lim = _n(c.value, lang), "≥ " + _n(c.limit, lang)
         t.add_row(label + who, val, lim, _ok(c.ok) if not c.hard else "[red]✗✗[/]")
     return t
@@ -101,62 +101,58 @@ def print_planetary(console, d, lang: str, examples=()) -> None:
     """Everything `tmm planetary` prints: the synthesis, both pairs, the checks, the ratio checks."""
     lo, hi = d.c_feasible
     div = d.div
-    t = _table(pick(lang, "Planetary mechanism AA̅ with different meshing angles (S. N. Kavetsky, Vestnik NTU KhPI, 2010): tooth numbers",
-                    "Планетарный механизм AA̅ с учётом углов зацепления (С. Н. Кавецкий, Вестник НТУ «ХПИ», 2010): числа зубьев"),
-               pick(lang, "Step", "Шаг"), pick(lang, "Computation", "Расчёт"), left=(0, 1))
-    t.add_row(pick(lang, "given", "дано"),
+    t = _table(tr(lang, "Planetary mechanism AA̅ with different meshing angles (S. N. Kavetsky, Vestnik NTU KhPI, 2010): tooth numbers"),
+               tr(lang, "Step"), tr(lang, "Computation"), left=(0, 1))
+    t.add_row(trc(lang, "data", "given"),
               f"i = i_1H⁽⁴⁾ = {_frac(d.i)};  C = cos α_w12/cos α_w34 = {_frac(d.c)} = {num(float(d.c), lang, sig=6)};  "
               f"k = {d.planets};  {d.z_min} ≤ Z ≤ {d.z_max}")
-    t.add_row(pick(lang, "feasible C", "допустимые C"),
+    t.add_row(tr(lang, "feasible C"),
               f"1 < C < 1/(1 − i) = {_frac(hi)} ≈ {num(float(hi), lang, decimals=4)}  {OK}")
-    t.add_row(pick(lang, "equations", "уравнения"),
-              "Z4 = Z1(1 − i);  Z2 = Z3 = Z1(C − C·i − 1)/(1 − C);  Z1·i/k " + pick(lang, "whole", "целое"))
-    t.add_row(pick(lang, "Z1 multiple of", "Z1 кратно"),
-              pick(lang, f"assembly k·B/gcd(A, k·B) = {div.m_assembly};  coaxiality {div.m_coaxial};  ratio B = {div.m_ratio}",
-                   f"сборка k·B/НОД(A, k·B) = {div.m_assembly};  соосность {div.m_coaxial};  отношение B = {div.m_ratio}")
-              + f"  →  Z1_min = {pick(lang, 'lcm', 'НОК')} = [bold]{div.z1_step}[/]")
+    t.add_row(tr(lang, "equations"),
+              "Z4 = Z1(1 − i);  Z2 = Z3 = Z1(C − C·i − 1)/(1 − C);  Z1·i/k " + tr(lang, "whole"))
+    t.add_row(tr(lang, "Z1 multiple of"),
+              tr(lang, "assembly k·B/gcd(A, k·B) = {m_assembly};  coaxiality {m_coaxial};  ratio B = {m_ratio}").format(m_assembly=div.m_assembly, m_coaxial=div.m_coaxial, m_ratio=div.m_ratio)
+              + "  →  Z1_min = " + tr(lang, "lcm") + f" = [bold]{div.z1_step}[/]")
     fam = ", ".join(f"×{n}: {'/'.join(str(z) for z in _teeth(div, n))}" for n in d.family)
-    t.add_row(pick(lang, "family", "семейство"), fam)
-    t.add_row(pick(lang, "chosen", "принято"), f"[bold]Z1 = {d.teeth[0]}, Z2 = Z3 = {d.teeth[1]}, Z4 = {d.teeth[3]}[/]"
+    t.add_row(tr(lang, "family"), fam)
+    t.add_row(tr(lang, "chosen"), f"[bold]Z1 = {d.teeth[0]}, Z2 = Z3 = {d.teeth[1]}, Z4 = {d.teeth[3]}[/]"
               + f"  (×{d.multiple})")
-    t.add_row(pick(lang, "ratio check", "проверка i"),
+    t.add_row(tr(lang, "ratio check"),
               f"1 − Z2·Z4/(Z1·Z3) = 1 − {d.teeth[1]}·{d.teeth[3]}/({d.teeth[0]}·{d.teeth[2]}) = {_frac(d.ratio_check)}  "
               + _ok(d.ratio_check == d.i))
     v = d.velocity
-    t.add_row(pick(lang, "velocity picture", "план скоростей"),
+    t.add_row(tr(lang, "velocity picture"),
               f"i = tg φ1/tg φ_H = tg {_n(v.phi_1_deg, lang, 3)}°/tg {_n(v.phi_h_deg, lang, 3)}° = "
               f"{num(v.ratio, lang, decimals=6)}  " + _ok(abs(v.ratio - float(d.i)) < 1e-9))
     console.print(t)
     if examples:
-        e = _table(pick(lang, f"Other feasible C for i = {_frac(d.i)}, k = {d.planets} (smallest tooth sets)",
-                        f"Другие допустимые C для i = {_frac(d.i)}, k = {d.planets} (наименьшие наборы)"),
+        e = _table(tr(lang, "Other feasible C for i = {i}, k = {planets} (smallest tooth sets)").format(i=_frac(d.i), planets=d.planets),
                    "C", "Z1/Z2/Z3/Z4", left=(0, 1))
         for c, teeth in examples:
             e.add_row(f"{_frac(c)} ≈ {num(float(c), lang, decimals=4)}", "/".join(map(str, teeth)))
         console.print(e)
-    s = _table(pick(lang, "Shifts from the common centre distance (Kavetsky, 2010, Fig. 2)",
-                    "Смещения по общему межосевому расстоянию (Кавецкий, 2010, рис. 2)"),
-               pick(lang, "Step", "Шаг"), pick(lang, "Computation", "Расчёт"), left=(0, 1))
+    s = _table(tr(lang, "Shifts from the common centre distance (Kavetsky, 2010, Fig. 2)"),
+               tr(lang, "Step"), tr(lang, "Computation"), left=(0, 1))
     p12, p34 = d.pair12, d.pair34
     s.add_row("1", f"x_Σ12 = x1 + x2 = {_n(d.x[0], lang)} + {_n(d.x[1], lang)} = {_n(p12.x_sum, lang)};  "
                    f"α_w12 = [bold]{_n(p12.alpha_w_deg, lang)}°[/]")
-    s.add_row("2", f"a_w = m(Z1 + Z2)/2·cos α/cos α_w12 = [bold]{_n(d.a_w_mm, lang)} {pick(lang, 'mm', 'мм')}[/]")
-    s.add_row("3", f"a_w34 = a_w;  x3 = x2 = {_n(d.x[2], lang)} " + pick(lang, "(linked planet)", "(сателлит — одно колесо)"))
+    s.add_row("2", f"a_w = m(Z1 + Z2)/2·cos α/cos α_w12 = [bold]{_n(d.a_w_mm, lang)} " + tr(lang, "mm") + "[/]")
+    s.add_row("3", f"a_w34 = a_w;  x3 = x2 = {_n(d.x[2], lang)} " + tr(lang, "(linked planet)"))
     s.add_row("3.1", f"cos α_w34 = m(Z3 + Z4)/2·cos α/a_w → α_w34 = [bold]{_n(p34.alpha_w_deg, lang)}°[/];  "
                      f"cos α_w12/cos α_w34 = {num(d.c_check, lang, decimals=4)}")
     s.add_row("3.2", f"x_Σ34 = (inv α_w34 − inv α)(Z3 + Z4)/(2 tg α) = [bold]{_n(p34.x_sum, lang)}[/]")
     s.add_row("3.3", f"x4 = x_Σ34 − x3 = [bold]{_n(d.x[3], lang)}[/]")
     console.print(s)
-    console.print(pair_table(p12, ("1", "2"), lang, pick(lang, "Pair 1-2", "Пара 1–2")))
-    console.print(pair_table(p34, ("3", "4"), lang, pick(lang, "Pair 3-4", "Пара 3–4")))
+    console.print(pair_table(p12, ("1", "2"), lang, tr(lang, "Pair 1-2")))
+    console.print(pair_table(p34, ("3", "4"), lang, tr(lang, "Pair 3-4")))
     m = d.module_mm
     console.print(checks_table(d.checks12, ("1", "2"), p12.z, m, lang,
-                               pick(lang, "Blocking contour, pair 1-2", "Блокирующий контур, пара 1–2")))
+                               tr(lang, "Blocking contour, pair 1-2")))
     console.print(checks_table(d.checks34, ("3", "4"), p34.z, m, lang,
-                               pick(lang, "Blocking contour, pair 3-4", "Блокирующий контур, пара 3–4")))
+                               tr(lang, "Blocking contour, pair 3-4")))
     nb = d.neighbours
-    n = _table(pick(lang, "Neighbouring with the real tip circles", "Условие соседства по окружностям вершин"),
-               pick(lang, "Condition", "Условие"), pick(lang, "Value", "Значение"), "", left=(0, 1))
+    n = _table(tr(lang, "Neighbouring with the real tip circles"),
+               tr(lang, "Condition"), tr(lang, "Value"), "", left=(0, 1))
     n.add_row(f"d_a < 2a_w·sin(π/k)", f"{_n(nb.value, lang)} < {_n(nb.limit, lang)}", _ok(nb.ok))
     console.print(n)
 

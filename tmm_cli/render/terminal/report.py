@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import io
 
-from ...i18n.lang import note_text, pick
+from ...i18n import tr
+
+from ...i18n.lang import note_text
 
 
 def print_project(console, result, lang: str) -> None:
@@ -14,11 +16,11 @@ def print_project(console, result, lang: str) -> None:
     from .table import Heading
 
     v = result.variant
-    console.print(Heading(pick(lang, f"TMM course project — variant {v.number}", f"Курсовой проект по ТММ — вариант {v.number}")))
+    console.print(Heading(tr(lang, "TMM course project — variant {number}").format(number=v.number)))
     print_cam_input(console, result.cam, lang)
-    console.print(Heading(pick(lang, "Sheet 4 — gear drive", "Лист 4 — синтез зубчатых механизмов")))
+    console.print(Heading(tr(lang, "Sheet 4 — gear drive")))
     print_gears(console, result.gears, lang)
-    console.print(Heading(pick(lang, "Sheet 3 — cam mechanism", "Лист 3 — синтез кулачкового механизма")))
+    console.print(Heading(tr(lang, "Sheet 3 — cam mechanism")))
     print_cam(console, result.cam, lang, include_input=False)
     print_notes(console, result.notes, lang)
 
@@ -34,8 +36,7 @@ def print_notes(console, notes, lang: str) -> None:
     lines = [("ℹ", note_text(n, lang)) for n in assumptions]
     lines += [("✖" if "_fail_" in n.code else "⚠", note_text(n, lang)) for n in warnings]  # "_fail_": a condition
     # the carried (student's) design breaks, in red
-    title = pick(lang, f"Assumptions ({len(assumptions)}) and warnings ({len(warnings)})",
-                 f"Допущения ({len(assumptions)}) и предупреждения ({len(warnings)})")
+    title = tr(lang, "Assumptions ({assumptions}) and warnings ({warnings})").format(assumptions=len(assumptions), warnings=len(warnings))
     console.print(NoteBlock(title, lines))
 
 

@@ -1,0 +1,154 @@
+"""Build the translation catalogue (a developer's tool; Babel does the work).
+
+    python tools/catalog.py            # extract the msgids, merge them into tmm.po, compile tmm.mo
+    python tools/catalog.py --check    # exit 1 if tmm.po or tmm.mo is not current or incomplete
+
+The msgids come from the code (Babel's Python extractor: ``tr(lang, MSGID)``, ``trc(lang, CTX,
+MSGID)``, ``ntr(lang, SINGULAR, PLURAL, n)``, ``N_(MSGID)``) and from the command line itself (every command's help and every option's help, read from the
+click tree). A translator edits only ``tmm.po``; new msgids arrive in it untranslated and the check
+(run by the tests) names them.
+"""
+
+from __future__ import annotations
+
+import io
+import sys
+from pathlib import Path
+
+from tmm_cli.i18n import DOMAIN, LOCALE_DIR
+
+PACKAGE = Path(__file__).resolve().parents[1] / "tmm_cli"
+KEYWORDS = {"tr": (2,), "trc": ((2, "c"), 3), "ntr": (2, 3), "N_": None}
+# Kept by hand, not extracted: "error" — our error messages as templates ("{p} does not exist; …"): they
+# are f-strings at the raise sites, matched against these at the edge (i18n/errors.py; the tests check
+# that every raise site has one); "click" — click's own messages (its msgids); "system" — the
+# operating system's reasons (strerror); "place" — the places errors name ("answers file {p}").
+KEPT_CONTEXTS = ("error", "click", "system", "place")
+LANGS = ("ru",)
+FIXED_DATE = __import__("datetime").datetime(2026, 1, 1, tzinfo=__import__("datetime").timezone.utc)
+HEADER = "Translations of tmm, the TMM course-project calculator. The English text is the msgid."
+
+
+def po_path(lang: str) -> Path:
+    return LOCALE_DIR / lang / "LC_MESSAGES" / f"{DOMAIN}.po"
+
+
+def mo_path(lang: str) -> Path:
+    return po_path(lang).with_suffix(".mo")
+
+
+def extracted():
+    """The template catalogue: every msgid the code and the command line use, with their places."""
+    from babel.messages.catalog import Catalog
+    from babel.messages.extract import extract_from_dir
+
+    template = Catalog(domain=DOMAIN)
+    for filename, lineno, message, comments, context in extract_from_dir(
+            str(PACKAGE), method_map=[("**.py", "python")], keywords=KEYWORDS, comment_tags=("TRANSLATORS:",),
+            strip_comment_tags=True):
+        if message and (message[0] if isinstance(message, tuple) else message):
+            template.add(message, locations=[(f"tmm_cli/{filename}", lineno)], auto_comments=comments, context=context)
+    for msgid, where in click_texts():
+        template.add(msgid, locations=[(where, 0)])
+    return template
+
+
+def click_texts():
+    """(text, where) for every command's help and every option's help of the `tmm` command line."""
+    import click
+
+    from tmm_cli.cli import cli
+
+    import inspect
+
+    def walk(cmd, path):
+        if cmd.help:
+            yield inspect.cleandoc(cmd.help), f"cli:{path}"
+        for p in cmd.params:
+            if isinstance(p, click.Option) and p.help:
+                yield p.help, f"cli:{path} {p.opts[0]}"
+        for name, sub in sorted(getattr(cmd, "commands", {}).items()):
+            yield from walk(sub, f"{path} {name}")
+
+    yield from walk(cli, "tmm")
+
+
+def merged(lang: str, template):
+    """tmm.po of `lang` brought up to `template`: translations kept, new msgids empty, gone ones
+    dropped (never guessed: no fuzzy matching)."""
+    from babel.messages.catalog import Catalog
+    from babel.messages.pofile import read_po
+
+    path = po_path(lang)
+    if path.exists():
+        with open(path, "rb") as f:
+            catalog = read_po(f, locale=lang, domain=DOMAIN)
+    else:
+        catalog = Catalog(locale=lang, domain=DOMAIN)
+    kept = [m for m in catalog if m.id and m.context in KEPT_CONTEXTS]
+    catalog.update(template, no_fuzzy_matching=True, update_header_comment=False)
+    catalog.obsolete.clear()
+    for m in kept:
+        catalog[m.id] = m  # (the context is part of the message)
+    catalog.header_comment = "# " + HEADER
+    catalog.project, catalog.version = "tmm", ""
+    catalog.msgid_bugs_address, catalog.last_translator, catalog.language_team = "", "tmm", "ru"
+    catalog.creation_date = catalog.revision_date = FIXED_DATE  # the file changes only with its text
+    catalog.fuzzy = False
+    return catalog
+
+
+def po_bytes(catalog) -> bytes:
+    from babel.messages.pofile import write_po
+
+    buf = io.BytesIO()
+    write_po(buf, catalog, width=100, omit_header=False, sort_output=False, include_previous=False)
+    return buf.getvalue()
+
+
+def mo_bytes(catalog) -> bytes:
+    from babel.messages.mofile import write_mo
+
+    buf = io.BytesIO()
+    write_mo(buf, catalog, use_fuzzy=False)
+    return buf.getvalue()
+
+
+def untranslated(catalog) -> list[str]:
+    out = []
+    for m in catalog:
+        if not m.id:
+            continue
+        strings = m.string if isinstance(m.string, tuple) else (m.string,)
+        if not all(strings) or m.fuzzy:
+            out.append(m.id[0] if isinstance(m.id, tuple) else m.id)
+    return out
+
+
+def main(argv: list[str]) -> int:
+    check = "--check" in argv
+    template = extracted()
+    status = 0
+    for lang in LANGS:
+        catalog = merged(lang, template)
+        po, mo = po_bytes(catalog), mo_bytes(catalog)
+        missing = untranslated(catalog)
+        if check:
+            if not po_path(lang).exists() or po_path(lang).read_bytes() != po:
+                print(f"{po_path(lang)} is not current: run python tools/catalog.py")
+                status = 1
+            if not mo_path(lang).exists() or mo_path(lang).read_bytes() != mo:
+                print(f"{mo_path(lang)} is not compiled from {po_path(lang).name}: run python tools/catalog.py")
+                status = 1
+        else:
+            po_path(lang).parent.mkdir(parents=True, exist_ok=True)
+            po_path(lang).write_bytes(po)
+            mo_path(lang).write_bytes(mo)
+        for msgid in missing:
+            print(f"{lang}: no translation for {msgid!r}")
+        status = status or (1 if missing and check else 0)
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
