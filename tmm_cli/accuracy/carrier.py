@@ -237,7 +237,7 @@ def _find_suspects(card: Card, radius: float, used: np.ndarray, x: np.ndarray, f
         jac = problem.jac(x)
         if np.linalg.matrix_rank(jac) < n:
             break
-        r = problem.fun(x)
+        r = -problem.fun(x)  # measured − fitted
         t, proj = _studentised(jac, r, floor)
         m = int(used.sum())
         if m - n < 2:
