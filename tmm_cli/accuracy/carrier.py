@@ -405,7 +405,7 @@ def fit_carrier(card: Card, radius: float, *, exclude: tuple[str, ...] | list[st
                       and (tol_t is None or max(abs(tan[i]), abs(tan_p[i])) <= tol_t))
         bores.append(BoreFit(
             bore=i + 1, y=float(left_m[i, 0]), z=float(left_m[i, 1]), y_prime=float(right_m[i, 0]),
-            z_prime=float(right_m[i, 1]), u_y=uy, u_z=0.0 if i == 0 and uz is not None else uz,
+            z_prime=float(right_m[i, 1]), u_y=uy, u_z=uz,
             u_y_prime=uyp, u_z_prime=uzp,
             radial=float(rad[i]), tangential=float(tan[i]), radial_prime=float(rad_p[i]),
             tangential_prime=float(tan_p[i]), u_radial=ur, u_tangential=ut, u_radial_prime=urp,
