@@ -31,16 +31,11 @@ import math
 import re
 
 from ..errors import TmmError
+from ..limits import CARD_BORES, CARD_BYTES
 from ..records import record
 
 MM = 1e-3
 """One millimetre [m]: the card's unit."""
-
-Z_C_RANGE = (3, 12)
-"""Number of planets (bores) a card may have: the issue's 3…12."""
-
-CARD_BYTES = 64 << 10
-"""Largest card text accepted [bytes] (a 12-bore card is under 1 KiB)."""
 
 REQUIRED = ("bore", "R", "R_prime", "h", "h_prime", "s")
 """The card's columns, in the order the issue gives them; ``e`` is optional."""
@@ -127,7 +122,7 @@ def parse_card(text: str, source: str = "card") -> Card:
             raise TmmError(f"{source}: the column '{name}' is missing; the header must be {','.join(REQUIRED)} "
                            f"(and optionally e)")
     rows = lines[1:]
-    lo, hi = Z_C_RANGE
+    lo, hi = CARD_BORES
     if not lo <= len(rows) <= hi:
         raise TmmError(f"{source} has {len(rows)} bore rows; a carrier card needs one row per bore, "
                        f"from {lo} to {hi} bores")

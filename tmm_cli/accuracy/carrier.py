@@ -40,13 +40,11 @@ import math
 import numpy as np
 
 from ..errors import TmmError
+from ..limits import CARRIER_RADIUS_MM
 from ..records import record
 from .card import MM, Card
 from .chord_only import chord_only_tangential, radial_bias
 from .measurements import KINDS, jacobian, measurement_names, nominal_angles, nominal_bores, predict
-
-RADIUS_M = (0.001, 5.0)
-"""Nominal radius of the bore circle a card may have [m] (1 to 5000 mm)."""
 
 PLAUSIBLE = 0.05
 """A card whose distances differ from the drawing's by more than this share is refused (a wrong
@@ -265,11 +263,11 @@ def _find_suspects(card: Card, radius: float, used: np.ndarray, x: np.ndarray, f
 # ----------------------------------------------------------------------------- the entry point
 
 def _check_radius(radius: float) -> float:
-    lo, hi = RADIUS_M
-    if not (isinstance(radius, (int, float)) and math.isfinite(radius)) or not lo <= radius <= hi:
+    lo, hi = CARRIER_RADIUS_MM
+    if not (isinstance(radius, (int, float)) and math.isfinite(radius)) or not lo <= radius / MM <= hi:
         shown = f"{radius / MM:g} mm" if isinstance(radius, (int, float)) else repr(radius)
         raise TmmError(f"--radius is {shown}; give the nominal radius of the bore circle from the drawing, "
-                       f"{lo / MM:g} to {hi / MM:g} mm")
+                       f"{lo:g} to {hi:g} mm")
     return float(radius)
 
 
@@ -401,8 +399,8 @@ def fit_carrier(card: Card, radius: float, *, exclude: tuple[str, ...] | list[st
         uyp, uzp, urp, utp = u_of(i, 1)
         within = None
         if tol_r is not None or tol_t is not None:
-            within = ((tol_r is None or max(abs(rad[i]), abs(rad_p[i])) <= tol_r)
-                      and (tol_t is None or max(abs(tan[i]), abs(tan_p[i])) <= tol_t))
+            within = bool((tol_r is None or max(abs(rad[i]), abs(rad_p[i])) <= tol_r)
+                          and (tol_t is None or max(abs(tan[i]), abs(tan_p[i])) <= tol_t))
         bores.append(BoreFit(
             bore=i + 1, y=float(left_m[i, 0]), z=float(left_m[i, 1]), y_prime=float(right_m[i, 0]),
             z_prime=float(right_m[i, 1]), u_y=uy, u_z=uz,

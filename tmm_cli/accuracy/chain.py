@@ -28,13 +28,12 @@ import math
 from statistics import NormalDist
 
 from ..errors import TmmError
+from ..limits import CHAIN_RISK_PCT
 from ..records import record
 from .chain_input import Chain
 
-RISK_PCT = (0.001, 50.0)
-"""The risk P [%] a user may ask for; the default 0.27 % gives t = 3."""
-
 RISK_DEFAULT_PCT = 0.27
+"""The default risk P [%]: t = 3."""
 
 
 @record
@@ -92,8 +91,8 @@ def t_for_risk(risk_percent: float) -> float:
 
 
 def check_risk(risk_percent) -> float:
-    """``risk_percent`` as a float within :data:`RISK_PCT`, else TmmError."""
-    lo, hi = RISK_PCT
+    """``risk_percent`` as a float within ``limits.CHAIN_RISK_PCT``, else TmmError."""
+    lo, hi = CHAIN_RISK_PCT
     if isinstance(risk_percent, bool) or not isinstance(risk_percent, (int, float)) \
             or not math.isfinite(risk_percent) or not lo <= risk_percent <= hi:
         raise TmmError(f"--risk is {risk_percent}; give the risk in percent, {lo:g} to {hi:g} (0.27 gives t = 3)")

@@ -51,13 +51,8 @@ from __future__ import annotations
 import math
 
 from ..errors import TmmError
+from ..limits import CHAIN_BYTES, CHAIN_LINKS
 from ..records import record
-
-CHAIN_BYTES = 256 << 10
-"""Largest chain file accepted [bytes]."""
-
-LINKS_MAX = 200
-"""Most links a chain may have (the article's longest has 11)."""
 
 UNITS = {
     "mm": (1e-3, False), "um": (1e-6, False), "µm": (1e-6, False),
@@ -227,8 +222,8 @@ def parse_chain(text: str, source: str = "chain") -> Chain:
         raise TmmError(f"{source}: write the links as [[link]] tables, not [link]")
     if not tables:
         raise TmmError(f"{source} has no links; add [[link]] tables with name, nominal, es, ei, sign")
-    if len(tables) > LINKS_MAX:
-        raise TmmError(f"{source} has {len(tables)} links; a chain may have up to {LINKS_MAX}")
+    if len(tables) > CHAIN_LINKS:
+        raise TmmError(f"{source} has {len(tables)} links; a chain may have up to {CHAIN_LINKS}")
     seen: set[str] = set()
     links = tuple(_link(t, i, units, factor, angular, seen) for i, t in enumerate(tables, 1))
     return Chain(name=name.strip()[:200], units=units, unit_si=factor, angular=angular, links=links)

@@ -1,0 +1,173 @@
+"""Rich tables of `tmm carrier` (seed 004): the bores' errors, the plants' chord-only estimate
+beside the fit, the residuals with the suspect ones marked, and a summary. Everything shown is
+read from the :class:`~tmm_cli.accuracy.carrier.CarrierFit`; nothing is computed here.
+"""
+
+from __future__ import annotations
+
+from ...accuracy.carrier import CarrierFit
+from ...accuracy.measurements import KINDS
+from ...i18n.lang import pick
+from ...i18n.numbers import num
+
+UM = 1e6
+MM = 1e3
+
+KIND_LABELS = {"R": "R", "R_prime": "R′", "h": "h", "h_prime": "h′", "s": "s", "e": "e"}
+
+
+def _table(title: str, *cols: tuple[str, str], caption: str | None = None):
+    from rich.table import Table
+
+    t = Table(title=title, header_style="bold", title_justify="left", caption=caption, caption_justify="left")
+    for name, justify in cols:
+        t.add_column(name, justify=justify, overflow="fold")
+    return t
+
+
+def _um(x, lang: str, decimals: int = 1) -> str:
+    return num(None if x is None else x * UM, lang, decimals=decimals)
+
+
+def _pm(x, u, lang: str) -> str:
+    """"−16,1 ± 0,6" (µm); the uncertainty left out when there is none."""
+    if u is None:
+        return _um(x, lang)
+    return f"{_um(x, lang)} ± {_um(u, lang)}"
+
+
+def _bores_table(fit: CarrierFit, lang: str):
+    um = pick(lang, "µm", "мкм")
+    cols = [(pick(lang, "Bore", "Расточка"), "right"),
+            (f"Δr, {um}", "right"), (f"Δτ, {um}", "right"), (f"Δr′, {um}", "right"), (f"Δτ′, {um}", "right"),
+            (f"s, {um}", "right")]
+    verdict = fit.tol_radial is not None or fit.tol_tangential is not None
+    if verdict:
+        cols.append((pick(lang, "Verdict", "Заключение"), "left"))
+    title = pick(lang, f"Bore position errors by least squares over {fit.used} measurements (± standard uncertainty)",
+                 f"Погрешности положения расточек по методу наименьших квадратов, {fit.used} измерений "
+                 f"(± стандартная неопределённость)")
+    caption = pick(lang,
+                   "Δr = |P| − R radial, Δτ = R·(angle − θ) tangential (counter-clockwise +); unprimed: left cheek, "
+                   "primed: right cheek; s: skew of the bore's axis about the carrier's axis. Bore 1 of the left cheek "
+                   "defines the frame (Δτ1 = 0).",
+                   "Δr = |P| − R — радиальная, Δτ = R·(угол − θ) — тангенциальная погрешность (против часовой стрелки +); "
+                   "без штриха — левая щека, со штрихом — правая; s — скрещивание оси расточки относительно оси водила. "
+                   "Расточка 1 левой щеки задаёт систему координат (Δτ1 = 0).")
+    t = _table(title, *cols, caption=caption)
+    for b in fit.bores:
+        row = [str(b.bore), _pm(b.radial, b.u_radial, lang),
+               _pm(b.tangential, b.u_tangential, lang) if b.bore > 1 else _um(0.0, lang),
+               _pm(b.radial_prime, b.u_radial_prime, lang), _pm(b.tangential_prime, b.u_tangential_prime, lang),
+               _um(b.skew, lang)]
+        if verdict:
+            row.append(pick(lang, "within", "годна") if b.within else
+                       "[red]" + pick(lang, "out of tolerance", "вне допуска") + "[/]")
+        t.add_row(*row)
+    return t
+
+
+def _chord_only_table(fit: CarrierFit, lang: str):
+    um = pick(lang, "µm", "мкм")
+    title = pick(lang, "The plants' chord-only estimate (seed 004, eq. (1)) beside the fit: tangential error relative "
+                       "to bore 1, " + um,
+                 "Оценка заводов только по хордам (статья 004, формула (1)) рядом с МНК: тангенциальная погрешность "
+                 "относительно расточки 1, " + um)
+    caption = pick(lang,
+                   "τ̂ = Σ(h_k − 2R·sin(π/z_c))/cos(π/z_c); its error from the radial errors alone, to first order: "
+                   "tan(π/z_c)·Σ(Δr_k + Δr_k+1) (left cheek, from the fitted Δr).",
+                   "τ̂ = Σ(h_k − 2R·sin(π/z_c))/cos(π/z_c); её ошибка только от радиальных погрешностей, в первом "
+                   "приближении: tg(π/z_c)·Σ(Δr_k + Δr_k+1) (левая щека, по найденным Δr).")
+    t = _table(title, (pick(lang, "Bore", "Расточка"), "right"),
+               (pick(lang, "chord-only τ̂", "по хордам τ̂"), "right"), (pick(lang, "fit Δτ", "МНК Δτ"), "right"),
+               ("τ̂ − Δτ", "right"), (pick(lang, "from Δr", "от Δr"), "right"),
+               (pick(lang, "chord-only τ̂′", "по хордам τ̂′"), "right"), (pick(lang, "fit Δτ′ − Δτ′1", "МНК Δτ′ − Δτ′1"), "right"),
+               ("τ̂′ − (Δτ′ − Δτ′1)", "right"), caption=caption)
+    for b in fit.bores:
+        t.add_row(str(b.bore), _um(b.chord_only, lang), _um(b.tangential, lang), _um(b.chord_only - b.tangential, lang),
+                  _um(b.radial_bias, lang), _um(b.chord_only_prime, lang), _um(b.fit_relative_prime, lang),
+                  _um(b.chord_only_prime - b.fit_relative_prime, lang))
+    return t
+
+
+def _residuals_table(fit: CarrierFit, lang: str):
+    um = pick(lang, "µm", "мкм")
+    by_name = fit.residual_by_name
+    kinds = [k for k in KINDS if any(f"{k}{i}" in by_name for i in range(1, fit.z_c + 1))]
+    title = pick(lang, f"Residuals, measured − fitted, {um}", f"Невязки, измерено − рассчитано, {um}")
+    caption = pick(lang, "In brackets: left out (--exclude); red: suspect; —: not measured.",
+                   "В скобках — исключено (--exclude); красным — подозрительное; — не измерялось.")
+    t = _table(title, (pick(lang, "Bore", "Расточка"), "right"), *((KIND_LABELS[k], "right") for k in kinds),
+               caption=caption)
+    for i in range(1, fit.z_c + 1):
+        row = [str(i)]
+        for k in kinds:
+            r = by_name.get(f"{k}{i}")
+            if r is None:
+                row.append("—")
+                continue
+            text = _um(r.residual, lang, decimals=2)
+            if not r.used:
+                text = f"({text})"
+            if r.name in fit.suspect:
+                text = f"[bold red]{text}[/]"
+            row.append(text)
+        t.add_row(*row)
+    return t
+
+
+def summary_lines(fit: CarrierFit, lang: str, card_has_pair_skew: bool) -> list[str]:
+    """The sentences under the tables: the fit's quality, the suspects, the tolerances."""
+    um = pick(lang, "µm", "мкм")
+    lines = []
+    sigma = "—" if fit.sigma is None else _um(fit.sigma, lang, 2)
+    lines.append(pick(lang,
+                      f"RMS of the residuals {_um(fit.rms, lang, 2)} {um}; scatter of one measurement σ = {sigma} {um} "
+                      f"({fit.used} measurements, {fit.unknowns} unknowns, {fit.redundancy} redundant).",
+                      f"СКЗ невязок {_um(fit.rms, lang, 2)} {um}; рассеяние одного измерения σ = {sigma} {um} "
+                      f"(измерений {fit.used}, неизвестных {fit.unknowns}, избыточных {fit.redundancy})."))
+    crit = "—" if fit.critical_t is None else num(fit.critical_t, lang, decimals=1)
+    if fit.suspect:
+        by_name = fit.residual_by_name
+        shown = ", ".join(f"{n} (t = {num(by_name[n].standardised, lang, decimals=1)})"
+                          if by_name[n].standardised is not None else n for n in fit.suspect)
+        lines.append("[bold red]" + pick(
+            lang, f"Suspect: {shown}; the threshold is {crit}. Re-measure, or run again with --exclude {fit.suspect[0]}.",
+            f"Подозрительные измерения: {shown}; порог {crit}. Перемерьте или запустите снова с "
+            f"--exclude {fit.suspect[0]}.") + "[/]")
+    elif fit.critical_t is not None:
+        lines.append(pick(lang, f"No measurement stands out (every standardised residual is below {crit}).",
+                          f"Выпадающих измерений нет (все стандартизованные невязки меньше {crit})."))
+    else:
+        lines.append(pick(lang, "Too few redundant measurements to test them for a misread.",
+                          "Слишком мало избыточных измерений, чтобы проверить их на промахи."))
+    if fit.excluded:
+        lines.append(pick(lang, "Left out: ", "Исключены: ") + ", ".join(fit.excluded) + ".")
+    if fit.tol_radial is not None or fit.tol_tangential is not None:
+        parts = []
+        if fit.tol_radial is not None:
+            parts.append(pick(lang, "radial ±", "радиальная ±") + f"{_um(fit.tol_radial, lang)} {um}")
+        if fit.tol_tangential is not None:
+            parts.append(pick(lang, "tangential ±", "тангенциальная ±") + f"{_um(fit.tol_tangential, lang)} {um}")
+        out = [str(b.bore) for b in fit.bores if not b.within]
+        verdict = (pick(lang, "bores out of tolerance: ", "вне допуска расточки: ") + ", ".join(out)) if out \
+            else pick(lang, "every bore is within.", "все расточки годны.")
+        lines.append(pick(lang, "Tolerances: ", "Допуски: ") + ", ".join(parts) + "; " + verdict)
+    if card_has_pair_skew:
+        lines.append(pick(lang, "The skews of neighbouring axes (column e) follow the project's reconstruction: the "
+                                "seed's preview stops before defining them (docs/accuracy.md).",
+                          "Скрещивания осей соседних расточек (столбец e) приняты по реконструкции проекта: "
+                          "фрагмент статьи обрывается до их определения (docs/accuracy.md)."))
+    return lines
+
+
+def print_carrier(console, fit: CarrierFit, lang: str, card_has_pair_skew: bool = False) -> None:
+    title = pick(lang, f"Planet carrier: {fit.z_c} bores on R = {num(fit.radius * MM, lang, sig=6)} mm "
+                       f"(Leontiev, Nasonov, Bedny, 2012)",
+                 f"Водило: {fit.z_c} расточек на R = {num(fit.radius * MM, lang, sig=6)} мм "
+                 f"(Леонтьев, Насонов, Бедный, 2012)")
+    console.print(f"[bold]{title}[/]")
+    for table in (_bores_table(fit, lang), _chord_only_table(fit, lang), _residuals_table(fit, lang)):
+        console.print(table)
+    for line in summary_lines(fit, lang, card_has_pair_skew):
+        console.print(line)
