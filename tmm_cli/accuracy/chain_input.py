@@ -120,11 +120,16 @@ def clearance_angle(clearance: float, length: float) -> float:
     return math.atan(clearance / length)
 
 
-def _number(value, where: str, key: str, unit: str) -> float:
+def _number(value, where: str, key: str, unit: str | None) -> float:
+    """``value`` as a finite float; TmmError naming the link, the key and the unit (None: a pure number)."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
+        if unit is None:
+            raise TmmError(f"{where}: {key} is {value!r}; give a number")
         raise TmmError(f"{where}: {key} is {value!r}; give a number in {unit}")
     x = float(value)
     if not math.isfinite(x):
+        if unit is None:
+            raise TmmError(f"{where}: {key} is {value}; give a finite number")
         raise TmmError(f"{where}: {key} is {value}; give a finite number in {unit}")
     return x
 
@@ -153,7 +158,7 @@ def _link(table, index: int, chain_unit: str, factor: float, angular: bool, seen
     distribution = table.get("distribution", "normal")
     if distribution not in LAMBDA2:
         raise TmmError(f"{where}: distribution is {distribution!r}; give normal, triangle or uniform")
-    asymmetry = _number(table.get("asymmetry", 0.0), where, "asymmetry", "parts of T/2")
+    asymmetry = _number(table.get("asymmetry", 0.0), where, "asymmetry", None)
     if not -1.0 <= asymmetry <= 1.0:
         raise TmmError(f"{where}: asymmetry is {asymmetry:g}; α shifts the centre of dispersion by α·T/2, "
                        f"give −1 to 1")

@@ -145,6 +145,21 @@ OPTIONS: dict[str, str] = {
         "Взять K-й кратный набор чисел зубьев (по умолчанию — наименьший в заданных пределах).",
     "Output folder (default ./tmm-out); files go to DIR/planetary/.":
         "Папка результатов (по умолчанию ./tmm-out); файлы пишутся в DIR/planetary/.",
+    # tmm carrier, tmm chain (issue 23): seed 004, seed 003's second article
+    "Nominal radius of the bore circle from the drawing [mm].":
+        "Номинальный радиус окружности центров расточек по чертежу [мм].",
+    "Tolerance on the radial error of a bore [µm]: a verdict per bore.":
+        "Допуск радиальной погрешности расточки [мкм]: заключение о годности каждой расточки.",
+    "Tolerance on the tangential error of a bore [µm]: a verdict per bore.":
+        "Допуск тангенциальной погрешности расточки [мкм]: заключение о годности каждой расточки.",
+    "Leave a measurement out of the fit, e.g. --exclude h3 (repeatable).":
+        "Исключить измерение из расчёта, например --exclude h3 (можно несколько раз).",
+    "Output folder (default ./tmm-out); files go to DIR/carrier/.":
+        "Папка результатов (по умолчанию ./tmm-out); файлы пишутся в DIR/carrier/.",
+    "Risk that the closing link falls outside its probabilistic limits [%] (0.27: t = 3).":
+        "Риск выхода замыкающего звена за пределы, найденные вероятностным методом [%] (0,27: t = 3).",
+    "Output folder (default ./tmm-out); files go to DIR/chain/.":
+        "Папка результатов (по умолчанию ./tmm-out); файлы пишутся в DIR/chain/.",
 }
 
 # command path → Russian help (the English one is the command's docstring) -----------------------
@@ -175,6 +190,18 @@ COMMANDS: dict[str, str] = {
                      "зацепления зубчатых колёс первой и второй ступеней // Вестник НТУ «ХПИ». Тем. вып. "
                      "«Машиноведение и САПР». — 2010. Пример из статьи:\n\n"
                      "\b\ntmm planetary --ratio 1/10 --c 26/25 --planets 3 --module 5 --x1 -0.4 --x2 0.4",
+    "tmm carrier": "Водило планетарной передачи: положение расточек по карте измерений завода (М. Ю. Леонтьев, "
+                   "Д. А. Насонов, И. А. Бедный, 2012).\n\n"
+                   "CARD — файл CSV, по строке на расточку: bore,R,R_prime,h,h_prime,s[,e] в миллиметрах "
+                   "(docs/accuracy.md). Все измерения обрабатываются вместе нелинейным методом наименьших квадратов; "
+                   "рядом показана оценка заводов только по хордам, промах измерения называется по имени. Пример:\n\n"
+                   "\b\n    tmm carrier docs/examples/carrier-5.csv --radius 125",
+    "tmm chain": "Размерная цепь: замыкающее звено методом максимума-минимума и вероятностным методом.\n\n"
+                 "FILE.toml: имя цепи, единицы и таблицы [[link]] (name, nominal, es, ei, sign; по желанию "
+                 "distribution, asymmetry; в угловой цепи — зазор ступицы clearance и длина length, β = arctg(δ/l)), "
+                 "как в статье А. И. Абдуллаева, Г. Н. Расулова о размерных цепях пакетных редукторов "
+                 "(docs/accuracy.md). Пример:\n\n"
+                 "\b\n    tmm chain docs/examples/chain-radial-1.toml",
     "tmm note": "Пересобрать пояснительную записку после правки: note.typ → note.pdf (по умолчанию — в текущей "
                 "папке).",
 }
@@ -619,6 +646,106 @@ TEMPLATES: list[tuple[str, str]] = [
      "здесь нет {src}; запустите tmm note в папке записки (или укажите файл .typ)"),
     ("{src} is not a typst file (.typ)", "{src} — не файл typst (.typ)"),
     ("cannot write {p} ({why})", "не удалось записать {p} ({why})"),
+    # accuracy/card.py: the measurement card of tmm carrier
+    ("{w}: {c} is '{v}', not a number; give millimetres such as 125.003",
+     "{w}: {c} = '{v}' — не число; задайте миллиметры, например 125.003"),
+    ("{w}: {c} is '{v}'; give a finite number of millimetres", "{w}: {c} = '{v}'; задайте конечное число миллиметров"),
+    ("{s} is larger than {n} KiB; a card has one row per bore (3 to 12)",
+     "{s} больше {n} КиБ; в карте по одной строке на расточку (от 3 до 12)"),
+    ("{s} is empty; give the header {h} and one row per bore",
+     "{s} пуст; задайте заголовок {h} и по одной строке на расточку"),
+    ("{s}: unknown column '{c}'; the header must be {h} (and optionally e)",
+     "{s}: неизвестный столбец '{c}'; заголовок должен быть {h} (и, если измерялось, e)"),
+    ("{s}: the column '{c}' is given twice", "{s}: столбец '{c}' указан дважды"),
+    ("{s}: the column '{c}' is missing; the header must be {h} (and optionally e)",
+     "{s}: нет столбца '{c}'; заголовок должен быть {h} (и, если измерялось, e)"),
+    ("{s} has {n} bore rows; a carrier card needs one row per bore, from {lo} to {hi} bores",
+     "в {s} строк расточек: {n}; в карте водила нужна одна строка на расточку, от {lo} до {hi} расточек"),
+    ("{w} has {n} cells, the header {m}; with decimal commas separate the columns by semicolons",
+     "{w}: ячеек {n}, а в заголовке {m}; при десятичных запятых разделяйте столбцы точкой с запятой"),
+    ("{w} has {n} cells, the header {m}", "{w}: ячеек {n}, а в заголовке {m}"),
+    ("{w}: bore is '{b}', expected {n}; list the bores in order 1, 2, … counter-clockwise seen from the end of the "
+     "carrier's axis",
+     "{w}: номер расточки '{b}', ожидался {n}; перечислите расточки по порядку 1, 2, … против часовой стрелки, "
+     "если смотреть с конца оси водила"),
+    ("{w}: {c} is empty; every bore needs {cols}", "{w}: {c} не заполнено; для каждой расточки нужны {cols}"),
+    ("{w}: {c} is {v} mm; a centre distance must be positive",
+     "{w}: {c} = {v} мм; межцентровое расстояние должно быть положительным"),
+    ("{w}: {c} is {v} mm, longer than {r1} + {r2} = {x} mm (a chord is at most a diameter); check the row",
+     "{w}: {c} = {v} мм, больше {r1} + {r2} = {x} мм (хорда не длиннее диаметра); проверьте строку"),
+    # accuracy/carrier.py: fitting the card
+    ("--radius is {v}; give the nominal radius of the bore circle from the drawing, {lo} to {hi} mm",
+     "--radius = {v}; задайте номинальный радиус окружности расточек по чертежу, от {lo} до {hi} мм"),
+    ("the card's {m} = {v} mm is more than {p} off its nominal {x} mm (radius {r} mm, {z} bores); check --radius, the "
+     "card's units (millimetres) and the order of the rows",
+     "в карте {m} = {v} мм отличается от номинала {x} мм больше чем на {p} (радиус {r} мм, расточек {z}); "
+     "проверьте --radius, единицы карты (миллиметры) и порядок строк"),
+    ("the card's {m} = {v} mm is more than {p} of the radius; a skew is a small displacement (micrometres to tenths of "
+     "a millimetre): check the card",
+     "в карте {m} = {v} мм — больше {p} радиуса; скрещивание — малое смещение (от микрометров до десятых долей "
+     "миллиметра): проверьте карту"),
+    ("{w} is {v}; give a positive tolerance in micrometres", "{w} = {v}; задайте положительный допуск в микрометрах"),
+    ("--exclude {n}: the card has no measurement of that name; names are the column and the bore, e.g. h3, R_prime2, "
+     "s1",
+     "--exclude {n}: в карте нет измерения с таким именем; имя — это столбец и номер расточки, например h3, "
+     "R_prime2, s1"),
+    ("without {names} the measurements no longer fix every bore centre ({n} unknowns); exclude fewer",
+     "без {names} измерений уже не хватает, чтобы найти все центры расточек ({n} неизвестных); исключите меньше"),
+    ("the card's measurements do not fit one carrier near the drawing's polygon; check the card",
+     "измерения карты не сходятся к одному водилу вблизи номинального многоугольника; проверьте карту"),
+    # accuracy/chain_input.py and chain.py: the chain file of tmm chain
+    ("{w}: {k} is {v}; give a number in {u}", "{w}: {k} = {v}; задайте число ({u})"),
+    ("{w}: {k} is {v}; give a finite number in {u}", "{w}: {k} = {v}; задайте конечное число ({u})"),
+    ("{w}: {k} is {v}; give a number", "{w}: {k} = {v}; задайте число"),
+    ("{w}: {k} is {v}; give a finite number", "{w}: {k} = {v}; задайте конечное число"),
+    ("{w} is not a table; write each link as [[link]] with name, nominal, es, ei, sign",
+     "{w} — не таблица; запишите каждое звено как [[link]] с ключами name, nominal, es, ei, sign"),
+    ("{w}: unknown key '{k}'; a link has {ks}", "{w}: неизвестный ключ '{k}'; у звена есть ключи {ks}"),
+    ('{w} has no name; give each link a name, e.g. name = "A"',
+     '{w} без имени; дайте каждому звену имя, например name = "A"'),
+    ("{w}: the name is {n} characters long; keep it under 40", "{w}: имя длиной {n} символов; оно должно быть короче 40"),
+    ("{w}: the name is used twice; give each link its own name", "{w}: имя встречается дважды; дайте каждому звену своё имя"),
+    ('{w}: sign is {v}; give "+" (the link increases the closing link) or "-" (it decreases it)',
+     '{w}: sign = {v}; задайте "+" (увеличивающее звено) или "-" (уменьшающее)'),
+    ("{w}: distribution is {v}; give normal, triangle or uniform",
+     "{w}: distribution = {v}; задайте normal (нормальный закон), triangle (Симпсона) или uniform (равной "
+     "вероятности)"),
+    ("{w}: asymmetry is {v}; α shifts the centre of dispersion by α·T/2, give −1 to 1",
+     "{w}: asymmetry = {v}; α смещает центр группирования на α·T/2, задайте от −1 до 1"),
+    ("{w}: clearance and length make an angular link β = arctg(δ/l); set the chain's units to an angle (deg, arcmin, "
+     "arcsec, rad, mrad, urad)",
+     "{w}: clearance и length задают угловое звено β = arctg(δ/l); задайте цепи угловые единицы units (deg, arcmin, "
+     "arcsec, rad, mrad, urad)"),
+    ("{w}: give either clearance and length or nominal, es and ei, not both",
+     "{w}: задайте либо clearance и length, либо nominal, es и ei, но не то и другое"),
+    ("{w}: {k} is missing; a clearance link needs clearance and length in mm",
+     "{w}: нет ключа {k}; звену-зазору нужны clearance и length в мм"),
+    ("{w}: clearance {d} mm, length {l} mm; both must be positive",
+     "{w}: зазор {d} мм, длина {l} мм; оба должны быть положительными"),
+    ("{w}: the clearance {d} mm is not smaller than the length {l} mm; give the radial clearance and the length of the "
+     "fit in mm",
+     "{w}: зазор {d} мм не меньше длины {l} мм; задайте радиальный зазор и длину сопряжения в мм"),
+    ("{w}: {k} is missing; a link needs nominal, es, ei (in {u}) and sign",
+     "{w}: нет ключа {k}; звену нужны nominal, es, ei (в {u}) и sign"),
+    ('{w}: nominal is {v}; give its size (not negative) and say its direction with sign = "-"',
+     '{w}: nominal = {v}; задайте размер (не отрицательный), а направление — ключом sign = "-"'),
+    ("{w}: es = {es} is below ei = {ei}; es is the upper deviation, ei the lower",
+     "{w}: es = {es} меньше ei = {ei}; es — верхнее отклонение, ei — нижнее"),
+    ("{s} is larger than {n} KiB", "{s} больше {n} КиБ"),
+    ("{s} is not valid TOML: {why}", "{s} — не TOML: {why}"),
+    ("{s}: unknown key '{k}'; a chain has name, units and [[link]] tables",
+     "{s}: неизвестный ключ '{k}'; в файле цепи бывают name, units и таблицы [[link]]"),
+    ("{s}: name is {v}; give the chain's name as a string", "{s}: name = {v}; задайте имя цепи строкой"),
+    ("{s}: units is {v}; give mm, um, or an angle: deg, arcmin, arcsec, rad, mrad, urad",
+     "{s}: units = {v}; задайте mm, um или угловые единицы: deg, arcmin, arcsec, rad, mrad, urad"),
+    ("{s}: write the links as [[link]] tables, not [link]", "{s}: записывайте звенья таблицами [[link]], а не [link]"),
+    ("the chain has no links; add [[link]] tables with name, nominal, es, ei, sign",
+     "в цепи нет звеньев; добавьте таблицы [[link]] с ключами name, nominal, es, ei, sign"),
+    ("{s} has no links; add [[link]] tables with name, nominal, es, ei, sign",
+     "в {s} нет звеньев; добавьте таблицы [[link]] с ключами name, nominal, es, ei, sign"),
+    ("{s} has {n} links; a chain may have up to {m}", "в {s} звеньев: {n}; в цепи может быть не больше {m}"),
+    ("--risk is {v}; give the risk in percent, {lo} to {hi} (0.27 gives t = 3)",
+     "--risk = {v}; задайте риск в процентах, от {lo} до {hi} (0,27 даёт t = 3)"),
 ]
 
 
@@ -662,6 +789,7 @@ _PLACES = [(re.compile(p), ru) for p, ru in (
     (r"(\S) line (\d+)", r"\1, строка \2"),  # "table.csv line 3" → "table.csv, строка 3"
     (r" \(variant (\d+)\)", r" (вариант \1)"), (r"^the ratio i$", "передаточное отношение i"),
     (r"^note template ", "файл стиля записки "),
+    (r"(\S) bore (\d+)$", r"\1, расточка \2"), (r"^link (\d+)", r"звено \1"),  # a card's row, a chain's link
     # the system's reasons (OSError.strerror) in parentheses
     (r"^Permission denied$", "нет прав доступа"), (r"^No such file or directory$", "нет такого файла или папки"),
     (r"^Read-only file system$", "файловая система только для чтения"), (r"^No space left on device$", "нет места на диске"),
