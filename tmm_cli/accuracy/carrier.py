@@ -21,13 +21,8 @@ From the fit (standard least-squares statistics, e.g. ISO/IEC Guide 98-3 §H, Dr
 - σ² = Σ r² / (m − n), the scatter of one measurement estimated from the residuals
   (m measurements, n = 4·z_c − 1 unknowns); the standard uncertainty of the coordinates is the
   square root of the diagonal of σ²·(JᵀJ)⁻¹, propagated to the radial and tangential errors;
-- externally standardised residuals t_i = r_i / (σ_(i)·√(1 − H_ii)), H the hat matrix,
-  σ_(i) the scatter without measurement i (never below the gauge's resolution/√12): a misread
-  gauge has a t far above the rest. One is *suspect* when |t| exceeds the two-sided Student
-  quantile with m − n − 1 degrees of freedom at 1 % over all m measurements (Bonferroni); it is
-  set aside and the rest tested again, until none stands out. Measurements that cannot be told
-  apart from the suspect (their residuals are proportional, correlation above 0.999) are named
-  with it. The reported fit keeps every measurement the user did not exclude.
+- a misread gauge: the externally standardised residuals and the search of :mod:`.suspects`.
+  The reported fit keeps every measurement the user did not exclude.
 
 Errors of a bore (the issue's definitions): radial |P_i| − R, tangential R·(atan2(z_i, y_i) − θ_i),
 both cheeks, R the drawing's radius.
@@ -44,7 +39,9 @@ from ..limits import CARRIER_RADIUS_MM
 from ..records import record
 from .card import MM, Card
 from .chord_only import chord_only_tangential, radial_bias
-from .measurements import KINDS, jacobian, measurement_names, nominal_angles, nominal_bores, predict
+from .lsq import Problem, free_columns, measured_values, pack, solve, unpack
+from .measurements import KINDS, measurement_names, nominal_angles, nominal_bores, predict
+from .suspects import find_suspects
 
 PLAUSIBLE = 0.05
 """A card whose distances differ from the drawing's by more than this share is refused (a wrong
@@ -54,11 +51,6 @@ RESOLUTION_M = 1e-6
 """The gauges' resolution [m] (1 µm): the floor of the scatter in the suspect test, so that an
 exactly consistent card does not make rounding noise look like a misread."""
 
-SUSPECT_ALPHA = 0.01
-"""Family-wise false-alarm probability of the suspect test over all measurements of a card."""
-
-INDISTINGUISHABLE = 0.999
-"""Residual correlation above which two measurements cannot be told apart."""
 
 
 @record
@@ -134,132 +126,6 @@ class CarrierFit:
         return {r.name: r for r in self.residuals}
 
 
-# ------------------------------------------------------------------------------- the model
-
-def _measured(card: Card) -> dict[str, np.ndarray]:
-    e = np.array([np.nan if v is None else v for v in card.pair_skew])
-    return {"R": np.array(card.radial), "R_prime": np.array(card.radial_prime), "h": np.array(card.chord),
-            "h_prime": np.array(card.chord_prime), "s": np.array(card.skew), "e": e}
-
-
-def _unpack(x: np.ndarray, z: int) -> tuple[np.ndarray, np.ndarray]:
-    """Parameters (y_1, y_2, z_2, …, y_{z_c}, z_{z_c}, y'_1, z'_1, …) → centres (left, right)."""
-    left = np.empty((z, 2))
-    left[0] = (x[0], 0.0)
-    left[1:] = x[1:2 * z - 1].reshape(z - 1, 2)
-    return left, x[2 * z - 1:].reshape(z, 2)
-
-
-def _pack(left: np.ndarray, right: np.ndarray) -> np.ndarray:
-    return np.concatenate(([left[0, 0]], left[1:].ravel(), right.ravel()))
-
-
-
-
-def _free_columns(z: int) -> np.ndarray:
-    return np.delete(np.arange(4 * z), 1)
-
-
-class _Problem:
-    """The residual function of one card and one set of used measurements, in units of R."""
-
-    def __init__(self, card: Card, radius: float, used: np.ndarray):
-        self.z = card.z_c
-        measured = _measured(card)
-        self.measured = np.concatenate([measured[k] for k in KINDS]) / radius
-        self.used = used
-        self.cols = _free_columns(self.z)
-
-    def fun(self, x):
-        left, right = _unpack(x, self.z)
-        pred = predict(left, right)
-        return (np.concatenate([pred[k] for k in KINDS]) - self.measured)[self.used]
-
-    def jac(self, x):
-        left, right = _unpack(x, self.z)
-        return jacobian(left, right)[np.ix_(self.used, self.cols)]
-
-
-def _solve(problem: _Problem, x0: np.ndarray):
-    from scipy.optimize import least_squares  # heavy: only when a card is fitted
-
-    sol = least_squares(problem.fun, x0, jac=problem.jac, method="lm", xtol=1e-15, ftol=1e-15, gtol=1e-15,
-                        max_nfev=200)
-    return sol.x, int(sol.nfev)
-
-
-# --------------------------------------------------------------------------- the diagnostics
-
-def _hat(jac: np.ndarray) -> np.ndarray:
-    """The residual projector's columns M = I − J(JᵀJ)⁻¹Jᵀ (through an orthonormal basis of J)."""
-    q, _ = np.linalg.qr(jac)
-    return np.eye(len(jac)) - q @ q.T
-
-
-def _studentised(jac: np.ndarray, r: np.ndarray, floor: float) -> tuple[np.ndarray, np.ndarray]:
-    """Externally standardised residuals t_i (NaN where a measurement has no redundancy) and M."""
-    m, n = jac.shape
-    d = m - n
-    proj = _hat(jac)
-    mii = np.clip(np.diag(proj), 0.0, 1.0)
-    t = np.full(m, np.nan)
-    if d < 2:
-        return t, proj
-    ssr = float(r @ r)
-    ok = mii > 1e-9
-    s2 = (ssr - r[ok] ** 2 / mii[ok]) / (d - 1)
-    sigma = np.maximum(np.sqrt(np.maximum(s2, 0.0)), floor)
-    t[ok] = r[ok] / (sigma * np.sqrt(mii[ok]))
-    return t, proj
-
-
-def _critical_t(dof: int, m: int) -> float:
-    from scipy.stats import t as student
-
-    return float(student.ppf(1.0 - SUSPECT_ALPHA / (2.0 * m), dof))
-
-
-def _find_suspects(card: Card, radius: float, used: np.ndarray, x: np.ndarray, floor: float,
-                   names: list[str]) -> tuple[list[str], float | None, np.ndarray]:
-    """Suspect measurements by repeated externally standardised residuals (the module's text);
-    also the standardised residuals of the full fit (NaN for unused or untestable ones)."""
-    n = 4 * card.z_c - 1
-    used = used.copy()
-    suspects: list[str] = []
-    first_t = np.full(len(names), np.nan)
-    first_crit = None
-    for round_no in range(len(names)):
-        problem = _Problem(card, radius, used)
-        if round_no:
-            x, _ = _solve(problem, x)
-        jac = problem.jac(x)
-        if np.linalg.matrix_rank(jac) < n:
-            break
-        r = -problem.fun(x)  # measured − fitted
-        t, proj = _studentised(jac, r, floor)
-        m = int(used.sum())
-        if m - n < 2:
-            break
-        crit = _critical_t(m - n - 1, m)
-        index = np.flatnonzero(used)
-        if round_no == 0:
-            first_t[index] = t
-            first_crit = crit
-        if np.all(np.isnan(t)):
-            break
-        k = int(np.nanargmax(np.abs(t)))
-        if abs(t[k]) <= crit:
-            break
-        mii = np.diag(proj)
-        group = [k] + [j for j in range(m) if j != k and mii[j] > 1e-9
-                       and abs(proj[k, j]) / math.sqrt(mii[k] * mii[j]) > INDISTINGUISHABLE]
-        suspects.extend(names[index[j]] for j in group if names[index[j]] not in suspects)
-        used[index[k]] = False
-        if m - 1 - n < 3:  # too little redundancy left to test the rest
-            break
-    return suspects, first_crit, first_t
-
-
 # ----------------------------------------------------------------------------- the entry point
 
 def _check_radius(radius: float) -> float:
@@ -314,7 +180,7 @@ def fit_carrier(card: Card, radius: float, *, exclude: tuple[str, ...] | list[st
     An exactly measured triangle carrier whose bore 2 sits 30 µm further out: the fit finds it,
     with no residual; the chord-only estimate turns bores 2 and 3 by tan 60°·30 µm ≈ 52 µm.
 
-    >>> from .card import Card
+    >>> from tmm_cli.accuracy.card import Card
     >>> R = 0.125; left = nominal_bores(3, R); left[1] *= (R + 30e-6) / R
     >>> m = predict(left, left)
     >>> card = Card(*(tuple(m[k]) for k in KINDS[:5]), pair_skew=(None,) * 3)
@@ -331,7 +197,8 @@ def fit_carrier(card: Card, radius: float, *, exclude: tuple[str, ...] | list[st
     z = card.z_c
     n = 4 * z - 1
     names = measurement_names(z)
-    measured = np.concatenate([v for v in _measured(card).values()])
+    values = measured_values(card)
+    measured = np.concatenate([values[k] for k in KINDS])
     present = ~np.isnan(measured)
     known = {name for name, p in zip(names, present) if p}
     excluded = []
@@ -342,13 +209,13 @@ def fit_carrier(card: Card, radius: float, *, exclude: tuple[str, ...] | list[st
         if name not in excluded:
             excluded.append(name)
     used = present & ~np.isin(names, excluded)
-    problem = _Problem(card, radius, used)
-    x0 = _pack(*(nominal_bores(z, 1.0),) * 2)
+    problem = Problem(card, radius, used)
+    x0 = pack(*(nominal_bores(z, 1.0),) * 2)
     if int(used.sum()) < n or np.linalg.matrix_rank(problem.jac(x0)) < n:
         raise TmmError(f"without {', '.join(excluded)} the measurements no longer fix every bore centre "
                        f"({n} unknowns); exclude fewer")
-    x, nfev = _solve(problem, x0)
-    left, right = _unpack(x, z)
+    x, nfev = solve(problem, x0)
+    left, right = unpack(x, z)
     if np.abs(np.concatenate((left, right)) - np.concatenate((nominal_bores(z, 1.0),) * 2)).max() > PLAUSIBLE:
         raise TmmError("the card's measurements do not fit one carrier near the drawing's polygon; check the card")
     jac = problem.jac(x)
@@ -360,21 +227,22 @@ def fit_carrier(card: Card, radius: float, *, exclude: tuple[str, ...] | list[st
     # covariance of the unknowns (units of R²), then of all 4·z_c coordinates (z_1 is fixed: 0)
     cov = np.zeros((4 * z, 4 * z))
     if sigma_s is not None:
-        cols = _free_columns(z)
+        cols = free_columns(z)
         cov[np.ix_(cols, cols)] = sigma_s**2 * np.linalg.pinv(jac.T @ jac)
     cov *= radius**2
     left_m, right_m = left * radius, right * radius
-    fitted = np.concatenate([v for v in predict(left_m, right_m).values()])
+    predicted = predict(left_m, right_m)
+    fitted = np.concatenate([predicted[k] for k in KINDS])
 
     floor = resolution / math.sqrt(12.0) / radius
-    suspects, crit, t_first = _find_suspects(card, radius, used, x, floor, names)
+    suspects, crit, t_first = find_suspects(card, radius, used, x, floor, names)
 
     theta = nominal_angles(z)
     rad = np.hypot(left_m[:, 0], left_m[:, 1]) - radius
     rad_p = np.hypot(right_m[:, 0], right_m[:, 1]) - radius
     tan = radius * _angle_error(left_m, theta)
     tan_p = radius * _angle_error(right_m, theta)
-    skew = predict(left_m, right_m)["s"]
+    skew = predicted["s"]
     chord_only = chord_only_tangential(card.chord, radius)
     chord_only_p = chord_only_tangential(card.chord_prime, radius)
     bias = radial_bias(tuple(rad))
