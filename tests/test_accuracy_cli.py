@@ -53,10 +53,12 @@ def test_carrier_files_and_json_agree(tmp_path):
 def test_carrier_misread_then_excluded(tmp_path):
     doc = run_json("carrier", MISREAD, "--radius", 125, "--out", tmp_path)
     assert doc["suspect"] == ["h3"]
+    assert any("--exclude h3" in n for n in doc["notes"])
     assert doc["residuals_um"]["h3"] > 0 and doc["standardised_residuals"]["h3"] > doc["suspect_threshold"]
     again = run_json("carrier", MISREAD, "--radius", 125, "--exclude", "h3", "--out", tmp_path)
     clean = run_json("carrier", CARD, "--radius", 125, "--out", tmp_path)
     assert again["suspect"] == [] and again["excluded"] == ["h3"]
+    assert not any("--exclude" in n for n in again["notes"])
     # without the misread chord the bores are the clean card's, within its uncertainty
     for a, b in zip(again["bores"], clean["bores"]):
         assert a["tangential_um"] == pytest.approx(b["tangential_um"], abs=3 * max(b["u_tangential_um"], 0.1))
@@ -122,6 +124,17 @@ def test_chain_risk_option(tmp_path):
     beta = doc["links"][3]
     assert beta["beta_from"] == {"clearance_mm": 0.0105, "length_mm": 45.0}
     assert beta["es"] == pytest.approx(math.degrees(math.atan(0.0105 / 45)) * 60)
+    assert any("0 ± β" in n for n in doc["notes"])
+
+
+def test_chain_warns_when_the_probabilistic_method_gives_more(tmp_path):
+    one = tmp_path / "one.toml"
+    one.write_text('[[link]]\nname = "A"\nnominal = 10\nes = 0.1\nei = 0\nsign = "+"\ndistribution = "uniform"\n',
+                   encoding="utf-8")
+    doc = chain_json(one, "--out", tmp_path)
+    assert doc["probabilistic_exceeds_worst_case"] is True
+    assert doc["notes"] == ["The probabilistic tolerance 0.1732 exceeds the worst case 0.1: too few links (or uniform "
+                            "ones) for the probabilistic method; take the worst case."]
 
 
 def test_chain_tables_in_russian(tmp_path):

@@ -36,6 +36,7 @@ import numpy as np
 
 from ..errors import TmmError
 from ..limits import CARRIER_RADIUS_MM
+from ..notes import Note
 from ..records import record
 from .card import MM, Card
 from .chord_only import chord_only_tangential, radial_bias
@@ -120,6 +121,7 @@ class CarrierFit:
     tol_radial: float | None
     tol_tangential: float | None
     iterations: int
+    notes: tuple[Note, ...] = ()
 
     @property
     def residual_by_name(self) -> dict[str, Residual]:
@@ -286,8 +288,17 @@ def fit_carrier(card: Card, radius: float, *, exclude: tuple[str, ...] | list[st
         residuals.append(Residual(name=name, measured=float(measured[k]), fitted=float(fitted[k]),
                                   residual=float(measured[k] - fitted[k]),
                                   standardised=None if math.isnan(t) else float(t), used=bool(used[k])))
+    notes = [Note.make("carrier_parallel_cheeks", "assumption")]
+    if card.has_pair_skew:
+        notes.append(Note.make("carrier_pair_skew", "assumption"))
+    if suspects:
+        t_top = next(r.standardised for r in residuals if r.name == suspects[0])
+        notes.append(Note.make("carrier_suspect", "warning", names=", ".join(suspects), first=suspects[0],
+                               t=float("nan") if t_top is None else abs(t_top), crit=crit))
+    elif crit is None:
+        notes.append(Note.make("carrier_untested", "assumption", redundant=d))
     return CarrierFit(
         z_c=z, radius=radius, bores=tuple(bores), residuals=tuple(residuals),
         rms=math.sqrt(ssr / m) * radius, sigma=None if sigma_s is None else sigma_s * radius,
         unknowns=n, used=m, redundancy=d, suspect=tuple(suspects), excluded=tuple(excluded),
-        critical_t=crit, tol_radial=tol_r, tol_tangential=tol_t, iterations=nfev)
+        critical_t=crit, tol_radial=tol_r, tol_tangential=tol_t, iterations=nfev, notes=tuple(notes))

@@ -29,6 +29,7 @@ from statistics import NormalDist
 
 from ..errors import TmmError
 from ..limits import CHAIN_RISK_PCT
+from ..notes import Note
 from ..records import record
 from .chain_input import Chain
 
@@ -73,6 +74,7 @@ class ChainResult:
     shares: tuple[Share, ...]
     largest_worst_case: str
     largest_probabilistic: str
+    notes: tuple[Note, ...] = ()
 
     @property
     def probabilistic_exceeds_worst_case(self) -> bool:
@@ -146,8 +148,15 @@ def solve_chain(chain: Chain, risk_percent: float = RISK_DEFAULT_PCT) -> ChainRe
                          worst_case=k.tolerance / total_t if total_t > 0 else 0.0,
                          probabilistic=k.lambda2 * k.tolerance**2 / total_v if total_v > 0 else 0.0)
                    for k in chain.links)
+    wc, prob = worst_case(chain), probabilistic(chain, risk_percent)
+    notes = []
+    if any(k.clearance is not None for k in chain.links):
+        notes.append(Note.make("chain_beta", "assumption"))
+    if prob.tolerance > wc.tolerance * (1 + 1e-12):
+        notes.append(Note.make("chain_probabilistic_exceeds", "warning", tp=prob.tolerance / chain.unit_si,
+                               tw=wc.tolerance / chain.unit_si))
     return ChainResult(
-        chain=chain, nominal=sum(k.sign * k.nominal for k in chain.links), worst_case=worst_case(chain),
-        probabilistic=probabilistic(chain, risk_percent), shares=shares,
+        chain=chain, nominal=sum(k.sign * k.nominal for k in chain.links), worst_case=wc,
+        probabilistic=prob, shares=shares,
         largest_worst_case=max(shares, key=lambda s: s.worst_case).name,
-        largest_probabilistic=max(shares, key=lambda s: s.probabilistic).name)
+        largest_probabilistic=max(shares, key=lambda s: s.probabilistic).name, notes=tuple(notes))

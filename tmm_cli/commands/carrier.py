@@ -63,7 +63,7 @@ def carrier_cmd(card, radius_mm, tol_radial_um, tol_tangential_um, exclude, as_j
 
     folder = (Path(out) if out else Path("tmm-out")) / "carrier"
     ensure_writable_dir(folder.parent)
-    doc = carrier_document(fit, Path(card).name)
+    doc = carrier_document(fit, Path(card).name, lang)
 
     def figures(names=None):
         from ..render.figures.carrier import carrier_figures
@@ -73,7 +73,7 @@ def carrier_cmd(card, radius_mm, tol_radial_um, tol_tangential_um, exclude, as_j
     def show(console):
         from ..render.terminal.carrier import print_carrier
 
-        print_carrier(console, fit, lang, parsed.has_pair_skew)
+        print_carrier(console, fit, lang)
 
-    emit(folder, {"carrier.json": doc}, None if no_plots else figures, fmt, doc if as_json else None, show, (),
-         lang, owns=OWNS)
+    emit(folder, {"carrier.json": doc}, None if no_plots else figures, fmt, doc if as_json else None, show,
+         fit.notes, lang, owns=OWNS)

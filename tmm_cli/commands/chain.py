@@ -59,7 +59,7 @@ def chain_cmd(chain_file, risk_pct, as_json, out, lang):
 
     folder = (Path(out) if out else Path("tmm-out")) / "chain"
     ensure_writable_dir(folder.parent)
-    doc = chain_document(result)
+    doc = chain_document(result, lang)
     name = _json_name(Path(chain_file).stem)
 
     def show(console):
@@ -67,4 +67,4 @@ def chain_cmd(chain_file, risk_pct, as_json, out, lang):
 
         print_chain(console, result, lang)
 
-    emit(folder, {name: doc}, None, "png", doc if as_json else None, show, (), lang, owns=(name,))
+    emit(folder, {name: doc}, None, "png", doc if as_json else None, show, result.notes, lang, owns=(name,))

@@ -35,7 +35,7 @@ _CATALOGUE: dict[str, dict[str, str]] = {}
 def _catalogue() -> dict[str, dict[str, str]]:
     """Every note's sentences (the messages_* modules), gathered once."""
     if not _CATALOGUE:
-        for mod in ("messages_cam", "messages_gears", "messages_linkage", "messages_shifted"):
+        for mod in ("messages_cam", "messages_gears", "messages_linkage", "messages_shifted", "messages_accuracy"):
             module = __import__(f"tmm_cli.i18n.{mod}", fromlist=["MESSAGES"])
             _CATALOGUE.update(getattr(module, "MESSAGES", {}))
     return _CATALOGUE

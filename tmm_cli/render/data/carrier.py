@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 
 from ...accuracy.carrier import CarrierFit
+from ...i18n.lang import note_text
 
 MM = 1e3  # m -> mm
 UM = 1e6  # m -> µm
@@ -39,7 +40,7 @@ def _mm(x) -> float | None:
     return _f(x, MM, 9)
 
 
-def carrier_document(fit: CarrierFit, card_name: str | None = None) -> dict:
+def carrier_document(fit: CarrierFit, card_name: str | None = None, lang: str = "en") -> dict:
     """Everything `tmm carrier --json` prints and carrier.json holds."""
     bores = []
     for b in fit.bores:
@@ -78,5 +79,6 @@ def carrier_document(fit: CarrierFit, card_name: str | None = None) -> dict:
         "radial_bias_um": [_um(b.radial_bias) for b in fit.bores],
         "radial_bias_prime_um": [_um(b.radial_bias_prime) for b in fit.bores],
         "tolerances_um": {"radial": _um(fit.tol_radial), "tangential": _um(fit.tol_tangential)},
+        "notes": [note_text(n, lang) for n in fit.notes],
     }
     return doc

@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 
 from ...accuracy.chain import ChainResult
+from ...i18n.lang import note_text
 
 MM = 1e3  # m -> mm
 
@@ -31,7 +32,7 @@ def _limits(limits, unit: float) -> dict:
     return out
 
 
-def chain_document(res: ChainResult) -> dict:
+def chain_document(res: ChainResult, lang: str = "en") -> dict:
     """Everything `tmm chain --json` prints and chain.json holds (values in the chain's unit)."""
     chain = res.chain
     unit = chain.unit_si
@@ -53,4 +54,5 @@ def chain_document(res: ChainResult) -> dict:
         "probabilistic_exceeds_worst_case": res.probabilistic_exceeds_worst_case,
         "links": links,
         "largest_contributor": {"worst_case": res.largest_worst_case, "probabilistic": res.largest_probabilistic},
+        "notes": [note_text(n, lang) for n in res.notes],
     }

@@ -116,8 +116,9 @@ def _residuals_table(fit: CarrierFit, lang: str):
     return t
 
 
-def summary_lines(fit: CarrierFit, lang: str, card_has_pair_skew: bool) -> list[str]:
-    """The sentences under the tables: the fit's quality, the suspects, the tolerances."""
+def summary_lines(fit: CarrierFit, lang: str) -> list[str]:
+    """The sentences under the tables: the fit's quality, the tolerances (suspects and assumptions
+    are the fit's notes, printed after these)."""
     um = pick(lang, "µm", "мкм")
     lines = []
     sigma = "—" if fit.sigma is None else _um(fit.sigma, lang, 2)
@@ -126,21 +127,10 @@ def summary_lines(fit: CarrierFit, lang: str, card_has_pair_skew: bool) -> list[
                       f"({fit.used} measurements, {fit.unknowns} unknowns, {fit.redundancy} redundant).",
                       f"СКЗ невязок {_um(fit.rms, lang, 2)} {um}; рассеяние одного измерения σ = {sigma} {um} "
                       f"(измерений {fit.used}, неизвестных {fit.unknowns}, избыточных {fit.redundancy})."))
-    crit = "—" if fit.critical_t is None else num(fit.critical_t, lang, decimals=1)
-    if fit.suspect:
-        by_name = fit.residual_by_name
-        shown = ", ".join(f"{n} (t = {num(by_name[n].standardised, lang, decimals=1)})"
-                          if by_name[n].standardised is not None else n for n in fit.suspect)
-        lines.append("[bold red]" + pick(
-            lang, f"Suspect: {shown}; the threshold is {crit}. Re-measure, or run again with --exclude {fit.suspect[0]}.",
-            f"Подозрительные измерения: {shown}; порог {crit}. Перемерьте или запустите снова с "
-            f"--exclude {fit.suspect[0]}.") + "[/]")
-    elif fit.critical_t is not None:
+    if fit.critical_t is not None and not fit.suspect:
+        crit = num(fit.critical_t, lang, decimals=1)
         lines.append(pick(lang, f"No measurement stands out (every standardised residual is below {crit}).",
                           f"Выпадающих измерений нет (все стандартизованные невязки меньше {crit})."))
-    else:
-        lines.append(pick(lang, "Too few redundant measurements to test them for a misread.",
-                          "Слишком мало избыточных измерений, чтобы проверить их на промахи."))
     if fit.excluded:
         lines.append(pick(lang, "Left out: ", "Исключены: ") + ", ".join(fit.excluded) + ".")
     if fit.tol_radial is not None or fit.tol_tangential is not None:
@@ -153,15 +143,10 @@ def summary_lines(fit: CarrierFit, lang: str, card_has_pair_skew: bool) -> list[
         verdict = (pick(lang, "bores out of tolerance: ", "вне допуска расточки: ") + ", ".join(out)) if out \
             else pick(lang, "every bore is within.", "все расточки годны.")
         lines.append(pick(lang, "Tolerances: ", "Допуски: ") + ", ".join(parts) + "; " + verdict)
-    if card_has_pair_skew:
-        lines.append(pick(lang, "The skews of neighbouring axes (column e) follow the project's reconstruction: the "
-                                "seed's preview stops before defining them (docs/accuracy.md).",
-                          "Скрещивания осей соседних расточек (столбец e) приняты по реконструкции проекта: "
-                          "фрагмент статьи обрывается до их определения (docs/accuracy.md)."))
     return lines
 
 
-def print_carrier(console, fit: CarrierFit, lang: str, card_has_pair_skew: bool = False) -> None:
+def print_carrier(console, fit: CarrierFit, lang: str) -> None:
     title = pick(lang, f"Planet carrier: {fit.z_c} bores on R = {num(fit.radius * MM, lang, sig=6)} mm "
                        f"(Leontiev, Nasonov, Bedny, 2012)",
                  f"Водило: {fit.z_c} расточек на R = {num(fit.radius * MM, lang, sig=6)} мм "
@@ -169,5 +154,5 @@ def print_carrier(console, fit: CarrierFit, lang: str, card_has_pair_skew: bool 
     console.print(f"[bold]{title}[/]")
     for table in (_bores_table(fit, lang), _chord_only_table(fit, lang), _residuals_table(fit, lang)):
         console.print(table)
-    for line in summary_lines(fit, lang, card_has_pair_skew):
+    for line in summary_lines(fit, lang):
         console.print(line)

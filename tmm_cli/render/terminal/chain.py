@@ -97,11 +97,6 @@ def summary_lines(res: ChainResult, lang: str) -> list[str]:
         wc = shares[res.largest_worst_case]
         lines.append(pick(lang, f"By the worst case the largest is {wc.name} ({_pct(wc.worst_case, lang)} % of ΣT).",
                           f"По методу максимума-минимума наибольший вклад у {wc.name} ({_pct(wc.worst_case, lang)} % от ΣT)."))
-    if res.probabilistic_exceeds_worst_case:
-        lines.append("[yellow]" + pick(lang, "The probabilistic tolerance exceeds the worst case (too few links for the "
-                                             "probabilistic method): take the worst case.",
-                                       "Допуск по вероятностному методу больше, чем по методу максимума-минимума "
-                                       "(слишком мало звеньев): примите результат метода максимума-минимума.") + "[/]")
     return lines
 
 
