@@ -28,9 +28,9 @@ UM = 1e-6
 
 # ------------------------------------------------------------------ synthetic carriers, independently
 
-def make_carrier(z, rng, dr=30 * UM, dt=40 * UM, radial=True):
-    """Bore centres (left, right) with radial errors within ±dr and tangential within ±dt [m];
-    bore 1 of the left cheek on +Y (the frame). Also the true errors."""
+def make_carrier(z, rng, dr=30 * UM, dt=40 * UM, radial=True, radius=R):
+    """Bore centres (left, right) with radial errors within ±dr and tangential within ±dt [m] on a
+    circle of ``radius``; bore 1 of the left cheek on +Y (the frame). Also the true errors."""
     theta = [2 * math.pi * i / z for i in range(z)]
     out, errors = [], []
     for cheek in range(2):
@@ -38,8 +38,8 @@ def make_carrier(z, rng, dr=30 * UM, dt=40 * UM, radial=True):
         t_err = rng.uniform(-dt, dt, z)
         if cheek == 0:
             t_err[0] = 0.0
-        pts = [((R + r_err[i]) * math.cos(theta[i] + t_err[i] / R), (R + r_err[i]) * math.sin(theta[i] + t_err[i] / R))
-               for i in range(z)]
+        pts = [((radius + r_err[i]) * math.cos(theta[i] + t_err[i] / radius),
+                (radius + r_err[i]) * math.sin(theta[i] + t_err[i] / radius)) for i in range(z)]
         out.append(pts)
         errors.append((r_err, t_err))
     return out[0], out[1], errors
@@ -147,14 +147,9 @@ def test_exact_card_gives_the_bores_back(z, with_e):
 @settings(max_examples=30, deadline=None)
 @given(z=st.integers(3, 12), seed=st.integers(0, 2**32 - 1), radius=st.floats(0.02, 2.0))
 def test_exact_cards_any_carrier(z, seed, radius):
-    global R
     rng = np.random.default_rng(seed)
-    saved, R = R, radius
-    try:
-        left, right, _ = make_carrier(z, rng)
-        fit = fit_carrier(card_from(measure(left, right), bool(seed % 2)), radius)
-    finally:
-        R = saved
+    left, right, _ = make_carrier(z, rng, radius=radius)
+    fit = fit_carrier(card_from(measure(left, right), bool(seed % 2)), radius)
     got_l, got_r = bores_of(fit)
     assert np.abs(got_l - np.array(left)).max() < 1e-9
     assert np.abs(got_r - np.array(right)).max() < 1e-9
