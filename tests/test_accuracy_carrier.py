@@ -310,6 +310,21 @@ def test_card_formats_agree():
     assert not cards[0].has_pair_skew
 
 
+def test_card_as_spreadsheets_save_it():
+    """Quoted decimal commas in a comma-separated card, trailing separators, a short last row whose
+    e is empty, tabs."""
+    quoted = ('bore,R,R_prime,h,h_prime,s,e,\n'
+              '1,"125,003","124,998","216,510","216,500","0,004","0,003",\n'
+              '2,"124,990","125,001","216,490","216,505","-0,002"\n'
+              '3,125.010,125.000,216.520,216.495,0.001,-0.001,,\n')
+    card = parse_card(quoted)
+    assert card.radial == pytest.approx((0.125003, 0.12499, 0.12501))
+    assert card.pair_skew[0] == pytest.approx(3e-6) and card.pair_skew[1] is None
+    assert parse_card(GOOD.replace(",", "\t")) == parse_card(GOOD)
+    with pytest.raises(TmmError, match="bore 2: h is empty"):
+        parse_card(GOOD.replace("2,124.990,125.001,216.490,216.505,-0.002", "2,124.990,125.001"))
+
+
 def test_card_with_some_pair_skews():
     text = GOOD.replace("s\n", "s,e\n").replace("0.004\n", "0.004,0.003\n").replace("-0.002\n", "-0.002,\n") \
         .replace("0.001\n", "0.001,-0.001\n")

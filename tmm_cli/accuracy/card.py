@@ -10,9 +10,11 @@ neighbouring axes (the preview stops before defining it; column ``e``, the proje
 reconstruction, see :mod:`.measurements`).
 
 The card is CSV text, one row per bore in order 1…z_c, header ``bore,R,R_prime,h,h_prime,s`` and
-optionally ``e``, millimetres; the columns are separated by commas or semicolons, and the decimal
-separator is a point (or a comma when the columns are separated by semicolons). An empty ``e``
-cell means that skew was not measured. Lines starting with ``#`` are comments.
+optionally ``e``, millimetres; the columns are separated by commas, semicolons or tabs (cells may
+be quoted), and the decimal separator is a point or a comma (a comma inside an unquoted
+comma-separated row splits the row, as a spreadsheet would). Empty cells at the end of a row (a
+spreadsheet's trailing separators) are dropped. An empty ``e`` cell means that skew was not
+measured. Lines starting with ``#`` are comments.
 
 The command reads the file; this module takes its text and returns a :class:`Card` in metres
 (SI inside), or raises :class:`~tmm_cli.errors.TmmError` naming the row and the column.
@@ -74,9 +76,9 @@ class Card:
 _NUMBER = re.compile(r"[+-]?(\d+([.]\d*)?|[.]\d+)([eE][+-]?\d+)?")
 
 
-def _number(cell: str, decimal_comma: bool, where: str, column: str) -> float:
+def _number(cell: str, where: str, column: str) -> float:
     text = cell.strip().replace("\u2212", "-").replace(" ", "").replace("\u00a0", "")
-    if decimal_comma:
+    if text.count(",") == 1 and "." not in text:  # a decimal comma (a CSV split has left it in the cell)
         text = text.replace(",", ".")
     if not _NUMBER.fullmatch(text):
         raise TmmError(f"{where}: {column} is '{cell.strip()}', not a number; give millimetres such as 125.003")
@@ -87,7 +89,21 @@ def _number(cell: str, decimal_comma: bool, where: str, column: str) -> float:
 
 
 def _split(line: str, sep: str) -> list[str]:
-    return [c.strip().strip('"').strip() for c in line.split(sep)]
+    """The cells of one CSV line (quotes as the csv module reads them), trailing empty ones dropped.
+
+    >>> _split('1;"125,003"; 124,998;;', ";")
+    ['1', '125,003', '124,998']
+    """
+    import csv
+
+    try:
+        cells = next(csv.reader([line], delimiter=sep), [])
+    except csv.Error:
+        cells = line.split(sep)
+    cells = [c.strip() for c in cells]
+    while cells and not cells[-1]:
+        cells.pop()
+    return cells
 
 
 def parse_card(text: str, source: str = "card") -> Card:
@@ -105,7 +121,6 @@ def parse_card(text: str, source: str = "card") -> Card:
         raise TmmError(f"{source} is empty; give the header {','.join(REQUIRED)} and one row per bore")
     head_no, head = lines[0]
     sep = ";" if ";" in head else ("\t" if "\t" in head else ",")
-    decimal_comma = sep != ","
     names = _split(head, sep)
     known = {c.lower(): c for c in REQUIRED + OPTIONAL}
     columns: list[str] = []
@@ -130,10 +145,10 @@ def parse_card(text: str, source: str = "card") -> Card:
     for index, (line_no, line) in enumerate(rows, 1):
         cells = _split(line, sep)
         where = f"{source} line {line_no}"
-        if len(cells) != len(columns):
+        if len(cells) > len(columns):
             hint = "; with decimal commas separate the columns by semicolons" if sep == "," else ""
             raise TmmError(f"{where} has {len(cells)} cells, the header {len(columns)}{hint}")
-        row = dict(zip(columns, cells))
+        row = dict(zip(columns, cells + [""] * (len(columns) - len(cells))))  # short: the last cells empty
         bore = row["bore"].strip()
         if bore != str(index):
             raise TmmError(f"{where}: bore is '{bore}', expected {index}; list the bores in order 1, 2, … "
@@ -147,7 +162,7 @@ def parse_card(text: str, source: str = "card") -> Card:
                 continue
             if not row[column].strip():
                 raise TmmError(f"{where}: {column} is empty; every bore needs {', '.join(REQUIRED[1:])}")
-            value = _number(row[column], decimal_comma, where, column)
+            value = _number(row[column], where, column)
             if column in DISTANCES and value <= 0:
                 raise TmmError(f"{where}: {column} is {value:g} mm; a centre distance must be positive")
             values[column].append(value * MM)
