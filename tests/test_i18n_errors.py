@@ -87,7 +87,9 @@ def test_a_roster_rows_error_is_translated_inside_its_frame():
 MODULES = ("limits", "teacher/check", "teacher/batch", "teacher/roster", "teacher/summary", "inputs/tables", "inputs/names", "variants", "inputs/titleblock",
            "output/folder", "gears/shifted",
            "gears/aa_bar", "linkage/inputs", "linkage/geometry", "render/note/__init__", "render/sheets/__init__",
-           "commands/linkage", "commands/planetary", "commands/options", "commands/batch", "commands/check", "cli")
+           "commands/linkage", "commands/planetary", "commands/options", "commands/batch", "commands/check", "cli",
+           "accuracy/card", "accuracy/carrier", "accuracy/chain_input", "accuracy/chain", "commands/carrier",
+           "commands/chain")
 
 
 def _sample(node):

@@ -13,6 +13,8 @@ import click
 
 from .commands.batch import batch_cmd
 from .commands.cam import cam_cmd
+from .commands.carrier import carrier_cmd
+from .commands.chain import chain_cmd
 from .commands.check import check_cmd
 from .commands.gears import gears_cmd
 from .commands.linkage import linkage_cmd
@@ -145,7 +147,8 @@ def cli(lang):
     """
 
 
-for _command in (variants_cmd, project_cmd, cam_cmd, gears_cmd, planetary_cmd, linkage_cmd, note_cmd, batch_cmd, check_cmd):
+for _command in (variants_cmd, project_cmd, cam_cmd, gears_cmd, planetary_cmd, linkage_cmd, note_cmd, batch_cmd, check_cmd,
+                 carrier_cmd, chain_cmd):
     cli.add_command(_command)
 apply_option_limits(cli)
 

@@ -26,6 +26,12 @@ N_CAM_RPM = (300.0, 5000.0)  # |n_k| [rpm]; Table 1.2 has 700…2500 (below 300 
 S_MAX_M = (0.001, 1.0)  # stroke S_max [m]; Table 1.2 has 0.02…0.25
 L_BC_M = (0.005, 2.0)  # rocker length l_BC [m]; Table 1.2 has 0.05…0.3
 
+# reducer accuracy (tmm carrier, tmm chain; docs/accuracy.md) -----------------------------------
+CARRIER_RADIUS_MM = (1.0, 5000.0)  # --radius of the bore circle [mm]
+CARRIER_TOL_UM = (0.01, 10000.0)  # --tol-radial, --tol-tangential [µm]
+CARD_BORES = (3, 12)  # bores (planets) of a measurement card
+CHAIN_RISK_PCT = (0.001, 50.0)  # --risk [%]; the default 0.27 gives t = 3
+
 # files and lists ------------------------------------------------------------------------------
 VARIANTS_FILE_BYTES = 1 << 20  # 1 MiB
 VARIANTS_ROWS = 1000  # rows of a --variants-file (Table 1.2 has 68)
@@ -37,6 +43,9 @@ VARIANT_SPEC_CHARS = 1000  # length of a --variants list
 VARIANT_SPEC_COUNT = 1000  # variants in one batch
 NAME_CHARS = 100  # a student's name as shown (longer is refused in its roster row)
 FILE_NAME_CHARS = 64  # a student's name as a file or folder name (cut to this length)
+CARD_BYTES = 64 << 10  # 64 KiB: a measurement card (a 12-bore card is under 1 KiB)
+CHAIN_BYTES = 256 << 10  # 256 KiB: a dimensional chain file
+CHAIN_LINKS = 200  # links of one chain (the article's longest has 11)
 
 
 def check_range(value, lo, hi, what: str, hint: str = "") -> float:

@@ -13,6 +13,9 @@ from pathlib import Path
 import click
 
 from ..limits import (
+    CARRIER_RADIUS_MM,
+    CARRIER_TOL_UM,
+    CHAIN_RISK_PCT,
     CRANK_RPM,
     JOBS,
     PLANETS,
@@ -180,6 +183,10 @@ OPTION_LIMITS = {
     "planets": Range(*PLANETS, integer=True),
     "rtol_pct": Range(*RTOL_PCT),
     "jobs": Range(*JOBS, integer=True),
+    "radius_mm": Range(*CARRIER_RADIUS_MM),
+    "tol_radial_um": Range(*CARRIER_TOL_UM),
+    "tol_tangential_um": Range(*CARRIER_TOL_UM),
+    "risk_pct": Range(*CHAIN_RISK_PCT),
 }
 
 

@@ -25,6 +25,8 @@ _PLACES = (
     (r"^variants file (.*)$", N_("variants file {0}")),
     (r"^note template (.*)$", N_("note template {0}")),
     (r"(\S) line (\d+)", N_("{0} line {1}")),  # "table.csv line 3" → "table.csv, строка 3"
+    (r"(\S) bore (\d+)$", N_("{0} bore {1}")),  # a measurement card's row (tmm carrier)
+    (r"^link (\d+)", N_("link {0}")),  # a dimensional chain's link (tmm chain)
     (r" \(variant (\d+)\)", N_(" (variant {0})")),
     (r"^the ratio i$", N_("the ratio i")),
     (r"^Permission denied$", N_("Permission denied")),

@@ -36,9 +36,11 @@ _CATALOGUE: dict[str, str] = {}
 def _catalogue() -> dict[str, str]:
     """Every note's sentence (code -> English msgid, the messages_* modules), gathered once."""
     if not _CATALOGUE:
-        for mod in ("messages_cam", "messages_gears", "messages_linkage", "messages_shifted"):
-            module = __import__(f"tmm_cli.i18n.{mod}", fromlist=["MESSAGES"])
-            _CATALOGUE.update(getattr(module, "MESSAGES", {}))
+        from importlib import import_module
+        from pathlib import Path
+
+        for path in sorted(Path(__file__).parent.glob("messages_*.py")):
+            _CATALOGUE.update(import_module(f"{__package__}.{path.stem}").MESSAGES)
     return _CATALOGUE
 
 
