@@ -84,16 +84,16 @@ def _failure(mech: Mechanism, g: Group, worst: Margin) -> str:
         k = solve(mech, [worst.phi], upto=g.index - 1)
         d = float(abs(k.z[jc][0] - k.z[ja][0]))
         if l1 + l2 - d <= d - abs(l1 - l2):
-            return (f"{where}: |{ja}{jc}| = {d:.6g} m but {ja}{jb} + {jb}{jc} = {l1 + l2:.6g} m; make {ja}{jb} + "
-                    f"{jb}{jc} longer than {d:.6g} m")
+            return (f"{where}: |{ja}{jc}| = {d:.7g} m but {ja}{jb} + {jb}{jc} = {l1 + l2:.7g} m; make {ja}{jb} + "
+                    f"{jb}{jc} longer than {d:.7g} m")
         short, long_ = (f"{ja}{jb}", f"{jb}{jc}") if l1 < l2 else (f"{jb}{jc}", f"{ja}{jb}")
-        return (f"{where}: |{ja}{jc}| = {d:.6g} m but |{ja}{jb} − {jb}{jc}| = {abs(l1 - l2):.6g} m; {short} is too "
-                f"short beside {long_}: make it longer than {max(l1, l2) - d:.6g} m")
+        return (f"{where}: |{ja}{jc}| = {d:.7g} m but |{ja}{jb} − {jb}{jc}| = {abs(l1 - l2):.7g} m; {short} is too "
+                f"short beside {long_}: make it longer than {max(l1, l2) - d:.7g} m")
     if g.kind == "RRP":
         ja, jb = g.joints
         h = g.lengths[0] - worst.margin
-        return (f"{where}: {ja} comes {h:.6g} m from the guide of {jb} but {ja}{jb} = {g.lengths[0]:.6g} m; make "
-                f"{ja}{jb} longer than {h:.6g} m")
+        return (f"{where}: {ja} comes {h:.7g} m from the guide of {jb} but {ja}{jb} = {g.lengths[0]:.7g} m; make "
+                f"{ja}{jb} longer than {h:.7g} m")
     ja, jc = g.joints
     return (f"{where}: the block's joint {ja} passes through the pivot {jc} of the slotted link (its angle is "
             f"undefined); move {jc} off the path of {ja}")

@@ -82,6 +82,9 @@ class _Reader:
         if not isinstance(value, dict):
             self.fail(f"'{key}' must be a table, e.g. [{key}]")
         for k in value:
+            if k in TOP_KEYS + SHEET2_KEYS and k not in allowed:
+                self.fail(f"'{k}' is read as '{key}.{k}': a top-level key must come before the first [table] "
+                          "of the file")
             if k not in allowed:
                 self.fail(f"unknown key '{key}.{k}'; known keys here: {', '.join(allowed)}")
         return value
@@ -154,6 +157,7 @@ class _Builder:
         self.taken = {name: "frame" for name in frame}  # every name in use (joints, points, links)
         self.links: list[Link] = []
         self.pairs: list[Pair] = []
+        self.points: dict[str, tuple[str, str]] = {}  # declared points not yet on a link → their link's joints
 
     def claim(self, name: str, key: str):
         if name in self.taken:
@@ -169,6 +173,10 @@ class _Builder:
         self.links.append(link)
 
     def known(self, name: str, key: str):
+        if name in self.points:
+            j1, j2 = self.points[name]
+            self.r.fail(f"'{key}': joint {name} is the [[point]] of the link {j1}–{j2}, which is not placed before "
+                        "this group")
         if name not in self.carrier:
             self.r.fail(f"'{key}': joint {name} is not placed before this group; define it in [frame], as the "
                         "crank's joint, in an earlier group or as a [[point]] of an earlier link")
@@ -301,6 +309,7 @@ def _attach_points(r: _Reader, b: _Builder, raw: list, done: dict, group: int):
                 r.fail(f"'{key}.link': measure a point of the slotted link {ln.name} from its pivot {j2}: "
                        f"link = [\"{j2}\", \"{j1}\"]")
             done[name] = Point(name, ln.name, j1, j2, along, across)
+            b.points.pop(name, None)
             b.carrier[name] = ln.number
             break
 
@@ -383,6 +392,7 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
     if len(points_raw) > MAX_POINTS:
         r.fail(f"'point' has {len(points_raw)} entries; at most {MAX_POINTS} are read")
     raw = [_raw_point(r, b, p, i + 1) for i, p in enumerate(points_raw)]
+    b.points = {name: ends for _, name, ends, _, _ in raw}
     done: dict[str, Point] = {}
     _attach_points(r, b, raw, done, 0)
     groups = []

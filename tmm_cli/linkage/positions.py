@@ -169,13 +169,33 @@ def pressure_angle(mech: Mechanism, g: Group, k: Kinematics):
 def _worst_pressure(mech: Mechanism, g: Group) -> Pressure:
     step = TWO_PI / GRID
     grid = np.arange(GRID) * step
-    p = pressure_angle(mech, g, solve(mech, grid))
+    p = pressure_angle(mech, g, solve(mech, grid, upto=g.index))
     i = int(np.argmax(p))
     if p[i] == 0.0:
         return Pressure(g.index, 0.0, 0.0)
-    x, fx = golden_min(lambda t: -pressure_angle(mech, g, solve(mech, t)), np.array([grid[i] - step]),
+    x, fx = golden_min(lambda t: -pressure_angle(mech, g, solve(mech, t, upto=g.index)), np.array([grid[i] - step]),
                        np.array([grid[i] + step]))
     return Pressure(g.index, float(-fx[0]), float(np.remainder(x[0], TWO_PI)))
+
+
+def _extremum(f, sign: float) -> float:
+    """The smallest (sign +1) or largest (sign −1) value of f(φ) over a turn: grid, then golden
+    section around the best grid point."""
+    step = TWO_PI / GRID
+    grid = np.arange(GRID) * step
+    i = int(np.argmin(sign * f(grid)))
+    _, fx = golden_min(lambda t: sign * f(t), np.array([grid[i] - step]), np.array([grid[i] + step]))
+    return float(sign * fx[0])
+
+
+def slot_range(mech: Mechanism, g: Group) -> tuple[float, float]:
+    """The least and the greatest distance [m] of an RPR group's block from the slotted link's
+    pivot over a turn (the slot must reach the greatest)."""
+    def rho(t):
+        k = solve(mech, t, upto=g.index)
+        return k.slide[g.links[0]][0]
+
+    return _extremum(rho, 1.0), _extremum(rho, -1.0)
 
 
 def _distance_from_pivot(mech: Mechanism, phi: float) -> float:
@@ -241,8 +261,10 @@ def _curve(mech: Mechanism, start: float, direction: int) -> Curve:
     return Curve(travel, k, direction * s, direction * qd, direction * qdd, pressure)
 
 
-def _notes(mech: Mechanism, rule: str, stops: int, pressure, curve: Curve) -> tuple[Note, ...]:
+def _notes(mech: Mechanism, rule: str, stops: int, pressure, time_ratio) -> tuple[Note, ...]:
     notes = [Note.make("mechanism_position0", "assumption", rule=rule)]
+    if time_ratio is not None and time_ratio < 1.0 - 1e-9:
+        notes.append(Note.make("mechanism_fast_working", "warning", time_ratio=time_ratio))
     if stops > 2:
         notes.append(Note.make("mechanism_stops", "warning", count=stops))
     for p in pressure:
@@ -251,9 +273,9 @@ def _notes(mech: Mechanism, rule: str, stops: int, pressure, curve: Curve) -> tu
                                    phi_deg=math.degrees(p.phi), limit_deg=PRESSURE_WARN_DEG))
     for g in mech.groups:
         if g.kind == "RPR":
-            rho = curve.kin.slide[g.links[0]][0]
+            lo, hi = slot_range(mech, g)
             notes.append(Note.make("mechanism_slot", "assumption", link=g.links[1], pivot=g.joints[1],
-                                   rho_min_mm=float(np.min(rho)) * 1000, rho_max_mm=float(np.max(rho)) * 1000))
+                                   rho_min_mm=lo * 1000, rho_max_mm=hi * 1000))
     return tuple(notes)
 
 
@@ -278,4 +300,4 @@ def cycle(mech: Mechanism, source: str = "mechanism") -> Cycle:
     curve = _curve(mech, start, direction)
     k_ratio = working / returning if working is not None else None
     return Cycle(mech, positions, kin, float(start), rule, extremes, stroke, working, returning, k_ratio, direction,
-                 len(roots), pressure, margins, curve, _notes(mech, rule, len(roots), pressure, curve))
+                 len(roots), pressure, margins, curve, _notes(mech, rule, len(roots), pressure, k_ratio))

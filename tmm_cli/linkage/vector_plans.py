@@ -108,7 +108,7 @@ def plans_at(mech: Mechanism, kin: Kinematics, position: Position, room_mm: floa
     v = {n: complex(x[0]) for n, x in kin.v.items()}
     a = {n: complex(x[0]) for n, x in kin.a.items()}
     w = {n: float(x[0]) for n, x in kin.omega.items()}
-    fixed = set(mech.frame)
+    fixed = set(mech.frame)  # their plan points are the poles
     lab = {n: (("p", "π") if n in fixed else (_lc(n), _lc(n))) for n in z}
     V, A = _Draft("velocity", "p"), _Draft("acceleration", "π")
     one_slot = sum(g.kind == "RPR" for g in mech.groups) == 1  # its Coriolis point is plain k
@@ -131,8 +131,7 @@ def plans_at(mech: Mechanism, kin: Kinematics, position: Position, room_mm: floa
         if g.kind == "RRR":
             ja, jb, jc = g.joints
             V.add(lab[ja][0], _lc(jb), f"v_{jb}{ja}", v[jb] - v[ja], "⊥", ja + jb, False, v[jb])
-            if jc not in fixed:
-                V.add(lab[jc][0], _lc(jb), f"v_{jb}{jc}", v[jb] - v[jc], "⊥", jb + jc, False)
+            V.add(lab[jc][0], _lc(jb), f"v_{jb}{jc}", v[jb] - v[jc], "⊥", jb + jc, False)  # = pb if C is fixed
             V.add("p", _lc(jb), f"v_{jb}", v[jb], "", "", False)
             V.equations.append(Equation(g.index, f"v_{jb}", ((f"v_{ja}", f"v_{jb}{ja}"), (f"v_{jc}", f"v_{jb}{jc}"))))
             na = a[ja] - w[l1] ** 2 * (z[jb] - z[ja])
@@ -163,11 +162,8 @@ def plans_at(mech: Mechanism, kin: Kinematics, position: Position, room_mm: floa
             vr = v3 - v[ja]  # v_A3A2
             cor = 2j * w3 * vr  # aᵏ_A3A2 = 2·ω3 × v_A3A2
             V.add(lab[ja][0], _lc(p3), f"v_{p3}{p2}", vr, "∥", jc + ja, False, v3)
-            if jc in fixed:
-                V.add("p", _lc(p3), f"v_{p3}", v3, "⊥", jc + ja, False)
-            else:
-                V.add(lab[jc][0], _lc(p3), f"v_{p3}{jc}", v3 - v[jc], "⊥", jc + ja, False)
-                V.add("p", _lc(p3), f"v_{p3}", v3, "", "", False)
+            V.add(lab[jc][0], _lc(p3), f"v_{p3}{jc}", v3 - v[jc], "⊥", jc + ja, False)  # = pa3 if C is fixed
+            V.add("p", _lc(p3), f"v_{p3}", v3, "", "", False)
             V.equations.append(Equation(g.index, f"v_{p3}", ((f"v_{p2}", f"v_{p3}{p2}"), (f"v_{jc}", f"v_{p3}{jc}"))))
             kpt = a[ja] + cor
             kl = "k" if one_slot else f"k{n3}"
