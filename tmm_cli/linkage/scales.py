@@ -13,6 +13,7 @@ from ..records import record
 
 SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
 PLAN_MM = 100.0  # the longest vector of a plan
+SCHEME_MM = 250.0  # the larger side of the scheme in all positions
 DIAGRAM_AXIS_MM = 180.0  # the crank-angle axis of the diagrams: one turn
 DIAGRAM_HEIGHT_MM = 40.0  # the largest ordinate of a diagram (each side of the axis)
 

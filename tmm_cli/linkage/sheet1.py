@@ -13,7 +13,7 @@ from ..errors import TmmError
 from ..records import record
 from .mechanism import Mechanism
 from .positions import Cycle, cycle
-from .scales import DiagramScales, diagram_scales
+from .scales import SCHEME_MM, DiagramScales, diagram_scales, drafting_scale
 from .structure import Structure, structure
 from .vector_plans import Plans, default_plan_positions, plans
 
@@ -25,6 +25,7 @@ class Sheet1:
     cycle: Cycle
     plans: tuple[Plans, ...]  # the plans' positions: the asked (or the working stroke's) one first
     scales: DiagramScales  # of the diagrams s, v, a of the output link
+    scheme_scale: float  # μ_l [m/mm] of the scheme in all positions
 
 
 def analyse_mechanism(mech: Mechanism, plan: str | None = None, source: str = "mechanism") -> Sheet1:
@@ -51,4 +52,6 @@ def analyse_mechanism(mech: Mechanism, plan: str | None = None, source: str = "m
     curve = c.curve
     scales = diagram_scales(float(np.max(np.abs(curve.s))), float(np.max(np.abs(curve.v))),
                             float(np.max(np.abs(curve.a))))
-    return Sheet1(mech, structure(mech), c, tuple(plans(c, i) for i in picks), scales)
+    zs = np.concatenate([curve.kin.z[n] for n in mech.joint_names])
+    extent = max(float(np.ptp(zs.real)), float(np.ptp(zs.imag)))
+    return Sheet1(mech, structure(mech), c, tuple(plans(c, i) for i in picks), scales, drafting_scale(extent, SCHEME_MM))
