@@ -399,8 +399,8 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
     for i, g in enumerate(groups_raw):
         groups.append(_group(r, b, g, i + 1))
         _attach_points(r, b, raw, done, i + 1)
-    for key, name, (j1, j2), _, _ in raw:
-        if name not in done:
+    for key, point, (j1, j2), _, _ in raw:
+        if point not in done:
             r.fail(f"'{key}.link': no moving link joins {j1} and {j2}; name a link by two of its joints, "
                    "e.g. [\"A\", \"B\"]")
     groups = tuple(groups)
@@ -411,6 +411,6 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
             r.fail(f"'plan' is {plan!r}; give the label of a position, e.g. plan = 3")
         plan = str(plan).strip().replace("'", "′")
     extra = {k: data[k] for k in SHEET2_KEYS if k in data}
-    points = tuple(done[name] for _, name, _, _, _ in raw)
+    points = tuple(done[point] for _, point, _, _, _ in raw)
     return Mechanism(name, positions, frame, crank, groups, points, tuple(b.links), tuple(b.pairs + [
         p for g in groups for p in g.pairs]), dict(b.carrier), output, _working(r, extra), plan, extra)
