@@ -346,3 +346,53 @@ def test_analyse_is_fast():
     for _ in range(5):
         analyse_mechanism(m)
     assert (time.perf_counter() - t0) / 5 < 0.25  # the issue: well under a second
+
+
+# --- a fully turning output, a given position 0, an accelerating crank ---------------------------
+
+
+def test_double_crank_has_no_extreme_positions():
+    """Drag-link (frame the shortest): the output turns fully; no stroke, no K, positions from 0°."""
+    m = parse_mechanism({"frame": {"O": [0.0, 0.0], "C": [0.05, 0.0]},
+                         "crank": {"pivot": "O", "joint": "A", "length": 0.15, "rpm": 60},
+                         "group": [{"kind": "RRR", "joints": ["A", "B", "C"], "lengths": [0.18, 0.16], "branch": "left"}]})
+    c = cycle(m)
+    assert c.extremes is None and c.stroke is None and c.time_ratio is None and c.start_rule == "turning"
+    assert [p.label for p in c.positions] == [str(i) for i in range(12)] and c.start == 0.0
+
+
+def test_start_deg_overrides_position_0_and_labels_both_extremes():
+    m = slider_crank(0.05, 0.18, 0.02, rpm=300.0)
+    data_start = 10.0
+    m2 = parse_mechanism({
+        "frame": {"O": [0.0, 0.0]},
+        "crank": {"pivot": "O", "joint": "A", "length": 0.05, "rpm": 300, "start_deg": data_start},
+        "group": [{"kind": "RRP", "joints": ["A", "B"], "length": 0.18,
+                   "guide": {"through": [0.0, 0.02], "angle_deg": 0.0}, "branch": "ahead"}]})
+    c, c2 = cycle(m), cycle(m2)
+    assert math.degrees(c2.start) == pytest.approx(data_start) and c2.start_rule == "given"
+    assert sorted(p.extreme for p in c2.positions if p.extreme) == ["end", "start"]
+    assert [p.phi for p in c2.positions if p.extreme == "start"] == pytest.approx([c.start], abs=1e-12)
+    assert all("′" in p.label for p in c2.positions if p.extreme)
+    assert c2.time_ratio == pytest.approx(c.time_ratio) and c2.stroke == pytest.approx(c.stroke)
+
+
+def test_plans_of_an_accelerating_crank_close():
+    from tmm_cli.linkage.vector_plans import plans_at
+
+    m = load("shaper")
+    c = cycle(m)
+    k = solve(m, [c.positions[3].phi], eps1=5.0)
+    pl = plans_at(m, k, c.positions[3])
+    pts = pl.acceleration.points
+    assert "n1" in pts
+    for v in pl.acceleration.vectors:
+        assert abs(pts[v.end] - pts[v.start] - v.value) < 1e-12 * max(abs(z) for z in pts.values())
+    h = 1e-4
+    w = m.crank.omega
+    # with ε1 the crank's ω grows: a_B = d v_B/dt along φ(t) = φ + ωt + εt²/2
+    dt = h / abs(w)
+    phis = [c.positions[3].phi + w * t + 2.5 * t * t for t in (-dt, dt)]
+    ks = [solve(m, [p], omega1=w + 5.0 * t) for p, t in zip(phis, (-dt, dt))]
+    a_fd = (ks[1].v["C"][0] - ks[0].v["C"][0]) / (2 * dt)
+    assert abs(a_fd - k.a["C"][0]) < 1e-5 * max(1.0, abs(k.a["C"][0]))
