@@ -192,7 +192,7 @@ def scheme_figure(s: Sheet1, lang: str):
     top = title_height(2, 11)
     height = min(13.0, max(4.5, (width - 0.9) * aspect + top + 0.7))
     fig = new_figure(width, height)
-    ax = fig.add_axes((0.7 / width, 0.55 / height, 1 - 0.9 / width, 1 - (top + 0.65) / height))
+    ax = fig.add_axes((0.75 / width, 0.7 / height, 1 - 0.95 / width, 1 - (top + 0.8) / height))
     ax.set_aspect("equal", adjustable="box")
     _guides(ax, s, lo - pad * (1 + 1j), hi + pad * (1 + 1j))
     hang = _hangers(s)
