@@ -227,3 +227,32 @@ def test_plan_label_with_an_ascii_prime():
     primed = [p.label for p in c.positions if "′" in p.label]
     if primed:
         assert c.index(primed[0].replace("′", "'")) is not None
+
+
+def _messages():
+    """Every message the hostile cases above produce, and the assembly failures."""
+    out = []
+    for path, value, _ in CASES:
+        try:
+            parse_mechanism(mutate(path, value), "m.toml")
+        except TmmError as exc:
+            out.append(str(exc))
+    for a, b, c, d in ((0.1, 0.25, 0.20, 0.4), (0.1, 0.5, 0.1, 0.4)):
+        try:
+            cycle(_four_bar(a, b, c, d), "m.toml")
+        except TmmError as exc:
+            out.append(str(exc))
+    return out
+
+
+def test_every_message_has_its_russian_line():
+    import re
+
+    from tmm_cli.i18n.help_ru import translate_error
+
+    english = re.compile(r"\b[A-Za-z]{2,} [A-Za-z]{2,} [A-Za-z]{2,}\b")
+    messages = _messages()
+    assert len(messages) == len(CASES) + 2
+    for text in messages:
+        ru = translate_error(text)
+        assert ru != text and re.search("[А-Яа-я]", ru) and not english.search(ru), (text, ru)

@@ -11,7 +11,7 @@ import pytest
 
 from tmm_cli.linkage.mechanism_file import parse_mechanism
 from tmm_cli.linkage.sheet1 import analyse_mechanism
-from tmm_cli.render.mechanism_json import curve_csv, mechanism_document
+from tmm_cli.render.data.mechanism import curve_csv, mechanism_document
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
 NAMES = ("compressor", "four_bar", "shaper", "whitworth")
@@ -69,7 +69,7 @@ def test_curve_csv_has_every_point_and_link():
 def test_tables_print_in_both_languages(lang):
     from rich.console import Console
 
-    from tmm_cli.render.mechanism_tables import print_mechanism
+    from tmm_cli.render.terminal.mechanism import print_mechanism
 
     buf = io.StringIO()
     print_mechanism(Console(file=buf, width=160), sheet("shaper"), lang)
@@ -83,7 +83,7 @@ def test_tables_print_in_both_languages(lang):
 
 @pytest.mark.parametrize("name", ["shaper", "four_bar"])
 def test_figures_keep_their_labels_inside(name):
-    from tmm_cli.render.mechanism_figures import mechanism_figures
+    from tmm_cli.render.figures.mechanism import mechanism_figures
 
     figs = mechanism_figures(sheet(name), "ru")
     assert set(figs) == {"linkage_mechanism", "linkage_diagrams", "linkage_velocity_plan", "linkage_acceleration_plan",

@@ -129,6 +129,10 @@ OPTIONS: dict[str, str] = {
         "Если в --input есть таблицы [variants.N]: номер варианта.",
     "Output folder (default ./tmm-out); files go to DIR/linkage/.":
         "Папка результатов (по умолчанию ./tmm-out); файлы пишутся в DIR/linkage/.",
+    "With MECH.toml: the position of the velocity and acceleration plans, e.g. 3 or 7' (default: the middle of the "
+    "working stroke).":
+        "С файлом MECH.toml: положение для планов скоростей и ускорений, например 3 или 7' (по умолчанию — середина "
+        "рабочего хода).",
     # tmm planetary (issue 12): S. N. Kavetsky's synthesis of the mechanism AA̅
     "Ratio i = i_1H^(4) of the AA̅ mechanism as a fraction, 0 < i < 1, e.g. 1/10.":
         "Передаточное отношение механизма AA̅ i = i_1H^(4) в виде дроби, 0 < i < 1, например 1/10.",
@@ -161,11 +165,15 @@ COMMANDS: dict[str, str] = {
                    "записка и чертежи листов.",
     "tmm batch": "Преподавателю: расчёт многих вариантов или списка группы параллельно, со сводкой summary.csv.",
     "tmm check": "Преподавателю: проверка результатов студента по расчётным значениям.",
-    "tmm linkage": "Лист 1: кулисный механизм (механизм Витворта) — положения, скорости, ускорения.\n\n"
-                   "Система координат статьи J. Goban, K. Monková, A. Šmeringaiová «The numerical and computer "
-                   "aided confrontation of kinematic analysis of mechanism» (2010): начало в центре кривошипа O21, ось x "
-                   "вправо, y вверх; угол φ21 отсчитывается от +y к +x. Пример (механизм Витворта):\n\n"
-                   "\b\n    tmm linkage --r1 0.10 --h 0.04 --c 0 --r2 0.08 --r3 0.30 --b -0.04 --rpm 60",
+    "tmm linkage": "Лист 1: рычажный механизм — строение, положения, скорости, ускорения, планы, диаграммы.\n\n"
+                   "MECH.toml описывает механизм так, как его строит формула строения: стойка, кривошип и группы "
+                   "II класса RRR, RRP, RPR (docs/mechanism.md; примеры в docs/examples/). Без файла параметры "
+                   "описывают кулисный механизм (механизм Витворта) из статьи J. Goban, K. Monková, "
+                   "A. Šmeringaiová «The numerical and computer aided confrontation of kinematic analysis of "
+                   "mechanism» (2010): начало в центре кривошипа O21, ось x вправо, y вверх; угол φ21 "
+                   "отсчитывается от +y к +x. Примеры:\n\n"
+                   "\b\n    tmm linkage docs/examples/shaper.toml --plan 3\n"
+                   "    tmm linkage --r1 0.10 --h 0.04 --c 0 --r2 0.08 --r3 0.30 --b -0.04 --rpm 60",
     "tmm planetary": "Планетарный механизм AA̅ со смещёнными колёсами и разными углами зацепления ступеней "
                      "(С. Н. Кавецкий, 2010).\n\n"
                      "Числа зубьев по передаточному отношению i и C = cos α_w12/cos α_w34, общее межосевое "
@@ -619,6 +627,106 @@ TEMPLATES: list[tuple[str, str]] = [
      "здесь нет {src}; запустите tmm note в папке записки (или укажите файл .typ)"),
     ("{src} is not a typst file (.typ)", "{src} — не файл typst (.typ)"),
     ("cannot write {p} ({why})", "не удалось записать {p} ({why})"),
+    # tmm linkage MECH.toml (issue 24): inputs/mechanism.py, linkage/mechanism_file.py, assembly.py, sheet1.py
+    ("{p} is larger than 256 KiB; a mechanism file holds a few tables",
+     "{p} больше 256 КиБ; в файле механизма всего несколько таблиц"),
+    ("{p} does not exist; give the mechanism's TOML file (see docs/mechanism.md)",
+     "{p} не существует; укажите файл TOML с описанием механизма (см. docs/mechanism.md)"),
+    ("{p} is not valid TOML ({why}); see docs/mechanism.md for the form",
+     "{p} — не TOML ({why}); форма файла описана в docs/mechanism.md"),
+    ("cannot read {p} ({why})", "не удалось прочитать {p} ({why})"),
+    ("{f} describes the mechanism; drop {opts} (the options of the Whitworth mechanism)",
+     "{f} уже описывает механизм; уберите {opts} (параметры механизма Витворта)"),
+    ("--plan needs a mechanism file (tmm linkage MECH.toml --plan N); for the Whitworth options use --at DEG",
+     "--plan требует файла механизма (tmm linkage MECH.toml --plan N); для механизма Витворта задайте --at ГРАД"),
+    ("--positions is {n}; give a whole number of crank positions from 2 to 360 (the book uses 12)",
+     "--positions = {n}; задайте целое число положений кривошипа от 2 до 360 (в пособиях 12)"),
+    ("--plan {p}: there is no such position; the positions are {ls}",
+     "--plan {p}: такого положения нет; есть положения {ls}"),
+    ("{src}: the file must hold TOML tables", "{src}: файл должен содержать таблицы TOML"),
+    ("{src}: '{k}' is read as '{kk}': a top-level key must come before the first [table] of the file",
+     "{src}: '{k}' прочитан как '{kk}': ключи верхнего уровня пишутся до первой [таблицы] файла"),
+    ("{src}: unknown key '{k}'; known keys here: {ks}", "{src}: неизвестный ключ '{k}'; допустимые здесь ключи: {ks}"),
+    ("{src}: '{k}' must be a table, e.g. [{t}]", "{src}: '{k}' должно быть таблицей, например [{t}]"),
+    ("{src}: '{k}' must be a table [[group]]", "{src}: '{k}' должно быть таблицей [[group]]"),
+    ("{src}: 'point' must be tables [[point]]", "{src}: 'point' должны быть таблицами [[point]]"),
+    ("{src}: '[frame]' must be a table of fixed joints, e.g. {ex}",
+     "{src}: '[frame]' должно быть таблицей неподвижных шарниров, например {ex}"),
+    ("{src}: '{k}' must be a number, e.g. {ex}", "{src}: '{k}' должно быть числом, например {ex}"),
+    ("{src}: '{k}' is {v}; give a finite number, e.g. {ex}", "{src}: '{k}' = {v}; задайте конечное число, например {ex}"),
+    ("{src}: '{k}' is {v}; a length must lie in (0, {m}] m", "{src}: '{k}' = {v}; длина должна лежать в (0, {m}] м"),
+    ("{src}: '{k}' is {v}; a coordinate must lie in [−{m}, {m2}] m",
+     "{src}: '{k}' = {v}; координата должна лежать в [−{m}, {m2}] м"),
+    ("{src}: '{k}' must be a list of two numbers [x, y] in metres, e.g. {ex}",
+     "{src}: '{k}' должно быть списком из двух чисел [x, y] в метрах, например {ex}"),
+    ("{src}: '{k}' must be a list of two lengths [AB, BC] in metres, e.g. {ex}",
+     "{src}: '{k}' должно быть списком из двух длин [AB, BC] в метрах, например {ex}"),
+    ("{src}: '{k}' must be a list of {n} joint names, e.g. {ex}",
+     "{src}: '{k}' должно быть списком из {n} имён шарниров, например {ex}"),
+    ("{src}: '{k}' names a joint twice ({js})", "{src}: в '{k}' шарнир назван дважды ({js})"),
+    ("{src}: '{k}' must be text in quotes, e.g. {ex}", "{src}: '{k}' должно быть текстом в кавычках, например {ex}"),
+    ("{src}: '{k}' is {v}; choose one of {cs}", "{src}: '{k}' = {v}; допустимо одно из: {cs}"),
+    ("{src}: '{k}' is {v}; a name is a letter followed by letters, digits or _ (at most {n}), e.g. \"B\" or \"O1\"",
+     "{src}: '{k}' = {v}; имя — буква, за которой идут буквы, цифры или _ (не более {n}), например \"B\" или "
+     "\"O1\""),
+    ("{src}: 'crank.rpm' is missing, e.g. rpm = 1500 (or omega in rad/s)",
+     "{src}: нет ключа 'crank.rpm', например rpm = 1500 (или omega в рад/с)"),
+    ("{src}: '{k}' is missing, e.g. {ex}", "{src}: нет ключа '{k}', например {ex}"),
+    ("{src}: '{k}': the name {n} is taken; give each joint, point and link its own name",
+     "{src}: '{k}': имя {n} уже занято; дайте каждому шарниру, точке и звену своё имя"),
+    ("{src}: '{k}': the joint {n} already carries a slider or a block; give each joint, point and link its own name",
+     "{src}: '{k}': на шарнире {n} уже есть ползун или камень; дайте каждому шарниру, точке и звену своё имя"),
+    ("{src}: '{k}': joint {n} is the [[point]] of the link {l}, which is not placed before this group",
+     "{src}: '{k}': шарнир {n} — точка [[point]] звена {l}, которое не построено до этой группы"),
+    ("{src}: '{k}': joint {n} is not placed before this group; define it in [frame], as the crank's joint, in an "
+     "earlier group or as a [[point]] of an earlier link",
+     "{src}: '{k}': шарнир {n} не построен до этой группы; задайте его в [frame], как шарнир кривошипа, в одной из "
+     "предыдущих групп или как точку [[point]] построенного ранее звена"),
+    ("{src}: '{k}' is {v}, not a joint of [frame]; the crank turns about a fixed joint",
+     "{src}: '{k}' = {v} — не шарнир стойки [frame]; кривошип вращается вокруг неподвижного шарнира"),
+    ("{src}: give the crank's speed once: 'crank.rpm' or 'crank.omega', not both",
+     "{src}: задайте скорость кривошипа один раз: 'crank.rpm' или 'crank.omega', но не оба"),
+    ("{src}: '{k}' is {v}; the mean speed must lie in (0, {m}] rpm (the sense is 'crank.sense')",
+     "{src}: '{k}' = {v}; средняя частота вращения должна лежать в (0, {m}] об/мин (направление — 'crank.sense')"),
+    ("{src}: '{k}' is {v}; the mean speed must lie in (0, {m}] rad/s (the sense is 'crank.sense')",
+     "{src}: '{k}' = {v}; средняя угловая скорость должна лежать в (0, {m}] рад/с (направление — 'crank.sense')"),
+    ("{src}: '{k}' is {v}; the kinds are RRR, RRP and RPR (class II groups of kinds 1–3)",
+     "{src}: '{k}' = {v}; допустимые виды групп: RRR, RRP и RPR (группы II класса 1–3-го вида)"),
+    ("{src}: '{k}' is {v}; give a whole number of crank positions from 2 to 360, e.g. positions = 12",
+     "{src}: '{k}' = {v}; задайте целое число положений кривошипа от 2 до 360, например positions = 12"),
+    ("{src}: '{k}' has {n} entries; at most {m} are read", "{src}: в '{k}' записей: {n}; читается не более {m}"),
+    ("{src}: the mechanism has no [[group]]; add the class II groups in the order of the structural formula",
+     "{src}: в механизме нет групп [[group]]; добавьте группы II класса в порядке формулы строения"),
+    ("{src}: group {n} ({l}) hangs on fixed joints only ({js}); it would not move: hang it on the crank or a moving "
+     "link",
+     "{src}: группа {n} ({l}) присоединена только к неподвижным шарнирам ({js}) и не будет двигаться: присоедините "
+     "её к кривошипу или подвижному звену"),
+    ("{src}: '{k}': measure a point of the slotted link {l} from its pivot {c}: link = [\"{c}\", \"{a}\"]",
+     "{src}: '{k}': точку кулисы {l} отсчитывайте от её оси {c}: link = [\"{c}\", \"{a}\"]"),
+    ("{src}: '{k}': no moving link joins {a} and {b}; name a link by two of its joints, e.g. [\"A\", \"B\"]",
+     "{src}: '{k}': ни одно подвижное звено не соединяет {a} и {b}; задайте звено двумя его шарнирами, например "
+     "[\"A\", \"B\"]"),
+    ("{src}: 'output' is {v}; give a slider's joint (e.g. \"B\") or a moving link by two joints (e.g. [\"C\", \"B\"])",
+     "{src}: 'output' = {v}; задайте шарнир ползуна (например \"B\") или подвижное звено двумя шарнирами "
+     "(например [\"C\", \"B\"])"),
+    ("{src}: 'plan' is {v}; give the label of a position, e.g. plan = 3",
+     "{src}: 'plan' = {v}; задайте обозначение положения, например plan = 3"),
+    ("{src}: group {n} ({l}) cannot be assembled at φ = {phi}°: |{ac}| = {d} m but {ab} + {bc} = {s} m; make {ab} + "
+     "{bc} longer than {d} m",
+     "{src}: группу {n} ({l}) нельзя собрать при φ = {phi}°: |{ac}| = {d} м, а {ab} + {bc} = {s} м; сделайте "
+     "{ab} + {bc} длиннее {d} м"),
+    ("{src}: group {n} ({l}) cannot be assembled at φ = {phi}°: |{ac}| = {d} m but |{ab} − {bc}| = {diff} m; {short} "
+     "is too short beside {long}: make it longer than {x} m",
+     "{src}: группу {n} ({l}) нельзя собрать при φ = {phi}°: |{ac}| = {d} м, а |{ab} − {bc}| = {diff} м; звено "
+     "{short} слишком короткое рядом с {long}: сделайте его длиннее {x} м"),
+    ("{src}: group {n} ({l}) cannot be assembled at φ = {phi}°: {a} comes {h} m from the guide of {b} but {ab} = {len} "
+     "m; make {ab} longer than {h} m",
+     "{src}: группу {n} ({l}) нельзя собрать при φ = {phi}°: точка {a} отходит на {h} м от направляющей {b}, а "
+     "{ab} = {len} м; сделайте {ab} длиннее {h} м"),
+    ("{src}: group {n} ({l}) cannot be assembled at φ = {phi}°: the block's joint {a} passes through the pivot {c} of "
+     "the slotted link (its angle is undefined); move {c} off the path of {a}",
+     "{src}: группу {n} ({l}) нельзя собрать при φ = {phi}°: шарнир камня {a} проходит через ось {c} кулисы (её угол "
+     "не определён); сместите {c} с траектории точки {a}"),
 ]
 
 

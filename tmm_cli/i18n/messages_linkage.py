@@ -39,4 +39,56 @@ MESSAGES: dict[str, dict[str, str]] = {
         "ru": "Ползун останавливается за оборот кривошипа не только в двух крайних положениях (остановок: {count}); H и K "
               "определены между крайними положениями.",
     },
+    # tmm linkage MECH.toml (issue 24): any mechanism of a crank and class II groups
+    "mechanism_position0_working": {
+        "en": "Position 0 is the extreme position of the output link where the working stroke begins; the working "
+              "stroke is the slower one (the larger crank angle).",
+        "ru": "Положение 0 — крайнее положение выходного звена в начале рабочего хода; рабочим принят более "
+              "медленный ход (больший угол поворота кривошипа).",
+    },
+    "mechanism_position0_load": {
+        "en": "Position 0 is the extreme position of the output link where the working stroke begins, the stroke "
+              "the file's load.working names.",
+        "ru": "Положение 0 — крайнее положение выходного звена в начале рабочего хода, указанного в load.working.",
+    },
+    "mechanism_position0_far": {
+        "en": "Both strokes take the same crank angle (K = 1): position 0 is the extreme position of the output "
+              "link farthest from the crank pivot (the top dead centre); give load.working or crank.start_deg to "
+              "choose another.",
+        "ru": "Оба хода занимают одинаковый угол поворота кривошипа (K = 1): положение 0 — крайнее положение "
+              "выходного звена, наиболее удалённое от оси кривошипа (верхняя мёртвая точка); другое задаётся "
+              "load.working или crank.start_deg.",
+    },
+    "mechanism_position0_given": {
+        "en": "Position 0 is at the crank angle the file gives (crank.start_deg).",
+        "ru": "Положение 0 — при угле кривошипа, заданном в файле (crank.start_deg).",
+    },
+    "mechanism_position0_turning": {
+        "en": "The output link turns fully and has no extreme positions: there is no stroke and no K; position 0 "
+              "is at the crank angle 0° (or crank.start_deg).",
+        "ru": "Выходное звено вращается полностью и не имеет крайних положений: хода и K нет; положение 0 — при "
+              "угле кривошипа 0° (или crank.start_deg).",
+    },
+    "mechanism_fast_working": {
+        "en": "The working stroke is the faster one (K = {time_ratio:.4f} < 1): check load.working.",
+        "ru": "Рабочий ход быстрее холостого (K = {time_ratio:.4f} < 1): проверьте load.working.",
+    },
+    "mechanism_stops": {
+        "en": "The output link stops {count} times per crank turn (not only in its two extreme positions); the "
+              "stroke and K are taken between its extreme positions.",
+        "ru": "Выходное звено останавливается за оборот кривошипа не только в двух крайних положениях (остановок: "
+              "{count}); ход и K определены между крайними положениями.",
+    },
+    "mechanism_pressure": {
+        "en": "The pressure angle of group {group} reaches {angle_deg:.1f}° at φ = {phi_deg:.1f}° (more than "
+              "{limit_deg:.0f}°): the group transmits motion poorly there.",
+        "ru": "Угол давления в группе {group} достигает {angle_deg:.1f}° при φ = {phi_deg:.1f}° (больше "
+              "{limit_deg:.0f}°): передача движения там неблагоприятна.",
+    },
+    "mechanism_slot": {
+        "en": "The block slides along the slotted link {link} from {rho_min_mm:.1f} to {rho_max_mm:.1f} mm from its "
+              "pivot {pivot}: the slot must reach at least {rho_max_mm:.1f} mm.",
+        "ru": "Камень скользит по кулисе {link} от {rho_min_mm:.1f} до {rho_max_mm:.1f} мм от её оси {pivot}: паз "
+              "должен доходить не менее чем до {rho_max_mm:.1f} мм.",
+    },
 }

@@ -262,7 +262,7 @@ def _curve(mech: Mechanism, start: float, direction: int) -> Curve:
 
 
 def _notes(mech: Mechanism, rule: str, stops: int, pressure, time_ratio) -> tuple[Note, ...]:
-    notes = [Note.make("mechanism_position0", "assumption", rule=rule)]
+    notes = [Note.make(f"mechanism_position0_{rule}", "assumption")]
     if time_ratio is not None and time_ratio < 1.0 - 1e-9:
         notes.append(Note.make("mechanism_fast_working", "warning", time_ratio=time_ratio))
     if stops > 2:

@@ -14,9 +14,9 @@ import math
 
 import numpy as np
 
-from ..linkage.sheet1 import Sheet1
-from ..linkage.vector_plans import Plan
-from .i18n import note_text
+from ...linkage.sheet1 import Sheet1
+from ...linkage.vector_plans import Plan
+from ...i18n.lang import note_text
 
 CONVENTIONS = ("x right, y up [m]; angles from +x counter-clockwise [deg]; omega, epsilon counter-clockwise positive "
                "[rad/s, rad/s^2]; a link XY's angle is the direction X -> Y; SI units")

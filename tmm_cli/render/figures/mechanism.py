@@ -18,11 +18,11 @@ import re
 
 import numpy as np
 
-from ..linkage.sheet1 import Sheet1
-from ..linkage.vector_plans import Plan, Plans
-from .figure_kit import decimal_commas, new_figure, suptitle, title_height
-from .i18n import pick
-from .numbers import num
+from ...linkage.sheet1 import Sheet1
+from ...linkage.vector_plans import Plan, Plans
+from .kit import decimal_commas, new_figure, suptitle, title_height
+from ...i18n.lang import pick
+from ...i18n.numbers import num
 
 GREY = "#9a9a9a"
 C_WORK = "#1f77b4"

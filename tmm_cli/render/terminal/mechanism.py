@@ -7,10 +7,10 @@ import math
 
 import numpy as np
 
-from ..linkage.positions import output_coordinate
-from ..linkage.sheet1 import Sheet1
-from .i18n import pick
-from .numbers import num
+from ...linkage.positions import output_coordinate
+from ...linkage.sheet1 import Sheet1
+from ...i18n.lang import pick
+from ...i18n.numbers import num
 
 PATTERN_RU = str.maketrans({"R": "В", "P": "П"})  # вращательная, поступательная
 
