@@ -207,6 +207,9 @@ def main() -> None:
             ("tmm project --variant 17 (figures, note.pdf, sheets)", TMM + ["project", "--variant", "17", *o], "figure", None),
             ("tmm linkage (Whitworth) --no-plots --json", TMM + ["linkage", "--r1", "0.10", "--h", "0.04", "--r2", "0.08", "--r3", "0.30",
                                                             "--b", "-0.04", "--rpm", "60", "--no-plots", "--json", *o], "cli", 2.0),
+            ("tmm linkage docs/examples/shaper.toml --no-plots --json",
+             TMM + ["linkage", str(Path(__file__).resolve().parents[1] / "docs" / "examples" / "shaper.toml"),
+                    "--no-plots", "--json", *o], "cli", 2.0),
         ]
         print(f"{'command':66s} {'median s':>9s} {'floor s':>8s} {'ratio':>6s}  floor   target")
         for name, cmd, floor, target in rows:
