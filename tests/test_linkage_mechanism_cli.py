@@ -84,6 +84,8 @@ CASES = {
     "with Whitworth options": ([str(EXAMPLES / "shaper.toml"), "--r1", "0.1"], "уже описывает механизм; уберите --r1"),
     "--plan without a file": (["--plan", "3", "--r1", "0.1"], "--plan требует файла механизма"),
     "unknown plan position": ([str(EXAMPLES / "shaper.toml"), "--plan", "13"], "--plan 13: такого положения нет"),
+    "a mechanism file as --input": (["--input", str(EXAMPLES / "shaper.toml")], "— файл механизма; запустите tmm "
+                                                                                "linkage"),
     "--positions out of range": ([str(EXAMPLES / "shaper.toml"), "--positions", "1"],
                                  "--positions = 1; задайте целое число положений кривошипа от 2 до 360"),
 }
@@ -100,7 +102,7 @@ def test_bad_input_is_one_line_in_the_users_language(case, tmp_path):
     assert len(lines) == 1 and lines[0].startswith("tmm: ошибка: "), (case, ru.stderr)
     line = lines[0].replace(str(tmp_path), "").replace(str(EXAMPLES), "")
     assert fragment in line, (case, line)
-    ours = re.sub(r"\((Expected|tmm linkage)[^;]*\)", "", line)  # the TOML parser's own words; a command line
+    ours = re.sub(r"\((Expected|tmm linkage)[^;]*\)|tmm linkage \S+", "", line)  # the TOML parser's words; commands
     assert not ENGLISH.search(ours), (case, line)
     en = run("linkage", *args, "--out", tmp_path / "o", "--lang", "en")
     assert en.exit_code == 2 and en.stderr.startswith("tmm: error: ") and not CYRILLIC.search(

@@ -628,6 +628,8 @@ TEMPLATES: list[tuple[str, str]] = [
     ("{src} is not a typst file (.typ)", "{src} — не файл typst (.typ)"),
     ("cannot write {p} ({why})", "не удалось записать {p} ({why})"),
     # tmm linkage MECH.toml (issue 24): inputs/mechanism.py, linkage/mechanism_file.py, assembly.py, sheet1.py
+    ("{p} is a mechanism file; run tmm linkage {p} (without --input)",
+     "{p} — файл механизма; запустите tmm linkage {p} (без --input)"),
     ("{p} is larger than 256 KiB; a mechanism file holds a few tables",
      "{p} больше 256 КиБ; в файле механизма всего несколько таблиц"),
     ("{p} does not exist; give the mechanism's TOML file (see docs/mechanism.md)",
