@@ -15,7 +15,7 @@ SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
 PLAN_MM = 100.0  # the longest vector of a plan
 SCHEME_MM = 250.0  # the larger side of the scheme in all positions
 DIAGRAM_AXIS_MM = 180.0  # the crank-angle axis of the diagrams: one turn
-DIAGRAM_HEIGHT_MM = 40.0  # the largest ordinate of a diagram (each side of the axis)
+DIAGRAM_HEIGHT_MM = 30.0  # the largest ordinate of a diagram (each side of the axis): three fit a sheet field
 
 
 def drafting_scale(value: float, room_mm: float) -> float:
@@ -54,7 +54,7 @@ def diagram_scales(s_max: float, v_max: float, a_max: float, axis_mm: float = DI
 
     >>> d = diagram_scales(0.16, 0.86, 6.7)
     >>> round(math.degrees(d.phi), 9), d.s, d.v, d.a
-    (2.0, 0.004, 0.025, 0.2)
+    (2.0, 0.01, 0.04, 0.25)
     """
     return DiagramScales(2.0 * math.pi / axis_mm, drafting_scale(s_max, height_mm), drafting_scale(v_max, height_mm),
                          drafting_scale(a_max, height_mm), axis_mm, height_mm)
