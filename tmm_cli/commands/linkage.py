@@ -21,6 +21,9 @@ from .options import (
     lang_option,
     no_plots_option,
     resolve_lang,
+    sheets_option,
+    title_block,
+    title_options,
 )
 
 FIGURES = ("linkage_mechanism", "linkage_diagrams", "linkage_velocity_plan", "linkage_acceleration_plan",
@@ -57,9 +60,11 @@ def _metres(name: str, help_text: str):
 @no_plots_option
 @click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Output folder (default ./tmm-out); files go to DIR/linkage/.")
 @format_option
+@sheets_option
+@title_options
 @lang_option
 def linkage_cmd(mechanism_file, plan, r1, h, c, r2, r3, b, rpm, omega, eps_crank, n_positions, at_deg, input_file,
-                variant, as_json, no_plots, out, fmt, lang):
+                variant, as_json, no_plots, out, fmt, sheets, lang, **title_kw):
     """Sheet 1: a lever mechanism — structure, positions, velocities, accelerations, plans, diagrams.
 
     MECH.toml describes the mechanism as the structural formula builds it: the frame, the crank and
@@ -79,10 +84,13 @@ def linkage_cmd(mechanism_file, plan, r1, h, c, r2, r3, b, rpm, omega, eps_crank
         if extra:
             raise TmmError(f"{mechanism_file} describes the mechanism; drop {', '.join(extra)} (the options of the "
                            "Whitworth mechanism)")
-        _mechanism(mechanism_file, plan, n_positions, as_json, no_plots, out, fmt, lang)
+        _mechanism(mechanism_file, plan, n_positions, as_json, no_plots, out, fmt, lang, sheets, title_block(title_kw))
         return
     if plan is not None:
         raise TmmError("--plan needs a mechanism file (tmm linkage MECH.toml --plan N); for the Whitworth options use --at DEG")
+    if sheets or any(v is not None for v in title_kw.values()):
+        raise TmmError("the A1 sheet 1 needs a mechanism file: tmm linkage MECH.toml --sheets (the Whitworth "
+                       "mechanism is docs/examples/whitworth.toml)")
     given = {"r1": r1, "h": h, "c": c, "r2": r2, "r3": r3, "b": b, "rpm": rpm, "omega": omega,
              "eps_crank": eps_crank, "positions": n_positions, "at": at_deg}
     values = {}
@@ -140,7 +148,7 @@ def linkage_cmd(mechanism_file, plan, r1, h, c, r2, r3, b, rpm, omega, eps_crank
           fmt, doc if as_json else None, show, result.notes, lang, owns=OWNS)
 
 
-def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang) -> None:
+def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang, sheets, title) -> None:
     """`tmm linkage MECH.toml`: read, analyse, write and show sheet 1 of the mechanism."""
     import dataclasses
 
@@ -174,5 +182,12 @@ def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang) -> No
 
         print_mechanism(console, sheet, lang)
 
+    def a1(tmp):
+        from ..render.sheets import save_sheet
+        from ..render.sheets.linkage_sheet import sheet1
+
+        save_sheet(sheet1(sheet, lang, title), tmp, "sheet1")
+
     emit(folder, {"linkage.json": doc, "linkage_curve.csv": curve_csv(sheet)}, None if no_plots else figures,
-         fmt, doc if as_json else None, show, sheet.cycle.notes, lang, owns=OWNS, figure_names=names)
+         fmt, doc if as_json else None, show, sheet.cycle.notes, lang, owns=OWNS + ("sheet1.dxf", "sheet1.pdf"),
+         extra=a1 if sheets else None, figure_names=names)

@@ -630,6 +630,10 @@ TEMPLATES: list[tuple[str, str]] = [
     # tmm linkage MECH.toml (issue 24): inputs/mechanism.py, linkage/mechanism_file.py, assembly.py, sheet1.py
     ("{p} is a mechanism file; run tmm linkage {p} (without --input)",
      "{p} — файл механизма; запустите tmm linkage {p} (без --input)"),
+    ("the A1 sheet 1 needs a mechanism file: tmm linkage MECH.toml --sheets (the Whitworth mechanism is "
+     "docs/examples/whitworth.toml)",
+     "для листа 1 формата A1 нужен файл механизма: tmm linkage MECH.toml --sheets (механизм Витворта — "
+     "docs/examples/whitworth.toml)"),
     ("{p} is larger than 256 KiB; a mechanism file holds a few tables",
      "{p} больше 256 КиБ; в файле механизма всего несколько таблиц"),
     ("{p} does not exist; give the mechanism's TOML file (see docs/mechanism.md)",
