@@ -164,8 +164,9 @@ def draw_mechanism(ax, s: Sheet1, i: int, color="k", lw=1.6, ls="-", labels=True
         for n in m.joint_names:
             d = z[n] - centre
             d = d / abs(d) if abs(d) > 1e-9 else 1j
-            ax.annotate(f"${joint_tex(n)}$", (z[n].real, z[n].imag), xytext=(9 * d.real, 9 * d.imag),
-                        textcoords="offset points", ha="center", va="center", fontsize=10, zorder=8)
+            ax.annotate(f"${joint_tex(n)}$", (z[n].real, z[n].imag), xytext=(7 * d.real, 7 * d.imag),
+                        textcoords="offset points", ha="left" if d.real > 0.3 else "right" if d.real < -0.3 else "center",
+                        va="bottom" if d.imag > 0.3 else "top" if d.imag < -0.3 else "center", fontsize=10, zorder=8)
 
 
 def _guides(ax, s: Sheet1, lo: complex, hi: complex) -> None:
