@@ -152,11 +152,12 @@ def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang, sheet
     """`tmm linkage MECH.toml`: read, analyse, write and show sheet 1 of the mechanism."""
     import dataclasses
 
-    from ..inputs.mechanism import read_mechanism
+    from ..inputs.mechanism import read_mechanism_tables
+    from ..linkage.mechanism_file import parse_mechanism
     from ..linkage.sheet1 import analyse_mechanism
 
     lang = resolve_lang(lang)
-    mech = read_mechanism(path)
+    mech = parse_mechanism(read_mechanism_tables(path), str(path))
     if n_positions is not None:
         if not 2 <= n_positions <= 360:
             raise TmmError(f"--positions is {n_positions}; give a whole number of crank positions from 2 to 360 "

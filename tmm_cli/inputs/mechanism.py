@@ -1,7 +1,8 @@
-"""A mechanism file (`tmm linkage MECH.toml`): read the TOML, hand the tables to the core's parser.
+"""A mechanism file (`tmm linkage MECH.toml`): read the TOML into its tables.
 
-The form of the file is :mod:`tmm_cli.linkage.mechanism_file`'s; here only the reading: a missing,
-oversized, non-UTF-8 or malformed file is one TmmError line naming it.
+The form of the file is checked by :mod:`tmm_cli.linkage.mechanism_file` (the command hands it these
+tables); here only the reading: a missing, oversized, non-UTF-8 or malformed file is one TmmError
+line naming it.
 """
 
 from __future__ import annotations
@@ -13,11 +14,9 @@ from ..errors import TmmError
 MAX_BYTES = 256 * 1024
 
 
-def read_mechanism(path):
-    """The :class:`~tmm_cli.linkage.mechanism.Mechanism` of the file at `path`."""
+def read_mechanism_tables(path) -> dict:
+    """The tables of the mechanism file at `path`, as tomllib reads them."""
     import tomllib
-
-    from ..linkage.mechanism_file import parse_mechanism
 
     path = Path(path)
     try:
@@ -34,4 +33,4 @@ def read_mechanism(path):
         raise TmmError(f"{path} is not valid TOML ({exc}); see docs/mechanism.md for the form") from None
     except OSError as exc:
         raise TmmError(f"cannot read {path} ({exc.strerror})") from None
-    return parse_mechanism(data, str(path))
+    return data
