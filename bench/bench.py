@@ -2,6 +2,7 @@
 
     python bench/bench.py              # CLI timings + in-process synthesis
     python bench/bench.py --batch      # also `tmm batch --variants 1-68 --jobs 2` (a minute or two)
+    python bench/bench.py --mechanism  # only sheet 1 of the example mechanisms, in process (a second)
 
 Two floors: no command of ours can be faster than the libraries it needs.
 - "cli floor": a fresh `python -c "import numpy, click, rich"`;
@@ -91,6 +92,40 @@ def in_process_synthesis() -> tuple[float, float, float]:
     return max(times), statistics.median(times), worst_at
 
 
+def mechanism_in_process(runs: int = 20) -> list[tuple[str, float, float]]:
+    """Sheet 1 of each example mechanism without figures (issue 24: 12 positions, both extreme
+    positions, both plans, the dense curve): (name, median s, worst s) over `runs` analyses each,
+    file reading and parsing included."""
+    import tomllib
+
+    from tmm_cli.linkage.mechanism_file import parse_mechanism
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+
+    out = []
+    for path in sorted((Path(__file__).resolve().parents[1] / "docs" / "examples").glob("*.toml")):
+        text = path.read_text(encoding="utf-8")
+        try:
+            data = tomllib.loads(text)
+            if "crank" not in data:
+                continue
+        except tomllib.TOMLDecodeError:
+            continue
+        analyse_mechanism(parse_mechanism(data, path.name))  # warm-up
+        times = []
+        for _ in range(runs):
+            t0 = time.perf_counter()
+            analyse_mechanism(parse_mechanism(tomllib.loads(text), path.name))
+            times.append(time.perf_counter() - t0)
+        out.append((path.stem, statistics.median(times), max(times)))
+    return out
+
+
+def print_mechanisms() -> None:
+    for name, median, worst in mechanism_in_process():
+        print(f"sheet 1 of docs/examples/{name}.toml in process (12 positions, both plans, no figures): "
+              f"median {median * 1000:.1f} ms, worst {worst * 1000:.1f} ms (target: well under 1 s)")
+
+
 def note_time(variant: int = 17) -> tuple[float, float]:
     """The note's own time for one variant, in process: (SVG copies of the figures, build + typst compile).
 
@@ -146,7 +181,11 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--runs", type=int, default=7)
     ap.add_argument("--batch", action="store_true", help="also time tmm batch --variants 1-68 --jobs 2 (long)")
+    ap.add_argument("--mechanism", action="store_true", help="only the in-process timing of sheet 1's mechanisms (a second)")
     args = ap.parse_args()
+    if args.mechanism:
+        print_mechanisms()
+        return
     out = Path(tempfile.mkdtemp(prefix="tmm-bench-"))
     o = ["--out", str(out)]
     try:
@@ -168,6 +207,9 @@ def main() -> None:
             ("tmm project --variant 17 (figures, note.pdf, sheets)", TMM + ["project", "--variant", "17", *o], "figure", None),
             ("tmm linkage (Whitworth) --no-plots --json", TMM + ["linkage", "--r1", "0.10", "--h", "0.04", "--r2", "0.08", "--r3", "0.30",
                                                             "--b", "-0.04", "--rpm", "60", "--no-plots", "--json", *o], "cli", 2.0),
+            ("tmm linkage docs/examples/shaper.toml --no-plots --json",
+             TMM + ["linkage", str(Path(__file__).resolve().parents[1] / "docs" / "examples" / "shaper.toml"),
+                    "--no-plots", "--json", *o], "cli", 2.0),
         ]
         print(f"{'command':66s} {'median s':>9s} {'floor s':>8s} {'ratio':>6s}  floor   target")
         for name, cmd, floor, target in rows:
@@ -194,6 +236,7 @@ def main() -> None:
         d, b, c = added(tmm_main + ["project", "--variant", "17", "--out", str(out)],
                         tmm_main + ["project", "--variant", "17", "--no-sheets", "--out", str(out)], args.runs)
         print(f"  the same, run alternately: {d:.2f} s ({b:.2f} -> {c:.2f} s)")
+        print_mechanisms()
         worst, median, at = in_process_synthesis()
         print(f"in-process gear synthesis over n_cr = 30..960 rpm: worst {worst * 1000:.1f} ms (at {at:g} rpm), median {median * 1000:.1f} ms")
         if args.batch:

@@ -1,4 +1,6 @@
-"""`tmm linkage`: kinematics of the slotted-link (Whitworth) quick-return mechanism (seed 003).
+"""`tmm linkage`: sheet 1 — the kinematics of a lever mechanism described in a TOML file
+(``tmm linkage MECH.toml``, issue 24), or of the slotted-link (Whitworth) quick-return mechanism of
+seed 003 given by its options (``--r1 … --b``).
 
 Only click is imported at module level (``tmm --help`` stays instant); the core and the renderers
 are imported inside the command.
@@ -19,12 +21,17 @@ from .options import (
     lang_option,
     no_plots_option,
     resolve_lang,
+    sheets_option,
+    title_block,
+    title_options,
 )
 
-FIGURES = ("linkage_mechanism", "linkage_diagrams", "linkage_velocity_plan", "linkage_acceleration_plan")
+FIGURES = ("linkage_mechanism", "linkage_diagrams", "linkage_velocity_plan", "linkage_acceleration_plan",
+           "linkage_velocity_plan_2", "linkage_acceleration_plan_2")
 DATA_FILES = ("linkage.json", "linkage_curve.csv")
 # exactly the names this command writes: older copies of them are replaced, nothing else is touched
 OWNS = DATA_FILES + tuple(f"{name}.{ext}" for name in FIGURES for ext in ("png", "svg", "pdf"))
+WHITWORTH_OPTIONS = ("r1", "h", "c", "r2", "r3", "b", "rpm", "omega", "eps_crank", "at", "input", "variant")
 
 
 def _metres(name: str, help_text: str):
@@ -32,6 +39,10 @@ def _metres(name: str, help_text: str):
 
 
 @click.command("linkage", context_settings=CONTEXT)
+@click.argument("mechanism_file", required=False, type=click.Path(dir_okay=False), metavar="[MECH.toml]")
+@click.option("--plan", "plan", default=None, metavar="N",
+              help="With MECH.toml: the position of the velocity and acceleration plans, e.g. 3 or 7' (default: the "
+                   "middle of the working stroke).")
 @_metres("r1", "Crank O21A [m].")
 @_metres("h", "The slotted link's pivot O41 lies h below the crank centre O21 [m].")
 @_metres("c", "... and c to the left of it [m] (default 0; negative: to the right).")
@@ -49,17 +60,37 @@ def _metres(name: str, help_text: str):
 @no_plots_option
 @click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Output folder (default ./tmm-out); files go to DIR/linkage/.")
 @format_option
+@sheets_option
+@title_options
 @lang_option
-def linkage_cmd(r1, h, c, r2, r3, b, rpm, omega, eps_crank, n_positions, at_deg, input_file, variant, as_json, no_plots, out, fmt, lang):
-    """Sheet 1: slotted-link (Whitworth) mechanism — positions, velocities, accelerations.
+def linkage_cmd(mechanism_file, plan, r1, h, c, r2, r3, b, rpm, omega, eps_crank, n_positions, at_deg, input_file,
+                variant, as_json, no_plots, out, fmt, sheets, lang, **title_kw):
+    """Sheet 1: a lever mechanism — structure, positions, velocities, accelerations, plans, diagrams.
 
-    The frame of J. Goban, K. Monková, A. Šmeringaiová, “The numerical and computer aided confrontation of
-    kinematic analysis of mechanism” (2010): origin at the crank centre O21, x right, y up; φ21 from +y towards +x.
-    Example (a true Whitworth mechanism):
+    MECH.toml describes the mechanism as the structural formula builds it: the frame, the crank and
+    class II groups RRR, RRP, RPR (docs/mechanism.md; examples in docs/examples/). Without it, the
+    options describe the slotted-link (Whitworth) mechanism of J. Goban, K. Monková, A. Šmeringaiová,
+    “The numerical and computer aided confrontation of kinematic analysis of mechanism” (2010): origin
+    at the crank centre O21, x right, y up; φ21 from +y towards +x. Examples:
 
     \b
+        tmm linkage docs/examples/shaper.toml --plan 3
         tmm linkage --r1 0.10 --h 0.04 --c 0 --r2 0.08 --r3 0.30 --b -0.04 --rpm 60
     """
+    if mechanism_file is not None:
+        given = {"r1": r1, "h": h, "c": c, "r2": r2, "r3": r3, "b": b, "rpm": rpm, "omega": omega,
+                 "eps_crank": eps_crank, "at": at_deg, "input": input_file, "variant": variant}
+        extra = [f"--{k.replace('_', '-')}" for k in WHITWORTH_OPTIONS if given[k] is not None]
+        if extra:
+            raise TmmError(f"{mechanism_file} describes the mechanism; drop {', '.join(extra)} (the options of the "
+                           "Whitworth mechanism)")
+        _mechanism(mechanism_file, plan, n_positions, as_json, no_plots, out, fmt, lang, sheets, title_block(title_kw))
+        return
+    if plan is not None:
+        raise TmmError("--plan needs a mechanism file (tmm linkage MECH.toml --plan N); for the Whitworth options use --at DEG")
+    if sheets or any(v is not None for v in title_kw.values()):
+        raise TmmError("the A1 sheet 1 needs a mechanism file: tmm linkage MECH.toml --sheets (the Whitworth "
+                       "mechanism is docs/examples/whitworth.toml)")
     given = {"r1": r1, "h": h, "c": c, "r2": r2, "r3": r3, "b": b, "rpm": rpm, "omega": omega,
              "eps_crank": eps_crank, "positions": n_positions, "at": at_deg}
     values = {}
@@ -115,3 +146,49 @@ def linkage_cmd(r1, h, c, r2, r3, b, rpm, omega, eps_crank, n_positions, at_deg,
 
     emit(folder, {"linkage.json": doc, "linkage_curve.csv": curve_csv(result)}, None if no_plots else figures,
           fmt, doc if as_json else None, show, result.notes, lang, owns=OWNS)
+
+
+def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang, sheets, title) -> None:
+    """`tmm linkage MECH.toml`: read, analyse, write and show sheet 1 of the mechanism."""
+    import dataclasses
+
+    from ..inputs.mechanism import read_mechanism_tables
+    from ..linkage.mechanism_file import parse_mechanism
+    from ..linkage.sheet1 import analyse_mechanism
+
+    lang = resolve_lang(lang)
+    mech = parse_mechanism(read_mechanism_tables(path), str(path))
+    if n_positions is not None:
+        if not 2 <= n_positions <= 360:
+            raise TmmError(f"--positions is {n_positions}; give a whole number of crank positions from 2 to 360 "
+                           "(the book uses 12)")
+        mech = dataclasses.replace(mech, positions=n_positions)
+    sheet = analyse_mechanism(mech, plan, str(path))
+
+    from ..output.folder import ensure_writable_dir
+    from ..render.data.mechanism import curve_csv, mechanism_document
+
+    folder = (Path(out) if out else Path("tmm-out")) / "linkage"
+    ensure_writable_dir(folder.parent)
+    doc = mechanism_document(sheet, lang)
+    names = tuple(n for n in FIGURES if not n.endswith("_2") or len(sheet.plans) > 1)
+
+    def figures(which=None):
+        from ..render.figures.mechanism import mechanism_figures
+
+        return mechanism_figures(sheet, lang, which)
+
+    def show(console):
+        from ..render.terminal.mechanism import print_mechanism
+
+        print_mechanism(console, sheet, lang)
+
+    def a1(tmp):
+        from ..render.sheets import save_sheet
+        from ..render.sheets.linkage_sheet import sheet1
+
+        save_sheet(sheet1(sheet, lang, title), tmp, "sheet1")
+
+    emit(folder, {"linkage.json": doc, "linkage_curve.csv": curve_csv(sheet)}, None if no_plots else figures,
+         fmt, doc if as_json else None, show, sheet.cycle.notes, lang, owns=OWNS + ("sheet1.dxf", "sheet1.pdf"),
+         extra=a1 if sheets else None, figure_names=names)

@@ -70,6 +70,8 @@ def read_input(path, variant: str | None = None) -> dict:
         raise TmmError(f"{path} is not valid TOML ({exc}); write lines like r1 = 0.10 (a decimal dot)") from None
     except OSError as exc:
         raise TmmError(f"cannot read {path} ({exc.strerror})") from None
+    if "crank" in data or "frame" in data:
+        raise TmmError(f"{path} is a mechanism file; run tmm linkage {path} (without --input)")
     table = data.pop("variants", None)
     base = _check_values(data, str(path))
     if table is None:

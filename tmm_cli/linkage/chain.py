@@ -1,0 +1,131 @@
+"""The whole mechanism at given crank angles: the crank, then each group in the formula's order.
+
+Positions by :mod:`.groups`, velocities and accelerations by :mod:`.motion`, named points by the
+rigid-body formulas; every quantity is an array with one entry per crank angle. Planar vectors
+are complex numbers x + iy. The crank turns at the mechanism's mean ω1 (or the `omega` given) with
+angular acceleration ε1 (0: uniform); the angles φ are crank angles from +x, counter-clockwise.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..records import record
+from .groups import crank_position, rpr_position, rrp_position, rrr_position
+from .mechanism import Mechanism
+from .motion import rigid, rpr_motion, rrp_motion, rrr_motion
+
+
+@record(eq=False)
+class Kinematics:
+    """Every joint, point and moving link at M crank angles (arrays of shape (M,); SI units).
+
+    Points (`z`, `v`, `a`) are complex: x + iy. Links (`angle`, `omega`, `epsilon`) are real,
+    counter-clockwise positive; a link named XY has the angle of the direction X → Y, in
+    (−π, π]. `slide` holds, per slider or block link, its sliding coordinate and its first two
+    time derivatives: a slider's place s along its guide from the guide's `through` point, a
+    block's distance ρ from the slotted link's pivot (+ away from it).
+    """
+
+    phi: np.ndarray  # crank angle [rad]
+    omega1: float  # crank ω [rad/s]
+    eps1: float  # crank ε [rad/s²]
+    z: dict[str, np.ndarray]  # [m]
+    v: dict[str, np.ndarray]  # [m/s]
+    a: dict[str, np.ndarray]  # [m/s²]
+    angle: dict[str, np.ndarray]  # [rad]
+    omega: dict[str, np.ndarray]  # [rad/s]
+    epsilon: dict[str, np.ndarray]  # [rad/s²]
+    slide: dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]  # [m, m/s, m/s²]
+    base: dict[str, str]  # link → a pin of it (the reference of :meth:`body_point`)
+
+    def body_point(self, link: str, z):
+        """Velocity and acceleration [m/s, m/s²] of the point of `link` that is at `z` now
+        (e.g. the point of a slotted link under its block: the plans' A3)."""
+        r = np.asarray(z) - self.z[self.base[link]]
+        b = self.base[link]
+        return rigid(r, self.v[b], self.a[b], self.omega[link], self.epsilon[link])
+
+    def at(self, k: int) -> "Kinematics":
+        """The same record for the single angle number k (arrays of shape (1,))."""
+        s = slice(k, k + 1)
+        return Kinematics(
+            self.phi[s], self.omega1, self.eps1, {n: x[s] for n, x in self.z.items()},
+            {n: x[s] for n, x in self.v.items()}, {n: x[s] for n, x in self.a.items()},
+            {n: x[s] for n, x in self.angle.items()}, {n: x[s] for n, x in self.omega.items()},
+            {n: x[s] for n, x in self.epsilon.items()}, {n: tuple(q[s] for q in x) for n, x in self.slide.items()},
+            self.base)
+
+
+def _points(mech: Mechanism, group: int, z, v, a, omega, eps, link_group):
+    for pt in mech.points:
+        if link_group[pt.link] != group:
+            continue
+        d = z[pt.toward] - z[pt.base]
+        r = complex(pt.along, pt.across) * d / np.abs(d)
+        z[pt.name] = z[pt.base] + r
+        v[pt.name], a[pt.name] = rigid(r, v[pt.base], a[pt.base], omega[pt.link], eps[pt.link])
+
+
+def solve(mech: Mechanism, phi, omega1: float | None = None, eps1: float = 0.0, upto: int | None = None) -> Kinematics:
+    """Positions, velocities and accelerations at crank angle(s) φ [rad] (of the groups up to
+    number `upto`, all by default). NaN where a group cannot be assembled (see :mod:`.assembly`).
+
+    >>> from .mechanism_file import parse_mechanism
+    >>> m = parse_mechanism({"frame": {"O": [0, 0]}, "crank": {"pivot": "O", "joint": "A",
+    ...     "length": 0.06, "omega": 100.0}, "group": [{"kind": "RRP", "joints": ["A", "B"],
+    ...     "length": 0.25, "guide": {"through": [0, 0], "angle_deg": 0}, "branch": "ahead"}]})
+    >>> k = solve(m, [0.0])
+    >>> round(float(k.z["B"][0].real), 12), round(float(k.a["B"][0].real), 4)   # x_B = r + l; a_B = −rω²(1 + r/l)
+    (0.31, -744.0)
+    """
+    phi = np.atleast_1d(np.asarray(phi, dtype=float))
+    w1 = mech.crank.omega if omega1 is None else float(omega1)
+    e1 = float(eps1)
+    zero = np.zeros(phi.shape, dtype=complex)
+    z = {name: zero + p for name, p in mech.frame.items()}
+    v = {name: zero.copy() for name in mech.frame}
+    a = {name: zero.copy() for name in mech.frame}
+    angle, omega, eps, slide, base = {}, {}, {}, {}, {}
+    link_group = {ln.name: ln.group for ln in mech.links}
+
+    c = mech.crank
+    name = mech.links[0].name
+    z[c.joint] = crank_position(mech.frame[c.pivot], c.length, phi)
+    r = z[c.joint] - z[c.pivot]
+    v[c.joint], a[c.joint] = rigid(r, 0j, 0j, w1, e1)
+    angle[name], omega[name], eps[name], base[name] = np.angle(r), np.full(phi.shape, w1), np.full(phi.shape, e1), c.pivot
+    _points(mech, 0, z, v, a, omega, eps, link_group)
+
+    for g in mech.groups:
+        if upto is not None and g.index > upto:
+            break
+        l1, l2 = g.links
+        if g.kind == "RRR":
+            ja, jb, jc = g.joints
+            z[jb] = rrr_position(z[ja], z[jc], g.lengths[0], g.lengths[1], g.branch)
+            w2, w3, e2, e3, v[jb], a[jb] = rrr_motion(z[ja], z[jb], z[jc], v[ja], v[jc], a[ja], a[jc])
+            angle[l1], angle[l2] = np.angle(z[jb] - z[ja]), np.angle(z[jc] - z[jb])
+            base[l1], base[l2] = ja, jb
+        elif g.kind == "RRP":
+            ja, jb = g.joints
+            unit = g.guide.unit
+            z[jb], s = rrp_position(z[ja], g.guide.through, unit, g.lengths[0], g.branch)
+            w2, e2, ds, dds, v[jb], a[jb] = rrp_motion(z[ja], z[jb], unit, v[ja], a[ja])
+            w3, e3 = np.zeros(phi.shape), np.zeros(phi.shape)
+            angle[l1], angle[l2] = np.angle(z[jb] - z[ja]), np.full(phi.shape, math.remainder(g.guide.angle, 2 * math.pi))
+            slide[l2] = (s, ds, dds)
+            base[l1], base[l2] = ja, jb
+        else:
+            ja, jc = g.joints
+            rho, theta = rpr_position(z[ja], z[jc])
+            w3, e3, dr, ddr = rpr_motion(z[ja], z[jc], v[ja], v[jc], a[ja], a[jc])
+            w2, e2 = w3, e3
+            angle[l1] = angle[l2] = np.angle(-np.exp(1j * theta))  # named AC: from A towards C
+            slide[l1] = (rho, dr, ddr)
+            base[l1], base[l2] = ja, jc
+        omega[l1], omega[l2], eps[l1], eps[l2] = w2, w3, e2, e3
+        _points(mech, g.index, z, v, a, omega, eps, link_group)
+    return Kinematics(phi, w1, e1, z, v, a, angle, omega, eps, slide, base)

@@ -1,0 +1,216 @@
+"""The velocity plan and the acceleration plan of one position, as vectors (no drawing).
+
+The graphical method of every TMM textbook (план скоростей, план ускорений; Artobolevsky;
+Frolov; Pozhbelko, part 1), group by group in the order of the structural formula. Each point
+of a plan is the tip of a vector from the pole (p for velocities, π for accelerations), labelled
+with the small letter of its joint; fixed joints lie at the pole. The vector equations, with the
+labels of the plans (link numbers as in :mod:`.mechanism`; the crank is link 1):
+
+- crank O–A:   v_A = ω1 × OA (⊥ OA);  a_A = aⁿ_A (∥ AO, ω1²·l_OA) [+ aτ_A ⊥ OA if ε1 ≠ 0]
+- RRR A–B–C:   v_B = v_A + v_BA (⊥ AB) = v_C + v_BC (⊥ BC);
+               a_B = a_A + aⁿ_BA + aτ_BA = a_C + aⁿ_BC + aτ_BC  (points n2, n3: aⁿ = v²/l)
+- RRP A–B:     v_B = v_A + v_BA (⊥ AB), v_B ∥ guide;  a_B = a_A + aⁿ_BA + aτ_BA ∥ guide
+- RPR A–C:     the point A3 of the slotted link 3 under the block 2 (A2 = A):
+               v_A3 = v_A2 + v_A3A2 (∥ CA) = v_C + v_A3C (⊥ CA);
+               a_A3 = a_A2 + aᵏ_A3A2 + aʳ_A3A2 (∥ CA) = a_C + aⁿ_A3C + aτ_A3C,
+               aᵏ_A3A2 = 2·ω3 × v_A3A2 (Coriolis; point k)
+- a point D of a link: by similarity (v_D = v_B + ω × BD), the vector pd / πd.
+
+The values are the exact ones of :mod:`.chain` (the plans are their drawing); the scales μ_v,
+μ_a are round numbers with the longest vector at most :data:`.scales.PLAN_MM` long.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..records import record
+from .chain import Kinematics
+from .mechanism import Mechanism
+from .positions import Cycle, Position
+from .scales import PLAN_MM, drafting_scale
+
+
+@record
+class PlanVector:
+    """One vector of a plan: from point `start` to point `end` (plan labels)."""
+
+    start: str
+    end: str
+    symbol: str  # 'v_A', 'v_BA', 'a^n_BA', 'a^τ_BA', 'a^k_A3A2', 'a^r_A3A2', 'a_B'
+    value: complex  # [m/s] or [m/s²]
+    relation: str  # '⊥' or '∥': how its line is drawn …
+    line: str  # … to this line: 'AB' (a link; ∥ 'BA' also says the sense B → A) or 'guide'
+    known: bool  # its magnitude is known before the plan is drawn (ω·l, ω²·l, 2ω·v_rel)
+
+    @property
+    def magnitude(self) -> float:
+        return abs(self.value)
+
+
+@record
+class Equation:
+    """One vector equation of the plan: `lhs` = sum of each entry of `sides` (all equal)."""
+
+    group: int  # 0 the crank
+    lhs: str  # 'v_B'
+    sides: tuple[tuple[str, ...], ...]  # (('v_A', 'v_BA'), ('v_C', 'v_BC'))
+
+
+@record
+class Plan:
+    """A velocity or acceleration plan: the points (tips from the pole) and the vectors drawn."""
+
+    kind: str  # 'velocity' | 'acceleration'
+    pole: str  # 'p' | 'π'
+    points: dict[str, complex]  # label → tip [m/s or m/s²]; the pole at 0
+    at_pole: tuple[str, ...]  # the labels of the fixed joints (drawn at the pole)
+    vectors: tuple[PlanVector, ...]
+    equations: tuple[Equation, ...]
+    scale: float  # μ [(m/s)/mm] or [(m/s²)/mm]
+
+    def mm(self, label: str) -> complex:
+        """The point's place on the drawing [mm] from the pole."""
+        return self.points[label] / self.scale
+
+
+@record
+class Plans:
+    position: Position
+    velocity: Plan
+    acceleration: Plan
+
+
+def _lc(name: str) -> str:
+    return name.lower()
+
+
+class _Draft:
+    def __init__(self, kind: str, pole: str):
+        self.kind, self.pole = kind, pole
+        self.points: dict[str, complex] = {pole: 0j}
+        self.vectors: list[PlanVector] = []
+        self.equations: list[Equation] = []
+
+    def add(self, start, end, symbol, value, relation, line, known, tip=None):
+        if tip is not None:
+            self.points[end] = complex(tip)
+        self.vectors.append(PlanVector(start, end, symbol, complex(value), relation, line, known))
+
+
+def _scale(plan_points: dict[str, complex], room_mm: float) -> float:
+    return drafting_scale(max(abs(z) for z in plan_points.values()), room_mm)
+
+
+def plans_at(mech: Mechanism, kin: Kinematics, position: Position, room_mm: float = PLAN_MM) -> Plans:
+    """Both plans of one position; `kin` holds that position alone (``Cycle.kin.at(i)``)."""
+    z = {n: complex(x[0]) for n, x in kin.z.items()}
+    v = {n: complex(x[0]) for n, x in kin.v.items()}
+    a = {n: complex(x[0]) for n, x in kin.a.items()}
+    w = {n: float(x[0]) for n, x in kin.omega.items()}
+    fixed = set(mech.frame)  # their plan points are the poles
+    lab = {n: (("p", "π") if n in fixed else (_lc(n), _lc(n))) for n in z}
+    V, A = _Draft("velocity", "p"), _Draft("acceleration", "π")
+    one_slot = sum(g.kind == "RPR" for g in mech.groups) == 1  # its Coriolis point is plain k
+    c = mech.crank
+    o, ja = c.pivot, c.joint
+    V.add("p", _lc(ja), f"v_{ja}", v[ja], "⊥", o + ja, True, v[ja])
+    if kin.eps1 == 0.0:
+        A.add("π", _lc(ja), f"a_{ja}", a[ja], "∥", ja + o, True, a[ja])
+    else:
+        an = -kin.omega1 ** 2 * (z[ja] - z[o])
+        A.add("π", "n1", f"a^n_{ja}", an, "∥", ja + o, True, an)
+        A.add("n1", _lc(ja), f"a^τ_{ja}", a[ja] - an, "⊥", o + ja, False, a[ja])
+        A.add("π", _lc(ja), f"a_{ja}", a[ja], "", "", False)
+        A.equations.append(Equation(0, f"a_{ja}", ((f"a^n_{ja}", f"a^τ_{ja}"),)))
+    V.equations.append(Equation(0, f"v_{ja}", ((f"ω1×{o}{ja}",),)))
+    _group_points(mech, 0, z, v, a, lab, V, A)
+    for g in mech.groups:
+        n2, n3 = g.numbers
+        l1, l2 = g.links
+        if g.kind == "RRR":
+            ja, jb, jc = g.joints
+            V.add(lab[ja][0], _lc(jb), f"v_{jb}{ja}", v[jb] - v[ja], "⊥", ja + jb, False, v[jb])
+            V.add(lab[jc][0], _lc(jb), f"v_{jb}{jc}", v[jb] - v[jc], "⊥", jb + jc, False)  # = pb if C is fixed
+            V.add("p", _lc(jb), f"v_{jb}", v[jb], "", "", False)
+            V.equations.append(Equation(g.index, f"v_{jb}", ((f"v_{ja}", f"v_{jb}{ja}"), (f"v_{jc}", f"v_{jb}{jc}"))))
+            na = a[ja] - w[l1] ** 2 * (z[jb] - z[ja])
+            nc = a[jc] - w[l2] ** 2 * (z[jb] - z[jc])
+            A.add(lab[ja][1], f"n{n2}", f"a^n_{jb}{ja}", na - a[ja], "∥", jb + ja, True, na)
+            A.add(f"n{n2}", _lc(jb), f"a^τ_{jb}{ja}", a[jb] - na, "⊥", ja + jb, False, a[jb])
+            A.add(lab[jc][1], f"n{n3}", f"a^n_{jb}{jc}", nc - a[jc], "∥", jb + jc, True, nc)
+            A.add(f"n{n3}", _lc(jb), f"a^τ_{jb}{jc}", a[jb] - nc, "⊥", jb + jc, False)
+            A.add("π", _lc(jb), f"a_{jb}", a[jb], "", "", False)
+            A.equations.append(Equation(g.index, f"a_{jb}", ((f"a_{ja}", f"a^n_{jb}{ja}", f"a^τ_{jb}{ja}"),
+                                                            (f"a_{jc}", f"a^n_{jb}{jc}", f"a^τ_{jb}{jc}"))))
+        elif g.kind == "RRP":
+            ja, jb = g.joints
+            V.add(lab[ja][0], _lc(jb), f"v_{jb}{ja}", v[jb] - v[ja], "⊥", ja + jb, False, v[jb])
+            V.add("p", _lc(jb), f"v_{jb}", v[jb], "∥", "guide", False)
+            V.equations.append(Equation(g.index, f"v_{jb}", ((f"v_{ja}", f"v_{jb}{ja}"),)))
+            na = a[ja] - w[l1] ** 2 * (z[jb] - z[ja])
+            A.add(lab[ja][1], f"n{n2}", f"a^n_{jb}{ja}", na - a[ja], "∥", jb + ja, True, na)
+            A.add(f"n{n2}", _lc(jb), f"a^τ_{jb}{ja}", a[jb] - na, "⊥", ja + jb, False, a[jb])
+            A.add("π", _lc(jb), f"a_{jb}", a[jb], "∥", "guide", False)
+            A.equations.append(Equation(g.index, f"a_{jb}", ((f"a_{ja}", f"a^n_{jb}{ja}", f"a^τ_{jb}{ja}"),)))
+        else:
+            ja, jc = g.joints
+            p3 = f"{ja}{n3}"  # the point of the slotted link under the block
+            p2 = f"{ja}{n2}"
+            v3, a3 = (complex(x[0]) for x in kin.body_point(l2, kin.z[ja]))
+            w3 = w[l2]
+            vr = v3 - v[ja]  # v_A3A2
+            cor = 2j * w3 * vr  # aᵏ_A3A2 = 2·ω3 × v_A3A2
+            V.add(lab[ja][0], _lc(p3), f"v_{p3}{p2}", vr, "∥", jc + ja, False, v3)
+            V.add(lab[jc][0], _lc(p3), f"v_{p3}{jc}", v3 - v[jc], "⊥", jc + ja, False)  # = pa3 if C is fixed
+            V.add("p", _lc(p3), f"v_{p3}", v3, "", "", False)
+            V.equations.append(Equation(g.index, f"v_{p3}", ((f"v_{p2}", f"v_{p3}{p2}"), (f"v_{jc}", f"v_{p3}{jc}"))))
+            kpt = a[ja] + cor
+            kl = "k" if one_slot else f"k{n3}"
+            nc = a[jc] - w3 ** 2 * (z[ja] - z[jc])
+            A.add(lab[ja][1], kl, f"a^k_{p3}{p2}", cor, "⊥", jc + ja, True, kpt)
+            A.add(kl, _lc(p3), f"a^r_{p3}{p2}", a3 - kpt, "∥", jc + ja, False, a3)
+            A.add(lab[jc][1], f"n{n3}", f"a^n_{p3}{jc}", nc - a[jc], "∥", ja + jc, True, nc)
+            A.add(f"n{n3}", _lc(p3), f"a^τ_{p3}{jc}", a3 - nc, "⊥", jc + ja, False)
+            A.add("π", _lc(p3), f"a_{p3}", a3, "", "", False)
+            A.equations.append(Equation(g.index, f"a_{p3}", ((f"a_{p2}", f"a^k_{p3}{p2}", f"a^r_{p3}{p2}"),
+                                                            (f"a_{jc}", f"a^n_{p3}{jc}", f"a^τ_{p3}{jc}"))))
+        _group_points(mech, g.index, z, v, a, lab, V, A)
+    at_pole = tuple(_lc(n) for n in mech.frame)
+    vel = Plan("velocity", "p", V.points, at_pole, tuple(V.vectors), tuple(V.equations), _scale(V.points, room_mm))
+    acc = Plan("acceleration", "π", A.points, at_pole, tuple(A.vectors), tuple(A.equations), _scale(A.points, room_mm))
+    return Plans(position, vel, acc)
+
+
+def _group_points(mech: Mechanism, group: int, z, v, a, lab, V: _Draft, A: _Draft):
+    """Named points of the group's links, by similarity (their tips from the pole)."""
+    group_of = {ln.name: ln.group for ln in mech.links}
+    for pt in mech.points:
+        if group_of[pt.link] == group:
+            V.add("p", _lc(pt.name), f"v_{pt.name}", v[pt.name], "", "", False, v[pt.name])
+            A.add("π", _lc(pt.name), f"a_{pt.name}", a[pt.name], "", "", False, a[pt.name])
+
+
+def default_plan_positions(cycle: Cycle) -> tuple[int, int]:
+    """The positions of the two plans a sheet shows (list indices): the evenly spaced positions
+    nearest the middle of the working and of the return stroke; without extreme positions, the
+    positions a quarter and three quarters of a turn from position 0. The file's `plan` key, if
+    given, is the first."""
+    evens = [p for p in cycle.positions if p.extreme is None or p.label.isdigit()]
+    if cycle.working is None:
+        targets = (0.5 * np.pi, 1.5 * np.pi)
+    else:
+        targets = (0.5 * cycle.working, cycle.working + 0.5 * cycle.returning)
+    picks = [min(evens, key=lambda p: abs(p.travel - t)).index for t in targets]
+    given = cycle.mechanism.plan
+    if given is not None:
+        i = cycle.index(given)
+        if i is not None:
+            picks[0] = i
+    return picks[0], picks[1]
+
+
+def plans(cycle: Cycle, index: int, room_mm: float = PLAN_MM) -> Plans:
+    """Both plans of the cycle's position number `index` (a list index)."""
+    return plans_at(cycle.mechanism, cycle.kin.at(index), cycle.positions[index], room_mm)
+
