@@ -23,9 +23,37 @@ from .kinetostatics import Kinetostatics, kinetostatics
 from .loads import Stroke, stroke_of
 from .polygons import ForcePolygon, force_polygons
 from .power import balancing_moment_by_power, reduced_inertia, reduced_moment
+from .scales import DIAGRAM_AXIS_MM, DIAGRAM_HEIGHT_MM, drafting_scale
 from .sheet1 import Sheet1
 from .sheet2_file import Sheet2Input
 from .zhukovsky import Lever, lever
+
+
+@record
+class DynamicsScales:
+    """The drafter's scales of sheet 2's diagrams (each the smallest round μ with the largest
+    ordinate within `height_mm`; the crank's turn on `axis_mm`)."""
+
+    phi: float  # μ_φ [rad/mm]
+    M: float  # μ_M [N·m/mm]
+    A: float  # μ_A [J/mm] (the works A_r, A_d)
+    T: float  # μ_T [J/mm] (ΔT, ΔT_I)
+    J: float  # μ_J [kg·m²/mm] (J_r against the turn)
+    axis_mm: float
+    height_mm: float
+
+
+def dynamics_scales(dyn: Dynamics, fw: Flywheel | None, axis_mm: float = DIAGRAM_AXIS_MM,
+                    height_mm: float = DIAGRAM_HEIGHT_MM) -> DynamicsScales:
+    """μ of the diagrams M_r and M_d, A_r and A_d, ΔT (and ΔT_I), J_r over the turn."""
+    m = max(float(np.max(np.abs(dyn.M_r))), abs(dyn.M_d))
+    a = max(float(np.max(np.abs(dyn.A_r))), float(np.max(np.abs(dyn.A_d))))
+    t = float(np.max(np.abs(dyn.dT)))
+    if fw is not None:
+        t = max(t, float(np.max(np.abs(fw.mertsalov.dT_I - fw.mertsalov.dT_I[0]))))
+    return DynamicsScales(2.0 * math.pi / axis_mm, drafting_scale(m, height_mm), drafting_scale(a, height_mm),
+                          drafting_scale(t, height_mm), drafting_scale(float(np.max(dyn.J_r)), height_mm), axis_mm,
+                          height_mm)
 
 
 @record(eq=False)
@@ -42,6 +70,7 @@ class Sheet2:
     reduced_inertia: np.ndarray  # J_r at the positions (with the rotor) [kg·m²]
     dynamics: Dynamics  # on the fine grid (every 0.5°)
     flywheel: Flywheel | None  # None without a [dynamics] table
+    scales: DynamicsScales  # of the diagrams
     notes: tuple[Note, ...]
 
     @property
@@ -80,7 +109,7 @@ def _notes(s1: Sheet1, inp: Sheet2Input, fw: Flywheel | None, dyn: Dynamics) -> 
                                    delta_actual=fw.delta_actual))
         if fw.wittenbauer.J_fl > 0.0 and fw.mertsalov.J_fl > 0.0:
             diff = 100.0 * (fw.mertsalov.J_fl - fw.wittenbauer.J_fl) / fw.wittenbauer.J_fl
-            notes.append(Note.make("dynamics_methods", "assumption", diff_pct=diff))
+            notes.append(Note.make("dynamics_methods", "assumption", diff_pct=diff, j_w=fw.wittenbauer.J_fl))
     if dyn.M_d < 0.0:
         notes.append(Note.make("dynamics_driving_negative", "warning", moment=dyn.M_d))
     return tuple(notes)
@@ -115,4 +144,4 @@ def analyse_sheet2(s1: Sheet1, inp: Sheet2Input, source: str = "mechanism") -> S
     fw = flywheel(dyn, inp.dynamics) if inp.dynamics is not None else None
     return Sheet2(s1, inp, stroke, ks, balancing_moment_by_power(kin, loading), lever(mech, loading, kin), i,
                   force_polygons(mech, ks, i), reduced_moment(kin, loading), reduced_inertia(kin, inp.masses, rotor),
-                  dyn, fw, _notes(s1, inp, fw, dyn))
+                  dyn, fw, dynamics_scales(dyn, fw), _notes(s1, inp, fw, dyn))
