@@ -90,8 +90,9 @@ class Sheet2:
         return np.where(np.abs(mb) <= 1e-12 * scale, 0.0, 100.0 * (mb - mz) / size)
 
     def motor_input(self) -> tuple[float, float]:
-        """(M [N·m], n [rpm]) for sheet 4: the driving moment's size and the crank's mean speed."""
-        return abs(self.dynamics.M_d), self.sheet1.mechanism.crank.rpm
+        """(M [N·m], n [rpm]) for sheet 4: the driving moment's size and the crank's mean speed (the
+        file's rpm back from ω to 12 digits: 60 rpm stays 60, not 59.99999999999999)."""
+        return abs(self.dynamics.M_d), float(f"{self.sheet1.mechanism.crank.rpm:.12g}")
 
 
 def _notes(s1: Sheet1, inp: Sheet2Input, fw: Flywheel | None, dyn: Dynamics) -> tuple[Note, ...]:
