@@ -104,7 +104,7 @@ def test_hostile_sheet2_tables(name, path, value, fragment):
 
 
 def test_every_message_has_its_russian_line():
-    from tmm_cli.i18n.help_ru import translate_error
+    from tmm_cli.i18n.errors import translate_error
 
     english = re.compile(r"\b[A-Za-z]{2,} [A-Za-z]{2,} [A-Za-z]{2,}\b")
     for name, path, value, _ in CASES:
@@ -150,6 +150,6 @@ def test_a_load_on_a_turning_output_is_refused():
     mech = parse_mechanism(data, "m.toml")
     with pytest.raises(TmmError, match="the load needs an output link that moves back and forth") as err:
         analyse_sheet2(analyse_mechanism(mech), parse_sheet2(mech, "m.toml"), "m.toml")
-    from tmm_cli.i18n.help_ru import translate_error
+    from tmm_cli.i18n.errors import translate_error
 
     assert "нагрузке нужно выходное звено" in translate_error(str(err.value))

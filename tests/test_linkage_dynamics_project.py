@@ -95,7 +95,7 @@ def test_roster_mechanism_column(tmp_path):
     assert "lies outside the roster's folder" in reasons["Сидоров С. С."]
     assert "does not exist" in reasons["Козлов К. К."]
     assert "leave crank_rpm empty" in reasons["Орлов О. О."]
-    from tmm_cli.i18n.help_ru import translate_error
+    from tmm_cli.i18n.errors import translate_error
 
     for reason in reasons.values():
         assert translate_error(reason) != reason and "список группы, строка" in translate_error(reason)

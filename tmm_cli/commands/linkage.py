@@ -76,13 +76,13 @@ def linkage_cmd(mechanism_file, plan, no_forces, r1, h, c, r2, r3, b, rpm, omega
     MECH.toml describes the mechanism as the structural formula builds it: the frame, the crank and
     class II groups RRR, RRP, RPR (docs/mechanism.md; examples in docs/examples/); with masses and a
     load it also gets sheet 2 — the force analysis, Zhukovsky's lever, the flywheel (docs/dynamics.md).
-    Without it, the
-    options describe the slotted-link (Whitworth) mechanism of J. Goban, K. Monková, A. Šmeringaiová,
-    “The numerical and computer aided confrontation of kinematic analysis of mechanism” (2010): origin
-    at the crank centre O21, x right, y up; φ21 from +y towards +x. Examples:
+    Without it, the options describe the slotted-link (Whitworth) mechanism of J. Goban, K. Monková,
+    A. Šmeringaiová, “The numerical and computer aided confrontation of kinematic analysis of
+    mechanism” (2010): origin at the crank centre O21, x right, y up; φ21 from +y towards +x. Examples:
 
     \b
         tmm linkage docs/examples/shaper.toml --plan 3
+        tmm linkage docs/examples/compressor.toml --sheets
         tmm linkage --r1 0.10 --h 0.04 --c 0 --r2 0.08 --r3 0.30 --b -0.04 --rpm 60
     """
     if mechanism_file is not None:

@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-from ...i18n.lang import pick
+from ...i18n import tr
 from ...i18n.numbers import num
 from ...linkage.sheet2 import Sheet2
 from ..terminal.dynamics import symbol as book_symbol
@@ -178,10 +178,10 @@ def _polygon(ax, pg, lang: str) -> None:
     ax.plot(0, 0, "o", ms=3, color="k")
     ax.axis("off")
     mu = num(pg.scale, lang, sig=3)
-    ax.set_title(r"$\mu_F$ = " + f"{mu} " + pick(lang, "N/mm", "Н/мм"), fontsize=9)
+    ax.set_title(r"$\mu_F$ = " + f"{mu} " + tr(lang, "N/mm"), fontsize=9)
     if short:
-        unit = pick(lang, "N", "Н")
-        text = pick(lang, "short: ", "короткие: ") + ", ".join(
+        unit = tr(lang, "N")
+        text = tr(lang, "short: ") + ", ".join(
             f"{force_tex(v.symbol, lang)} = {num(abs(v.value), lang, decimals=1)} {unit}" for v in short)
         ax.text(0.5, -0.02, text, transform=ax.transAxes, ha="center", va="top", fontsize=7.5, wrap=True)
 
@@ -205,11 +205,11 @@ def forces_figure(s: Sheet2, lang: str):
         biggest = max((abs(f) for _, f, _, _ in items), default=1.0) or 1.0
         size = 0.45 * max(max(abs(a - b) for a in pts for b in pts), unit * 3)
         pts += _arrows(ax, items, size, biggest)
-        moments = [force_tex(c.symbol, lang) + f" = {num(float(c.m[i]), lang, decimals=2)} " + pick(lang, "N·m", "Н·м")
+        moments = [force_tex(c.symbol, lang) + f" = {num(float(c.m[i]), lang, decimals=2)} " + tr(lang, "N·m")
                    for c in s.loading.couples if c.number in {ln.number for ln in links} and float(c.m[i]) != 0.0]
         if group == 0:
-            moments.append((r"$M_{ур}$" if lang == "ru" else r"$M_b$") +
-                           f" = {num(float(s.balancing[i]), lang, decimals=2)} " + pick(lang, "N·m", "Н·м"))
+            moments.append(tr(lang, "$M_b$") +
+                           f" = {num(float(s.balancing[i]), lang, decimals=2)} " + tr(lang, "N·m"))
         if moments:
             ax.text(0.0, 0.0, "\n".join(moments), transform=ax.transAxes, ha="left", va="bottom", fontsize=8,
                     color=C_APPLIED if group else C_UNKNOWN)
@@ -219,17 +219,12 @@ def forces_figure(s: Sheet2, lang: str):
         ax.set_ylim(xy.imag.min() - pad, xy.imag.max() + pad)
         ax.set_aspect("equal", adjustable="box")
         ax.axis("off")
-        name = pick(lang, "the crank with the frame", "кривошип со стойкой") if group == 0 else pick(
-            lang, f"group {group} ({s.sheet1.mechanism.groups[group - 1].kind})",
-            f"группа {group} ({s.sheet1.mechanism.groups[group - 1].kind})")
+        name = tr(lang, "the crank with the frame") if group == 0 else tr(lang, "group {group} ({kind})").format(group=group, kind=s.sheet1.mechanism.groups[group - 1].kind)
         ax.set_title(name, fontsize=10)
         _polygon(bx, pg, lang)
     phi = num(math.degrees(p.phi) % 360.0, lang, decimals=1)
     mb = num(float(s.balancing[i]), lang, decimals=2)
-    title = pick(lang, f"Force analysis, position {label_tex(p.label)} (φ = {phi}°): groups (forces not to scale) and "
-                       f"force polygons\nblue — applied, green — from the groups before, red — found; M_b = {mb} N·m",
-                 f"Силовой расчёт, положение {label_tex(p.label)} (φ = {phi}°): группы (силы без масштаба) и планы "
-                 f"сил\nсиним — заданные, зелёным — из предыдущих групп, красным — найденные; M_ур = {mb} Н·м")
+    title = tr(lang, "Force analysis, position {label} (φ = {phi}°): groups (forces not to scale) and force polygons\nblue — applied, green — from the groups before, red — found; M_b = {mb} N·m").format(label=label_tex(p.label), phi=phi, mb=mb)
     suptitle(fig, title_tex(title), fontsize=11)
     return fig
 
@@ -262,7 +257,7 @@ def lever_figure(s: Sheet2, lang: str):
     lv = s.lever
     items = [(complex(f.lever[i]) / mu, complex(f.force[i]), C_APPLIED, force_tex(f.symbol, lang)) for f in lv.forces]
     a_pt = 1j * complex(s.sheet1.cycle.kin.v[s.sheet1.mechanism.crank.joint][i]) / mu
-    items.append((a_pt, complex(lv.balancing_force[i]), C_UNKNOWN, r"$F_{ур}$" if lang == "ru" else r"$F_b$"))
+    items.append((a_pt, complex(lv.balancing_force[i]), C_UNKNOWN, tr(lang, "$F_b$")))
     biggest = max((abs(f) for _, f, _, _ in items), default=1.0) or 1.0
     span = max(float(np.ptp(np.real(pts))), float(np.ptp(np.imag(pts))), 1.0)
     pts += _arrows(ax, items, 0.3 * span, biggest)
@@ -272,27 +267,24 @@ def lever_figure(s: Sheet2, lang: str):
     ax.set_ylim(xy.imag.min() - pad, xy.imag.max() + pad)
     ax.set_aspect("equal", adjustable="box")
     ax.axis("off")
-    lines = [pick(lang, "Moments about the pole: M = (i·v) × F = −F·v", "Моменты относительно полюса: M = F·h·μ_v")]
-    nm = pick(lang, "N·m", "Н·м")
+    lines = [tr(lang, "Moments about the pole: M = (i·v) × F = −F·v")]
+    nm = tr(lang, "N·m")
     for f in lv.forces:
         force = complex(f.force[i])
         if abs(force) < 1e-12:
             continue
         h = float(f.moment[i]) / abs(force) / mu  # the arm on the drawing [mm], signed
-        lines.append(f"{force_tex(f.symbol, lang)}: {num(abs(force), lang, decimals=1)} " + pick(lang, "N", "Н") +
-                     f", h = {num(h, lang, decimals=1)} " + pick(lang, "mm", "мм") +
-                     f", M = {num(float(f.moment[i]), lang, decimals=2)} " + pick(lang, "W", "Вт"))
-    lines.append(pick(lang, "Σ = ", "Σ = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)} " + pick(lang, "W", "Вт"))
-    lines.append((r"$M_{ур}$" if lang == "ru" else r"$M_b$") + " = Σ/ω₁ = " +
+        lines.append(f"{force_tex(f.symbol, lang)}: {num(abs(force), lang, decimals=1)} " + tr(lang, "N") +
+                     f", h = {num(h, lang, decimals=1)} " + tr(lang, "mm") +
+                     f", M = {num(float(f.moment[i]), lang, decimals=2)} " + tr(lang, "W"))
+    lines.append(tr(lang, "Σ = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)} " + tr(lang, "W"))
+    lines.append(tr(lang, "$M_b$") + " = Σ/ω₁ = " +
                  f"{num(float(lv.balancing[i]), lang, decimals=3)} {nm}")
-    lines.append(pick(lang, "force analysis: ", "силовой расчёт: ") + f"{num(float(s.balancing[i]), lang, decimals=3)} {nm}; "
+    lines.append(tr(lang, "force analysis: ") + f"{num(float(s.balancing[i]), lang, decimals=3)} {nm}; "
                  f"Δ = {num(float(s.difference_pct()[i]), lang, decimals=4)} %")
     tx.text(0.0, 0.98, "\n".join(lines), transform=tx.transAxes, ha="left", va="top", fontsize=8.5, linespacing=1.5)
     mu_t = num(mu, lang, sig=3)
-    title = pick(lang, f"Zhukovsky's lever, position {label_tex(p.label)}: the velocity plan turned 90° "
-                       f"counter-clockwise (μ_v = {mu_t} (m/s)/mm), forces at their points",
-                 f"Рычаг Жуковского, положение {label_tex(p.label)}: план скоростей, повёрнутый на 90° против часовой "
-                 f"стрелки (μ_v = {mu_t} (м/с)/мм), силы в своих точках")
+    title = tr(lang, "Zhukovsky's lever, position {label}: the velocity plan turned 90° counter-clockwise (μ_v = {mu_t} (m/s)/mm), forces at their points").format(label=label_tex(p.label), mu_t=mu_t)
     suptitle(fig, title_tex(title), fontsize=11)
     return fig
 
@@ -311,18 +303,17 @@ def dynamics_figure(s: Sheet2, lang: str):
     axes = [fig.add_axes((left / width, (bottom + (3 - j) * (h + gap)) / height, 1 - (left + right) / width, h / height))
             for j in range(4)]
     x = np.degrees(d.travel)
-    nm, jj, kg = pick(lang, "N·m", "Н·м"), pick(lang, "J", "Дж"), pick(lang, "kg·m²", "кг·м²")
-    r = lang == "ru"
+    nm, jj, kg = tr(lang, "N·m"), tr(lang, "J"), tr(lang, "kg·m²")
     ax = axes[0]
-    ax.plot(x, d.M_r, color="k", lw=1.4, label=r"$M_{пр}$" if r else r"$M_r$")
-    ax.axhline(d.M_d, color=C_UNKNOWN, lw=1.2, label=(r"$M_{д}$" if r else r"$M_d$") + f" = {num(d.M_d, lang, decimals=2)}")
+    ax.plot(x, d.M_r, color="k", lw=1.4, label=tr(lang, "$M_r$"))
+    ax.axhline(d.M_d, color=C_UNKNOWN, lw=1.2, label=tr(lang, "$M_d$") + f" = {num(d.M_d, lang, decimals=2)}")
     ax.set_ylabel(f"M, {nm}")
-    ax.set_title(r"$\mu_M$ = " + f"{num(sc.M, lang, sig=3)} {nm}/" + pick(lang, "mm", "мм"), fontsize=9, loc="right", pad=3)
+    ax.set_title(r"$\mu_M$ = " + f"{num(sc.M, lang, sig=3)} {nm}/" + tr(lang, "mm"), fontsize=9, loc="right", pad=3)
     ax = axes[1]
-    ax.plot(x, d.A_r, color="k", lw=1.4, label=r"$A_{с}$" if r else r"$A_r$")
-    ax.plot(x, d.A_d, color=C_UNKNOWN, lw=1.2, label=r"$A_{д}$" if r else r"$A_d$")
+    ax.plot(x, d.A_r, color="k", lw=1.4, label=tr(lang, "$A_r$"))
+    ax.plot(x, d.A_d, color=C_UNKNOWN, lw=1.2, label=tr(lang, "$A_d$"))
     ax.set_ylabel(f"A, {jj}")
-    ax.set_title(r"$\mu_A$ = " + f"{num(sc.A, lang, sig=3)} {jj}/" + pick(lang, "mm", "мм"), fontsize=9, loc="right", pad=3)
+    ax.set_title(r"$\mu_A$ = " + f"{num(sc.A, lang, sig=3)} {jj}/" + tr(lang, "mm"), fontsize=9, loc="right", pad=3)
     ax = axes[2]
     ax.plot(x, d.dT, color="k", lw=1.4, label=r"$\Delta T$")
     if fw is not None:
@@ -331,12 +322,12 @@ def dynamics_figure(s: Sheet2, lang: str):
         for j_, mark in ((me.i_max, "v"), (me.i_min, "^")):
             ax.plot(x[j_], me.dT_I[j_] - me.dT_I[0], mark, color=C_APPLIED, ms=6)
     ax.set_ylabel(f"ΔT, {jj}")
-    ax.set_title(r"$\mu_T$ = " + f"{num(sc.T, lang, sig=3)} {jj}/" + pick(lang, "mm", "мм"), fontsize=9, loc="right", pad=3)
+    ax.set_title(r"$\mu_T$ = " + f"{num(sc.T, lang, sig=3)} {jj}/" + tr(lang, "mm"), fontsize=9, loc="right", pad=3)
     ax = axes[3]
-    ax.plot(x, d.J_r, color="k", lw=1.4, label=r"$J_{пр}$" if r else r"$J_r$")
-    ax.axhline(d.J_first, color="#9a9a9a", lw=0.9, ls=":", label=(r"$J_{кр}+J_{рот}$" if r else r"$J_{crank}+J_{rotor}$"))
+    ax.plot(x, d.J_r, color="k", lw=1.4, label=tr(lang, "$J_r$"))
+    ax.axhline(d.J_first, color="#9a9a9a", lw=0.9, ls=":", label=tr(lang, "$J_{crank}+J_{rotor}$"))
     ax.set_ylabel(f"J, {kg}")
-    ax.set_title(r"$\mu_J$ = " + f"{num(sc.J, lang, sig=3)} {kg}/" + pick(lang, "mm", "мм"), fontsize=9, loc="right", pad=3)
+    ax.set_title(r"$\mu_J$ = " + f"{num(sc.J, lang, sig=3)} {kg}/" + tr(lang, "mm"), fontsize=9, loc="right", pad=3)
     evens = [p for p in c.positions if p.label.isdigit()]
     for j, ax in enumerate(axes):
         if c.working is not None:
@@ -348,12 +339,8 @@ def dynamics_figure(s: Sheet2, lang: str):
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8, loc="best", frameon=False, ncol=2)
     mu_phi = num(math.degrees(sc.phi), lang, sig=3)
-    axes[-1].set_xlabel(title_tex(pick(lang, f"positions of the crank from position 0 (μ_φ = {mu_phi}°/mm)",
-                                       f"положения кривошипа от положения 0 (μ_φ = {mu_phi}°/мм)")))
-    title = pick(lang, "Dynamics reduced to the crank: M_r and M_d, the works, ΔT (ΔT_I: Mertsalov), J_r\n"
-                       "(moments and works in the crank's sense of rotation)",
-                 "Динамика машины, приведённая к кривошипу: M_пр и M_д, работы, ΔT (ΔT_I — по Мерцалову), J_пр\n"
-                 "(моменты и работы — в направлении вращения кривошипа)")
+    axes[-1].set_xlabel(title_tex(tr(lang, "positions of the crank from position 0 (μ_φ = {mu_phi}°/mm)").format(mu_phi=mu_phi)))
+    title = tr(lang, "Dynamics reduced to the crank: M_r and M_d, the works, ΔT (ΔT_I: Mertsalov), J_r\n(moments and works in the crank's sense of rotation)")
     suptitle(fig, title_tex(title), fontsize=11)
     decimal_commas(fig, lang)
     return fig
@@ -387,17 +374,12 @@ def wittenbauer_figure(s: Sheet2, lang: str):
     ax.set_xlim(lo - 0.02 * hi, hi)
     ax.axhline(0, color="k", lw=0.5)
     ax.grid(alpha=0.3)
-    ax.set_xlabel(title_tex(pick(lang, "J_r, kg·m²", "J_пр, кг·м²")))
-    ax.set_ylabel(pick(lang, "ΔT, J", "ΔT, Дж"))
-    kg = pick(lang, "kg·m²", "кг·м²")
+    ax.set_xlabel(title_tex(tr(lang, "J_r, kg·m²")))
+    ax.set_ylabel(tr(lang, "ΔT, J"))
+    kg = tr(lang, "kg·m²")
     tg_max, tg_min = num(wi.slope_max, lang, sig=5), num(wi.slope_min, lang, sig=5)
     jw = num(max(wi.J_fl, 0.0), lang, sig=4)
-    title = pick(lang, f"Wittenbauer's energy–mass diagram: tg ψ_max = ω_max²/2 = {tg_max}, tg ψ_min = ω_min²/2 = {tg_min}\n"
-                       f"J_fl = kl/(tg ψ_max − tg ψ_min) = {jw} {kg} (Mertsalov: {num(fw.J, lang, sig=4)} {kg})\n"
-                       f"δ = {num(fw.delta, lang, sig=3)}, ω_m = {num(d.omega_mean, lang, sig=5)} rad/s",
-                 f"Диаграмма энергомасс (Виттенбауэр): tg ψ_max = ω²_max/2 = {tg_max}, tg ψ_min = ω²_min/2 = {tg_min}\n"
-                 f"J_м = kl/(tg ψ_max − tg ψ_min) = {jw} {kg} (по Мерцалову {num(fw.J, lang, sig=4)} {kg})\n"
-                 f"δ = {num(fw.delta, lang, sig=3)}, ω_ср = {num(d.omega_mean, lang, sig=5)} рад/с")
+    title = tr(lang, "Wittenbauer's energy–mass diagram: tg ψ_max = ω_max²/2 = {tg_max}, tg ψ_min = ω_min²/2 = {tg_min}\nJ_fl = kl/(tg ψ_max − tg ψ_min) = {jw} {kg} (Mertsalov: {J} {kg})\nδ = {delta}, ω_m = {omega_mean} rad/s").format(tg_max=tg_max, tg_min=tg_min, jw=jw, kg=kg, J=num(fw.J, lang, sig=4), delta=num(fw.delta, lang, sig=3), omega_mean=num(d.omega_mean, lang, sig=5))
     suptitle(fig, title_tex(title), fontsize=10.5)
     decimal_commas(fig, lang)
     return fig

@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from ...i18n.lang import pick
+from ...i18n import tr
 from ...i18n.numbers import num
 from ...linkage.polygons import force_polygons
 from ...linkage.scales import drafting_scale
@@ -34,7 +34,6 @@ H = 3.5
 H_SMALL = 2.5
 MM = 1000.0
 ARROW_MM = 32.0  # the longest force arrow on a group's or the lever's drawing
-RU_SYMBOLS = {"Fc": "F_{пс}", "Mc": "M_{пс}"}
 
 
 def symbol(sym: str, lang: str) -> str:
@@ -43,7 +42,7 @@ def symbol(sym: str, lang: str) -> str:
     if sym[-1] in "′″":
         tick, sym = ("'" if sym[-1] == "′" else "''"), sym[:-1]
     if sym in ("Fc", "Mc"):
-        return (RU_SYMBOLS[sym] if lang == "ru" else f"{sym[0]}_{{c}}") + tick
+        return (tr(lang, "F_{c}") if sym == "Fc" else tr(lang, "M_{c}")) + tick
     if sym.startswith("MΦ"):
         return f"M_{{Φ{sym[2:]}}}" + tick
     if sym.startswith(("Rτ", "Rn")):
@@ -158,14 +157,14 @@ def _group_fields(sh: Sheet, s: Sheet2, lang: str) -> None:
         centre = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2 - 8.0])
         origin = centre - factor * np.array([mid.real, mid.imag])
         kind = "" if g == 0 else s.sheet1.mechanism.groups[g - 1].kind
-        heading = pick(lang, "The crank", "Кривошип") if g == 0 else pick(lang, f"Group {g} ({kind})", f"Группа {g} ({kind})")
+        heading = tr(lang, "The crank") if g == 0 else tr(lang, "Group {g} ({kind})").format(g=g, kind=kind)
         f = sh.add_field(f"group_{g}", box, heading, origin=tuple(origin), scale=factor, scale_label=label,
-                         scale_text=f"{pick(lang, 'M', 'М')} {label}; μ_{{l}} = {mu} " + pick(lang, "m/mm", "м/мм"))
+                         scale_text=tr(lang, "M") + f" {label}; μ_{{l}} = {mu} " + tr(lang, "m/mm"))
         _draw_group(sh, f, s, g, i, lang)
         if g == 0:
             p = f.p(*(lambda q: (q.real, q.imag))(complex(s.sheet1.cycle.kin.z[s.sheet1.mechanism.crank.pivot][i]) * MM))
-            mb = (pick(lang, "M_{b}", "M_{ур}") + f" = {num(float(s.balancing[i]), lang, decimals=2)} " +
-                  pick(lang, "N·m", "Н·м"))
+            mb = (tr(lang, "M_{b}") + f" = {num(float(s.balancing[i]), lang, decimals=2)} " +
+                  tr(lang, "N·m"))
             sh.text(box[0] + 2.0, box[1] + 3.0, mb, H_SMALL)
             del p
 
@@ -183,10 +182,11 @@ def _polygon_fields(sh: Sheet, s: Sheet2, lang: str) -> None:
         mid = complex((tips.real.min() + tips.real.max()) / 2, (tips.imag.min() + tips.imag.max()) / 2)
         centre = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2 - 8.0])
         origin = centre - np.array([mid.real, mid.imag])
-        what = pick(lang, "the crank", "кривошипа") if pg.group == 0 else pick(lang, f"group {pg.group}", f"группы {pg.group}")
-        f = sh.add_field(f"polygon_{pg.group}", box, pick(lang, f"Force polygon of {what}", f"План сил {what}"),
+        heading = tr(lang, "Force polygon of the crank") if pg.group == 0 else tr(
+            lang, "Force polygon of group {group}").format(group=pg.group)
+        f = sh.add_field(f"polygon_{pg.group}", box, heading,
                          origin=tuple(origin), scale=1.0 / pg.scale,
-                         scale_text=f"μ_{{F}} = {num(pg.scale, lang, sig=3)} " + pick(lang, "N/mm", "Н/мм"))
+                         scale_text=f"μ_{{F}} = {num(pg.scale, lang, sig=3)} " + tr(lang, "N/mm"))
         span = max(float(np.ptp(tips.real)), float(np.ptp(tips.imag)), 1.0)
         for v, a, b in zip(pg.vectors, tips[:-1], tips[1:]):
             pa, pb = np.array([origin[0] + a.real, origin[1] + a.imag]), np.array([origin[0] + b.real, origin[1] + b.imag])
@@ -199,7 +199,7 @@ def _polygon_fields(sh: Sheet, s: Sheet2, lang: str) -> None:
                 sh.text(q[0], q[1], symbol(v.symbol, lang), H_SMALL, align="center", valign="middle")
         short = [v for v, a, b in zip(pg.vectors, tips[:-1], tips[1:]) if abs(b - a) <= 0.08 * span]
         if short:
-            text = pick(lang, "short: ", "короткие: ") + "; ".join(
+            text = tr(lang, "short: ") + "; ".join(
                 f"{symbol(v.symbol, lang)} = {num(abs(v.value), lang, decimals=1)}" for v in short)
             sh.text(box[0] + 2.0, box[1] + 2.5, text, H_SMALL, width=box[2] - box[0] - 4.0, max_lines=2, valign="bottom")
         del f
@@ -220,11 +220,10 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str) -> None:
     centre = np.array([(x0 + x1) / 2 - 40.0, (y0 + y1) / 2 - 8.0])
     origin = centre - np.array([mid.real, mid.imag])
     label = _label(s.sheet1.cycle.positions[i].label)
-    f = sh.add_field("lever", BOX_LEVER, pick(lang, f"Zhukovsky's lever, position {label}",
-                                               f"Рычаг Жуковского, положение {label}"),
+    f = sh.add_field("lever", BOX_LEVER, tr(lang, "Zhukovsky's lever, position {label}").format(label=label),
                      origin=tuple(origin), scale=1.0 / mu,
-                     scale_text=f"μ_{{v}} = {num(mu, lang, sig=3)} " + pick(lang, "(m/s)/mm", "(м/с)/мм") +
-                     pick(lang, "; the plan turned 90° counter-clockwise", "; план повёрнут на 90° против часовой стрелки"))
+                     scale_text=f"μ_{{v}} = {num(mu, lang, sig=3)} " + tr(lang, "(m/s)/mm") +
+                     tr(lang, "; the plan turned 90° counter-clockwise"))
 
     def at(z):
         return np.array([origin[0] + z.real, origin[1] + z.imag])
@@ -243,7 +242,7 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str) -> None:
     lv = s.lever
     items = [(complex(x.lever[i]) / mu, complex(x.force[i]), symbol(x.symbol, lang)) for x in lv.forces]
     a_pt = 1j * complex(s.sheet1.cycle.kin.v[s.sheet1.mechanism.crank.joint][i]) / mu
-    items.append((a_pt, complex(lv.balancing_force[i]), pick(lang, "F_{b}", "F_{ур}")))
+    items.append((a_pt, complex(lv.balancing_force[i]), tr(lang, "F_{b}")))
     biggest = max((abs(v) for _, v, _ in items), default=1.0) or 1.0
     for z, v, lab in items:
         if abs(v) <= 1e-9 * biggest:
@@ -251,12 +250,12 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str) -> None:
         a = at(z)
         d = v / biggest * ARROW_MM
         _arrow(sh, a, a + np.array([d.real, d.imag]), "Основные" if lab.startswith("F_{") else "Тонкие", lab)
-    nm = pick(lang, "N·m", "Н·м")
-    lines = [pick(lang, "Σ M_{p}(F) = ", "Σ M_{p}(F) = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)} " +
-             pick(lang, "W", "Вт"),
-             pick(lang, "M_{b} = ΣM_{p}/ω_{1} = ", "M_{ур} = ΣM_{p}/ω_{1} = ") +
+    nm = tr(lang, "N·m")
+    lines = [tr(lang, "Σ M_{p}(F) = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)} " +
+             tr(lang, "W"),
+             tr(lang, "M_{b} = ΣM_{p}/ω_{1} = ") +
              f"{num(float(lv.balancing[i]), lang, decimals=3)} {nm}",
-             pick(lang, "force analysis: ", "силовой расчёт: ") + f"{num(float(s.balancing[i]), lang, decimals=3)} {nm}",
+             tr(lang, "force analysis: ") + f"{num(float(s.balancing[i]), lang, decimals=3)} {nm}",
              f"Δ = {num(float(s.difference_pct()[i]), lang, decimals=4)} %"]
     y = y1 - 30.0
     for text in lines:
@@ -281,19 +280,17 @@ def _axes(sh: Sheet, x0: float, y0: float, length: float, up: float, down: float
 def _diagrams_field(sh: Sheet, s: Sheet2, lang: str) -> None:
     d, fw, sc = s.dynamics, s.flywheel, s.scales
     c = s.sheet1.cycle
-    sh.add_field("dynamics_diagrams", BOX_DIAGRAMS, pick(lang, "Diagrams of the reduced moments, works and energy",
-                                                          "Диаграммы приведённых моментов, работ и энергии"))
+    sh.add_field("dynamics_diagrams", BOX_DIAGRAMS, tr(lang, "Diagrams of the reduced moments, works and energy"))
     x0 = BOX_DIAGRAMS[0] + 24.0
     length = sc.axis_mm
     xs = x0 + d.travel / sc.phi
     keep = slice(None, None, 2)
     y = BOX_DIAGRAMS[3] - 14.0
-    r = lang == "ru"
-    series = [("M", sc.M, pick(lang, "N·m/mm", "Н·м/мм"), [(d.M_r, "M_{пр}" if r else "M_{r}", None),
-                                                          (np.full(d.travel.shape, d.M_d), "M_{д}" if r else "M_{d}", None)]),
-              ("A", sc.A, pick(lang, "J/mm", "Дж/мм"), [(d.A_r, "A_{с}" if r else "A_{r}", None),
-                                                       (d.A_d, "A_{д}" if r else "A_{d}", None)]),
-              ("ΔT", sc.T, pick(lang, "J/mm", "Дж/мм"), [(d.dT, "ΔT", None)] + (
+    series = [("M", sc.M, tr(lang, "N·m/mm"), [(d.M_r, tr(lang, "M_{r}"), None),
+                                                          (np.full(d.travel.shape, d.M_d), tr(lang, "M_{d}"), None)]),
+              ("A", sc.A, tr(lang, "J/mm"), [(d.A_r, tr(lang, "A_{r}"), None),
+                                                       (d.A_d, tr(lang, "A_{d}"), None)]),
+              ("ΔT", sc.T, tr(lang, "J/mm"), [(d.dT, "ΔT", None)] + (
                   [(fw.mertsalov.dT_I - fw.mertsalov.dT_I[0], "ΔT_{I}", "DASHED")] if fw is not None else []))]
     evens = [p for p in c.positions if p.label.isdigit()]
     for name, mu, unit, curves in series:
@@ -317,9 +314,8 @@ def _diagrams_field(sh: Sheet, s: Sheet2, lang: str) -> None:
                 width=BOX_DIAGRAMS[2] - (x0 + length + 14) - 2, max_lines=2)
         y = y0 - down - 9.0
     mu_phi = num(math.degrees(sc.phi), lang, sig=3)
-    sh.text(x0, max(y, BOX_DIAGRAMS[1] + 3.0), f"μ_{{φ}} = {mu_phi} °/" + pick(lang, "mm", "мм") +
-            pick(lang, "; positions from position 0; moments and works in the crank's sense of rotation",
-                 "; положения от положения 0; моменты и работы — в направлении вращения кривошипа"), H_SMALL,
+    sh.text(x0, max(y, BOX_DIAGRAMS[1] + 3.0), f"μ_{{φ}} = {mu_phi} °/" + tr(lang, "mm") +
+            tr(lang, "; positions from position 0; moments and works in the crank's sense of rotation"), H_SMALL,
             width=BOX_DIAGRAMS[2] - x0 - 2.0, max_lines=2)
 
 
@@ -330,8 +326,8 @@ def _wittenbauer_field(sh: Sheet, s: Sheet2, lang: str) -> None:
     mu_j = drafting_scale(float(d.J_r.max()), x1 - x0 - 40.0)
     lo, hi = min(float(d.dT.min()), wi.c_min), max(float(d.dT.max()), wi.c_max)
     mu_t = drafting_scale(hi - lo, y1 - y0 - 50.0)
-    kg, j = pick(lang, "kg·m²/mm", "кг·м²/мм"), pick(lang, "J/mm", "Дж/мм")
-    sh.add_field("wittenbauer", BOX_WITT, pick(lang, "Energy–mass diagram (Wittenbauer)", "Диаграмма энергомасс"),
+    kg, j = tr(lang, "kg·m²/mm"), tr(lang, "J/mm")
+    sh.add_field("wittenbauer", BOX_WITT, tr(lang, "Energy–mass diagram (Wittenbauer)"),
                  scale_text=f"μ_{{J}} = {num(mu_j, lang, sig=3)} {kg}; μ_{{T}} = {num(mu_t, lang, sig=3)} {j}")
     ox = x0 + 14.0
     oy = y0 + 22.0 + (-lo) / mu_t
@@ -345,7 +341,7 @@ def _wittenbauer_field(sh: Sheet, s: Sheet2, lang: str) -> None:
     right = ox + float(d.J_r.max()) / mu_j * 1.1 + 4
     sh.line((ox, oy), (right, oy), "Основные")
     sh.arrow((right + 2, oy), (1, 0), "Основные", 3.5, 1.2)
-    sh.text(right, oy - 2.0, pick(lang, "J_{r}", "J_{пр}"), H, align="right", valign="top")
+    sh.text(right, oy - 2.0, tr(lang, "J_{r}"), H, align="right", valign="top")
     sh.poly(np.array([p(a, b) for a, b in zip(d.J_r[::2], d.dT[::2])]), "Основные")
     jmax = float(d.J_r.max()) * 1.1
     for slope, cc, name in ((wi.slope_max, wi.c_max, "ψ_{max}"), (wi.slope_min, wi.c_min, "ψ_{min}")):
@@ -356,11 +352,10 @@ def _wittenbauer_field(sh: Sheet, s: Sheet2, lang: str) -> None:
     sh.line(k_, l_, "Основные")
     sh.text(k_[0] - 1.5, k_[1], "k", H, align="right", valign="middle")
     sh.text(l_[0] - 1.5, l_[1], "l", H, align="right", valign="middle")
-    kgm = pick(lang, "kg·m²", "кг·м²")
+    kgm = tr(lang, "kg·m²")
     sh.text(x0 + 3.0, y0 + 10.0, f"tg ψ_{{max}} = {num(wi.slope_max, lang, sig=5)}; tg ψ_{{min}} = "
             f"{num(wi.slope_min, lang, sig=5)}", H_SMALL, width=x1 - x0 - 6.0)
-    sh.text(x0 + 3.0, y0 + 4.0, pick(lang, "J_{fl} = kl·μ_{T}/(tg ψ_{max} − tg ψ_{min}) = ",
-                                     "J_{м} = kl·μ_{T}/(tg ψ_{max} − tg ψ_{min}) = ") +
+    sh.text(x0 + 3.0, y0 + 4.0, tr(lang, "J_{fl} = kl·μ_{T}/(tg ψ_{max} − tg ψ_{min}) = ") +
             f"{num(max(wi.J_fl, 0.0), lang, sig=4)} {kgm}", H_SMALL, width=x1 - x0 - 6.0)
 
 
@@ -370,12 +365,12 @@ def _inertia_field(sh: Sheet, s: Sheet2, lang: str) -> None:
     length = x1 - x0 - 40.0
     mu_phi = 2.0 * math.pi / length
     mu_j = drafting_scale(float(d.J_r.max()), 80.0)
-    sh.add_field("inertia", BOX_INERTIA, pick(lang, "Reduced moment of inertia", "Приведённый момент инерции"),
-                 scale_text=f"μ_{{J}} = {num(mu_j, lang, sig=3)} " + pick(lang, "kg·m²/mm", "кг·м²/мм") +
-                 f"; μ_{{φ}} = {num(math.degrees(mu_phi), lang, sig=3)} °/" + pick(lang, "mm", "мм"))
+    sh.add_field("inertia", BOX_INERTIA, tr(lang, "Reduced moment of inertia"),
+                 scale_text=f"μ_{{J}} = {num(mu_j, lang, sig=3)} " + tr(lang, "kg·m²/mm") +
+                 f"; μ_{{φ}} = {num(math.degrees(mu_phi), lang, sig=3)} °/" + tr(lang, "mm"))
     ox, oy = x0 + 18.0, y0 + 40.0
     up = float(d.J_r.max()) / mu_j
-    _axes(sh, ox, oy, length, up, 0.0, pick(lang, "J_{r}", "J_{пр}"))
+    _axes(sh, ox, oy, length, up, 0.0, tr(lang, "J_{r}"))
     xs = ox + d.travel / mu_phi
     sh.poly(np.column_stack([xs[::2], (oy + d.J_r / mu_j)[::2]]), "Основные")
     sh.line((ox, oy + d.J_first / mu_j), (ox + length, oy + d.J_first / mu_j), "Тонкие", "DASHED")
@@ -384,33 +379,32 @@ def _inertia_field(sh: Sheet, s: Sheet2, lang: str) -> None:
             xx = ox + p.travel / mu_phi
             sh.line((xx, oy - 1.0), (xx, oy + 1.0), "Тонкие")
             sh.text(xx, oy - 3.0, _label(p.label), H_SMALL, align="center", valign="top")
-    sh.text(x0 + 3.0, y0 + 10.0, pick(lang, "dashed: the crank and the rotor, ", "штрихом — кривошип и ротор, ") +
-            f"{num(d.J_first, lang, sig=4)} " + pick(lang, "kg·m²", "кг·м²"), H_SMALL, width=x1 - x0 - 6.0)
+    sh.text(x0 + 3.0, y0 + 10.0, tr(lang, "dashed: the crank and the rotor, ") +
+            f"{num(d.J_first, lang, sig=4)} " + tr(lang, "kg·m²"), H_SMALL, width=x1 - x0 - 6.0)
 
 
 def _results(sh: Sheet, s: Sheet2, lang: str) -> None:
     d, fw = s.dynamics, s.flywheel
-    nm, kg = pick(lang, "N·m", "Н·м"), pick(lang, "kg·m²", "кг·м²")
+    nm, kg = tr(lang, "N·m"), tr(lang, "kg·m²")
     i = s.force_position
-    rows = [(pick(lang, "Driving moment M_{d}", "Движущий момент M_{д}"), f"{num(d.M_d, lang, decimals=2)} {nm}"),
-            (pick(lang, f"M_{{b}}, position {_label(s.sheet1.cycle.positions[i].label)}; Zhukovsky",
-                  f"M_{{ур}}, положение {_label(s.sheet1.cycle.positions[i].label)}; по Жуковскому"),
+    rows = [(tr(lang, "Driving moment M_{d}"), f"{num(d.M_d, lang, decimals=2)} {nm}"),
+            (tr(lang, "M_{{b}}, position {label}; Zhukovsky").format(label=_label(s.sheet1.cycle.positions[i].label)),
              f"{num(float(s.balancing[i]), lang, decimals=2)}; {num(float(s.lever.balancing[i]), lang, decimals=2)} {nm}")]
     if fw is not None:
-        rows += [(pick(lang, "δ; ω_{max}, ω_{min}, rad/s", "δ; ω_{max}, ω_{min}, рад/с"),
+        rows += [(tr(lang, "δ; ω_{max}, ω_{min}, rad/s"),
                   f"{num(fw.delta, lang, sig=3)}; {num(fw.omega_max, lang, sig=4)}, {num(fw.omega_min, lang, sig=4)}"),
-                 (pick(lang, "Flywheel J_{fl} (Mertsalov)", "Маховик J_{м} (Мерцалов)"), f"{num(fw.J, lang, sig=4)} {kg}"),
-                 (pick(lang, "J_{fl} (Wittenbauer)", "J_{м} (Виттенбауэр)"),
+                 (tr(lang, "Flywheel J_{fl} (Mertsalov)"), f"{num(fw.J, lang, sig=4)} {kg}"),
+                 (tr(lang, "J_{fl} (Wittenbauer)"),
                   f"{num(max(fw.wittenbauer.J_fl, 0.0), lang, sig=4)} {kg}")]
         if fw.size is not None:
-            mm = pick(lang, "mm", "мм")
+            mm = tr(lang, "mm")
             dims = f"D = {num(fw.size.D * MM, lang, decimals=0)}, b = {num(fw.size.b * MM, lang, decimals=0)}"
             if fw.size.h is not None:
                 dims += f", h = {num(fw.size.h * MM, lang, decimals=0)}"
-            rows.append((pick(lang, "Flywheel, mm; mass", "Маховик, мм; масса"),
-                         f"{dims}; {num(fw.size.m, lang, decimals=1)} " + pick(lang, "kg", "кг")))
+            rows.append((tr(lang, "Flywheel, mm; mass"),
+                         f"{dims}; {num(fw.size.m, lang, decimals=1)} " + tr(lang, "kg")))
             del mm
-    table(sh, BOX_TABLE, pick(lang, "Main results", "Основные результаты"), rows, col1=0.5, h=H_SMALL)
+    table(sh, BOX_TABLE, tr(lang, "Main results"), rows, col1=0.5, h=H_SMALL)
 
 
 def sheet2(s: Sheet2, lang: str, title) -> Sheet:
@@ -426,7 +420,6 @@ def sheet2(s: Sheet2, lang: str, title) -> Sheet:
     _inertia_field(sh, s, lang)
     _results(sh, s, lang)
     scale = next((f.scale_label for f in sh.fields if f.name.startswith("group_")), "")
-    sh.title_block(title, name=pick(lang, "Force analysis of the lever mechanism and the flywheel",
-                                    "Силовой расчёт рычажного механизма и расчёт маховика"),
+    sh.title_block(title, name=tr(lang, "Force analysis of the lever mechanism and the flywheel"),
                    designation=title.designation_for(2, 0), scale=scale)
     return sh
