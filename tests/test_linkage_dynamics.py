@@ -17,7 +17,6 @@ from hypothesis import strategies as st
 
 from tmm_cli.linkage.chain import solve
 from tmm_cli.linkage.forces import applied
-from tmm_cli.linkage.kinetostatics import kinetostatics
 from tmm_cli.linkage.loads import stroke_of
 from tmm_cli.linkage.mechanism_file import parse_mechanism
 from tmm_cli.linkage.motion import cross

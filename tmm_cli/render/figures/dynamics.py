@@ -130,8 +130,6 @@ def _arrows(ax, items, size_mm: float, biggest: float) -> list[complex]:
 
 def _group_items(s: Sheet2, group: int, i: int, lang: str):
     """What acts on the group's links at position i: applied forces, the groups' before, the reactions found."""
-    m = s.sheet1.mechanism
-    k = s.sheet1.cycle.kin
     numbers = {ln.number for ln in _group_links(s, group)}
     items = []
     for f in s.loading.forces:
@@ -143,7 +141,6 @@ def _group_items(s: Sheet2, group: int, i: int, lang: str):
             items.append((complex(r.at[i]) * MM, -complex(r.force[i]), C_LATER, f"$R_{{{b}{a}}}$"))
         elif b in numbers and a not in numbers:
             items.append((complex(r.at[i]) * MM, complex(r.force[i]), C_UNKNOWN, f"$R_{{{r.label[1:]}}}$"))
-    del m, k
     return items
 
 

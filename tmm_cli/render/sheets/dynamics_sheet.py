@@ -161,12 +161,9 @@ def _group_fields(sh: Sheet, s: Sheet2, lang: str) -> None:
         f = sh.add_field(f"group_{g}", box, heading, origin=tuple(origin), scale=factor, scale_label=label,
                          scale_text=tr(lang, "M") + f" {label}; μ_{{l}} = {mu} " + tr(lang, "m/mm"))
         _draw_group(sh, f, s, g, i, lang)
-        if g == 0:
-            p = f.p(*(lambda q: (q.real, q.imag))(complex(s.sheet1.cycle.kin.z[s.sheet1.mechanism.crank.pivot][i]) * MM))
-            mb = (tr(lang, "M_{b}") + f" = {num(float(s.balancing[i]), lang, decimals=2)} " +
-                  tr(lang, "N·m"))
+        if g == 0:  # the balancing moment the crank's field is about
+            mb = tr(lang, "M_{b}") + f" = {num(float(s.balancing[i]), lang, decimals=2)} " + tr(lang, "N·m")
             sh.text(box[0] + 2.0, box[1] + 3.0, mb, H_SMALL)
-            del p
 
 
 def _polygon_fields(sh: Sheet, s: Sheet2, lang: str) -> None:
@@ -184,7 +181,7 @@ def _polygon_fields(sh: Sheet, s: Sheet2, lang: str) -> None:
         origin = centre - np.array([mid.real, mid.imag])
         heading = tr(lang, "Force polygon of the crank") if pg.group == 0 else tr(
             lang, "Force polygon of group {group}").format(group=pg.group)
-        f = sh.add_field(f"polygon_{pg.group}", box, heading,
+        sh.add_field(f"polygon_{pg.group}", box, heading,
                          origin=tuple(origin), scale=1.0 / pg.scale,
                          scale_text=f"μ_{{F}} = {num(pg.scale, lang, sig=3)} " + tr(lang, "N/mm"))
         span = max(float(np.ptp(tips.real)), float(np.ptp(tips.imag)), 1.0)
@@ -202,7 +199,6 @@ def _polygon_fields(sh: Sheet, s: Sheet2, lang: str) -> None:
             text = tr(lang, "short: ") + "; ".join(
                 f"{symbol(v.symbol, lang)} = {num(abs(v.value), lang, decimals=1)}" for v in short)
             sh.text(box[0] + 2.0, box[1] + 2.5, text, H_SMALL, width=box[2] - box[0] - 4.0, max_lines=2, valign="bottom")
-        del f
 
 
 # ----------------------------------------------------------------------------------------------
@@ -220,7 +216,7 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str) -> None:
     centre = np.array([(x0 + x1) / 2 - 40.0, (y0 + y1) / 2 - 8.0])
     origin = centre - np.array([mid.real, mid.imag])
     label = _label(s.sheet1.cycle.positions[i].label)
-    f = sh.add_field("lever", BOX_LEVER, tr(lang, "Zhukovsky's lever, position {label}").format(label=label),
+    sh.add_field("lever", BOX_LEVER, tr(lang, "Zhukovsky's lever, position {label}").format(label=label),
                      origin=tuple(origin), scale=1.0 / mu,
                      scale_text=f"μ_{{v}} = {num(mu, lang, sig=3)} " + tr(lang, "(m/s)/mm") +
                      tr(lang, "; the plan turned 90° counter-clockwise"))
@@ -261,7 +257,6 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str) -> None:
     for text in lines:
         sh.text(x1 - 95.0, y, text, H_SMALL, width=92.0)
         y -= 6.0
-    del f
 
 
 # ----------------------------------------------------------------------------------------------
@@ -397,13 +392,11 @@ def _results(sh: Sheet, s: Sheet2, lang: str) -> None:
                  (tr(lang, "J_{fl} (Wittenbauer)"),
                   f"{num(max(fw.wittenbauer.J_fl, 0.0), lang, sig=4)} {kg}")]
         if fw.size is not None:
-            mm = tr(lang, "mm")
             dims = f"D = {num(fw.size.D * MM, lang, decimals=0)}, b = {num(fw.size.b * MM, lang, decimals=0)}"
             if fw.size.h is not None:
                 dims += f", h = {num(fw.size.h * MM, lang, decimals=0)}"
             rows.append((tr(lang, "Flywheel, mm; mass"),
                          f"{dims}; {num(fw.size.m, lang, decimals=1)} " + tr(lang, "kg")))
-            del mm
     table(sh, BOX_TABLE, tr(lang, "Main results"), rows, col1=0.5, h=H_SMALL)
 
 

@@ -13,6 +13,7 @@ from ...i18n.numbers import num
 from ...linkage.sheet2 import Sheet2
 from .mechanism import _table
 
+
 def symbol(sym: str, lang: str) -> str:
     """A force's symbol as the reader's book writes it: 'Fc' (the useful resistance) is 'Fпс' in
     Russian (сила полезного сопротивления), 'Mc' 'Mпс'; 'MΦ2′' keeps its tick; the rest stay."""
