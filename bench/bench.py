@@ -2,7 +2,7 @@
 
     python bench/bench.py              # CLI timings + in-process synthesis
     python bench/bench.py --batch      # also `tmm batch --variants 1-68 --jobs 2` (a minute or two)
-    python bench/bench.py --mechanism  # only sheet 1 of the example mechanisms, in process (a second)
+    python bench/bench.py --mechanism  # only sheets 1 and 2 of the example mechanisms, in process (seconds)
 
 Two floors: no command of ours can be faster than the libraries it needs.
 - "cli floor": a fresh `python -c "import numpy, click, rich"`;
@@ -120,10 +120,44 @@ def mechanism_in_process(runs: int = 20) -> list[tuple[str, float, float]]:
     return out
 
 
+def sheet2_in_process(runs: int = 10) -> list[tuple[str, float, float]]:
+    """Sheet 2 of each example mechanism with masses, on top of its sheet 1 (issue 25: the force
+    analysis of every position, Zhukovsky's lever, the 0.5° dynamics, both flywheels), no figures:
+    (name, median s, worst s); sheet 1 is not counted."""
+    import tomllib
+
+    from tmm_cli.linkage.mechanism_file import parse_mechanism
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+    from tmm_cli.linkage.sheet2 import analyse_sheet2
+    from tmm_cli.linkage.sheet2_file import parse_sheet2
+
+    out = []
+    for path in sorted((Path(__file__).resolve().parents[1] / "docs" / "examples").glob("*.toml")):
+        try:
+            data = tomllib.loads(path.read_text(encoding="utf-8"))
+        except tomllib.TOMLDecodeError:
+            continue
+        if "crank" not in data or "mass" not in data:
+            continue
+        mech = parse_mechanism(data, path.name)
+        s1 = analyse_mechanism(mech)
+        analyse_sheet2(s1, parse_sheet2(mech))  # warm-up
+        times = []
+        for _ in range(runs):
+            t0 = time.perf_counter()
+            analyse_sheet2(s1, parse_sheet2(mech))
+            times.append(time.perf_counter() - t0)
+        out.append((path.stem, statistics.median(times), max(times)))
+    return out
+
+
 def print_mechanisms() -> None:
     for name, median, worst in mechanism_in_process():
         print(f"sheet 1 of docs/examples/{name}.toml in process (12 positions, both plans, no figures): "
               f"median {median * 1000:.1f} ms, worst {worst * 1000:.1f} ms (target: well under 1 s)")
+    for name, median, worst in sheet2_in_process():
+        print(f"sheet 2 of docs/examples/{name}.toml in process (forces, lever, 0.5° dynamics, flywheels, no figures): "
+              f"median {median * 1000:.1f} ms, worst {worst * 1000:.1f} ms")
 
 
 def note_time(variant: int = 17) -> tuple[float, float]:
@@ -181,7 +215,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--runs", type=int, default=7)
     ap.add_argument("--batch", action="store_true", help="also time tmm batch --variants 1-68 --jobs 2 (long)")
-    ap.add_argument("--mechanism", action="store_true", help="only the in-process timing of sheet 1's mechanisms (a second)")
+    ap.add_argument("--mechanism", action="store_true", help="only the in-process timing of sheets 1 and 2 of the example mechanisms (seconds)")
     args = ap.parse_args()
     if args.mechanism:
         print_mechanisms()

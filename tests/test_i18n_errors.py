@@ -89,7 +89,7 @@ MODULES = ("limits", "teacher/check", "teacher/batch", "teacher/roster", "teache
            "gears/aa_bar", "linkage/inputs", "linkage/geometry", "render/note/__init__", "render/sheets/__init__",
            "commands/linkage", "commands/planetary", "commands/options", "commands/batch", "commands/check", "cli",
            "accuracy/card", "accuracy/carrier", "accuracy/chain_input", "accuracy/chain", "commands/carrier",
-           "commands/chain")
+           "commands/chain", "commands/project", "project")
 
 
 def _sample(node):

@@ -29,8 +29,12 @@ def test_json_of_the_shaper(tmp_path):
     assert [p["label"] for p in doc["positions"]][:9] == ["0", "1", "2", "3", "4", "5", "6", "7", "7′"]
     assert set(doc["positions"][0]["points"]["C"]) == {"x", "y", "vx", "vy", "ax", "ay"}
     assert sorted(p.name for p in (tmp_path / "linkage").iterdir() if not p.name.startswith(".")) == [
-        "linkage.json", "linkage_curve.csv"]
+        "linkage.json", "linkage_curve.csv", "linkage_dynamics.csv"]  # the file has masses: sheet 2 too
     assert json.loads((tmp_path / "linkage" / "linkage.json").read_text(encoding="utf-8")) == doc
+    r = run("linkage", EXAMPLES / "shaper.toml", "--json", "--no-plots", "--no-forces", "--out", tmp_path)
+    assert r.exit_code == 0 and "dynamics" not in json.loads(r.stdout)
+    assert sorted(p.name for p in (tmp_path / "linkage").iterdir() if not p.name.startswith(".")) == [
+        "linkage.json", "linkage_curve.csv"]  # sheet 2's file of the run before is gone (the manifest owns it)
 
 
 def test_tables_figures_and_the_plan_position(tmp_path):

@@ -13,16 +13,22 @@ from .variants import Variant
 
 @record
 class ProjectResult:
-    """Both sheets of one variant; `notes` gathers the notes of both, assumptions first."""
+    """Both sheets of one variant; `notes` gathers the notes of both, assumptions first.
+
+    With a mechanism file (``tmm project --mechanism``), `linkage` holds its sheets 1 and 2
+    (:class:`tmm_cli.linkage.sheet2.Sheet2`, whose ``sheet1`` is sheet 1) and `linkage_notes` says
+    that sheet 4 took the driving moment and the crank's speed from it."""
 
     variant: Variant
     gears: object  # tmm_cli.gears.design.GearsResult
     cam: object  # tmm_cli.cam.design.CamResult
+    linkage: object = None  # tmm_cli.linkage.sheet2.Sheet2, or None
+    linkage_notes: tuple = ()
 
     @property
     def notes(self) -> tuple[Note, ...]:
         seen: list[Note] = []
-        for note in tuple(self.gears.notes) + tuple(self.cam.notes):
+        for note in tuple(self.linkage_notes) + tuple(self.gears.notes) + tuple(self.cam.notes):
             if note not in seen:
                 seen.append(note)
         return tuple(sorted(seen, key=lambda n: n.level != "assumption"))
@@ -41,14 +47,25 @@ def run_project(
     select: str = "accurate",
     cam_choice=None,
     stiffness: bool = False,
+    linkage=None,
+    linkage_name: str = "",
 ) -> ProjectResult:
     """Run sheet 4 (motor, ratios, planetary reducer, spur pair) and sheet 3 (cam) for a variant.
 
     `select`: the reducer rule ("accurate" or "smallest", :func:`~tmm_cli.gears.design.design_gears`);
     `cam_choice`: the student's cam overrides (:class:`~tmm_cli.cam.design.CamChoice`) or None;
-    `stiffness` adds the spur pair's mesh stiffness (beyond the course, ``--stiffness``)."""
+    `stiffness` adds the spur pair's mesh stiffness (beyond the course, ``--stiffness``);
+    `linkage` (sheets 1–2 of a mechanism file, :func:`analyse_linkage`; `linkage_name` its file's
+    name) gives sheet 4 its mean reduced moment M (the driving moment) and the crank's speed, in
+    place of `torque_nm` and `crank_rpm`."""
     from .cam.design import design_cam
     from .gears.design import design_gears
+
+    notes = ()
+    if linkage is not None:
+        torque_nm, crank_rpm = linkage.motor_input()
+        notes = (Note.make("project_mechanism_motor", "assumption", torque=torque_nm, rpm=crank_rpm,
+                           file=linkage_name),)
 
     gears = design_gears(
         variant.n_cam_rpm,
@@ -63,4 +80,22 @@ def run_project(
         stiffness=stiffness,
     )
     cam = design_cam(variant, step_deg=step_deg, choice=cam_choice)
-    return ProjectResult(variant=variant, gears=gears, cam=cam)
+    return ProjectResult(variant=variant, gears=gears, cam=cam, linkage=linkage, linkage_notes=notes)
+
+
+def analyse_linkage(tables: dict, source: str = "mechanism"):
+    """Sheets 1 and 2 of a mechanism file's tables (as :func:`tmm_cli.inputs.mechanism.read_mechanism_tables`
+    reads them): the :class:`~tmm_cli.linkage.sheet2.Sheet2` whose driving moment and crank speed
+    sheet 4 takes. The file must give the load (sheet 4 needs the work the machine does)."""
+    from .errors import TmmError
+    from .linkage.mechanism_file import parse_mechanism
+    from .linkage.sheet1 import analyse_mechanism
+    from .linkage.sheet2 import analyse_sheet2
+    from .linkage.sheet2_file import parse_sheet2
+
+    mech = parse_mechanism(tables, source)
+    inp = parse_sheet2(mech, source)
+    if inp.load is None:
+        raise TmmError(f"{source} has no [load]: sheet 4 takes the motor's moment from the work of the useful "
+                       "resistance; add the [load] table (docs/dynamics.md) or give --torque without --mechanism")
+    return analyse_sheet2(analyse_mechanism(mech, source=source), inp, source)

@@ -24,7 +24,7 @@ from .options import (
 
 @click.command("batch", context_settings=CONTEXT)
 @click.option("--variants", "variants_spec", default=None, metavar="LIST", help="Variants, e.g. 1-68 or 3,17,40.")
-@click.option("--roster", type=click.Path(dir_okay=False), default=None, metavar="FILE", help="CSV with columns student,variant[,crank_rpm][,torque].")
+@click.option("--roster", type=click.Path(dir_okay=False), default=None, metavar="FILE", help="CSV with columns student,variant[,crank_rpm][,torque][,mechanism] (a mechanism file beside the roster).")
 @variants_file_option
 @crank_option
 @torque_option

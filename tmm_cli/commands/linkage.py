@@ -28,9 +28,12 @@ from .options import (
 
 FIGURES = ("linkage_mechanism", "linkage_diagrams", "linkage_velocity_plan", "linkage_acceleration_plan",
            "linkage_velocity_plan_2", "linkage_acceleration_plan_2")
+FIGURES2 = ("linkage_forces", "linkage_lever", "linkage_dynamics", "linkage_wittenbauer")  # sheet 2
 DATA_FILES = ("linkage.json", "linkage_curve.csv")
 # exactly the names this command writes: older copies of them are replaced, nothing else is touched
 OWNS = DATA_FILES + tuple(f"{name}.{ext}" for name in FIGURES for ext in ("png", "svg", "pdf"))
+OWNS_MECHANISM = OWNS + ("linkage_dynamics.csv", "sheet1.dxf", "sheet1.pdf", "sheet2.dxf", "sheet2.pdf") + tuple(
+    f"{name}.{ext}" for name in FIGURES2 for ext in ("png", "svg", "pdf"))
 WHITWORTH_OPTIONS = ("r1", "h", "c", "r2", "r3", "b", "rpm", "omega", "eps_crank", "at", "input", "variant")
 
 
@@ -43,6 +46,9 @@ def _metres(name: str, help_text: str):
 @click.option("--plan", "plan", default=None, metavar="N",
               help="With MECH.toml: the position of the velocity and acceleration plans, e.g. 3 or 7' (default: the "
                    "middle of the working stroke).")
+@click.option("--no-forces", "no_forces", is_flag=True,
+              help="With MECH.toml: sheet 1 only, even when the file gives masses or a load (sheet 2: the force "
+                   "analysis and the flywheel).")
 @_metres("r1", "Crank O21A [m].")
 @_metres("h", "The slotted link's pivot O41 lies h below the crank centre O21 [m].")
 @_metres("c", "... and c to the left of it [m] (default 0; negative: to the right).")
@@ -63,18 +69,20 @@ def _metres(name: str, help_text: str):
 @sheets_option
 @title_options
 @lang_option
-def linkage_cmd(mechanism_file, plan, r1, h, c, r2, r3, b, rpm, omega, eps_crank, n_positions, at_deg, input_file,
+def linkage_cmd(mechanism_file, plan, no_forces, r1, h, c, r2, r3, b, rpm, omega, eps_crank, n_positions, at_deg, input_file,
                 variant, as_json, no_plots, out, fmt, sheets, lang, **title_kw):
-    """Sheet 1: a lever mechanism — structure, positions, velocities, accelerations, plans, diagrams.
+    """Sheets 1 and 2: a lever mechanism — structure, positions, plans, diagrams; forces and the flywheel.
 
     MECH.toml describes the mechanism as the structural formula builds it: the frame, the crank and
-    class II groups RRR, RRP, RPR (docs/mechanism.md; examples in docs/examples/). Without it, the
-    options describe the slotted-link (Whitworth) mechanism of J. Goban, K. Monková, A. Šmeringaiová,
-    “The numerical and computer aided confrontation of kinematic analysis of mechanism” (2010): origin
-    at the crank centre O21, x right, y up; φ21 from +y towards +x. Examples:
+    class II groups RRR, RRP, RPR (docs/mechanism.md; examples in docs/examples/); with masses and a
+    load it also gets sheet 2 — the force analysis, Zhukovsky's lever, the flywheel (docs/dynamics.md).
+    Without it, the options describe the slotted-link (Whitworth) mechanism of J. Goban, K. Monková,
+    A. Šmeringaiová, “The numerical and computer aided confrontation of kinematic analysis of
+    mechanism” (2010): origin at the crank centre O21, x right, y up; φ21 from +y towards +x. Examples:
 
     \b
         tmm linkage docs/examples/shaper.toml --plan 3
+        tmm linkage docs/examples/compressor.toml --sheets
         tmm linkage --r1 0.10 --h 0.04 --c 0 --r2 0.08 --r3 0.30 --b -0.04 --rpm 60
     """
     if mechanism_file is not None:
@@ -84,8 +92,11 @@ def linkage_cmd(mechanism_file, plan, r1, h, c, r2, r3, b, rpm, omega, eps_crank
         if extra:
             raise TmmError(f"{mechanism_file} describes the mechanism; drop {', '.join(extra)} (the options of the "
                            "Whitworth mechanism)")
-        _mechanism(mechanism_file, plan, n_positions, as_json, no_plots, out, fmt, lang, sheets, title_block(title_kw))
+        _mechanism(mechanism_file, plan, n_positions, as_json, no_plots, out, fmt, lang, sheets, title_block(title_kw),
+                   no_forces)
         return
+    if no_forces:
+        raise TmmError("--no-forces needs a mechanism file (tmm linkage MECH.toml --no-forces)")
     if plan is not None:
         raise TmmError("--plan needs a mechanism file (tmm linkage MECH.toml --plan N); for the Whitworth options use --at DEG")
     if sheets or any(v is not None for v in title_kw.values()):
@@ -148,8 +159,9 @@ def linkage_cmd(mechanism_file, plan, r1, h, c, r2, r3, b, rpm, omega, eps_crank
           fmt, doc if as_json else None, show, result.notes, lang, owns=OWNS)
 
 
-def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang, sheets, title) -> None:
-    """`tmm linkage MECH.toml`: read, analyse, write and show sheet 1 of the mechanism."""
+def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang, sheets, title, no_forces=False) -> None:
+    """`tmm linkage MECH.toml`: read, analyse, write and show sheet 1 of the mechanism, and sheet 2
+    when the file gives masses or a load (unless --no-forces)."""
     import dataclasses
 
     from ..inputs.mechanism import read_mechanism_tables
@@ -163,7 +175,19 @@ def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang, sheet
             raise TmmError(f"--positions is {n_positions}; give a whole number of crank positions from 2 to 360 "
                            "(the book uses 12)")
         mech = dataclasses.replace(mech, positions=n_positions)
+    inp = None
+    if not no_forces:
+        from ..linkage.sheet2_file import parse_sheet2
+
+        inp = parse_sheet2(mech, str(path))  # its errors before the kinematics' work
+        if not inp.has_forces:
+            inp = None
     sheet = analyse_mechanism(mech, plan, str(path))
+    s2 = None
+    if inp is not None:
+        from ..linkage.sheet2 import analyse_sheet2
+
+        s2 = analyse_sheet2(sheet, inp, str(path))
 
     from ..output.folder import ensure_writable_dir
     from ..render.data.mechanism import curve_csv, mechanism_document
@@ -171,24 +195,47 @@ def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang, sheet
     folder = (Path(out) if out else Path("tmm-out")) / "linkage"
     ensure_writable_dir(folder.parent)
     doc = mechanism_document(sheet, lang)
+    files = {"linkage.json": doc, "linkage_curve.csv": curve_csv(sheet)}
     names = tuple(n for n in FIGURES if not n.endswith("_2") or len(sheet.plans) > 1)
+    notes = tuple(sheet.cycle.notes)
+    if s2 is not None:
+        from ..i18n.lang import note_text
+        from ..render.data.dynamics import add_sheet2, dynamics_csv
+
+        add_sheet2(doc, s2)
+        doc["notes"] += [note_text(n, lang) for n in s2.notes]
+        files["linkage_dynamics.csv"] = dynamics_csv(s2)
+        names += tuple(n for n in FIGURES2 if n != "linkage_wittenbauer" or s2.flywheel is not None)
+        notes += s2.notes
 
     def figures(which=None):
         from ..render.figures.mechanism import mechanism_figures
 
-        return mechanism_figures(sheet, lang, which)
+        out_figs = mechanism_figures(sheet, lang, which)
+        if s2 is not None:
+            from ..render.figures.dynamics import dynamics_figures
+
+            out_figs.update(dynamics_figures(s2, lang, which))
+        return out_figs
 
     def show(console):
         from ..render.terminal.mechanism import print_mechanism
 
         print_mechanism(console, sheet, lang)
+        if s2 is not None:
+            from ..render.terminal.dynamics import print_dynamics
+
+            print_dynamics(console, s2, lang)
 
     def a1(tmp):
         from ..render.sheets import save_sheet
         from ..render.sheets.linkage_sheet import sheet1
 
         save_sheet(sheet1(sheet, lang, title), tmp, "sheet1")
+        if s2 is not None:
+            from ..render.sheets.dynamics_sheet import sheet2
 
-    emit(folder, {"linkage.json": doc, "linkage_curve.csv": curve_csv(sheet)}, None if no_plots else figures,
-         fmt, doc if as_json else None, show, sheet.cycle.notes, lang, owns=OWNS + ("sheet1.dxf", "sheet1.pdf"),
-         extra=a1 if sheets else None, figure_names=names)
+            save_sheet(sheet2(s2, lang, title), tmp, "sheet2")
+
+    emit(folder, files, None if no_plots else figures, fmt, doc if as_json else None, show, notes, lang,
+         owns=OWNS_MECHANISM, extra=a1 if sheets else None, figure_names=names)

@@ -66,6 +66,9 @@ json_option = click.option("--json", "as_json", is_flag=True, help="Print only J
 lang_option = click.option("--lang", type=click.Choice(["ru", "en"]), default=None, help="Output language (default: from the locale).")
 step_option = click.option("--step", "step_deg", type=float, default=10.0, show_default=True, metavar="DEG", help="Cam angle step of the printed tables [deg].")
 crank_option = click.option("--crank-rpm", type=float, default=None, metavar="R", help="Crank speed of the linkage n_кр [rpm] (default: the book's 220 rpm, stated in the output).")
+mechanism_option = click.option("--mechanism", "mechanism_file", type=click.Path(dir_okay=False), default=None,
+                                metavar="MECH.toml", help="The lever mechanism's file (docs/mechanism.md): sheet 4 takes "
+                                "its driving moment and crank speed (sheets 1–2), instead of --torque and --crank-rpm.")
 torque_option = click.option("--torque", "torque_nm", type=float, default=None, metavar="NM", help="Mean reduced moment M from sheet 2 [N·m], for the motor power (§2.6).")
 ratio_option = click.option("--ratio", default=None, metavar="P/Q", help="Force the planetary ratio fraction of the book's procedure, e.g. 13/4.")
 tolerance_option = click.option("--tolerance", "tolerance_pct", type=float, default=5.0, show_default=True, metavar="PCT", help="Allowed planetary ratio error [%].")

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import click
 
+from ..errors import TmmError
 from .emit import console_for, print_files
 from .options import (
     CONTEXT,
@@ -14,6 +15,7 @@ from .options import (
     format_option,
     json_option,
     lang_option,
+    mechanism_option,
     no_plots_option,
     out_option,
     planets_option,
@@ -41,6 +43,7 @@ from .options import (
 @variants_file_option
 @crank_option
 @torque_option
+@mechanism_option
 @ratio_option
 @tolerance_option
 @planets_option
@@ -61,7 +64,7 @@ from .options import (
 @cam_choice_options
 @title_options
 @lang_option
-def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, stiffness, shift, a_w_mm, select, out, fmt, no_plots, as_json, report, note_template, step_deg, no_sheets, lang, **title_kw):
+def project_cmd(variant, variants_file, crank_rpm, torque_nm, mechanism_file, ratio, tolerance_pct, planets, stiffness, shift, a_w_mm, select, out, fmt, no_plots, as_json, report, note_template, step_deg, no_sheets, lang, **title_kw):
     """The whole project for one variant: sheet 4 then sheet 3, figures, results.json, the note and the drawing sheets."""
     choice = cam_choice(title_kw)
     title = title_block(title_kw)
@@ -76,12 +79,25 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_p
 
     lang = resolve_lang(lang)
     v = variant_row(variant, variants_file)
+    linkage, linkage_name = None, ""
+    if mechanism_file is not None:
+        given = [name for name, value in (("--crank-rpm", crank_rpm), ("--torque", torque_nm)) if value is not None]
+        if given:
+            raise TmmError(f"--mechanism gives sheet 4 its moment and crank speed; drop {', '.join(given)}")
+        from pathlib import Path
+
+        from ..inputs.mechanism import read_mechanism_tables
+        from ..project import analyse_linkage
+
+        linkage = analyse_linkage(read_mechanism_tables(mechanism_file), str(mechanism_file))
+        linkage_name = Path(mechanism_file).name
     folder = variant_folder(out, v.number)
     ensure_writable_dir(folder.parent)
     result = run_project(
         v, crank_rpm=crank_rpm, torque_nm=torque_nm, step_deg=step_deg,
         ratio=ratio_value(ratio), tolerance_pct=tolerance_pct, planets=planets, stiffness=stiffness,
-        shift=shift_value(shift), a_w_mm=a_w_mm, select=select, cam_choice=choice,
+        shift=shift_value(shift), a_w_mm=a_w_mm, select=select, cam_choice=choice, linkage=linkage,
+        linkage_name=linkage_name,
     )
     console = None if as_json else console_for(lang)
     shown: list[str] = []

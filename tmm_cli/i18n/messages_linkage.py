@@ -18,4 +18,15 @@ MESSAGES: dict[str, str] = {
     "mechanism_stops": N_("The output link stops {count} times per crank turn (not only in its two extreme positions); the stroke and K are taken between its extreme positions."),
     "mechanism_pressure": N_("The pressure angle of group {group} reaches {angle_deg:.1f}° at φ = {phi_deg:.1f}° (more than {limit_deg:.0f}°): the group transmits motion poorly there."),
     "mechanism_slot": N_("The block slides along the slotted link {link} from {rho_min_mm:.1f} to {rho_max_mm:.1f} mm from its pivot {pivot}: the slot must reach at least {rho_max_mm:.1f} mm."),
+    # sheet 2 of a mechanism file (issue 25): forces and the flywheel; tmm project --mechanism
+    "dynamics_uniform": N_("The force analysis takes the crank turning uniformly at its mean speed n₁ = {rpm:.5g} rpm (ε₁ = 0), as the kinetostatic method does; the pairs are frictionless."),
+    "dynamics_gravity": N_("The links' weights G = m·g (g = 9.81 m/s², towards −y) are counted."),
+    "dynamics_no_gravity": N_("The links' weights are not counted (the file has no gravity = true)."),
+    "dynamics_massless": N_("The file gives no [[mass]]: the links are massless (no inertia forces, no weights)."),
+    "dynamics_no_load": N_("The file gives no [load]: only the inertia forces and the weights act."),
+    "dynamics_no_table": N_("The file has no [dynamics] table: the flywheel is not computed; give delta = … (and J_rotor) for it."),
+    "dynamics_no_flywheel": N_("No flywheel is needed: the mechanism and the rotor alone keep the speed within δ = {delta:.4g} (δ = {delta_actual:.4g} without a flywheel)."),
+    "dynamics_methods": N_("The flywheel is Mertsalov's; Wittenbauer's energy–mass diagram gives J_fl = {j_w:.4g} kg·m² (Mertsalov's differs by {diff_pct:+.2f} %: it neglects the change of the second group's energy with the speed)."),
+    "dynamics_driving_negative": N_("The driving moment comes out negative (M_d = {moment:.4g} N·m): over a turn the loads give work to the crank; check the load's direction and load.working."),
+    "project_mechanism_motor": N_("Sheet 4 takes the mean reduced moment M = {torque:.4g} N·m (the driving moment of sheet 2) and the crank speed n_cr = {rpm:.5g} rpm from the mechanism file {file}."),
 }

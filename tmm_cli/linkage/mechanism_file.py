@@ -331,7 +331,8 @@ def _output(r: _Reader, b: _Builder, groups: tuple[Group, ...], value) -> Output
         r.fail(bad)
     if isinstance(value, list) and len(value) == 2 and all(isinstance(v, str) for v in value):
         for ln in b.links:
-            if ln.axis is not None and ln.kind != "crank" and set(ln.axis) == {value[0].strip(), value[1].strip()}:
+            if ln.axis is not None and ln.kind not in ("crank", "block") and set(ln.axis) == {value[0].strip(),
+                                                                                            value[1].strip()}:
                 return Output("rocker", ln.name, value[1].strip(), ln.group)
     r.fail(bad)
 

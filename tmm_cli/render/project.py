@@ -77,12 +77,16 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
             from .sheets import write_sheets
 
             later.append(lambda: write_sheets(tmp, result, lang, title))
+            if result.linkage is not None:  # and sheets 1–2 of the mechanism file (tmm project --mechanism)
+                later.append(lambda: _write_linkage_sheets(tmp, result.linkage, lang, title))
         if parallel and names:
             prepare_figures(svg)
         with SharedWork(draw, later, fork=parallel) as work:
             # what needs no figure, here while the child starts on them (the queue balances the rest)
             write_json(tmp / "results.json", doc)
             write_text(tmp / "cam_profile.csv", profile_csv(result.cam))
+            if result.linkage is not None:
+                _write_linkage_data(tmp, result.linkage, lang)
             if report == "md":  # names the figure files, which need not exist yet
                 write_text(tmp / "report.md", markdown_report(result, lang, files))
             if meanwhile is not None:
@@ -98,6 +102,30 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     if note_error is not None:
         raise note_error
     return doc, written
+
+
+def _write_linkage_data(tmp: Path, s2, lang: str) -> None:
+    """linkage.json (sheets 1–2, as `tmm linkage MECH.toml` writes it) and linkage_dynamics.csv."""
+    from ..i18n.lang import note_text
+    from ..output.folder import write_text
+    from .data.dynamics import add_sheet2, dynamics_csv
+    from .data.jsontext import write_json
+    from .data.mechanism import mechanism_document
+
+    doc = add_sheet2(mechanism_document(s2.sheet1, lang), s2)
+    doc["notes"] += [note_text(n, lang) for n in s2.notes]
+    write_json(tmp / "linkage.json", doc)
+    write_text(tmp / "linkage_dynamics.csv", dynamics_csv(s2))
+
+
+def _write_linkage_sheets(tmp: Path, s2, lang: str, title) -> list[str]:
+    from ..inputs.titleblock import TitleFields
+    from .sheets import save_sheet
+    from .sheets.dynamics_sheet import sheet2
+    from .sheets.linkage_sheet import sheet1
+
+    title = title or TitleFields()
+    return save_sheet(sheet1(s2.sheet1, lang, title), tmp, "sheet1") + save_sheet(sheet2(s2, lang, title), tmp, "sheet2")
 
 
 def _write_note(tmp: Path, result, lang: str, title, fmt: str, template: str | None):

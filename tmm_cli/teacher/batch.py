@@ -56,6 +56,14 @@ def _worker_start(shared_root: str | None) -> None:
         _SHARED.append(SharedFigures(shared_root))
 
 
+def _linkage(path: str):
+    """Sheets 1–2 of a roster row's mechanism file (the row fails with the file's error)."""
+    from ..inputs.mechanism import read_mechanism_tables
+    from ..project import analyse_linkage
+
+    return analyse_linkage(read_mechanism_tables(path), Path(path).name)
+
+
 def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, fmt: str, plots: bool, report: str | None,
             sheets: bool = False) -> dict:
     """Run one row in this process: the project, its folder, its summary row (or a failure row)."""
@@ -66,7 +74,9 @@ def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, f
 
     try:
         v = get_variant(job.variant, variants_file)
-        result = run_project(v, crank_rpm=job.crank_rpm, torque_nm=job.torque_nm)
+        linkage = _linkage(job.mechanism) if job.mechanism else None
+        result = run_project(v, crank_rpm=job.crank_rpm, torque_nm=job.torque_nm, linkage=linkage,
+                             linkage_name=Path(job.mechanism).name if job.mechanism else "")
         folder = Path(out_dir) / job.folder
         title = TitleFields(student=job.label, group=job.group) if job.fname else None
         doc, _ = write_project_folder(result, folder, lang, fmt=fmt, plots=plots, report=report,

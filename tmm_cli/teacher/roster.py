@@ -17,10 +17,11 @@ HEADER_ALIASES = {
     "group": ("group", "группа"),
     "crank_rpm": ("crank_rpm", "n_кр", "n_kr", "nкр", "n кр"),
     "torque": ("torque", "torque_nm", "момент", "m_пр"),
+    "mechanism": ("mechanism", "mechanism_file", "механизм", "файл механизма"),
 }
 
 
-ROSTER_COLUMNS = ("student", "variant", "group", "crank_rpm", "torque")
+ROSTER_COLUMNS = ("student", "variant", "group", "crank_rpm", "torque", "mechanism")
 
 
 @record
@@ -35,6 +36,7 @@ class BatchJob:
     group: str = ""
     fname: str = ""  # the student's file name (names.file_name), '' for a --variants run
     line: int = 0  # the roster line (rows are reported in roster order)
+    mechanism: str = ""  # the student's mechanism file (absolute), '' for none: sheet 4's M and n_cr from it
 
 
 @record
@@ -140,8 +142,31 @@ def _opt(raw: str, name: str, default, lo, hi):
     return limits.check_range(value, lo, hi, name)
 
 
+def _mechanism_path(raw: str, roster: Path) -> str:
+    """The absolute path of a roster row's mechanism file ('' for an empty cell), refused when it
+    leads outside the roster's folder (``../``, an absolute path, a link out) or does not exist."""
+    raw = (raw or "").strip()
+    if not raw:
+        return ""
+    root = roster.resolve().parent
+    shown = raw if len(raw) <= 60 and raw.isprintable() else raw[:60].encode("unicode_escape").decode() + "…"
+    try:
+        target = (root / raw).resolve()
+    except (OSError, RuntimeError, ValueError):
+        raise TmmError(f"the mechanism file {shown} does not exist (a path relative to the roster's folder)") from None
+    if not target.is_relative_to(root):
+        raise TmmError(f"the mechanism file {shown} lies outside the roster's folder; put it beside the roster or below it")
+    if not target.is_file():
+        raise TmmError(f"the mechanism file {shown} does not exist (a path relative to the roster's folder)")
+    return str(target)
+
+
 def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float | None, variants_file=None) -> Roster:
-    """Read a roster (student,variant[,group][,crank_rpm][,torque], English or Russian headers).
+    """Read a roster (student,variant[,group][,crank_rpm][,torque][,mechanism], English or Russian headers).
+
+    A `mechanism` cell names the student's mechanism file, relative to the roster's folder and
+    inside it (sheet 4 then takes the driving moment and the crank speed from it: the row's own
+    crank_rpm and torque must stay empty).
 
     A bad row (no name, a variant not in the table, a value out of range, two names sharing one
     file name) is returned with its reason among `bad`; a file without the student and variant
@@ -158,7 +183,8 @@ def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float
     missing = [c for c in ("student", "variant") if c not in header]
     if missing:
         raise TmmError(f"roster {path} has no column(s) {', '.join(missing)}; the header must be "
-                       f"student,variant[,group][,crank_rpm][,torque] (or студент;вариант;группа;n_кр;момент)")
+                       f"student,variant[,group][,crank_rpm][,torque][,mechanism] (or студент;вариант;группа;n_кр;момент;"
+                       f"механизм)")
     col = {k: header.index(k) for k in ROSTER_COLUMNS if k in header}
     jobs: list[BatchJob] = []
     bad: list[BadRow] = []
@@ -178,8 +204,16 @@ def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float
                 raise TmmError("the variant column is empty")
             if not variant.isdigit() or int(variant) not in table:
                 raise TmmError(f"variant {variant} is not in the table; choose a variant from {min(table)} to {max(table)}")
-            crank = _opt(cell.get("crank_rpm"), "crank_rpm", crank_rpm, *limits.CRANK_RPM)
-            torque = _opt(cell.get("torque"), "torque", torque_nm, *limits.TORQUE_NM)
+            mechanism = _mechanism_path(cell.get("mechanism", ""), Path(path))
+            if mechanism:
+                given = [k for k in ("crank_rpm", "torque") if (cell.get(k) or "").strip()]
+                if given:
+                    raise TmmError(f"the row gives a mechanism file and {' and '.join(given)}; the mechanism gives "
+                                   f"sheet 4 its moment and crank speed: leave {' and '.join(given)} empty")
+                crank, torque = None, None
+            else:
+                crank = _opt(cell.get("crank_rpm"), "crank_rpm", crank_rpm, *limits.CRANK_RPM)
+                torque = _opt(cell.get("torque"), "torque", torque_nm, *limits.TORQUE_NM)
             fname = file_name(student)
             if not fname:
                 raise TmmError("the name has no letter or digit to name a file by")
@@ -195,7 +229,8 @@ def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float
             continue
         n = int(variant)
         jobs.append(BatchJob(label=student, variant=str(n), crank_rpm=crank, torque_nm=torque,
-                             folder=f"{fname}/variant-{n:02d}", group=group, fname=fname, line=lineno))
+                             folder=f"{fname}/variant-{n:02d}", group=group, fname=fname, line=lineno,
+                             mechanism=mechanism))
     if not jobs and not bad:
         raise TmmError(f"roster {path} has a header but no students; add one row per student")
     return Roster(jobs, bad, Path(path), src.encoding_name, delimiter(src.text))

@@ -1,0 +1,193 @@
+"""The useful resistance (the ``[load]`` table of a mechanism file): its value along the working
+stroke and its exact work.
+
+On a slider (``on = "B"``): a force [N] along the guide; on a rocker or a slotted link
+(``on = ["C", "B"]``): a moment [N·m]. Its magnitude is a table against the fraction of the stroke
+(or swing) covered since the working stroke began, linear in between; it opposes the working
+motion and is zero on the return stroke (the standard load diagram of a machine's working member:
+Artobolevsky, Frolov — "силы полезного сопротивления", the indicator diagram of a compressor, the
+cutting force of a shaper)::
+
+    [load]
+    on = "B"
+    stroke = [0.0, 0.25, 0.5, 0.75, 1.0]   # from 0 to 1, never decreasing (a repeated value is a jump)
+    force = [0, 500, 1500, 1500, 0]        # [N], ≥ 0, as many values as `stroke`
+    working = "away"                       # read by sheet 1: which stroke is the working one
+
+The load acts on the output link (the one whose extreme positions give position 0 and the stroke);
+a file whose load is elsewhere sets ``output`` to it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..records import record
+from .chain import Kinematics
+from .mechanism import Mechanism
+from .positions import Cycle, output_coordinate
+
+LOAD_KEYS = ("on", "stroke", "force", "moment", "working")
+TABLE_MAX = 1000  # entries of the load table
+FORCE_MAX = 1.0e9  # [N] or [N·m]
+WORKING_TOLERANCE = 1e-9  # [rad] of crank travel: the end of the working stroke still belongs to it
+
+
+@record
+class Load:
+    """The useful resistance on the output link."""
+
+    link: str  # the output link's name
+    kind: str  # 'force' (a slider, [N]) | 'moment' (a turning link, [N·m])
+    stroke: tuple[float, ...]  # fractions of the stroke, 0 … 1, non-decreasing
+    values: tuple[float, ...]  # magnitudes at those fractions, ≥ 0
+
+
+@record
+class Stroke:
+    """What the load needs of sheet 1's cycle: where the working stroke starts and how long it is."""
+
+    start: float  # crank angle of position 0 [rad]
+    sense: int  # +1 the crank turns counter-clockwise
+    working: float  # crank travel of the working stroke [rad]
+    length: float  # the stroke H [m] or the swing ψ [rad]
+    direction: int  # +1: the working stroke increases the output coordinate
+    q0: float  # the output coordinate at position 0 [m or rad]
+    kind: str  # 'slider' | 'rocker'
+
+
+def stroke_of(c: Cycle) -> Stroke | None:
+    """The :class:`Stroke` of a cycle (None when the output turns fully: it has no stroke)."""
+    if c.stroke is None:
+        return None
+    mech = c.mechanism
+    q0 = float(output_coordinate(mech, c.curve.kin)[0][0])
+    return Stroke(c.start, mech.crank.sense, c.working, c.stroke, c.direction, q0, mech.output.kind)
+
+
+def table_value(load: Load, fraction):
+    """The load's magnitude at the fraction(s) of the stroke (linear between the table's entries).
+
+    >>> table_value(Load("B", "force", (0.0, 0.5, 1.0), (0.0, 100.0, 100.0)), [0.25, 0.75])
+    array([ 50., 100.])
+    """
+    return np.interp(np.asarray(fraction, dtype=float), load.stroke, load.values)
+
+
+def table_integral(load: Load, fraction):
+    """∫₀^f F(x) dx of the piecewise-linear table, exactly [N or N·m]: the load's work per unit of
+    stroke (the area under the load diagram up to the fraction f).
+
+    >>> ld = Load("B", "force", (0.0, 0.5, 0.5, 1.0), (0.0, 100.0, 200.0, 200.0))   # a jump at ½
+    >>> [float(x) for x in table_integral(ld, [0.5, 1.0, 0.75])]   # 25; 25 + 100; 25 + 50
+    [25.0, 125.0, 75.0]
+    """
+    x = np.asarray(load.stroke, dtype=float)
+    y = np.asarray(load.values, dtype=float)
+    cum = np.concatenate([[0.0], np.cumsum(np.diff(x) * (y[:-1] + y[1:]) / 2.0)])
+    f = np.clip(np.asarray(fraction, dtype=float), 0.0, 1.0)
+    j = np.clip(np.searchsorted(x, f, side="right") - 1, 0, len(x) - 2)
+    return cum[j] + (f - x[j]) * (y[j] + table_value(load, f)) / 2.0
+
+
+def progress(stroke: Stroke, mech: Mechanism, kin: Kinematics):
+    """(travel, fraction, working) at the kinematics' angles: the crank's travel since position 0
+    [rad, 0 … 2π), the fraction of the stroke covered since the working stroke began (0 … 1), and
+    whether the crank is on the working stroke (its end included)."""
+    travel = np.remainder(stroke.sense * (kin.phi - stroke.start), 2.0 * math.pi)
+    travel = np.where(travel > 2.0 * math.pi - WORKING_TOLERANCE, 0.0, travel)
+    q = output_coordinate(mech, kin)[0]
+    dq = q - stroke.q0
+    if stroke.kind == "rocker":
+        dq = np.remainder(dq + math.pi, 2.0 * math.pi) - math.pi
+    fraction = np.clip(stroke.direction * dq / stroke.length, 0.0, 1.0)
+    return travel, fraction, travel <= stroke.working + WORKING_TOLERANCE
+
+
+def load_value(load: Load, stroke: Stroke, mech: Mechanism, kin: Kinematics):
+    """The load at the kinematics' angles: a force as a complex vector [N] (along the guide,
+    against the working motion) or a moment [N·m] (counter-clockwise positive, against the working
+    swing); zero on the return stroke."""
+    _, fraction, working = progress(stroke, mech, kin)
+    size = np.where(working, table_value(load, fraction), 0.0)
+    if load.kind == "moment":
+        return -stroke.direction * size
+    guide = mech.groups[mech.link(load.link).group - 1].guide
+    return -stroke.direction * size * guide.unit
+
+
+def load_work(load: Load, stroke: Stroke, mech: Mechanism, kin: Kinematics, travel=None):
+    """The load's work since position 0 [J], exactly: −H·∫₀^f F(x) dx on the working stroke (f the
+    fraction covered), −H·∫₀¹ F(x) dx on the return stroke (H the stroke, or the swing in rad).
+    `travel` (the crank's travel since position 0 [rad], up to 2π) tells a whole turn's end from
+    its start; without it the angles are taken within the first turn.
+
+    The power F·v = −F·H·df/dt (the force opposes the motion that increases f), so the work is
+    the area under the load diagram times the stroke, with a minus sign."""
+    _, fraction, working = progress(stroke, mech, kin)
+    if travel is not None:
+        working = np.asarray(travel) <= stroke.working + WORKING_TOLERANCE
+    done = np.where(working, table_integral(load, fraction), table_integral(load, 1.0))
+    return -stroke.length * done
+
+
+def _numbers(r, value, key: str, example: str) -> tuple[float, ...]:
+    if not isinstance(value, list) or not 2 <= len(value) <= TABLE_MAX:
+        r.fail(f"'{key}' must be a list of 2 to {TABLE_MAX} numbers, e.g. {example}")
+    return tuple(r.number(v, key, example) for v in value)
+
+
+def parse_load(r, mech: Mechanism, raw) -> Load | None:
+    """The ``[load]`` table → :class:`Load` (`r`: the file's reader; None without a table)."""
+    if raw is None:
+        return None
+    t = r.table(raw, "load", LOAD_KEYS)
+    if set(t) <= {"working"}:  # only which stroke is the working one (sheet 1's key): no load
+        return None
+    on = r.required(t, "on", "load.on", 'on = "B"')
+    if isinstance(on, str):
+        name = r.name(on, "load.on", 'on = "B"')
+        ln = next((x for x in mech.links if x.kind == "slider" and x.name == name), None)
+        if ln is None:
+            r.fail(f"'load.on' is {name!r}: no slider sits on that joint; give a slider's joint (on = \"B\") or a "
+                   "turning link by two joints (on = [\"C\", \"B\"])")
+        kind = "force"
+    else:
+        ends = r.names(on, "load.on", 2, 'on = ["C", "B"]')
+        ln = next((x for x in mech.links if x.axis is not None and x.kind not in ("block", "crank")
+                   and set(x.axis) == set(ends)), None)
+        if ln is None:
+            r.fail(f"'load.on': no moving link joins {ends[0]} and {ends[1]} (the crank takes no load); give a "
+                   "turning link by two joints, e.g. on = [\"C\", \"B\"], or a slider's joint")
+        kind = "moment"
+    if ln.name != mech.output.link:
+        r.fail(f"'load.on' is the link {ln.name} but the output link is {mech.output.link}: the load follows the "
+               f"output's working stroke; put output = {_output_key(ln)} at the top of the file")
+    values_key, other = ("force", "moment") if kind == "force" else ("moment", "force")
+    if other in t:
+        what = "a slider takes a force" if kind == "force" else "a turning link takes a moment"
+        r.fail(f"'load.{other}': {what}; give load.{values_key} = [...]")
+    stroke = _numbers(r, r.required(t, "stroke", "load.stroke", "stroke = [0.0, 0.5, 1.0]"), "load.stroke",
+                      "stroke = [0.0, 0.5, 1.0]")
+    ex = f"{values_key} = [0.0, 500.0, 500.0]"
+    values = _numbers(r, r.required(t, values_key, f"load.{values_key}", ex), f"load.{values_key}", ex)
+    if len(values) != len(stroke):
+        r.fail(f"'load.{values_key}' has {len(values)} values but 'load.stroke' has {len(stroke)}; give one value "
+               "per entry of the stroke")
+    if stroke[0] != 0.0 or stroke[-1] != 1.0 or any(b < a for a, b in zip(stroke, stroke[1:])):
+        r.fail("'load.stroke' must run from 0 to 1 without decreasing (fractions of the stroke; repeat a fraction "
+               "for a jump), e.g. stroke = [0.0, 0.5, 0.5, 1.0]")
+    unit = "N" if kind == "force" else "N·m"
+    for v in values:
+        if not 0.0 <= v <= FORCE_MAX:
+            r.fail(f"'load.{values_key}' has {v:g}; give magnitudes in [0, {FORCE_MAX:g}] {unit} (the load always "
+                   "opposes the working motion)")
+    return Load(ln.name, kind, stroke, values)
+
+
+def _output_key(ln) -> str:
+    if ln.axis is None:
+        return f'"{ln.name}"'
+    return f'["{ln.axis[0]}", "{ln.axis[1]}"]'

@@ -1,0 +1,148 @@
+"""Sheet 2 of a lever mechanism as one frozen result: the force analysis of every position, Zhukovsky's
+lever, the dynamics reduced to the crank and the flywheel.
+
+Built on sheet 1 (:class:`~.sheet1.Sheet1`: the same positions and the same exact kinematics) and
+the sheet-2 tables of the mechanism file (:mod:`.sheet2_file`). What `tmm linkage MECH.toml`
+renders beside sheet 1, and what ``tmm project --mechanism`` hands to sheet 4: the constant
+driving moment and the crank's speed (:meth:`Sheet2.motor_input`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import TmmError
+from ..notes import Note
+from ..records import record
+from .dynamics import Dynamics, dynamics
+from .flywheel import Flywheel, flywheel
+from .forces import Loading, applied
+from .kinetostatics import Kinetostatics, kinetostatics
+from .loads import Stroke, stroke_of
+from .polygons import ForcePolygon, force_polygons
+from .power import balancing_moment_by_power, reduced_inertia, reduced_moment
+from .scales import DIAGRAM_AXIS_MM, DIAGRAM_HEIGHT_MM, drafting_scale
+from .sheet1 import Sheet1
+from .sheet2_file import Sheet2Input
+from .zhukovsky import Lever, lever
+
+
+@record
+class DynamicsScales:
+    """The drafter's scales of sheet 2's diagrams (each the smallest round μ with the largest
+    ordinate within `height_mm`; the crank's turn on `axis_mm`)."""
+
+    phi: float  # μ_φ [rad/mm]
+    M: float  # μ_M [N·m/mm]
+    A: float  # μ_A [J/mm] (the works A_r, A_d)
+    T: float  # μ_T [J/mm] (ΔT, ΔT_I)
+    J: float  # μ_J [kg·m²/mm] (J_r against the turn)
+    axis_mm: float
+    height_mm: float
+
+
+def dynamics_scales(dyn: Dynamics, fw: Flywheel | None, axis_mm: float = DIAGRAM_AXIS_MM,
+                    height_mm: float = DIAGRAM_HEIGHT_MM) -> DynamicsScales:
+    """μ of the diagrams M_r and M_d, A_r and A_d, ΔT (and ΔT_I), J_r over the turn."""
+    m = max(float(np.max(np.abs(dyn.M_r))), abs(dyn.M_d))
+    a = max(float(np.max(np.abs(dyn.A_r))), float(np.max(np.abs(dyn.A_d))))
+    t = float(np.max(np.abs(dyn.dT)))
+    if fw is not None:
+        t = max(t, float(np.max(np.abs(fw.mertsalov.dT_I - fw.mertsalov.dT_I[0]))))
+    return DynamicsScales(2.0 * math.pi / axis_mm, drafting_scale(m, height_mm), drafting_scale(a, height_mm),
+                          drafting_scale(t, height_mm), drafting_scale(float(np.max(dyn.J_r)), height_mm), axis_mm,
+                          height_mm)
+
+
+@record(eq=False)
+class Sheet2:
+    sheet1: Sheet1
+    input: Sheet2Input
+    stroke: Stroke | None
+    forces: Kinetostatics  # at sheet 1's positions (its cycle.kin), with their loading
+    power_balance: np.ndarray  # M_b from the power balance at the positions [N·m]
+    lever: Lever  # Zhukovsky's lever at the positions
+    force_position: int  # the position of the force polygons and of the lever's drawing (list index)
+    polygons: tuple[ForcePolygon, ...]  # of that position, the last group first, the crank last
+    reduced_moment: np.ndarray  # M_r at the positions, counter-clockwise positive [N·m]
+    reduced_inertia: np.ndarray  # J_r at the positions (with the rotor) [kg·m²]
+    dynamics: Dynamics  # on the fine grid (every 0.5°)
+    flywheel: Flywheel | None  # None without a [dynamics] table
+    scales: DynamicsScales  # of the diagrams
+    notes: tuple[Note, ...]
+
+    @property
+    def loading(self) -> Loading:
+        return self.forces.loading
+
+    @property
+    def balancing(self) -> np.ndarray:
+        """M_b by the force analysis at the positions [N·m], counter-clockwise positive."""
+        return self.forces.balancing
+
+    def difference_pct(self) -> np.ndarray:
+        """(M_b − M_b,Zhukovsky)/|M_b|·100 per position [%] (0 where M_b is 0 to rounding)."""
+        mb, mz = self.balancing, self.lever.balancing
+        scale = max(float(np.max(np.abs(mb))), 1e-300)
+        size = np.maximum(np.abs(mb), 1e-9 * scale)
+        return np.where(np.abs(mb) <= 1e-12 * scale, 0.0, 100.0 * (mb - mz) / size)
+
+    def motor_input(self) -> tuple[float, float]:
+        """(M [N·m], n [rpm]) for sheet 4: the driving moment's size and the crank's mean speed (the
+        file's rpm back from ω to 12 digits: 60 rpm stays 60, not 59.99999999999999)."""
+        return abs(self.dynamics.M_d), float(f"{self.sheet1.mechanism.crank.rpm:.12g}")
+
+
+def _notes(s1: Sheet1, inp: Sheet2Input, fw: Flywheel | None, dyn: Dynamics) -> tuple[Note, ...]:
+    notes = [Note.make("dynamics_uniform", "assumption", rpm=s1.mechanism.crank.rpm)]
+    notes.append(Note.make("dynamics_gravity" if inp.gravity else "dynamics_no_gravity", "assumption"))
+    if not inp.masses:
+        notes.append(Note.make("dynamics_massless", "assumption"))
+    if inp.load is None:
+        notes.append(Note.make("dynamics_no_load", "assumption"))
+    if fw is None:
+        notes.append(Note.make("dynamics_no_table", "assumption"))
+    else:
+        if fw.mertsalov.J_fl <= 0.0:
+            notes.append(Note.make("dynamics_no_flywheel", "assumption", delta=fw.delta,
+                                   delta_actual=fw.delta_actual))
+        if fw.wittenbauer.J_fl > 0.0 and fw.mertsalov.J_fl > 0.0:
+            diff = 100.0 * (fw.mertsalov.J_fl - fw.wittenbauer.J_fl) / fw.wittenbauer.J_fl
+            notes.append(Note.make("dynamics_methods", "assumption", diff_pct=diff, j_w=fw.wittenbauer.J_fl))
+    if dyn.M_d < 0.0:
+        notes.append(Note.make("dynamics_driving_negative", "warning", moment=dyn.M_d))
+    return tuple(notes)
+
+
+def analyse_sheet2(s1: Sheet1, inp: Sheet2Input, source: str = "mechanism") -> Sheet2:
+    """Everything of sheet 2 for sheet 1's mechanism and positions.
+
+    >>> from .mechanism_file import parse_mechanism
+    >>> from .sheet1 import analyse_mechanism
+    >>> from .sheet2_file import parse_sheet2
+    >>> m = parse_mechanism({"frame": {"O": [0, 0]}, "crank": {"pivot": "O", "joint": "A",
+    ...     "length": 0.05, "rpm": 300}, "group": [{"kind": "RRP", "joints": ["A", "B"],
+    ...     "length": 0.2, "guide": {"through": [0, 0], "angle_deg": 0}, "branch": "ahead"}],
+    ...     "load": {"on": "B", "stroke": [0, 1], "force": [1000, 1000], "working": "towards"}})
+    >>> s = analyse_sheet2(analyse_mechanism(m), parse_sheet2(m))
+    >>> round(s.dynamics.M_d * 2 * math.pi, 9)   # the work of 1000 N over the 0.1 m stroke
+    100.0
+    """
+    mech = s1.mechanism
+    c = s1.cycle
+    stroke = stroke_of(c)
+    if inp.load is not None and stroke is None:
+        raise TmmError(f"{source}: the load needs an output link that moves back and forth (it has no working "
+                       f"stroke: {mech.output.link} turns fully); drop [load] or choose another output")
+    kin = c.kin
+    loading = applied(mech, inp, stroke, kin)
+    ks = kinetostatics(mech, loading, kin)
+    i = s1.plans[0].position.index
+    rotor = inp.dynamics.J_rotor if inp.dynamics is not None else 0.0
+    dyn = dynamics(mech, inp, stroke, c.curve.kin, c.curve.travel)
+    fw = flywheel(dyn, inp.dynamics) if inp.dynamics is not None else None
+    return Sheet2(s1, inp, stroke, ks, balancing_moment_by_power(kin, loading), lever(mech, loading, kin), i,
+                  force_polygons(mech, ks, i), reduced_moment(kin, loading), reduced_inertia(kin, inp.masses, rotor),
+                  dyn, fw, dynamics_scales(dyn, fw), _notes(s1, inp, fw, dyn))
