@@ -8,9 +8,10 @@ millimetres, so 1 mm of the model is 1 mm of paper (print at 100 %).
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
-from .paper import SHEET_H, SHEET_W
+from .paper import FONT, SHEET_H, SHEET_W, mtext_runs, run_offsets
 
 MM_PER_INCH = 25.4
 
@@ -35,9 +36,46 @@ def _backend(ax):
     return SheetBackend(ax, adjust_figure=False)
 
 
+def _frontend(ctx, backend, cfg):
+    """ezdxf's Frontend, with the sheets' MTEXT (a text with stacked indices, ``paper.mtext_content``)
+    laid out here: ezdxf's own MTEXT layout raises an index instead of lowering it. Each run is
+    drawn like a TEXT: the base at the cap height, an index at 0.7 of it, SUB_DROP lower — the
+    positions the sheet measured when it placed the label."""
+    from ezdxf.addons.drawing import Frontend
+    from ezdxf.math import Matrix44
+
+    class SheetFrontend(Frontend):
+        def draw_mtext_entity(self, entity, properties):
+            dxf = entity.dxf
+            h = dxf.char_height
+            content = entity.text
+            wf = 1.0
+            if content.startswith("\\W"):
+                head, _, content = content.partition(";")
+                wf = float(head[2:])
+            from ezdxf.fonts import fonts
+
+            name = properties.font.filename if properties.font else FONT
+            cache = {}
+
+            def measure(t, hh):
+                f = cache.get(hh)
+                if f is None:
+                    f = cache[hh] = fonts.make_font(name, hh, wf)
+                return f.text_width(t)
+
+            ins = dxf.insert
+            rot = Matrix44.z_rotate(math.radians(dxf.get("rotation", 0.0)))
+            for t, dx, dy, hh in run_offsets(mtext_runs(content), h, measure):
+                m = Matrix44.scale(wf, 1.0, 1.0) @ Matrix44.translate(dx, dy, 0) @ rot @ Matrix44.translate(ins.x, ins.y, 0)
+                self.pipeline.draw_text(t, m, properties, hh, "MTEXT")
+
+    return SheetFrontend(ctx, backend, config=cfg)
+
+
 def sheet_figure(doc):
     """A matplotlib Figure of the whole sheet at true size (no pyplot)."""
-    from ezdxf.addons.drawing import Frontend, RenderContext
+    from ezdxf.addons.drawing import RenderContext
     from ezdxf.addons.drawing.config import (
         BackgroundPolicy,
         ColorPolicy,
@@ -64,7 +102,7 @@ def sheet_figure(doc):
     )
     ctx = RenderContext(doc)
     backend = _backend(ax)
-    Frontend(ctx, backend, config=cfg).draw_layout(doc.modelspace(), finalize=True)
+    _frontend(ctx, backend, cfg).draw_layout(doc.modelspace(), finalize=True)
     ax.set_xlim(0.0, SHEET_W)
     ax.set_ylim(0.0, SHEET_H)
     ax.set_aspect("equal", adjustable="box")
