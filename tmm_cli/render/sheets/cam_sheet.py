@@ -27,10 +27,10 @@ from .paper import FRAME, H_LABEL, H_MIN_LABEL, TB_BOX, TB_H, Sheet, gost_label
 
 H_NOTE = 3.5  # captions under a field
 LINE = 5.6  # caption line pitch
-LEFT_W = 300.0  # the left column (motion laws, ν(φ)): b = 240 mm plus the axes
+LEFT_W = 320.0  # the left column (motion laws, ν(φ)): b = 240 mm plus the axes
 GAP = 2.0  # between fields
 PROFILE_RING = 14.0  # [paper mm] from the cam's outline to the first ψ arc; 7 mm between the arcs
-PROFILE_PAD = 16.0  # beyond the last ψ arc (its label)
+PROFILE_PAD = 12.0  # beyond the last ψ arc (its label)
 TABLE_MIN_H = 110.0
 
 
@@ -94,7 +94,7 @@ def layout(r) -> Layout3:
     pressure = (X0 + GAP, Y0 + GAP, xl, Y1 - hm - GAP)
     lo, hi = _profile_extent(r, _profile_factor(r))
     ht = _table_height(r)
-    wp = min(max(hi[0] - lo[0] + 8.0, 250.0), X1 - xl - 190.0)
+    wp = min(max(hi[0] - lo[0] + 8.0, 250.0), X1 - xl - 165.0)
     hp = min(hi[1] - lo[1] + 16.0 + 8.0 + LINE * 2 + 6.0, Y1 - Y0 - TB_H - ht - 2 * GAP)
     profile = (X1 - wp, Y1 - hp, X1 - GAP, Y1 - GAP)
     xb0, xb1 = xl + GAP, X1 - wp - GAP
@@ -180,7 +180,7 @@ def _motion_field(sh: Sheet, r, lang: str, box) -> None:
     x0b, y0b, x1b, y1b = f.inner
     hv, ha = sc.h_v_mm, sc.h_a_mm
     pole_room = max(hv, ha) + 10.0
-    xo = x0b + (min(pole_room, 60.0) if max(hv, ha) <= 50.0 else 26.0)
+    xo = x0b + max(26.0, min(pole_room, x1b - x0b - sc.b_mm - 26.0))
     phw = v.phi_working_deg
     keep = np.degrees(m.phi) <= phw + 1e-9
     xs = xo + np.degrees(m.phi[keep]) / sc.k_phi_deg_mm
@@ -323,12 +323,13 @@ def _zone_field(sh: Sheet, r, lang: str, box):
         i = idx[_table_index(zn.phi[idx], row.phi_deg)]
         f.line(B[i], D[i], "Тонкие")
         sh.dot(f.p(*D[i]), 0.5)
-        if zn.constrained[i]:
+        if zn.constrained[i]:  # the rays run to the zone's corner O and a little beyond
             w = -zn.u[i]
+            reach = 1.12 * float(np.hypot(*(O - D[i])))
             for sgn in (1.0, -1.0):
                 c, s = math.cos(sgn * nu), math.sin(sgn * nu)
                 d = np.array([c * w[0] - s * w[1], s * w[0] + c * w[1]])
-                f.line(D[i], D[i] + span * d, "Тонкие")
+                f.line(D[i], D[i] + reach * d, "Тонкие")
         nums.append((row.index, D[i], B[i], row.phase))
     for idx_, d, b, _ in nums:
         out = d - b
@@ -522,12 +523,48 @@ def _outline_radius(r, fac) -> float:
     return (float(np.hypot(*p.pitch.T).max()) + p.roller_m) * 1000.0 * fac
 
 
-def _psi_radius(r, fac) -> float:
-    """[paper mm] The circle of the ψ arcs: outside the cam and (rocker) outside the pivot circle."""
-    big = _outline_radius(r, fac)
-    if r.profile.pivot_path is not None:
-        big = max(big, r.sizing.l_oc_m * 1000.0 * fac + 6.0)
-    return big + PROFILE_RING
+def _psi_arcs(r, fac) -> list[tuple[int, float, float, float]]:
+    """(j, lo, hi, radius [paper mm]) of the ψ arcs: each just outside the cam (and the rocker's
+    pivot circle) over its own angles, so that a small side of the cam keeps its arc close."""
+    p = r.profile
+    P = p.pitch
+    ang = np.degrees(np.arctan2(P[:, 1], P[:, 0]))
+    rad = (np.hypot(*P.T) + p.roller_m) * 1000.0 * fac
+    out = []
+    for j, lo, hi in _psi_spans(r):
+        sel = ((ang - (lo - 8.0)) % 360.0) <= (hi - lo + 16.0)
+        big = float(rad[sel].max()) if sel.any() else float(rad.max())
+        if p.pivot_path is not None:
+            big = max(big, r.sizing.l_oc_m * 1000.0 * fac + 6.0)
+        out.append((j, lo, hi, big + PROFILE_RING))
+    return out
+
+
+def _local_radius(r, fac, ray, half_deg=6.0) -> float:
+    """[paper mm] The cam's outline radius (pitch curve + roller) around the direction `ray`."""
+    p = r.profile
+    P = p.pitch
+    a0 = math.degrees(math.atan2(ray[1], ray[0]))
+    ang = np.degrees(np.arctan2(P[:, 1], P[:, 0]))
+    sel = np.abs(((ang - a0) + 180.0) % 360.0 - 180.0) <= half_deg
+    rad = (np.hypot(*P.T) + p.roller_m) * 1000.0 * fac
+    return float(rad[sel].max() if sel.any() else rad.max())
+
+
+def _scale_rays(r) -> list[np.ndarray]:
+    """Unit vectors from O to the tangent points C_i of the follower's axis at the table positions
+    (translating follower; the roller centre when the offset is nil): the angle scale."""
+    p = r.profile
+    if p.pivot_path is not None:
+        return []
+    out = []
+    for row in r.motion.table:
+        i = _profile_index(p, row.phi_deg)
+        b, u = p.pitch[i], p.axis_dir[i]
+        foot = b - (b @ u) * u
+        at = foot if np.hypot(*foot) > 1e-3 * np.hypot(*b) else b
+        out.append(at / (np.hypot(*at) or 1.0))
+    return out
 
 
 def _profile_extent(r, fac: float) -> tuple[np.ndarray, np.ndarray]:
@@ -537,12 +574,12 @@ def _profile_extent(r, fac: float) -> tuple[np.ndarray, np.ndarray]:
     x0, x1, y0, y1 = (c * 1000.0 * fac for c in r.drawing.construction_bbox_m)
     pts = [np.array([[x0 - 8.0, y0 - 8.0], [x1 + 8.0, y1 + 8.0]])]
     big = _outline_radius(r, fac)
-    for j, lo, hi in _psi_spans(r):
-        rr = _psi_radius(r, fac)
+    for j, lo, hi, rr in _psi_arcs(r, fac):
         t = np.radians(np.linspace(lo, hi, 30))
         pts.append(np.column_stack([(rr + PROFILE_PAD) * np.cos(t), (rr + PROFILE_PAD) * np.sin(t)]))
-    t = np.radians(np.linspace(0, 360, 73))
-    pts.append(np.column_stack([(big + 10.0) * np.cos(t), (big + 10.0) * np.sin(t)]))
+    for ray in _scale_rays(r):  # the angle scale's ticks and their numbers
+        q = ray * (_local_radius(r, fac, ray) + 6.0)
+        pts.append(np.array([q - 8.0, q + 8.0]))
     if p.pivot_path is not None:
         pp = p.pivot_path * 1000.0 * fac
         pts.append(np.vstack([pp - 10.0, pp + 10.0]))
@@ -602,7 +639,8 @@ def _profile_field(sh: Sheet, r, lang: str, box):
     # the inverted follower at every table position: the roller, the follower's axis (tangent to
     # the offset circle at C_i) or the rocker C_i B_i; the angle scale: a ray from O through C_i
     # (the division of the working angle against the rotation) with the position's number i′
-    for row in r.motion.table:
+    rays = _scale_rays(r)
+    for j_row, row in enumerate(r.motion.table):
         i = _profile_index(p, row.phi_deg)
         b = P[i]
         f.circle(b, rp, "Тонкие")
@@ -616,10 +654,10 @@ def _profile_field(sh: Sheet, r, lang: str, box):
             u = p.axis_dir[i]
             foot = b - (b @ u) * u  # the tangent point C_i on the offset circle
             f.line(foot, b + u * (rp + 4.0 / fac), "Тонкие")
-            at = foot if np.hypot(*foot) * fac > 1.0 else b
-            ray = at / (np.hypot(*at) or 1.0)
-            end = o_s + ray * (big_p + 5.0)
-            sh.line(o_s + ray * (big_p + 1.0), end, "Тонкие")
+            ray = rays[j_row]
+            rl = _local_radius(r, fac, ray)
+            end = o_s + ray * (rl + 6.0)
+            sh.line(o_s + ray * (rl + 2.0), end, "Тонкие")
         sh.label(f"{row.index}′", end, H_MIN_LABEL, within=within, dirs=_dirs(ray), dists=(0.8, 2.0, 3.5), priority=4)
     # centre O, the pivot C_0 (rocker) with the rocker in the start position
     _cross(sh, o_s, 5.0)
@@ -632,8 +670,7 @@ def _profile_field(sh: Sheet, r, lang: str, box):
     # profile angles ψ as arcs outside the cam, between rays from O (the core's values)
     names = ("ψ_{у}", "ψ_{дс}", "ψ_{в}") if lang == "ru" else ("ψ_{r}", "ψ_{fd}", "ψ_{ret}")
     vals = (p.psi_rise_deg, p.psi_far_deg, p.psi_return_deg)
-    rr = _psi_radius(r, fac)
-    for j, lo_a, hi_a in _psi_spans(r):  # consecutive angles: one circle carries all three
+    for j, lo_a, hi_a, rr in _psi_arcs(r, fac):
         for a in (lo_a, hi_a):
             e = np.array([math.cos(math.radians(a)), math.sin(math.radians(a))])
             sh.line(o_s + e * (rr - 8.0), o_s + e * (rr + 2.5), "Тонкие")
@@ -731,7 +768,7 @@ def _pressure_field(sh: Sheet, r, lang: str, box):
 def table(sh: Sheet, box, title: str, rows: list[tuple[str, str]], col1: float = 0.58, h=H_NOTE):
     """A two-column table (quantity, value) with a heading, in thin lines, a thick outline."""
     x0, y0, x1, y1 = box
-    sh.text((x0 + x1) / 2, y1 - 2.0, title.upper(), 7.0, align="center", valign="top", width=x1 - x0 - 4, min_h=5.0)
+    sh.add_field("table", box, title)
     top = y1 - 12.0
     row_h = min(9.0, (top - y0) / max(len(rows), 1))
     bottom = top - row_h * len(rows)

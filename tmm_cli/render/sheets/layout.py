@@ -226,6 +226,7 @@ class Obstacles:
     def add_box(self, corners: np.ndarray) -> None:
         self.boxes.append(np.asarray(corners, dtype=float))
         self._box_aabb.append(_aabb(corners))
+        self._aabb_arr = None
 
     # -- the grid
     def _build(self) -> None:
@@ -274,13 +275,15 @@ class Obstacles:
             n += int(segments_hit_box(self._recent[0], self._recent[1], corners).sum())
         return n
 
+    def _near(self, x0, y0, x1, y1) -> np.ndarray:
+        if getattr(self, "_aabb_arr", None) is None:
+            self._aabb_arr = np.array(self._box_aabb, dtype=float).reshape(-1, 4)
+        a = self._aabb_arr
+        return np.nonzero((a[:, 0] < x1) & (x0 < a[:, 2]) & (a[:, 1] < y1) & (y0 < a[:, 3]))[0]
+
     def text_hits(self, corners: np.ndarray) -> int:
         x0, y0, x1, y1 = _aabb(corners)
-        n = 0
-        for (a0, b0, a1, b1), box in zip(self._box_aabb, self.boxes):
-            if a0 < x1 and x0 < a1 and b0 < y1 and y0 < b1 and boxes_overlap(box, corners):
-                n += 1
-        return n
+        return sum(1 for i in self._near(x0, y0, x1, y1) if boxes_overlap(self.boxes[i], corners))
 
     def segment_hits_text(self, p0, p1) -> int:
         """How many text boxes the segment p0–p1 crosses (a leader must cross no text)."""
@@ -288,11 +291,7 @@ class Obstacles:
         p1 = np.asarray(p1, dtype=float)[None]
         lo = np.minimum(p0, p1)[0]
         hi = np.maximum(p0, p1)[0]
-        n = 0
-        for (a0, b0, a1, b1), box in zip(self._box_aabb, self.boxes):
-            if a0 < hi[0] and lo[0] < a1 and b0 < hi[1] and lo[1] < b1 and segments_hit_box(p0, p1, box)[0]:
-                n += 1
-        return n
+        return sum(1 for i in self._near(lo[0], lo[1], hi[0], hi[1]) if segments_hit_box(p0, p1, self.boxes[i])[0])
 
 
 # ----------------------------------------------------------------------------------------------
@@ -315,6 +314,7 @@ class Label:
     positions: tuple = ()  # explicit candidates: (x, y, rot, align) tried before the ring
     dot: bool = False  # a leader ends on a dot (a point inside an outline) instead of an arrow-less end
     order: int = 0
+    anchors: tuple = ()  # further points a leader may start from (along a dimension line)
 
 
 # a direction -> (unit vector towards the text, the text box's alignment point: fx, fy in 0..1)

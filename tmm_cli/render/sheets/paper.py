@@ -501,15 +501,19 @@ class Sheet:
         nr = np.array([-ur[1], ur[0]])
         w = self.text_width(text, h)
         sub = any(lv for _, lv in rich_parts(text))
-        gap = 1.0 + (SUB_DESCENTS if sub else DESCENTS) * h
+        d_lo = (SUB_DESCENTS if sub else DESCENTS) * h
         pos = []
-        for t in ((0.5, 0.3, 0.7, 0.15, 0.85) if inside_ else (0.5,)):
-            m = pa + d * t
-            for side in (1.0, -1.0):
-                base = m - ur * w / 2 + nr * side * gap - (nr * (h + 2 * gap - 1.0) if side < 0 else 0)
-                pos.append((float(base[0]), float(base[1]), rot))
+        for lift in (1.0, 2.5):
+            for t in ((0.5, 0.3, 0.7, 0.15, 0.85) if inside_ else (0.5,)):
+                m = pa + d * t
+                for side in (1.0, -1.0):
+                    # above the line: the box's bottom `lift` over it; below: its top `lift` under it
+                    off = (lift + d_lo + CLEAR) if side > 0 else -(lift + h + CLEAR)
+                    base = m - ur * w / 2 + nr * off
+                    pos.append((float(base[0]), float(base[1]), rot))
         self.label(text, tuple((pa + pb) / 2), h, within=within, positions=tuple(pos), dirs=(), dists=(),
-                   leader=True, priority=priority, rot=rot)
+                   leader=True, priority=priority, rot=rot,
+                   anchors=[tuple(pa + d * t) for t in (0.3, 0.7, 0.15, 0.85)] if inside_ else ())
 
     def dim_arc(self, c, r, a0, a1, text: str, h: float = H_LABEL, ext_from: float | None = None, within=None,
                 priority=5):
@@ -655,13 +659,14 @@ class Sheet:
 
     # ---------------------------------------------------------------------------- labels
     def label(self, text: str, anchor, h: float = H_LABEL, *, within=None, rot: float = 0.0, dirs=None,
-              dists=None, leader: bool = True, priority: int = 0, positions=(), dot: bool = False) -> Label:
+              dists=None, leader: bool = True, priority: int = 0, positions=(), dot: bool = False,
+              anchors=()) -> Label:
         """Queue a label near `anchor` [sheet mm]; :meth:`place_labels` puts it where it touches no
         line and no text (candidates: `positions` first — (x, y, rot) insertion points —, then
         the directions `dirs` at the distances `dists`, then rings farther out with a leader)."""
         lab = Label(text=text, anchor=(float(anchor[0]), float(anchor[1])), h=h, within=within or FRAME_INNER,
                     rot=readable(rot), leader=leader, priority=priority, positions=tuple(positions), dot=dot,
-                    order=len(self.labels))
+                    order=len(self.labels), anchors=tuple(tuple(map(float, a)) for a in anchors))
         if dirs is not None:
             lab.dirs = tuple(dirs)
         if dists is not None:
@@ -718,11 +723,12 @@ class Sheet:
         """A place farther out with a leader: the text on a shelf, a thin line from the anchor to
         the shelf's near end; neither the text nor the leader touches text (the leader may cross
         lines, as on any drawing)."""
-        ax, ay = lab.anchor
         d_lo = (SUB_DESCENTS if sub else DESCENTS) * h
-        for dist in (8.0, 12.0, 17.0, 24.0, 32.0, 42.0, 55.0, 70.0):
-            for k in range(16):
-                t = 2 * math.pi * k / 16 + math.pi / 4
+        anchors = [lab.anchor] + list(lab.anchors)
+        for dist in (7.0, 10.0, 14.0, 19.0, 25.0, 32.0, 40.0, 50.0, 62.0, 76.0, 92.0):
+            for k in range(24):
+              for ax, ay in anchors:
+                t = 2 * math.pi * k / 24 + math.pi / 4
                 ex, ey = ax + dist * math.cos(t), ay + dist * math.sin(t)
                 right = math.cos(t) >= -1e-9
                 x = ex if right else ex - w
