@@ -73,15 +73,35 @@ def _frontend(ctx, backend, cfg):
     return SheetFrontend(ctx, backend, config=cfg)
 
 
-def sheet_figure(doc):
-    """A matplotlib Figure of the whole sheet at true size (no pyplot)."""
-    from ezdxf.addons.drawing import RenderContext
+def render_config():
+    """The drawing add-on's configuration of the PDF: black on white, absolute lineweights read as
+    points (× 72/25.4), linetypes drawn as their dashes (the default, stated)."""
     from ezdxf.addons.drawing.config import (
         BackgroundPolicy,
         ColorPolicy,
         Configuration,
+        LinePolicy,
         LineweightPolicy,
     )
+
+    return Configuration(
+        color_policy=ColorPolicy.BLACK,
+        background_policy=BackgroundPolicy.WHITE,
+        lineweight_policy=LineweightPolicy.ABSOLUTE,
+        lineweight_scaling=72.0 / MM_PER_INCH,
+        line_policy=LinePolicy.ACCURATE,
+    )
+
+
+def draw(doc, backend) -> None:
+    """Render the model space of `doc` through `backend` as the PDF does (tests record it)."""
+    from ezdxf.addons.drawing import RenderContext
+
+    _frontend(RenderContext(doc), backend, render_config()).draw_layout(doc.modelspace(), finalize=True)
+
+
+def sheet_figure(doc):
+    """A matplotlib Figure of the whole sheet at true size (no pyplot)."""
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(SHEET_W / MM_PER_INCH, SHEET_H / MM_PER_INCH))
@@ -94,15 +114,7 @@ def sheet_figure(doc):
     # Bézier segment of every text glyph (seconds per sheet, for nothing)
     ax._update_patch_limits = lambda patch: None
     ax._update_line_limits = lambda line: None
-    cfg = Configuration(
-        color_policy=ColorPolicy.BLACK,
-        background_policy=BackgroundPolicy.WHITE,
-        lineweight_policy=LineweightPolicy.ABSOLUTE,
-        lineweight_scaling=72.0 / MM_PER_INCH,
-    )
-    ctx = RenderContext(doc)
-    backend = _backend(ax)
-    _frontend(ctx, backend, cfg).draw_layout(doc.modelspace(), finalize=True)
+    draw(doc, _backend(ax))
     ax.set_xlim(0.0, SHEET_W)
     ax.set_ylim(0.0, SHEET_H)
     ax.set_aspect("equal", adjustable="box")
