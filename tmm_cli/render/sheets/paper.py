@@ -391,6 +391,7 @@ class Sheet:
         self.obstacles = Obstacles()
         self.labels: list[Label] = []
         self.unplaced: list[str] = []  # labels no free place was found for (tests fail on them)
+        self.finished = False
 
     # ------------------------------------------------------------------ primitives (sheet mm)
     def _attr(self, layer, linetype=None, **kw):
@@ -754,14 +755,17 @@ class Sheet:
         """A field with its heading centred at the top (upper case, as on the book's sheets).
 
         The heading carries XDATA: name, box, origin, scale, scale label (read by the tests).
-        `scale_text` is printed beside the heading (e.g. "М 1:2").
+        `scale_text` is printed under the heading (e.g. "М 1:2").
         """
         x0, y0, x1, y1 = box
-        title = heading.upper() + (f" ({scale_text})" if scale_text else "")
-        head = self.text((x0 + x1) / 2, y1 - 2.0, title, heading_h, align="center", valign="top",
+        head = self.text((x0 + x1) / 2, y1 - 2.0, heading.upper(), heading_h, align="center", valign="top",
                          width=x1 - x0 - 4, max_lines=2, min_h=5.0)
         low = min(e.dxf.insert[1] for e in head)
         top = low - DESCENTS * heading_h - 2.0
+        if scale_text:  # on its own line under the heading (ГОСТ 2.316: «М 1:2»)
+            self.text((x0 + x1) / 2, top - 0.5, scale_text, H_LABEL, align="center", valign="top", width=x1 - x0 - 4,
+                      min_h=3.5)
+            top -= 0.5 + H_LABEL * (1 + SUB_DESCENTS) + 1.5
         tags = [(1000, name)] + [(1040, float(v)) for v in (*box, *origin, scale)] + [(1000, scale_label or "")]
         head[0].set_xdata(XDATA_APP, tags)
         f = Field(self, name, tuple(box), tuple(origin), scale, scale_label, inner=(x0 + 1.0, y0 + 1.0, x1 - 1.0, top))
@@ -842,6 +846,9 @@ class Sheet:
     def finish(self) -> None:
         """Place the labels, then the paper space: one layout "A1" of 841 × 594 mm printing the
         model at 1:1 (plot settings, limits, units), and no text style nobody uses."""
+        if self.finished:
+            return
+        self.finished = True
         self.place_labels()
         doc = self.doc
         names = [lay for lay in doc.layouts.names() if lay != "Model"]
