@@ -34,6 +34,19 @@ def _extent_m(r) -> float:
     return max(w, h)
 
 
+def _construction_extent_m(r) -> float:
+    """Independent: the cam's box, and for a rocker the circle |x| = l_OC about O on which the
+    pivot positions C_i of the inversion lie (sheet 3 draws it)."""
+    p = r.profile
+    rp = p.roller_m
+    x0, x1 = p.pitch[:, 0].min() - rp, p.pitch[:, 0].max() + rp
+    y0, y1 = p.pitch[:, 1].min() - rp, p.pitch[:, 1].max() + rp
+    if r.sizing.l_oc_m is not None:
+        L = r.sizing.l_oc_m
+        x0, x1, y0, y1 = min(x0, -L), max(x1, L), min(y0, -L), max(y1, L)
+    return max(x1 - x0, y1 - y0)
+
+
 def test_scale_is_standard_fits_and_is_the_largest(results):
     seen = set()
     order = list(TABLE_1_1)  # coarse to detailed
@@ -42,15 +55,16 @@ def test_scale_is_standard_fits_and_is_the_largest(results):
         assert d.scale in TABLE_1_1, n
         assert d.k_sk == TABLE_1_1[d.scale], n
         assert d.field_mm == FIELD_MM
-        ext = _extent_m(r)
-        assert d.extent_m == pytest.approx(ext, rel=1e-12, abs=1e-12), n
+        assert d.extent_m == pytest.approx(_extent_m(r), rel=1e-12, abs=1e-12), n
+        ext = _construction_extent_m(r)
+        assert d.construction_extent_m == pytest.approx(ext, rel=1e-12, abs=1e-12), n
         assert d.fits
         assert ext / d.k_sk <= FIELD_MM, n  # fits the field at the chosen scale
         i = order.index(d.scale)
         if i + 1 < len(order):  # and would not fit at the next larger one
             assert ext / TABLE_1_1[order[i + 1]] > FIELD_MM, n
         w, h = d.extent_mm
-        assert max(w, h) == pytest.approx(ext / d.k_sk, rel=1e-12)
+        assert max(w, h) == pytest.approx(_extent_m(r) / d.k_sk, rel=1e-12)
         seen.add(d.scale)
     assert {"1:2", "1:1", "2:1"} <= seen  # the table spreads the variants over several scales
 
@@ -169,6 +183,9 @@ def test_choose_scale_edges():
     assert choose_scale(0.250) == ("1:1", 0.001, True)  # exactly the field
     assert choose_scale(0.2501) == ("1:2", 0.002, True)
     assert choose_scale(0.001) == ("10:1", 0.0001, True)
-    assert choose_scale(3.0) == ("1:10", 0.01, False)  # larger than 2.5 m: flagged, not raised
+    # larger than 2.5 m: flagged, not raised, at the next reduction of ГОСТ 2.302 that fits
+    assert choose_scale(3.0) == ("1:15", 0.015, False)
+    assert choose_scale(4.9) == ("1:20", 0.02, False)
+    assert choose_scale(100.0)[0] == "1:100" and not choose_scale(100.0)[2]
     assert next_larger_scale(0.0001) is None
     assert np.isclose(next_larger_scale(0.01)[1], 0.005)

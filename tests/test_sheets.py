@@ -36,6 +36,16 @@ TITLE = TitleFields(student="Иванов И. И.", group="П-243", teacher="П�
 GEAR_CASES = {"1": 220.0, "2": 60.0, "1+1": 40.0}
 
 
+def all_texts(doc) -> list[str]:
+    """Every text of the sheet as a reader sees it: TEXT as written, MTEXT with its stacked
+    indices written inline (r\\S^ 0; -> r0)."""
+    from sheet_check import mtext_runs
+
+    out = [e.dxf.text for e in doc.modelspace().query("TEXT")]
+    out += ["".join(t for t, _ in mtext_runs(e.text)[0]) for e in doc.modelspace().query("MTEXT")]
+    return out
+
+
 def fields(doc) -> dict:
     """name -> dict(box, origin, scale, label) from the XDATA of the field headings."""
     out = {}
@@ -75,7 +85,7 @@ def check_layout(doc):
     for f in fl.values():
         if f["label"]:
             assert f["label"] in GOST
-    texts = " ".join(e.dxf.text for e in msp.query("TEXT"))
+    texts = " ".join(all_texts(doc))
     for lab in re.findall(r"М (\d+(?:,\d+)?:\d+(?:,\d+)?)", texts):
         assert lab in GOST, lab
     assert not doc.audit().has_errors
@@ -109,7 +119,7 @@ def test_sheet3_variant_1_file(tmp_path):
     fl = check_layout(doc)
     assert set(fl) >= {"motion", "zone", "profile", "pressure"}
     profile_matches_csv(doc, cam)
-    texts = [e.dxf.text for e in doc.modelspace().query("TEXT")]
+    texts = all_texts(doc)
     assert "ТММ.03.01.00.00" in texts and "Иванов И. И." in texts
     # the linetypes are the standard ones, the lineweights 0.7 / 0.25
     assert doc.layers.get("Осевые").dxf.linetype == "CENTER"
@@ -127,10 +137,14 @@ def test_sheet3_every_variant(number):
     ox, oy = f["origin"]
     k = f["scale"]
     # the whole working profile and (rocker) the pivot circle lie inside the profile field
-    R = float(np.hypot(*cam.profile.inner.T).max()) * 1000.0 * k
+    pts = [cam.profile.inner * 1000.0 * k + (ox, oy)]
     if cam.sizing.l_oc_m is not None:
-        R = max(R, cam.sizing.l_oc_m * 1000.0 * k)
-    assert x0 <= ox - R and ox + R <= x1 and y0 <= oy - R and oy + R <= y1
+        R = cam.sizing.l_oc_m * 1000.0 * k
+        pts.append(np.array([[ox - R, oy - R], [ox + R, oy + R]]))
+    pts = np.vstack(pts)
+    assert x0 <= pts[:, 0].min() and pts[:, 0].max() <= x1 and y0 <= pts[:, 1].min() and pts[:, 1].max() <= y1
+    # drawn at the core's scale (CamResult.drawing: the note states the same)
+    assert f["label"] == cam.drawing.scale and abs(k - 0.001 / cam.drawing.k_sk) < 1e-12
     roller_circles_match_json(doc, cam)
 
 
@@ -150,7 +164,7 @@ def roller_circles_match_json(doc, cam, lang="ru"):
     assert len(rollers) >= 4, (roller, sorted({round(e.dxf.radius / k, 3) for e in inside}))
     if abs(book - roller) > 0.05:
         assert not [e for e in inside if abs(e.dxf.radius - book * k) < 1e-3 * k]
-    texts = "".join(e.dxf.text for e in doc.modelspace().query("TEXT"))
+    texts = "".join(all_texts(doc))
     want = {"book": "0,2·r", "limited": "0,8·ρ", "student": "задан"}[rule]
     assert want in texts
 
@@ -161,9 +175,9 @@ def test_sheet4_schemes(scheme, tmp_path):
     assert g.scheme == scheme
     doc = reopen(sheet4(g, 7, "ru", TITLE), tmp_path, "sheet4")
     fl = check_layout(doc)
-    assert set(fl) >= {"scheme", "linear", "angular", "assembly", "mesh"}
+    assert set(fl) >= {"scheme", "angular", "assembly", "mesh", "table"}  # linear velocities beside the scheme
     mesh_matches_json(doc, g)
-    texts = [e.dxf.text for e in doc.modelspace().query("TEXT")]
+    texts = all_texts(doc)
     assert "ТММ.04.07.00.00" in texts
 
 

@@ -1,9 +1,15 @@
 """The drawing scale of the cam profile, §1.4: Table 1.1 and the conversions (1.26), (1.27).
 
 The profile is drawn at one of the standard engineering scales M (Table 1.1), each with its linear
-scale k_Sk [m/mm]. The program picks the largest (most detailed) one at which the whole cam — the
-pitch curve dilated by the roller, which contains the working profile D1, the groove's outer wall
-D2 (form closure) and every roller position — fits a square drawing field of DRAWING_FIELD_MM.
+scale k_Sk [m/mm]. The program picks the largest (most detailed) one at which the whole
+construction — the pitch curve dilated by the roller, which contains the working profile D1, the
+groove's outer wall D2 (form closure) and every roller position, and for a rocker the circle of
+its pivot positions C_i (radius l_OC about O), on which the inversion is built — fits a square
+drawing field of DRAWING_FIELD_MM (the profile field of sheet 3 keeps that square free). A cam
+too large even at 1:10 takes the next reductions of ГОСТ 2.302 (1:15, 1:20 …) and is flagged.
+
+This scale (``ProfileDrawing.scale`` / ``k_sk``) is the one source for every drawing of the
+profile: sheet 3 draws at it, the note states it.
 
 The lengths the student lays off on the sheet follow from the diagram and sizing scales:
 
@@ -38,6 +44,11 @@ STANDARD_SCALES: tuple[tuple[str, float], ...] = (
     ("5:1", 0.0002),
     ("10:1", 0.0001),
 )
+# ГОСТ 2.302 reductions beyond Table 1.1, for a cam that does not fit at 1:10 (flagged, not raised)
+BEYOND_TABLE: tuple[tuple[str, float], ...] = (
+    ("1:15", 0.015), ("1:20", 0.02), ("1:25", 0.025), ("1:40", 0.04), ("1:50", 0.05), ("1:75", 0.075),
+    ("1:100", 0.1),
+)
 DRAWING_FIELD_MM = 250.0  # side of the square field for the profile on sheet 3 (assumption)
 
 
@@ -58,7 +69,8 @@ def drawn_mm(length_m: float, k_diagram: float, k_sk: float) -> float:
 def choose_scale(extent_m: float, field_mm: float = DRAWING_FIELD_MM) -> tuple[str, float, bool]:
     """Largest standard scale of Table 1.1 at which a drawing of `extent_m` [m] fits `field_mm` [mm].
 
-    Returns (M, k_Sk [m/mm], fits); when even 1:10 is too small, (1:10, 0.01, False).
+    Returns (M, k_Sk [m/mm], fits); when even 1:10 is too small, the first reduction of ГОСТ 2.302
+    beyond the table at which it fits (1:15 … 1:100) and fits = False.
 
     >>> choose_scale(0.180)  # 180 mm: 2:1 would need 360 mm
     ('1:1', 0.001, True)
@@ -66,13 +78,18 @@ def choose_scale(extent_m: float, field_mm: float = DRAWING_FIELD_MM) -> tuple[s
     ('2:1', 0.0005, True)
     >>> choose_scale(0.020)
     ('10:1', 0.0001, True)
+    >>> choose_scale(3.0)  # 3 m: 300 mm at 1:10, 200 mm at 1:15
+    ('1:15', 0.015, False)
     """
     best = None
     for label, k in STANDARD_SCALES:
         if extent_m / k <= field_mm * (1.0 + 1e-12):
             best = (label, k, True)
     if best is None:
-        label, k = STANDARD_SCALES[0]
+        for label, k in BEYOND_TABLE:
+            if extent_m / k <= field_mm * (1.0 + 1e-12):
+                return label, k, False
+        label, k = BEYOND_TABLE[-1]
         return label, k, False
     return best
 
@@ -100,6 +117,24 @@ def profile_bbox(profile: Profile) -> tuple[float, float, float, float]:
         pts.append(profile.outer)
     a = np.concatenate(pts)
     return float(a[:, 0].min()), float(a[:, 0].max()), float(a[:, 1].min()), float(a[:, 1].max())
+
+
+def construction_bbox(profile: Profile, l_oc_m: float | None) -> tuple[float, float, float, float]:
+    """(x_min, x_max, y_min, y_max) [m] of the profile construction: the cam with its roller
+    (:func:`profile_bbox`) and, for a rocker, the circle of radius l_OC about O that carries the
+    pivot positions C_i of the inversion.
+
+    >>> from tmm_cli.variants import get_variant
+    >>> from tmm_cli.cam.design import design_cam
+    >>> r = design_cam(get_variant(3))  # a rocker: l_OC = 98.8 mm, the cam 144 mm wide
+    >>> bb = construction_bbox(r.profile, r.sizing.l_oc_m)
+    >>> round((bb[1] - bb[0]) * 1000, 1), round(2 * r.sizing.l_oc_m * 1000, 1)
+    (197.6, 197.6)
+    """
+    x0, x1, y0, y1 = profile_bbox(profile)
+    if l_oc_m is not None:
+        x0, x1, y0, y1 = min(x0, -l_oc_m), max(x1, l_oc_m), min(y0, -l_oc_m), max(y1, l_oc_m)
+    return x0, x1, y0, y1
 
 
 @record
@@ -135,9 +170,10 @@ class ProfileDrawing:
     k_s_prime: float  # k_S′ of the sizing construction [m/mm], taken = k_S
     field_mm: float
     bbox_m: tuple[float, float, float, float]  # x_min, x_max, y_min, y_max in the cam frame
-    fits: bool  # False only if the cam exceeds the field even at 1:10
+    fits: bool  # False only if the construction exceeds the field even at 1:10 (a ГОСТ 2.302 reduction then)
     sizes: tuple[DrawnSize, ...]
     positions: tuple[DrawnPosition, ...]
+    construction_bbox_m: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)  # + the pivot circle (rocker)
 
     @property
     def width_m(self) -> float:
@@ -149,8 +185,14 @@ class ProfileDrawing:
 
     @property
     def extent_m(self) -> float:
-        """The larger side of the bounding box [m] (the square field must hold it)."""
+        """The larger side of the cam's bounding box [m]."""
         return max(self.width_m, self.height_m)
+
+    @property
+    def construction_extent_m(self) -> float:
+        """The larger side of the construction's box [m] (the square field holds it at k_Sk)."""
+        x0, x1, y0, y1 = self.construction_bbox_m
+        return max(x1 - x0, y1 - y0)
 
     @property
     def extent_mm(self) -> tuple[float, float]:
@@ -178,7 +220,8 @@ def profile_drawing(motion: Motion, sizing: Sizing, profile: Profile, field_mm: 
     k_s = sc.k_s_b if rocker else sc.k_s  # m/mm: (1.18) for the roller centre, else (1.11)
     k_sp = k_s  # k_S′ = k_S (§1.3.1 builds the sizing in the diagram's scale)
     bbox = profile_bbox(profile)
-    extent = max(bbox[1] - bbox[0], bbox[3] - bbox[2])
+    cbox = construction_bbox(profile, sizing.l_oc_m if rocker else None)
+    extent = max(cbox[1] - cbox[0], cbox[3] - cbox[2])
     label, k_sk, fits = choose_scale(extent, field_mm)
 
     def size(name: str, formula: str, length: float, k: float) -> DrawnSize:
@@ -211,4 +254,5 @@ def profile_drawing(motion: Motion, sizing: Sizing, profile: Profile, field_mm: 
         fits=fits,
         sizes=tuple(sizes),
         positions=tuple(positions),
+        construction_bbox_m=cbox,
     )

@@ -109,3 +109,36 @@ def involute_xy(r_base: float, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def roll_angle_at_radius(r_base: float, r: float) -> float:
     """Roll angle t [rad] at which the involute reaches radius r: t = √(r² − r_b²)/r_b."""
     return math.sqrt(max(r * r - r_base * r_base, 0.0)) / r_base
+
+
+def flank_construction(z: int, m_mm: float, ra_mm: float, x: float = 0.0, alpha_deg: float = ALPHA_DEG,
+                       steps: int = 4) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The involute construction of one flank (§2.1.1, Fig. 2.1): the base circle divided from
+    the flank's start, the lines rolled off it (each tangent at its base point, as long as the arc
+    rolled, r_b·t), and their ends — the points of the involute.
+
+    The tooth is the one centred on the +x axis (as ``figures.gears.tooth_outline`` draws it), the
+    flank its upper one: it leaves the base circle at the polar angle θ_b = ψ + inv α with
+    ψ = (π/2 + 2x·tg α)/z (half the tooth's angular thickness on the pitch circle) and unwinds
+    clockwise. Roll angles t_k = k·t_a/steps, k = 0 … steps, t_a the roll angle at the tip r_a.
+
+    Returns (t [rad], base points T_k (steps+1, 2), involute points P_k (steps+1, 2)) [mm].
+
+    >>> t, T, P = flank_construction(20, 10.0, 110.0)
+    >>> rb = 100.0 * math.cos(math.radians(20.0))
+    >>> bool(np.allclose(np.hypot(*(P - T).T), rb * t))  # each line is as long as the arc rolled
+    True
+    >>> round(float(np.hypot(*P[-1])), 9)  # the last point is on the tip circle
+    110.0
+    """
+    alpha = math.radians(alpha_deg)
+    r = m_mm * z / 2.0
+    rb = r * math.cos(alpha)
+    psi = (math.pi / 2 + 2 * x * math.tan(alpha)) / z
+    theta_b = psi + inv(alpha)
+    t = np.linspace(0.0, roll_angle_at_radius(rb, ra_mm), steps + 1)
+    ix, iy = involute_xy(rb, t)  # counter-clockwise from (r_b, 0); the flank is its mirror image
+    c, s = math.cos(theta_b), math.sin(theta_b)
+    P = np.column_stack([c * ix + s * iy, s * ix - c * iy])
+    T = rb * np.column_stack([np.cos(theta_b - t), np.sin(theta_b - t)])
+    return t, T, P

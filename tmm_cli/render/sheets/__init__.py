@@ -29,6 +29,7 @@ def sheet4(gears, variant: int, lang: str, title):
 def save_sheet(sheet, folder: Path, name: str, pdf: bool = True) -> list[str]:
     """Write ``name.dxf`` (and ``name.pdf`` from the same document) into `folder`; the file names."""
     folder = Path(folder)
+    sheet.finish()  # labels placed, the A1 paper space, unused styles gone (once; the sheets call it)
     sheet.doc.saveas(folder / f"{name}.dxf", encoding="utf-8")
     out = [f"{name}.dxf"]
     if pdf:

@@ -2,30 +2,36 @@
 
 Four fields with the book's headings plus a table of results, drawn from a
 :class:`~tmm_cli.cam.design.CamResult`: the motion laws at the scales (1.9)–(1.13), the centre
-zone (Fig. 1.3/1.4), the profile by inversion (Fig. 1.6/1.7) at a standard scale, and ν(φ).
+zone (Fig. 1.3/1.4) with the wedges of every position, the profile by inversion (Fig. 1.6/1.7) at
+the core's drawing scale (``CamResult.drawing``: the one scale the note states too), and ν(φ).
 Nothing is computed a second time: every curve is an array of the result placed on the sheet
-(scaling, shifting, picking the table positions out of the dense arrays).
+(scaling, shifting, picking the table positions out of the dense arrays); every number printed is
+a field of the result.
+
+The fields are laid out from the measured extent of their drawings (:func:`layout`): the motion
+laws and ν(φ) in the left column, the profile at the top right sized to its construction, the table
+under it, the zone in the column between at the largest ГОСТ 2.302 scale that fits.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from ...i18n.lang import pick
 from ...i18n.numbers import num
-from .paper import Sheet, fit_scale, gost_scale
+from .layout import fit_view, nice_scale
+from .paper import FRAME, H_LABEL, H_MIN_LABEL, TB_BOX, TB_H, Sheet, gost_label
 
-# field boxes (x0, y0, x1, y1) on the A1 sheet [mm]; the frame is 20…836 × 5…589
-BOX_MOTION = (22.0, 228.0, 300.0, 587.0)
-BOX_ZONE = (302.0, 7.0, 518.0, 587.0)
-BOX_PROFILE = (520.0, 222.0, 834.0, 587.0)
-BOX_PRESSURE = (22.0, 7.0, 300.0, 226.0)
-BOX_TABLE = (520.0, 64.0, 834.0, 220.0)
-
-H_LABEL = 3.5
-H_SMALL = 2.5
+H_NOTE = 3.5  # captions under a field
+LINE = 5.6  # caption line pitch
+LEFT_W = 320.0  # the left column (motion laws, ν(φ)): b = 240 mm plus the axes
+GAP = 2.0  # between fields
+PROFILE_RING = 14.0  # [paper mm] from the cam's outline to the first ψ arc; 7 mm between the arcs
+PROFILE_PAD = 12.0  # beyond the last ψ arc (its label)
+TABLE_MIN_H = 110.0
 
 
 def _n(x, lang, d=2):
@@ -36,18 +42,98 @@ def _g(x, lang, sig=4):
     return num(x, lang, sig=sig)
 
 
+def _m(lang, lab: str) -> str:
+    """A scale label as printed: 'М 1:2,5' (ru), 'M 1:2.5' (en)."""
+    return f"{pick(lang, 'M', 'М')} {pick(lang, lab.replace(',', '.'), lab)}"
+
+
+# ----------------------------------------------------------------------------------------------
+# layout
+
+
+@dataclass(frozen=True)
+class Layout3:
+    motion: tuple
+    pressure: tuple
+    zone: tuple
+    profile: tuple
+    table: tuple
+
+
+def _motion_height(r) -> float:
+    up_v, dn_v, up_a, dn_a = _va_extents(r)
+    sc = r.motion.scales
+    return 16.0 + 14.0 + sc.y_s_max_mm + 14.0 + up_v + dn_v + 16.0 + up_a + dn_a + 16.0 + LINE * 4 + 4.0
+
+
+def _table_height(r) -> float:
+    return 12.0 + 9.0 * (_results_rows(r)) + 3.0
+
+
+def _zone_room_fit(r, width: float, height: float):
+    """The zone's scale in a field of width × height [mm] (heading, scale and captions inside)."""
+    lo, hi = _zone_window(r)
+    room = (0.0, 0.0, width - 2.0, height - ZONE_HEAD - ZONE_CAPS)
+    return fit_view(lo, hi, room, margin=ZONE_MARGIN), lo, hi
+
+
+ZONE_HEAD = 16.0 + 8.0  # heading and its scale
+ZONE_CAPS = 2.5 + LINE * 3 + 2.0
+ZONE_MARGIN = (12.0, 10.0, 12.0, 8.0)
+
+
+def layout(r) -> Layout3:
+    """The field boxes of sheet 3, each sized to its drawing: the motion laws and ν(φ) in the left
+    column; the profile at the top right at the core's scale; the zone at the largest standard
+    scale that fits the column between; the table under the zone when it leaves room there, else
+    under the profile."""
+    X0, Y0, X1, Y1 = FRAME
+    xl = X0 + LEFT_W
+    hm = min(_motion_height(r), Y1 - Y0 - 170.0)
+    motion = (X0 + GAP, Y1 - hm, xl, Y1 - GAP)
+    pressure = (X0 + GAP, Y0 + GAP, xl, Y1 - hm - GAP)
+    lo, hi = _profile_extent(r, _profile_factor(r))
+    ht = _table_height(r)
+    wp = min(max(hi[0] - lo[0] + 8.0, 250.0), X1 - xl - 165.0)
+    hp = min(hi[1] - lo[1] + 16.0 + 8.0 + LINE * 2 + 6.0, Y1 - Y0 - TB_H - ht - 2 * GAP)
+    profile = (X1 - wp, Y1 - hp, X1 - GAP, Y1 - GAP)
+    xb0, xb1 = xl + GAP, X1 - wp - GAP
+    fit_full, zlo, zhi = _zone_room_fit(r, xb1 - xb0, Y1 - Y0 - 2 * GAP)
+    fit_part, _, _ = _zone_room_fit(r, xb1 - xb0, Y1 - Y0 - 3 * GAP - ht)
+    need = lambda fit: (zhi[1] - zlo[1]) * fit.scale + ZONE_MARGIN[1] + ZONE_MARGIN[3] + ZONE_HEAD + ZONE_CAPS + 2.0
+    if fit_part.scale >= fit_full.scale and xb1 - xb0 >= 230.0:  # the table fits under the zone
+        hz = min(need(fit_part), Y1 - Y0 - 3 * GAP - ht)
+        zone = (xb0, Y1 - GAP - hz, xb1, Y1 - GAP)
+        table = (xb0, Y0 + GAP, xb1, Y0 + GAP + ht)
+    else:
+        hz = min(need(fit_full), Y1 - Y0 - 2 * GAP)
+        zone = (xb0, Y1 - GAP - hz, xb1, Y1 - GAP)
+        table = (X1 - wp, TB_BOX[3] + GAP, X1 - GAP, min(Y1 - hp - GAP, TB_BOX[3] + GAP + ht + 40.0))
+    return Layout3(motion, pressure, zone, profile, table)
+
+
 # ----------------------------------------------------------------------------------------------
 # field 1: motion laws
 
 
-def _axis(sh: Sheet, x0, y0, length, up, down, xlabel, ylabel):
+def _va_extents(r):
+    v, m = r.variant, r.motion
+    sc = m.scales
+    keep = np.degrees(m.phi) <= v.phi_working_deg + 1e-9
+    v_arr = m.v[keep] / sc.k_v
+    a_arr = m.a[keep] / sc.k_a
+    return (max(float(v_arr.max()), 0.0), max(-float(v_arr.min()), 0.0),
+            max(float(a_arr.max()), 0.0), max(-float(a_arr.min()), 0.0))
+
+
+def _axis(sh: Sheet, box, x0, y0, length, up, down, xlabel, ylabel):
     """Abscissa from x0 with an arrow, ordinate from y0 − down to y0 + up with an arrow."""
-    sh.line((x0, y0), (x0 + length + 4, y0), "Основные")
-    sh.arrow((x0 + length + 6, y0), (1, 0), "Основные", 3.5, 1.2)
+    sh.line((x0, y0), (x0 + length + 6, y0), "Основные")
+    sh.arrow((x0 + length + 10, y0), (1, 0), "Основные", 4.0, 1.3)
     sh.line((x0, y0 - down), (x0, y0 + up + 6), "Основные")
-    sh.arrow((x0, y0 + up + 8), (0, 1), "Основные", 3.5, 1.2)
-    sh.text(x0 + length + 3, y0 - 1.5, xlabel, H_LABEL, valign="top")
-    sh.text(x0 - 1.5, y0 + up + 8, ylabel, H_LABEL, align="right", valign="top")
+    sh.arrow((x0, y0 + up + 10), (0, 1), "Основные", 4.0, 1.3)
+    sh.label(xlabel, (x0 + length + 10, y0), H_LABEL, within=box, dirs=("se", "ne", "s"), dists=(1.0, 2.5), priority=8)
+    sh.label(ylabel, (x0, y0 + up + 10), H_LABEL, within=box, dirs=("w", "nw", "e", "ne"), dists=(1.5, 3.0), priority=8)
 
 
 def _curve(sh: Sheet, x, y, jump_break: bool = False):
@@ -75,12 +161,26 @@ def _curve(sh: Sheet, x, y, jump_break: bool = False):
     sh.poly(np.column_stack([x, y]), "Основные")
 
 
-def _motion_field(sh: Sheet, r, lang: str) -> None:
+def _numbers_below(sh, box, rows, xs, y, h=H_MIN_LABEL):
+    """Position numbers under an axis at the table abscissae (every other one when they crowd)."""
+    w = max(sh.text_width(str(row.index), h) for row in rows) + 1.5
+    step = min(np.diff(xs)) if len(xs) > 1 else 99.0
+    every = 1 if step >= w else (2 if 2 * step >= w else 3)
+    for k, (row, x) in enumerate(zip(rows, xs)):
+        if k % every and k != len(rows) - 1:
+            continue
+        sh.label(str(row.index), (x, y), h, within=box, dirs=("s", "sw", "se"), dists=(1.2, 2.5), leader=False,
+                 priority=6)
+
+
+def _motion_field(sh: Sheet, r, lang: str, box) -> None:
     v, m = r.variant, r.motion
     sc = m.scales
-    f = sh.add_field("motion", BOX_MOTION, pick(lang, "Follower motion laws", "Законы движения толкателя"))
+    f = sh.add_field("motion", box, pick(lang, "Follower motion laws", "Законы движения толкателя"))
     x0b, y0b, x1b, y1b = f.inner
-    xo = x0b + 26.0  # ordinate axes (the poles P_V, P_a at H left of them when H fits)
+    hv, ha = sc.h_v_mm, sc.h_a_mm
+    pole_room = max(hv, ha) + 10.0
+    xo = x0b + max(26.0, min(pole_room, x1b - x0b - sc.b_mm - 26.0))
     phw = v.phi_working_deg
     keep = np.degrees(m.phi) <= phw + 1e-9
     xs = xo + np.degrees(m.phi[keep]) / sc.k_phi_deg_mm
@@ -93,36 +193,29 @@ def _motion_field(sh: Sheet, r, lang: str) -> None:
     rv = [row.v / sc.k_v for row in rows]
     ra = [row.a / sc.k_a for row in rows]
     rs = [row.s / sc.k_s for row in rows]
-    up_v, dn_v = max(float(v_arr.max()), 0.0), max(-float(v_arr.min()), 0.0)
-    up_a, dn_a = max(float(a_arr.max()), 0.0), max(-float(a_arr.min()), 0.0)
-    # vertical layout: S on top, then V, then a; gaps for labels
-    gap = 13.0
-    total = sc.y_s_max_mm + up_v + dn_v + up_a + dn_a + 3 * gap + 8.0
-    room = y1b - y0b - 26.0
-    squeeze = min(1.0, room / total)  # never at this layout (80 + 2·60 + 2·60 + gaps fit)
-    ys0 = y1b - gap - sc.y_s_max_mm * squeeze
-    yv0 = ys0 - gap - (up_v + 0.0) * squeeze - 6.0
-    ya0 = yv0 - dn_v * squeeze - gap - up_a * squeeze - 6.0
+    up_v, dn_v, up_a, dn_a = _va_extents(r)
+    ys0 = y1b - 14.0 - sc.y_s_max_mm
+    yv0 = ys0 - 14.0 - up_v - 10.0
+    ya0 = yv0 - dn_v - 16.0 - up_a - 10.0
     b = sc.b_mm
     names = (("S", "V", "a") if not rocker else ("γ", "ω", "ε"))
     for (y0, arr, pts, up, dn, nm, jb) in ((ys0, s_arr, rs, sc.y_s_max_mm, 0.0, names[0], False),
                                             (yv0, v_arr, rv, up_v, dn_v, names[1], False),
                                             (ya0, a_arr, ra, up_a, dn_a, names[2], True)):
-        _axis(sh, xo, y0, b, up * squeeze, dn * squeeze, "φ, t", nm)
-        _curve(sh, xs, y0 + arr * squeeze, jump_break=jb)
+        _axis(sh, f.inner, xo, y0, b, up, dn, "φ, t", nm)
+        _curve(sh, xs, y0 + arr, jump_break=jb)
         for x, yy in zip(xr, pts):
             if abs(yy) > 0.3:
-                sh.line((x, y0), (x, y0 + yy * squeeze), "Тонкие")
-    # position numbers under the S axis and the t axis under the last one
-    for row, x in zip(rows, xr):
-        sh.text(x, ys0 - 1.2, str(row.index), H_SMALL, align="center", valign="top")
+                sh.line((x, y0), (x, y0 + yy), "Тонкие")
+    _numbers_below(sh, f.inner, rows, xr, ys0)
     # poles of graphical differentiation: P_V, P_a at H_V, H_a left of the origin
-    for y0, H, nm in ((yv0, sc.h_v_mm, "V"), (ya0, sc.h_a_mm, "a")):
+    for y0, H, nm in ((yv0, hv, "V"), (ya0, ha, "a")):
         if H > xo - x0b - 3.0:  # the pole would leave the field: H is printed below instead
             continue
         px = xo - H
         sh.dot((px, y0), 0.8)
-        sh.text(px, y0 + 1.5, f"P_{{{nm if not rocker else ('ω' if nm == 'V' else 'ε')}}}", H_SMALL, align="center")
+        sh.label(f"P_{{{nm if not rocker else ('ω' if nm == 'V' else 'ε')}}}", (px, y0), H_LABEL, within=f.inner,
+                 dirs=("n", "s", "nw", "sw", "ne"), priority=7)
     # scales
     mm = pick(lang, "mm", "мм")
     if rocker:
@@ -136,18 +229,15 @@ def _motion_field(sh: Sheet, r, lang: str) -> None:
     lines = [
         f"k_{{φ}} = {_g(sc.k_phi_deg_mm, lang)} °/{mm};  k_{{t}} = {_g(sc.k_t_s_mm, lang)} "
         + pick(lang, "s/mm", "с/мм") + f";  b = {num(sc.b_mm, lang, sig=6)} {mm}",
-        f"{kn[0]} = {_g(sc.k_s, lang)} {s_unit};  {kn[1]} = {_g(sc.k_v, lang)} {v_unit};  {kn[2]} = {_g(sc.k_a, lang)} {a_unit}",
-        f"H_{{V}} = {num(sc.h_v_mm, lang, sig=6)} {mm};  H_{{a}} = {num(sc.h_a_mm, lang, sig=6)} {mm};  "
-        + pick(lang, f"law {v.law}", f"закон {v.law}") + f";  {pick(lang, 'n_{c}', 'n_{к}')} = {num(abs(v.n_cam_rpm), lang, sig=6)} "
+        f"{kn[0]} = {_g(sc.k_s, lang)} {s_unit};  {kn[1]} = {_g(sc.k_v, lang)} {v_unit}",
+        f"{kn[2]} = {_g(sc.k_a, lang)} {a_unit};  H_{{V}} = {num(hv, lang, sig=6)} {mm};  H_{{a}} = {num(ha, lang, sig=6)} {mm}",
+        pick(lang, f"law {v.law}", f"закон {v.law}") + f";  {pick(lang, 'n_{c}', 'n_{к}')} = {num(abs(v.n_cam_rpm), lang, sig=6)} "
         + pick(lang, "rpm", "об/мин"),
     ]
     if rocker:
-        lines.append(f"k_{{SB}} = k_{{γ}}·l_{{BC}} = {_g(sc.k_s_b, lang)} {pick(lang, 'm/mm', 'м/мм')}"
-                     f";  k_{{γ,°}} = {_g(sc.k_gamma_deg_mm, lang)} °/{mm}")
-    y = y0b + 2.0 + 4.6 * (len(lines) - 1)
-    for t in lines:
-        sh.text(x0b + 2.0, y, t, H_SMALL, width=x1b - x0b - 4.0)
-        y -= 4.6
+        lines[-1] += (f";  k_{{SB}} = k_{{γ}}·l_{{BC}} = {_g(sc.k_s_b, lang)} {pick(lang, 'm/mm', 'м/мм')}"
+                      f";  k_{{γ,°}} = {_g(sc.k_gamma_deg_mm, lang)} °/{mm}")
+    sh.caption(box[0], box[2], box[1] + 2.5, lines, H_NOTE, LINE)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -158,47 +248,72 @@ def _table_index(phis: np.ndarray, phi_deg: float) -> int:
     return int(np.argmin(np.abs(np.degrees(phis) - phi_deg)))
 
 
-def _zone_field(sh: Sheet, r, lang: str):
-    v, z = r.variant, r.sizing
+def _profile_index(p, phi_deg: float) -> int:
+    n = len(p.phi) - 1
+    return int(round(math.radians(phi_deg) / (2 * math.pi) * n)) % n
+
+
+def _zone_window(r):
+    """Lower-left and upper-right corners [real mm, zone frame] of the construction: the roller
+    centres B_i, the points D_i, B0, the chosen centre O (and some of the zone below it), the
+    pivot C, the book's vertex when it is near."""
+    z = r.sizing
     zn = z.zone
-    k = 1000.0  # m -> real mm
+    k = 1000.0
+    B, D = zn.b * k, zn.d * k
+    O = np.array(z.centre) * k
+    BV = np.array(z.book_centre) * k
+    pts = [B, D, O[None], np.zeros((1, 2))]
+    if z.pivot is not None:
+        pts.append(np.array(z.pivot)[None] * k)
+    allp = np.concatenate(pts)
+    lo, hi = allp.min(axis=0), allp.max(axis=0)
+    size = float((hi - lo).max())
+    if np.hypot(*(BV - O)) < 0.6 * size:
+        lo, hi = np.minimum(lo, BV), np.maximum(hi, BV)
+    lo = np.minimum(lo, O - np.array([0.0, 0.22 * size]))  # the zone below O
+    pad = 0.05 * size
+    return lo - pad, hi + pad
+
+
+def _zone_field(sh: Sheet, r, lang: str, box):
+    v, z, p = r.variant, r.sizing, r.profile
+    zn = z.zone
+    k = 1000.0
+    mm = pick(lang, "mm", "мм")
     B, D = zn.b * k, zn.d * k
     O = np.array(z.centre) * k
     BV = np.array(z.book_centre) * k
     piv = None if z.pivot is None else np.array(z.pivot) * k
-    pts = [B, D, O[None], BV[None], np.zeros((1, 2))] + ([piv[None]] if piv is not None else [])
-    allp = np.concatenate(pts)
-    lo, hi = allp.min(axis=0), allp.max(axis=0)
-    lo = np.minimum(lo, O - np.array([0.0, 0.25 * (hi - lo).max()]))  # the zone below O
-    x0b, y0b, x1b, y1b = BOX_ZONE
-    room = (x1b - x0b - 12.0, y1b - y0b - 40.0 - 30.0)
-    name, fac = fit_scale(tuple((hi - lo) * 1.04), room)
-    mid = (lo + hi) / 2
-    cx = (x0b + x1b) / 2
-    cy = (y0b + 30.0 + y1b - 40.0) / 2
-    origin = (cx - fac * mid[0], cy - fac * mid[1])
-    f = sh.add_field("zone", BOX_ZONE, pick(lang, "Minimum cam radius", "Определение минимального радиуса кулачка"),
-                     origin=origin, scale=fac, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {pick(lang, name.replace(',', '.'), name)}")
-    clip = (x0b + 1, y0b + 28.0, x1b - 1, f.inner[3])
-    # the construction's own window: the zone and the lines end a little beyond it
-    pad = 0.06 * float((hi - lo).max())
-    w0, w1 = f.p(*(lo - pad)), f.p(*(hi + pad))
-    clip = (max(clip[0], w0[0]), max(clip[1], w0[1]), min(clip[2], w1[0]), min(clip[3], w1[1]))
-    f.box = clip
-    # feasible zone: outline (thin) and a light hatch of parallel lines
+    lo, hi = _zone_window(r)
+    f = sh.add_field("zone", box, pick(lang, "Minimum cam radius", "Определение минимального радиуса кулачка"))
+    x0b, y0b, x1b, y1b = box
+    room = (x0b + 1.0, y0b + ZONE_CAPS, x1b - 1.0, y1b - ZONE_HEAD)
+    fit = fit_view(lo, hi, room, margin=ZONE_MARGIN)
+    fac = fit.scale
+    sh.set_field_transform(f, fit.origin, fac, fit.label)
+    _field_scale_text(sh, f, lang, fit.label)
+    w0, w1 = f.p(*lo), f.p(*hi)
+    window = (max(room[0], w0[0]), max(room[1], w0[1]), min(room[2], w1[0]), min(room[3], w1[1]))
+    f.clip = window
+    within = room
+    # the feasible zone the wedges cut: outline (thin) and a 45° hatch
     poly = zn.polygon * k
     f.poly(poly, "Тонкие", closed=True)
-    _hatch(f, poly, spacing=4.0 / fac)
+    _hatch(f, poly, spacing=3.0 / fac)
     rise = zn.phase == 0
     ret = zn.phase == 2
     # B path and D-curves
     if z.rocker:
         f.poly(B[rise], "Тонкие")
     else:
-        f.line((0.0, 0.0), (0.0, B[:, 1].max() * 1.05), "Осевые")
+        f.line((0.0, min(0.0, lo[1])), (0.0, B[:, 1].max() * 1.05), "Осевые")
     f.poly(D[rise], "Основные")
-    f.poly(D[ret], "Основные" if z.closure == "form" else "Тонкие", linetype=None if z.closure == "form" else "DASHED")
-    # B_i D_i at the table positions, numbered
+    f.poly(D[ret], "Основные" if z.closure == "form" else "Штриховые")
+    # every table position: B_i D_i, the point D_i, the wedge at D_i (half-angle ν about −u: the
+    # rays at the allowed pressure angle), its number
+    nu = math.radians(z.nu_design_deg)
+    span = float((hi - lo).max()) * 3.0
     nums = []
     for row in r.motion.table:
         if row.phase not in ("rise", "return"):
@@ -207,94 +322,120 @@ def _zone_field(sh: Sheet, r, lang: str):
         idx = np.nonzero(mask)[0]
         i = idx[_table_index(zn.phi[idx], row.phi_deg)]
         f.line(B[i], D[i], "Тонкие")
-        sh.dot(f.p(*D[i]), 0.45)
-        nums.append((row.index, D[i], B[i]))
-    seen = []
-    for idx_, d, b in nums:
-        q = np.array(f.p(*d))
-        dirv = d - b
-        nrm = np.hypot(*dirv)
-        off = dirv / nrm * 2.5 if nrm > 1e-9 else np.array([2.5, 0.0])
-        pos = q + off
-        if all(np.hypot(*(pos - s)) > 3.0 for s in seen):
-            sh.text(pos[0], pos[1], str(idx_), H_SMALL, align="center", valign="middle")
-            seen.append(pos)
+        sh.dot(f.p(*D[i]), 0.5)
+        if zn.constrained[i]:  # the rays run to the zone's corner O and a little beyond
+            w = -zn.u[i]
+            reach = 1.12 * float(np.hypot(*(O - D[i])))
+            for sgn in (1.0, -1.0):
+                c, s = math.cos(sgn * nu), math.sin(sgn * nu)
+                d = np.array([c * w[0] - s * w[1], s * w[0] + c * w[1]])
+                f.line(D[i], D[i] + reach * d, "Тонкие")
+        nums.append((row.index, D[i], B[i], row.phase))
+    for idx_, d, b, _ in nums:
+        out = d - b
+        nrm = float(np.hypot(*out))
+        dirv = out / nrm if nrm > 1e-9 else np.array([1.0, 0.0])
+        from .paper import _dirs_towards
+
+        f.label(str(idx_), d, H_MIN_LABEL, within=within, dirs=_dirs_towards(dirv)[:5], dists=(1.0, 2.5), priority=2,
+                dot=False)
     # the book's bounding lines A and B/C
-    span = float((hi - lo).max()) * 3
     for L in zn.lines:
         p0 = np.array(L.point) * k
-        d = np.array(L.direction)
-        f.line(p0 - span * d, p0 + span * d, "Тонкие")
-        # label near where it is inside the clip box, towards the top
-        for t in np.linspace(span, -span, 300):
-            q = np.array(f.p(*(p0 + t * d)))
-            if clip[0] + 8 < q[0] < clip[2] - 8 and clip[1] + 8 < q[1] < clip[3] - 8:
-                sh.text(q[0] + 1.5, q[1], L.name, H_LABEL)
+        dd = np.array(L.direction)
+        f.line(p0 - span * dd, p0 + span * dd, "Тонкие")
+        # name near where it is inside the window, towards its upper end
+        for t in np.linspace(span, -span, 400):
+            q = np.array(f.p(*(p0 + t * dd)))
+            if window[0] + 6 < q[0] < window[2] - 6 and window[1] + 6 < q[1] < window[3] - 6:
+                sh.label(L.name, q, H_LABEL, within=within, priority=3)
                 break
     # B0, O, the book's vertex, r0, e or the pivot
-    sh.dot(f.p(0, 0), 0.7)
-    sh.text(*np.add(f.p(0, 0), (1.5, -4.0)), "B_0", H_LABEL)
-    f.line((0, 0), O, "Основные")
+    sh.dot(f.p(0, 0), 0.8)
+    f.label("B_0", (0, 0), H_LABEL, within=within, dirs=("se", "e", "sw", "ne", "w"), priority=9)
     _cross(sh, f.p(*O), 4.0)
-    sh.text(*np.add(f.p(*O), (2.0, -5.0)), "O", H_LABEL)
-    mid_r = np.array(f.p(*(O / 2)))
-    sh.text(mid_r[0] + 1.5, mid_r[1], f"r_0 = {_n(z.r0_m * k, lang, 1)}", H_SMALL)
-    bvq = np.array(f.p(*BV))
-    if np.hypot(*(BV - O)) * fac > 2.0:
-        sh.circle(bvq, 1.2, "Тонкие")
-        sh.text(bvq[0] + 2.0, bvq[1] + 1.0, "O_{" + pick(lang, "b", "кн") + "}", H_SMALL)
+    f.label("O", O, H_LABEL, within=within, dirs=("se", "sw", "ne", "nw", "e", "w"), priority=9)
+    ro = np.array(f.p(*O))
+    rb0 = np.array(f.p(0, 0))
+    dvec = ro - rb0
+    nrm = np.array([-dvec[1], dvec[0]]) / (np.hypot(*dvec) or 1.0)
+    if nrm[0] < 0:
+        nrm = -nrm
+    sh.line(rb0, ro, "Основные")
+    sh.dim_linear(rb0, ro, nrm * 10.0, f"r_{{0}} = {_n(z.r0_m * k, lang, 2)}", H_LABEL, within=within, priority=8)
+    if np.hypot(*(BV - O)) * fac > 2.0 and window[0] < f.p(*BV)[0] < window[2] and window[1] < f.p(*BV)[1] < window[3]:
+        sh.circle(f.p(*BV), 1.2, "Тонкие")
+        f.label("O_{" + pick(lang, "b", "кн") + "}", BV, H_MIN_LABEL, within=within, priority=4)
     if piv is not None:
         _pivot(sh, f.p(*piv))
-        sh.text(*np.add(f.p(*piv), (2.0, 2.0)), "C", H_LABEL)
+        f.label("C", piv, H_LABEL, within=within, dirs=("ne", "nw", "e", "w", "n"), priority=9)
         f.line(piv, (0.0, 0.0), "Основные")
-        f.line(O, piv, "Тонкие", "DASHED")
-        m2 = np.array(f.p(*((O + piv) / 2)))
-        sh.text(m2[0] + 1.5, m2[1] - 3.0, f"l_{{OC}} = {_n(z.l_oc_m * k, lang, 1)}", H_SMALL)
-    else:
-        f.line(O, (0.0, O[1]), "Тонкие")
-        m2 = np.array(f.p(O[0] / 2, O[1]))
-        sh.text(m2[0], m2[1] - 3.5, f"e = {_n(z.e_m * k, lang, 1)}", H_SMALL, align="center")
-    # ν_i constructed at one position: the rise position with the largest B_iD_i
-    cand = [(np.hypot(*(d - b)), i, d, b) for i, d, b in nums if any(row.index == i and row.phase == "rise" for row in r.motion.table)]
-    if cand:
-        _, i, d, b = max(cand, key=lambda t: t[0])
-        u = zn.u[_nearest(B, b)]
-        lo_len = 0.35 * np.hypot(*(O - d))
-        f.line(d, d - lo_len * u, "Тонкие")  # −u: the follower direction through D_i
-        f.line(d, O, "Тонкие", "DASHED")
+        sh.dim_linear(ro, f.p(*piv), _unit_normal(f.p(*piv), ro, away=np.array(f.p(0, 0))) * 10.0,
+                      f"l_{{OC}} = {_n(z.l_oc_m * k, lang, 2)}", H_LABEL, within=within, priority=8)
+    elif abs(z.e_m) * k * fac > 0.5:
+        # e: from the follower's axis (x = 0) to O, horizontal, below O
+        a = np.array(f.p(0.0, O[1]))
+        sh.dim_linear(a, ro, (0.0, -12.0), f"e = {_n(z.e_m * k, lang, 2)}", H_LABEL, within=within, priority=8)
+    # ν at the extreme positions of the rise and of the return: the ray D_i O at the pressure
+    # angle the profile carries there (the core's ν), against the follower direction −u
+    for phase in ("rise", "return"):
+        cand = [row for row in r.motion.table if row.phase == phase]
+        if not cand:
+            continue
+        row = max(cand, key=lambda rw: p.nu_deg[_profile_index(p, rw.phi_deg)])
+        nu_i = float(p.nu_deg[_profile_index(p, row.phi_deg)])
+        mask = rise if phase == "rise" else ret
+        idx = np.nonzero(mask)[0]
+        i = idx[_table_index(zn.phi[idx], row.phi_deg)]
+        d, u = D[i], zn.u[i]
+        lo_len = 0.3 * float(np.hypot(*(O - d)))
+        f.line(d, O, "Штриховые")
+        f.line(d, d - lo_len * u, "Основные")
         a1 = math.degrees(math.atan2(-u[1], -u[0]))
         a2 = math.degrees(math.atan2(*(O - d)[::-1]))
-        rr = 0.25 * lo_len * fac
         lo_a, hi_a = sorted((a1, a2))
         if hi_a - lo_a > 180:
             lo_a, hi_a = hi_a, lo_a + 360
-        sh.arc(f.p(*d), rr, lo_a, hi_a, "Тонкие")
-        nu_i = abs(((a2 - a1 + 180) % 360) - 180)
-        q = np.array(f.p(*(d - lo_len * u)))  # at the free end of the −u line
-        sh.text(q[0] + 1.0, q[1] - 1.0, f"ν_{{{i}}} = {_n(nu_i, lang, 1)}°", H_SMALL, valign="top")
+        rr = max(8.0, 0.6 * lo_len * fac)
+        sh.dim_arc(f.p(*d), rr, lo_a, hi_a, f"ν_{{{row.index}}} = {_n(nu_i, lang, 1)}°", H_MIN_LABEL, within=within,
+                   priority=7)
     # caption under the drawing
     txt = [
-        f"ν_{{max}} = {num(v.nu_max_deg, lang, sig=6)}°;  r_0 = {_n(z.r0_m * k, lang, 2)} {pick(lang, 'mm', 'мм')}",
-        (f"l_{{OC}} = {_n(z.l_oc_m * k, lang, 2)} {pick(lang, 'mm', 'мм')};  l_{{BC}} = {num(v.l_bc_m * k, lang, sig=6)} {pick(lang, 'mm', 'мм')}"
-         if z.rocker else f"e = {_n(z.e_m * k, lang, 2)} {pick(lang, 'mm', 'мм')}"),
-        pick(lang, f"O_b — book's vertex: r_0 = {_n(z.book_r0_m * k, lang, 2)} mm",
-             f"O_{{кн}} — вершина по пособию: r_0 = {_n(z.book_r0_m * k, lang, 2)} мм"),
+        f"ν_{{max}} = {num(v.nu_max_deg, lang, sig=6)}°;  r_{{0}} = {_n(z.r0_m * k, lang, 2)} {mm};  "
+        + (f"l_{{OC}} = {_n(z.l_oc_m * k, lang, 2)} {mm};  l_{{BC}} = {num(v.l_bc_m * k, lang, sig=6)} {mm}"
+           if z.rocker else f"e = {_n(z.e_m * k, lang, 2)} {mm}"),
+        pick(lang, "Hatched: the centres with ν ≤ ν_max at every position (the wedges at D_i)",
+             "Заштрихована область центров с ν ≤ ν_max во всех положениях (углы при D_i)"),
+        pick(lang, f"O_b — the book's vertex: r_0 = {_n(z.book_r0_m * k, lang, 2)} mm",
+             f"O_{{кн}} — вершина по пособию: r_{{0}} = {_n(z.book_r0_m * k, lang, 2)} мм"),
     ]
-    y = y0b + 3.0 + 5.0 * (len(txt) - 1)
-    for t in txt:
-        sh.text(x0b + 3.0, y, t, H_SMALL, width=x1b - x0b - 6.0)
-        y -= 5.0
+    if not fit.fits:
+        txt[-1] += pick(lang, " (the construction is cut at the field's edge)", " (построение обрезано по полю)")
+    sh.caption(box[0], box[2], box[1] + 2.5, txt, H_NOTE, LINE)
     return f
 
 
-def _nearest(arr, p) -> int:
-    return int(np.argmin(np.hypot(*(arr - p).T)))
+def _unit_normal(a, b, away):
+    """The unit normal of the segment a–b pointing away from the point `away`."""
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    d = b - a
+    n = np.array([-d[1], d[0]]) / (np.hypot(*d) or 1.0)
+    if (np.asarray(away, float) - (a + b) / 2) @ n > 0:
+        n = -n
+    return n
+
+
+def _field_scale_text(sh, f, lang, lab):
+    """The field's scale under its heading (ГОСТ 2.316: «М 1:2»)."""
+    x0, y0, x1, y1 = f.inner
+    sh.text((x0 + x1) / 2, y1 - 1.0, _m(lang, lab), H_LABEL, align="center", valign="top")
+    f.inner = (x0, y0, x1, y1 - 1.0 - H_LABEL - 1.5 - 2.0)
 
 
 def _hatch(f, poly, spacing):
     """45° thin hatch lines across a convex polygon (drawing units), clipped by the field."""
     # only the part inside the field's window (drawing units): a few dozen lines, not thousands
-    x0, y0, x1, y1 = f.box
+    x0, y0, x1, y1 = f.cut
     lo = (np.array([x0, y0]) - f.origin) / f.scale
     hi = (np.array([x1, y1]) - f.origin) / f.scale
     for a, c in (((-1.0, 0.0), -lo[0]), ((1.0, 0.0), hi[0]), ((0.0, -1.0), -lo[1]), ((0.0, 1.0), hi[1])):
@@ -338,7 +479,7 @@ def _cross(sh: Sheet, c, size):
 
 
 def _pivot(sh: Sheet, c, r=1.5):
-    """A fixed pivot: a small circle with a hatched ground under it."""
+    """A fixed pivot: a small circle with a hatched ground under it (ГОСТ 2.770)."""
     sh.circle(c, r, "Основные")
     x, y = c
     sh.line((x, y - r), (x - 2.5, y - 5.0), "Основные")
@@ -353,8 +494,9 @@ def _pivot(sh: Sheet, c, r=1.5):
 # field 3: the profile by inversion
 
 
-PROFILE_SCALES = tuple((lab, gost_scale(lab)) for lab in ("1:10", "1:5", "1:4", "1:2,5", "1:2", "1:1", "2:1",
-                                                              "2,5:1", "4:1", "5:1", "10:1"))
+def _profile_factor(r) -> float:
+    """Paper mm per real mm of the profile: the core's drawing scale (CamResult.drawing)."""
+    return 0.001 / r.drawing.k_sk
 
 
 def _psi_spans(r) -> list[tuple[int, float, float]]:
@@ -376,70 +518,112 @@ def _psi_spans(r) -> list[tuple[int, float, float]]:
     return out
 
 
-PSI_GAP = 6.0  # [paper mm] from the cam's outline to the first ψ arc; 5 mm between the arcs
+def _outline_radius(r, fac) -> float:
+    p = r.profile
+    return (float(np.hypot(*p.pitch.T).max()) + p.roller_m) * 1000.0 * fac
+
+
+def _psi_arcs(r, fac) -> list[tuple[int, float, float, float]]:
+    """(j, lo, hi, radius [paper mm]) of the ψ arcs: each just outside the cam (and the rocker's
+    pivot circle) over its own angles, so that a small side of the cam keeps its arc close."""
+    p = r.profile
+    P = p.pitch
+    ang = np.degrees(np.arctan2(P[:, 1], P[:, 0]))
+    rad = (np.hypot(*P.T) + p.roller_m) * 1000.0 * fac
+    out = []
+    for j, lo, hi in _psi_spans(r):
+        sel = ((ang - (lo - 8.0)) % 360.0) <= (hi - lo + 16.0)
+        big = float(rad[sel].max()) if sel.any() else float(rad.max())
+        if p.pivot_path is not None:
+            big = max(big, r.sizing.l_oc_m * 1000.0 * fac + 6.0)
+        out.append((j, lo, hi, big + PROFILE_RING))
+    return out
+
+
+def _local_radius(r, fac, ray, half_deg=6.0) -> float:
+    """[paper mm] The cam's outline radius (pitch curve + roller) around the direction `ray`."""
+    p = r.profile
+    P = p.pitch
+    a0 = math.degrees(math.atan2(ray[1], ray[0]))
+    ang = np.degrees(np.arctan2(P[:, 1], P[:, 0]))
+    sel = np.abs(((ang - a0) + 180.0) % 360.0 - 180.0) <= half_deg
+    rad = (np.hypot(*P.T) + p.roller_m) * 1000.0 * fac
+    return float(rad[sel].max() if sel.any() else rad.max())
+
+
+def _scale_rays(r) -> list[np.ndarray]:
+    """Unit vectors from O to the tangent points C_i of the follower's axis at the table positions
+    (translating follower; the roller centre when the offset is nil): the angle scale."""
+    p = r.profile
+    if p.pivot_path is not None:
+        return []
+    out = []
+    for row in r.motion.table:
+        i = _profile_index(p, row.phi_deg)
+        b, u = p.pitch[i], p.axis_dir[i]
+        foot = b - (b @ u) * u
+        at = foot if np.hypot(*foot) > 1e-3 * np.hypot(*b) else b
+        out.append(at / (np.hypot(*at) or 1.0))
+    return out
 
 
 def _profile_extent(r, fac: float) -> tuple[np.ndarray, np.ndarray]:
-    """Lower-left and upper-right corners [paper mm, O at 0] of everything the field draws."""
+    """Lower-left and upper-right corners [paper mm, O at 0] of everything the field draws: the
+    construction box of the core, the ψ arcs with their labels, the angle scale."""
     p = r.profile
-    k = 1000.0
-    x0, x1, y0, y1 = (c * k * fac for c in r.drawing.bbox_m)
-    pts = [np.array([[x0, y0], [x1, y1]])]
-    big = (float(np.hypot(*p.pitch.T).max()) + p.roller_m) * k * fac
-    for j, lo, hi in _psi_spans(r):
-        rr = big + PSI_GAP + 5.0 * j
+    x0, x1, y0, y1 = (c * 1000.0 * fac for c in r.drawing.construction_bbox_m)
+    pts = [np.array([[x0 - 8.0, y0 - 8.0], [x1 + 8.0, y1 + 8.0]])]
+    big = _outline_radius(r, fac)
+    for j, lo, hi, rr in _psi_arcs(r, fac):
         t = np.radians(np.linspace(lo, hi, 30))
-        pts.append(np.column_stack([(rr + 5.0) * np.cos(t), (rr + 5.0) * np.sin(t)]))
-        am = math.radians((lo + hi) / 2)
-        c = (rr + 4.0) * np.array([math.cos(am), math.sin(am)])
-        pts.append(np.array([c - (13.0, 3.0), c + (13.0, 3.0)]))  # its label
+        pts.append(np.column_stack([(rr + PROFILE_PAD) * np.cos(t), (rr + PROFILE_PAD) * np.sin(t)]))
+    for ray in _scale_rays(r):  # the angle scale's ticks and their numbers
+        q = ray * (_local_radius(r, fac, ray) + 6.0)
+        pts.append(np.array([q - 8.0, q + 8.0]))
     if p.pivot_path is not None:
-        pp = p.pivot_path * k * fac
-        pts.append(np.vstack([pp - 7.0, pp + 7.0]))
+        pp = p.pivot_path * 1000.0 * fac
+        pts.append(np.vstack([pp - 10.0, pp + 10.0]))
     a = np.vstack(pts)
     return a.min(axis=0), a.max(axis=0)
 
 
-PROFILE_ROOM = (BOX_PROFILE[0] + 4.0, BOX_PROFILE[1] + 14.0, BOX_PROFILE[2] - 4.0, BOX_PROFILE[3] - 20.0)
-
-
-def profile_layout(r) -> tuple[str, float, tuple[float, float]]:
-    """The profile field's scale and the sheet position of O: the core's Table 1.1 scale, or a
-    smaller ГОСТ 2.302 one when the cam with its rollers, ψ arcs and (rocker) the pivot circle would
-    not fit the field; the drawing is centred in the field."""
-    f0 = 0.001 / r.drawing.k_sk
-    X0, Y0, X1, Y1 = PROFILE_ROOM
-    choices = sorted(((lab, f) for lab, f in PROFILE_SCALES if f <= f0 + 1e-12), key=lambda c: -c[1])
-    for lab, f in choices:
-        lo, hi = _profile_extent(r, f)
-        if hi[0] - lo[0] <= X1 - X0 and hi[1] - lo[1] <= Y1 - Y0:
-            break
+def profile_layout(r, box=None) -> tuple[str, float, tuple[float, float]]:
+    """The profile field's scale and the sheet position of O: the core's drawing scale
+    (``r.drawing``), the construction centred in the field."""
+    box = box or layout(r).profile
+    fac = _profile_factor(r)
+    lo, hi = _profile_extent(r, fac)
+    x0, y0, x1, y1 = box
+    cap = 2.5 + LINE * 2 + 2.0
+    top = y1 - 16.0
     mid = (lo + hi) / 2
-    return lab, f, ((X0 + X1) / 2 - mid[0], (Y0 + Y1) / 2 - mid[1])
+    return gost_label(fac), fac, ((x0 + x1) / 2 - mid[0], (y0 + cap + top) / 2 - mid[1])
 
 
 def profile_scale(r) -> tuple[str, float]:
-    """The profile field's ГОСТ 2.302 scale (label, paper mm per real mm)."""
+    """The profile field's ГОСТ 2.302 scale (label, paper mm per real mm): the core's."""
     lab, f, _ = profile_layout(r)
     return lab, f
 
 
-def _profile_field(sh: Sheet, r, lang: str):
+def _profile_field(sh: Sheet, r, lang: str, box):
     v, z, p, d = r.variant, r.sizing, r.profile, r.drawing
     k = 1000.0
-    name, fac, (cx, cy) = profile_layout(r)
-    x0b, y0b, x1b, y1b = BOX_PROFILE
-    f = sh.add_field("profile", BOX_PROFILE, pick(lang, "Cam profile synthesis", "Синтез профиля кулачка"),
-                     origin=(cx, cy), scale=fac, scale_label=name, scale_text=f"{pick(lang, 'M', 'М')} {pick(lang, name.replace(',', '.'), name)}")
-    f.box = (x0b + 1, y0b + 1, x1b - 1, f.inner[3])
+    name, fac, (cx, cy) = profile_layout(r, box)
+    f = sh.add_field("profile", box, pick(lang, "Cam profile synthesis", "Синтез профиля кулачка"),
+                     origin=(cx, cy), scale=fac, scale_label=name)
+    _field_scale_text(sh, f, lang, name)
+    x0b, y0b, x1b, y1b = f.inner
+    f.clip = (x0b, y0b + 2.5 + LINE * 2, x1b, y1b)
+    within = f.clip
     P = p.pitch * k
     n = len(p.phi) - 1
     r0 = z.r0_m * k
     rp = p.roller_m * k
-    # axes of the cam and the circles
     big = float(np.hypot(*P.T).max()) + rp
-    f.line((-1.1 * big, 0), (1.1 * big, 0), "Осевые")
-    f.line((0, -1.1 * big), (0, 1.1 * big), "Осевые")
+    # axes of the cam and the circles
+    f.line((-1.08 * big, 0), (1.08 * big, 0), "Осевые")
+    f.line((0, -1.08 * big), (0, 1.08 * big), "Осевые")
     f.circle((0, 0), r0, "Тонкие")
     if p.pivot_path is not None:
         f.circle((0, 0), z.l_oc_m * k, "Осевые")
@@ -450,102 +634,94 @@ def _profile_field(sh: Sheet, r, lang: str):
     f.poly(p.inner * k, "Основные")
     if p.outer is not None:
         f.poly(p.outer * k, "Основные")
-    # inverted follower positions at the table positions, rollers, numbers B_i'
-    rows = r.motion.table
-    labels = []
-    for row in rows:
-        i = int(round(math.radians(row.phi_deg) / (2 * math.pi) * n)) % n
+    o_s = np.array(f.p(0, 0))
+    big_p = big * fac
+    # the inverted follower at every table position: the roller, the follower's axis (tangent to
+    # the offset circle at C_i) or the rocker C_i B_i; the angle scale: a ray from O through C_i
+    # (the division of the working angle against the rotation) with the position's number i′
+    rays = _scale_rays(r)
+    for j_row, row in enumerate(r.motion.table):
+        i = _profile_index(p, row.phi_deg)
         b = P[i]
         f.circle(b, rp, "Тонкие")
-        if p.pivot_path is not None:
+        if p.pivot_path is not None:  # the pivot positions C_i divide the pivot circle: the scale
             c = p.pivot_path[i] * k
             f.line(c, b, "Тонкие")
-            sh.dot(f.p(*c), 0.45)
+            sh.dot(f.p(*c), 0.6)
+            ray = c / (np.hypot(*c) or 1.0)
+            end = np.array(f.p(*c))
         else:
             u = p.axis_dir[i]
             foot = b - (b @ u) * u  # the tangent point C_i on the offset circle
-            f.line(foot, b + u * 0.25 * r0, "Тонкие")
-        out = b / (np.hypot(*b) or 1.0)
-        labels.append((row.index, np.array(f.p(*b)) + out * (rp * fac + 2.5)))
-    seen = []
-    for idx, q in labels:  # a number is left out where it would touch one already written
-        w = sh.text_width(f"{idx}'", H_SMALL)
-        if all(abs(q[0] - s[0]) > (w + ws) / 2 + 0.6 or abs(q[1] - s[1]) > H_SMALL + 0.4 for s, ws in seen):
-            sh.text(q[0], q[1], f"{idx}'", H_SMALL, align="center", valign="middle")
-            seen.append((q, w))
-    # centre O, B_0', the pivot C (rocker) with the rocker in the start position
-    _cross(sh, f.p(0, 0), 5.0)
-    sh.text(*np.add(f.p(0, 0), (1.5, -5.0)), "O", H_LABEL)
+            f.line(foot, b + u * (rp + 4.0 / fac), "Тонкие")
+            ray = rays[j_row]
+            rl = _local_radius(r, fac, ray)
+            end = o_s + ray * (rl + 6.0)
+            sh.line(o_s + ray * (rl + 2.0), end, "Тонкие")
+        sh.label(f"{row.index}′", end, H_MIN_LABEL, within=within, dirs=_dirs(ray), dists=(0.8, 2.0, 3.5), priority=4)
+    # centre O, the pivot C_0 (rocker) with the rocker in the start position
+    _cross(sh, o_s, 5.0)
+    sh.label("O", o_s, H_LABEL, within=within, dirs=("se", "sw", "ne", "nw"), dists=(1.5, 3.0, 5.0), priority=9)
     if p.pivot_path is not None:
         c0 = p.pivot_path[0] * k
         _pivot(sh, f.p(*c0))
-        sh.text(*np.add(f.p(*c0), (2.5, 2.0)), "C_0", H_LABEL)
+        f.label("C_0", c0, H_LABEL, within=within, dirs=("ne", "nw", "e", "w", "n"), priority=9)
         f.line(c0, P[0], "Основные")
     # profile angles ψ as arcs outside the cam, between rays from O (the core's values)
     names = ("ψ_{у}", "ψ_{дс}", "ψ_{в}") if lang == "ru" else ("ψ_{r}", "ψ_{fd}", "ψ_{ret}")
     vals = (p.psi_rise_deg, p.psi_far_deg, p.psi_return_deg)
-    o_s = np.array(f.p(0, 0))
-    big_p = big * fac
-    rays = set()
-    for j, lo_a, hi_a in _psi_spans(r):
-        rr = big_p + PSI_GAP + 5.0 * j
+    for j, lo_a, hi_a, rr in _psi_arcs(r, fac):
         for a in (lo_a, hi_a):
-            key = round(a % 360.0, 3)
             e = np.array([math.cos(math.radians(a)), math.sin(math.radians(a))])
-            if key not in rays:
-                rays.add(key)
-            sh.line(o_s, o_s + e * (rr + 2.5), "Тонкие")
-        sh.arc(o_s, rr, lo_a, hi_a, "Размеры")
-        for end, dirn in ((lo_a, 1), (hi_a, -1)):
-            e = math.radians(end)
-            tip = o_s + (rr * math.cos(e), rr * math.sin(e))
-            tang = np.array([-math.sin(e), math.cos(e)]) * -dirn
-            sh.arrow(tip, tang, "Размеры", 3.0, 0.9)
-        am = math.radians((lo_a + hi_a) / 2)
-        q = o_s + ((rr + 4.0) * math.cos(am), (rr + 4.0) * math.sin(am))
-        sh.text(q[0], q[1], f"{names[j]} = {_n(vals[j], lang, 1)}°", H_SMALL, align="center", valign="middle")
+            sh.line(o_s + e * (rr - 8.0), o_s + e * (rr + 2.5), "Тонкие")
+        sh.dim_arc(o_s, rr, lo_a, hi_a, f"{names[j]} = {_n(vals[j], lang, 1)}°", H_MIN_LABEL, within=within, priority=6)
     # rotation of the cam
     e_abs = 0.0 if p.pivot_path is not None else abs(z.e_m) * k
     rr = (0.45 * r0 if e_abs < 0.3 * r0 else 0.5 * (e_abs + r0)) * fac
     a0, a1 = 200.0, 250.0
-    sh.arc(f.p(0, 0), rr, a0, a1, "Основные")
+    sh.arc(o_s, rr, a0, a1, "Основные")
     e = math.radians(a1 if v.ccw else a0)
-    tip = np.add(f.p(0, 0), (rr * math.cos(e), rr * math.sin(e)))
+    tip = o_s + (rr * math.cos(e), rr * math.sin(e))
     tang = np.array([-math.sin(e), math.cos(e)]) * (1 if v.ccw else -1)
     sh.arrow(tip, tang, "Основные", 3.5, 1.2)
-    qm = np.add(f.p(0, 0), ((rr + 4) * math.cos(math.radians(225)), (rr + 4) * math.sin(math.radians(225))))
-    sh.text(qm[0], qm[1], "ω_{к}" if lang == "ru" else "ω_{c}", H_LABEL, align="right", valign="top")
-    # captions
-    txt = [f"k_{{Sk}} = {_g(0.001 / fac, lang)} {pick(lang, 'm/mm', 'м/мм')};  {pick(lang, 'r_{r}', 'r_{р}')} = {_roller_text(p, lang)}"]
-    if abs(fac - 0.001 / d.k_sk) > 1e-12:
-        why = pick(lang, "the pivot circle", "окружность центров качания") if p.pivot_path is not None else \
-            pick(lang, "the profile with its constructions", "профиль с построениями")
-        txt.append(pick(lang, f"(Table 1.1 gives {d.scale.replace(',', '.')}; a smaller ГОСТ 2.302 scale here to fit {why})",
-                        f"(по табл. 1.1 — {d.scale}; здесь меньший масштаб ГОСТ 2.302, чтобы уместить {why})"))
-    sh.caption(x0b, x1b, y0b + 2.0, txt, H_SMALL, 4.6)
+    qm = o_s + (rr * math.cos(math.radians(225)), rr * math.sin(math.radians(225)))
+    sh.label("ω_{к}" if lang == "ru" else "ω_{c}", qm, H_LABEL, within=within, dirs=("sw", "w", "s", "nw", "se"),
+             priority=7)
+    # captions: k_Sk and the roller; the scale is the core's (the note states the same)
+    txt = [f"k_{{Sk}} = {_g(d.k_sk, lang)} {pick(lang, 'm/mm', 'м/мм')};  {pick(lang, 'r_{r}', 'r_{р}')} = {_roller_text(p, lang)}"]
+    if not d.fits:
+        txt.append(pick(lang, f"({d.scale.replace(',', '.')}: beyond Table 1.1, the cam is too large for 1:10)",
+                        f"({d.scale}: вне табл. 1.1 — кулачок не помещается и в 1:10)"))
+    sh.caption(box[0], box[2], box[1] + 2.5, txt, H_NOTE, LINE)
     return f
+
+
+def _dirs(v) -> tuple[str, ...]:
+    from .paper import _dirs_towards
+
+    return _dirs_towards(v)[:5]
 
 
 # ----------------------------------------------------------------------------------------------
 # field 4: pressure angle
 
 
-def _pressure_field(sh: Sheet, r, lang: str):
+def _pressure_field(sh: Sheet, r, lang: str, box):
     v, m, p, z = r.variant, r.motion, r.profile, r.sizing
     sc = m.scales
-    f = sh.add_field("pressure", BOX_PRESSURE, pick(lang, "Pressure angle against cam position",
-                                                    "Зависимость угла давления от положения кулачка"))
+    f = sh.add_field("pressure", box, pick(lang, "Pressure angle against cam position",
+                                           "Зависимость угла давления от положения кулачка"))
     x0b, y0b, x1b, y1b = f.inner
     xo = x0b + 22.0
-    yo = y0b + 18.0
+    yo = y0b + 2.5 + LINE * 2 + 12.0
     phw = v.phi_working_deg
     keep = np.degrees(p.phi) <= phw + 1e-9
     nu = p.nu_deg[keep]
     top = max(float(nu.max()), v.nu_max_deg)
-    room = y1b - yo - 14.0
-    k_nu = next((c for c in (0.25, 0.4, 0.5, 1.0, 2.0, 2.5) if top / c <= room), 5.0)  # °/mm
+    room = y1b - yo - 16.0
+    k_nu = nice_scale(top / room)  # °/mm, a round drawing scale
     xs = xo + np.degrees(p.phi[keep]) / sc.k_phi_deg_mm
-    _axis(sh, xo, yo, sc.b_mm, top / k_nu, 0.0, "φ", "ν")
+    _axis(sh, f.inner, xo, yo, sc.b_mm, top / k_nu, 0.0, "φ", "ν")
     ph = m.program.phase_index(p.phi[keep])
     moving = (ph == 0) | (ph == 2)
     # the constrained phases in a main line, the rest thin
@@ -562,21 +738,26 @@ def _pressure_field(sh: Sheet, r, lang: str):
                 start = None
     ym = yo + v.nu_max_deg / k_nu
     sh.line((xo, ym), (xo + sc.b_mm, ym), "Осевые")
-    sh.text(xo + sc.b_mm, ym + 1.2, f"ν_{{max}} = {num(v.nu_max_deg, lang, sig=6)}°", H_SMALL, align="right")
-    for row in m.table:
-        x = xo + row.phi_deg / sc.k_phi_deg_mm
+    sh.label(f"ν_{{max}} = {num(v.nu_max_deg, lang, sig=6)}°", (xo + sc.b_mm, ym), H_MIN_LABEL, within=f.inner,
+             dirs=("nw", "sw", "n", "s", "w"), priority=7)
+    rows = [row for row in m.table]
+    xr = [xo + row.phi_deg / sc.k_phi_deg_mm for row in rows]
+    for x in xr:
         sh.line((x, yo), (x, yo - 1.5), "Тонкие")
-        sh.text(x, yo - 2.5, str(row.index), H_SMALL, align="center", valign="top")
+    _numbers_below(sh, f.inner, rows, xr, yo - 1.5)
     # ticks on the ν axis every 10°
     for t in range(10, int(top) + 1, 10):
         y = yo + t / k_nu
         sh.line((xo - 1.5, y), (xo, y), "Тонкие")
-        sh.text(xo - 2.5, y, f"{t}", H_SMALL, align="right", valign="middle")
-    lab = pick(lang, f"k_ν = {_g(k_nu, lang)} °/mm;  k_φ = {_g(sc.k_phi_deg_mm, lang)} °/mm;  max ν: rise {_n(z.nu_rise_max_deg, lang, 1)}°, return {_n(z.nu_return_max_deg, lang, 1)}°",
-               f"k_{{ν}} = {_g(k_nu, lang)} °/мм;  k_{{φ}} = {_g(sc.k_phi_deg_mm, lang)} °/мм;  ν на удалении ≤ {_n(z.nu_rise_max_deg, lang, 1)}°, на возвращении ≤ {_n(z.nu_return_max_deg, lang, 1)}°")
+        sh.label(f"{t}", (xo - 1.5, y), H_MIN_LABEL, within=f.inner, dirs=("w",), dists=(1.0, 2.0), leader=False,
+                 priority=6)
+    lab = [pick(lang, f"k_ν = {_g(k_nu, lang)} °/mm;  k_φ = {_g(sc.k_phi_deg_mm, lang)} °/mm",
+                f"k_{{ν}} = {_g(k_nu, lang)} °/мм;  k_{{φ}} = {_g(sc.k_phi_deg_mm, lang)} °/мм"),
+           pick(lang, f"max ν: rise {_n(z.nu_rise_max_deg, lang, 1)}°, return {_n(z.nu_return_max_deg, lang, 1)}°",
+                f"ν на удалении ≤ {_n(z.nu_rise_max_deg, lang, 1)}°, на возвращении ≤ {_n(z.nu_return_max_deg, lang, 1)}°")]
     if z.closure == "force":
-        lab += pick(lang, " (spring: return not limited)", " (силовое замыкание: не ограничивается)")
-    sh.text(x0b + 2.0, y0b + 2.0, lab, H_SMALL, width=x1b - x0b - 4.0, max_lines=2)
+        lab[1] += pick(lang, " (spring: return not limited)", " (силовое замыкание: не ограничивается)")
+    sh.caption(box[0], box[2], box[1] + 2.5, lab, H_NOTE, LINE)
     return f
 
 
@@ -584,12 +765,12 @@ def _pressure_field(sh: Sheet, r, lang: str):
 # the results table
 
 
-def table(sh: Sheet, box, title: str, rows: list[tuple[str, str]], col1: float = 0.62, h=H_LABEL):
+def table(sh: Sheet, box, title: str, rows: list[tuple[str, str]], col1: float = 0.58, h=H_NOTE):
     """A two-column table (quantity, value) with a heading, in thin lines, a thick outline."""
     x0, y0, x1, y1 = box
-    sh.text((x0 + x1) / 2, y1 - 1.5, title.upper(), 5.0, align="center", valign="top", width=x1 - x0 - 4)
-    top = y1 - 9.0
-    row_h = min(8.0, (top - y0) / max(len(rows), 1))
+    sh.add_field("table", box, title)
+    top = y1 - 12.0
+    row_h = min(9.0, (top - y0) / max(len(rows), 1))
     bottom = top - row_h * len(rows)
     xm = x0 + col1 * (x1 - x0)
     sh.rect(x0, bottom, x1, top, "Основные")
@@ -598,9 +779,11 @@ def table(sh: Sheet, box, title: str, rows: list[tuple[str, str]], col1: float =
         y = top - (j + 1) * row_h
         if j < len(rows) - 1:
             sh.line((x0, y), (x1, y), "Тонкие")
-        hh = min(h, row_h - 2.5)
-        sh.text(x0 + 2.0, y + row_h / 2, a, hh, valign="middle", width=xm - x0 - 4.0, height_max=row_h - 1.5, max_lines=2)
-        sh.text((xm + x1) / 2, y + row_h / 2, b, hh, align="center", valign="middle", width=x1 - xm - 4.0)
+        hh = min(h, row_h - 3.0)
+        sh.text(x0 + 2.0, y + row_h / 2 - 0.3, a, hh, valign="middle", width=xm - x0 - 4.0, height_max=row_h - 2.0,
+                max_lines=2, min_h=min(hh, 3.5) if hh >= 3.5 else hh)
+        sh.text((xm + x1) / 2, y + row_h / 2 - 0.3, b, hh, align="center", valign="middle", width=x1 - xm - 4.0,
+                min_h=min(hh, 3.5) if hh >= 3.5 else hh)
     return bottom
 
 
@@ -616,7 +799,11 @@ def _roller_text(p, lang: str) -> str:
     return f"{val} ({rule}; {book} = {_n(p.roller_book_m * 1000.0, lang)})"
 
 
-def _results(sh: Sheet, r, lang: str, prof_scale: str) -> None:
+def _results_rows(r) -> int:
+    return 9 if r.sizing.rocker else 8
+
+
+def _results(sh: Sheet, r, lang: str, box, prof_scale: str) -> None:
     v, z, p, sc = r.variant, r.sizing, r.profile, r.motion.scales
     k = 1000.0
     mm = pick(lang, "mm", "мм")
@@ -638,24 +825,26 @@ def _results(sh: Sheet, r, lang: str, prof_scale: str) -> None:
         (pick(lang, "Scales k_{S}, k_{V}, k_{a}", "Масштабы k_{S}, k_{V}, k_{a}") if not z.rocker
          else pick(lang, "Scales k_{γ}, k_{ω}, k_{ε}", "Масштабы k_{γ}, k_{ω}, k_{ε}"),
          f"{_g(sc.k_s, lang, 3)}; {_g(sc.k_v, lang, 3)}; {_g(sc.k_a, lang, 3)}"),
-        (pick(lang, "Profile scale (k_{Sk})", "Масштаб профиля (k_{Sk})"), f"{pick(lang, 'M', 'М')} {pick(lang, prof_scale.replace(',', '.'), prof_scale)}"),
+        (pick(lang, "Profile scale (k_{Sk})", "Масштаб профиля (k_{Sk})"), _m(lang, prof_scale)),
         (pick(lang, "Closure, follower", "Замыкание, толкатель"),
          pick(lang, f"{z.closure}, {'rocker' if z.rocker else 'translating'}",
               f"{'силовое' if z.closure == 'force' else 'геометрическое'}, {'коромысло' if z.rocker else 'поступательный'}")),
     ]
-    table(sh, BOX_TABLE, pick(lang, "Main results", "Основные результаты"), rows)
+    table(sh, box, pick(lang, "Main results", "Основные результаты"), rows)
 
 
 def sheet3(result, lang: str, title) -> Sheet:
     """Build sheet 3 for a CamResult (no file written)."""
     sh = Sheet(lang)
     sh.frame()
-    _motion_field(sh, result, lang)
-    _zone_field(sh, result, lang)
-    prof = _profile_field(sh, result, lang)
-    _pressure_field(sh, result, lang)
-    _results(sh, result, lang, prof.scale_label)
+    lay = layout(result)
+    _motion_field(sh, result, lang, lay.motion)
+    _pressure_field(sh, result, lang, lay.pressure)
+    prof = _profile_field(sh, result, lang, lay.profile)
+    _zone_field(sh, result, lang, lay.zone)
+    _results(sh, result, lang, lay.table, prof.scale_label)
     v = result.variant
     sh.title_block(title, name=pick(lang, "Cam mechanism synthesis", "Синтез кулачкового механизма"),
                    designation=title.designation_for(3, v.number), scale=prof.scale_label)
+    sh.finish()
     return sh

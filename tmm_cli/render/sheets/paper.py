@@ -4,13 +4,20 @@ Everything is drawn in sheet millimetres (the model space origin is the sheet's 
 corner, 1 unit = 1 mm on paper). A :class:`Field` maps a drawing's own units (real millimetres
 of the mechanism) to the sheet by ``sheet = origin + scale·real``; each field records its box,
 origin and scale as XDATA on its heading so that a test (or a CAD user) can read them back from
-the file.
+the file. Every line drawn goes into an index (:class:`~.layout.Obstacles`) and labels are placed
+last, clear of lines and of each other (:mod:`.layout`).
 
 Facts used (``/work/shared/DRAWING.md``): A1 841 × 594 (ГОСТ 2.301), frame 20/5/5/5 mm; title
 block form 1 185 × 55 (ГОСТ 2.104); lines 0.7 / 0.25 mm, dash-dot axes, dashed hidden lines
 (ГОСТ 2.303); text heights 2.5 … 10 mm (ГОСТ 2.304); scales of ГОСТ 2.302.
 
-ezdxf is imported inside :func:`new_sheet` only (``tmm --help`` stays fast).
+Text: one style, ``OpenGostTypeB-Regular`` (LibreCAD shows its own GOST type B stroke font for
+that name; other CAD programs use the style's TrueType file ``osifont.ttf``, which tmm ships and
+the PDF is drawn with). A text with an index is one MTEXT whose index is stacked (``\\S^ 0;``,
+the AutoCAD/LibreCAD way of writing a subscript), so every program lays the index out with its
+own font and it never collides with its base.
+
+ezdxf is imported inside :class:`Sheet` only (``tmm --help`` stays fast).
 """
 
 from __future__ import annotations
@@ -18,39 +25,44 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import numpy as np
+
+from .layout import CLEAR, GOST_SCALES, Label, Obstacles, inside, readable, ring_positions, text_corners
 
 SHEET_W, SHEET_H = 841.0, 594.0  # A1 landscape [mm]
 FRAME = (20.0, 5.0, SHEET_W - 5.0, SHEET_H - 5.0)  # x0, y0, x1, y1 of the frame
 TB_W, TB_H = 185.0, 55.0  # title block form 1
 TB_ORIGIN = (FRAME[2] - TB_W, FRAME[1])  # its lower-left corner
+TB_BOX = (TB_ORIGIN[0], TB_ORIGIN[1], TB_ORIGIN[0] + TB_W, TB_ORIGIN[1] + TB_H)
 TEXT_HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0, 20.0)  # ГОСТ 2.304
-MIN_WIDTH_FACTOR = 0.6  # narrower text is hard to read; wrap or shrink the height instead
+MIN_WIDTH_FACTOR = 0.6  # narrower text is hard to read; wrap first
+MIN_HEIGHT = 2.5  # ГОСТ 2.304: never smaller (only the title block's cells use it)
+H_LABEL = 5.0  # labels and dimensions on A1
+H_MIN_LABEL = 3.5  # the smallest label (dense constructions)
+H_TITLE = 7.0  # view titles
 
-# ГОСТ 2.302: reduction, natural and enlargement scales (label, paper mm per real mm)
-GOST_SCALES: tuple[tuple[str, float], ...] = (
-    ("1:100", 0.01), ("1:75", 1 / 75), ("1:50", 0.02), ("1:40", 0.025), ("1:25", 0.04), ("1:20", 0.05),
-    ("1:15", 1 / 15), ("1:10", 0.1), ("1:5", 0.2), ("1:4", 0.25), ("1:2,5", 0.4), ("1:2", 0.5), ("1:1", 1.0),
-    ("2:1", 2.0), ("2,5:1", 2.5), ("4:1", 4.0), ("5:1", 5.0), ("10:1", 10.0), ("20:1", 20.0), ("40:1", 40.0),
-    ("50:1", 50.0), ("100:1", 100.0),
-)
 GOST_SCALE_LABELS = tuple(lab for lab, _ in GOST_SCALES)
 
 # layer: (ACI colour, lineweight [1/100 mm], linetype)
 LAYERS = {
     "Основные": (7, 70, "Continuous"),
+    "Рабочие": (7, 100, "Continuous"),  # the working (active) part of the tooth profiles: one heavy line
     "Тонкие": (7, 25, "Continuous"),
     "Осевые": (1, 25, "CENTER"),
+    "Штриховые": (7, 25, "DASHED"),
     "Размеры": (3, 25, "Continuous"),
     "Текст": (7, 25, "Continuous"),
     "Рамка": (7, 70, "Continuous"),
 }
-LTSCALE = 5.0  # CENTER: 16 mm dashes, 3 mm gaps; DASHED: 6 mm dashes, 1.3 mm gaps (ГОСТ 2.303)
+LTSCALE = 12.0  # CENTER: 15 mm dashes, 3 mm gaps; DASHED: 6 mm dashes, 1.2 mm gaps (ГОСТ 2.303)
 XDATA_APP = "TMM_FIELD"
-STYLE = "OpenGostTypeA-Regular"  # LibreCAD picks its GOST stroke font by this name; others use the TTF
-FONT_GOST = "osifont.ttf"
-FONT_FALLBACK = "DejaVuSans.ttf"
+STYLE = "OpenGostTypeB-Regular"  # LibreCAD maps this name to its GOST type B font; others use FONT
+FONT = "osifont.ttf"  # ships in tmm_cli/render/sheets/fonts (GPL with the font exception)
+FONT_DIR = Path(__file__).with_name("fonts")
+# characters osifont lacks, written with ones it has
+GLYPHS = str.maketrans({"′": "'", "−": "-", "…": "...", "\u2009": " ", "\u202f": " ", "\xa0": " "})
 
 
 def gost_scale(label: str) -> float:
@@ -220,6 +232,82 @@ def plain(text: str) -> str:
 SUB_RATIO = 0.7
 
 
+SUB_DROP = 0.25  # a subscript's baseline below the text's, in heights
+
+
+def mtext_content(text: str) -> str:
+    """The MTEXT string of a marked-up text: an index stacked under nothing (``\\S^ 0;``) is the
+    subscript of AutoCAD and LibreCAD, one over nothing (``\\S2^ ;``) the superscript.
+
+    >>> mtext_content("ψ_{у} = 10°")
+    'ψ\\\\S^ у; = 10°'
+    >>> mtext_content("S^{2}")
+    'S\\\\S2^ ;'
+    """
+    out = []
+    for part, lv in rich_parts(text):
+        part = part.replace("\\", "\\\\").replace("{", "\\{").replace("}", "\\}")
+        if lv < 0:
+            out.append(f"\\S^ {part};")
+        elif lv > 0:
+            out.append(f"\\S{part}^ ;")
+        else:
+            out.append(part)
+    return "".join(out)
+
+
+_MTEXT_RUN = re.compile(r"\\S\^ ([^;]*);|\\S([^;^]*)\^ ;")
+
+
+def mtext_runs(content: str) -> list[tuple[str, int]]:
+    """The runs (text, level) of an MTEXT string written by :func:`mtext_content`.
+
+    >>> mtext_runs('ψ\\\\S^ у; = 10°')
+    [('ψ', 0), ('у', -1), (' = 10°', 0)]
+    """
+    parts, pos = [], 0
+    for m in _MTEXT_RUN.finditer(content):
+        if m.start() > pos:
+            parts.append((content[pos:m.start()], 0))
+        parts.append((m.group(1), -1) if m.group(1) is not None else (m.group(2), 1))
+        pos = m.end()
+    if pos < len(content):
+        parts.append((content[pos:], 0))
+    return [(t.replace("\\{", "{").replace("\\}", "}").replace("\\\\", "\\"), lv) for t, lv in parts if t]
+
+
+def run_offsets(runs, h: float, width) -> list[tuple[str, float, float, float]]:
+    """(text, dx, dy, height) of each run of a one-line text of cap height `h` whose base is at
+    (0, 0): an index at 0.7·h, SUB_DROP·h below (or 0.55·h above) the baseline; `width(text, hh)`
+    measures a run."""
+    out, x = [], 0.0
+    for t, lv in runs:
+        hh = h if lv == 0 else h * SUB_RATIO
+        dy = 0.0 if lv == 0 else (-SUB_DROP * h if lv < 0 else 0.55 * h)
+        out.append((t, x, dy, hh))
+        x += width(t, hh)
+    return out
+
+
+def register_font() -> None:
+    """Make ezdxf find the bundled osifont (the PDF is drawn with it); no silent fallback: a tmm
+    installed without its font is broken and says so."""
+    from ezdxf.fonts import fonts
+
+    global _FONT_READY
+    if _FONT_READY:
+        return
+    if not (FONT_DIR / FONT).is_file():  # pragma: no cover - a broken installation
+        from ...errors import TmmError
+
+        raise TmmError(f"the sheet font {FONT_DIR / FONT} is missing; reinstall tmm")
+    fonts.font_manager.scan_folder(FONT_DIR)  # tmm's copy wins over an osifont.ttf of the system
+    _FONT_READY = True
+
+
+_FONT_READY = False
+
+
 @dataclass
 class Field:
     """A drawing field on the sheet: its box, heading and (for true-to-scale fields) transform."""
@@ -231,6 +319,7 @@ class Field:
     scale: float = 1.0  # paper mm per drawing unit
     scale_label: str = ""
     inner: tuple[float, float, float, float] = field(default=(0, 0, 0, 0))
+    clip: tuple[float, float, float, float] | None = None  # drawing is cut to this box (default inner)
 
     def to_sheet(self, pts) -> np.ndarray:
         a = np.asarray(pts, dtype=float)
@@ -239,6 +328,10 @@ class Field:
     def p(self, x: float, y: float) -> tuple[float, float]:
         return (self.origin[0] + self.scale * x, self.origin[1] + self.scale * y)
 
+    @property
+    def cut(self):
+        return self.clip or self.inner
+
     # drawing in the field's own units, clipped to the field
     def poly(self, pts, layer="Основные", linetype=None, closed=False, clip=True):
         q = self.to_sheet(pts)
@@ -246,45 +339,59 @@ class Field:
             q = np.vstack([q, q[:1]])
         if not clip:
             return [self.sheet.poly(q, layer, linetype)]
-        return [self.sheet.poly(piece, layer, linetype) for piece in clip_polyline(q, self.box)]
+        return [self.sheet.poly(piece, layer, linetype) for piece in clip_polyline(q, self.cut)]
 
     def circle(self, c, r, layer="Основные", linetype=None):
         cc = self.p(*c)
-        return self.sheet.circle_in(cc, r * self.scale, self.box, layer, linetype)
+        return self.sheet.circle_in(cc, r * self.scale, self.cut, layer, linetype)
 
     def line(self, a, b, layer="Тонкие", linetype=None):
         return self.poly([a, b], layer, linetype)
 
+    def label(self, text, at, h=H_LABEL, **kw):
+        """A label near the point `at` (field units), placed inside the field."""
+        kw.setdefault("within", self.inner)
+        return self.sheet.label(text, self.p(*at), h, **kw)
+
 
 class Sheet:
-    """One A1 drawing: ezdxf document, layers, text style, frame, title block, fields."""
+    """One A1 drawing: ezdxf document, layers, text style, frame, title block, fields, labels."""
 
     def __init__(self, lang: str = "ru"):
         import ezdxf
-        from ezdxf.fonts import fonts
 
         self.lang = lang
-        doc = ezdxf.new("R2010", setup=True)
+        doc = ezdxf.new("R2010", setup=["linetypes"])
         doc.units = 4  # millimetres
         doc.header["$INSUNITS"] = 4
         doc.header["$MEASUREMENT"] = 1
+        doc.header["$LUNITS"] = 2  # decimal
         doc.header["$LTSCALE"] = LTSCALE
+        doc.header["$PSLTSCALE"] = 1
+        doc.header["$CELTSCALE"] = 1.0
         doc.header["$LWDISPLAY"] = 1
         doc.header["$EXTMIN"] = (0, 0, 0)
         doc.header["$EXTMAX"] = (SHEET_W, SHEET_H, 0)
         doc.header["$LIMMIN"] = (0, 0)
         doc.header["$LIMMAX"] = (SHEET_W, SHEET_H)
+        doc.header["$LIMCHECK"] = 0
         for name, (color, lw, lt) in LAYERS.items():
             doc.layers.add(name, color=color, lineweight=lw, linetype=lt)
-        self.font_file = FONT_GOST if fonts.font_manager.has_font(FONT_GOST) else FONT_FALLBACK
-        if not fonts.font_manager.has_font(self.font_file):
-            _add_matplotlib_fonts()
-        doc.styles.add(STYLE, font=self.font_file)
+        register_font()
+        self.font_file = FONT
+        st = doc.styles.add(STYLE, font=FONT)
+        st.set_extended_font_data(family="osifont", italic=False, bold=False)
+        doc.styles.get("Standard").dxf.font = FONT
         doc.appids.add(XDATA_APP)
         self.doc = doc
         self.msp = doc.modelspace()
         self._fonts: dict = {}
+        self._widths: dict = {}
         self.fields: list[Field] = []
+        self.obstacles = Obstacles()
+        self.labels: list[Label] = []
+        self.unplaced: list[str] = []  # labels no free place was found for (tests fail on them)
+        self.finished = False
 
     # ------------------------------------------------------------------ primitives (sheet mm)
     def _attr(self, layer, linetype=None, **kw):
@@ -295,22 +402,32 @@ class Sheet:
         return a
 
     def line(self, a, b, layer="Тонкие", linetype=None):
-        return self.msp.add_line((float(a[0]), float(a[1])), (float(b[0]), float(b[1])), dxfattribs=self._attr(layer, linetype))
+        a = (float(a[0]), float(a[1]))
+        b = (float(b[0]), float(b[1]))
+        self.obstacles.add_polyline(np.array([a, b]))
+        return self.msp.add_line(a, b, dxfattribs=self._attr(layer, linetype))
 
-    def poly(self, pts, layer="Основные", linetype=None, closed=False):
-        pts = [(float(x), float(y)) for x, y in np.asarray(pts, dtype=float)]
-        e = self.msp.add_lwpolyline(pts, format="xy", close=closed, dxfattribs=self._attr(layer, linetype))
-        if linetype:
-            e.dxf.linetype = linetype
+    def poly(self, pts, layer="Основные", linetype=None, closed=False, lineweight=None):
+        arr = np.asarray(pts, dtype=float)
+        self.obstacles.add_polyline(np.vstack([arr, arr[:1]]) if closed else arr)
+        pts = [(float(x), float(y)) for x, y in arr]
+        a = self._attr(layer, linetype)
+        if lineweight is not None:
+            a["lineweight"] = lineweight
+        e = self.msp.add_lwpolyline(pts, format="xy", close=closed, dxfattribs=a)
+        if (linetype or LAYERS.get(layer, (0, 0, "Continuous"))[2]) != "Continuous":
+            e.dxf.flags |= 128  # linetype generation: the pattern runs on across the vertices
         return e
 
     def rect(self, x0, y0, x1, y1, layer="Тонкие"):
         return self.poly([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], layer, closed=True)
 
     def circle(self, c, r, layer="Основные", linetype=None):
+        self.obstacles.add_circle(c, float(r))
         return self.msp.add_circle((float(c[0]), float(c[1])), float(r), dxfattribs=self._attr(layer, linetype))
 
     def arc(self, c, r, a0, a1, layer="Тонкие", linetype=None):
+        self.obstacles.add_circle(c, float(r), float(a0), float(a1))
         return self.msp.add_arc((float(c[0]), float(c[1])), float(r), float(a0), float(a1), dxfattribs=self._attr(layer, linetype))
 
     def circle_in(self, c, r, box, layer="Основные", linetype=None):
@@ -322,6 +439,7 @@ class Sheet:
 
     def solid(self, pts, layer="Размеры"):
         p = [(float(x), float(y)) for x, y in pts]
+        self.obstacles.add_polyline(np.array(p + p[:1]))
         if len(p) == 3:
             p.append(p[2])
         return self.msp.add_solid(p, dxfattribs={"layer": layer})
@@ -329,9 +447,9 @@ class Sheet:
     def dot(self, c, r=0.7, layer="Основные"):
         """A filled point (a small solid disc as a thick donut polyline)."""
         x, y = float(c[0]), float(c[1])
-        e = self.msp.add_lwpolyline([(x - r / 2, y, r, r, 1.0), (x + r / 2, y, r, r, 1.0)], format="xyseb", close=True,
-                                    dxfattribs={"layer": layer})
-        return e
+        self.obstacles.add_circle((x, y), r)
+        return self.msp.add_lwpolyline([(x - r / 2, y, r, r, 1.0), (x + r / 2, y, r, r, 1.0)], format="xyseb", close=True,
+                                       dxfattribs={"layer": layer})
 
     def arrow(self, tip, direction, layer="Размеры", length=3.5, width=1.0):
         d = np.asarray(direction, dtype=float)
@@ -341,11 +459,24 @@ class Sheet:
         base = t - length * d
         return self.solid([t, base + n * width / 2, base - n * width / 2], layer)
 
+    def wavy(self, a, b, amp=1.6, wave=9.0, layer="Тонкие"):
+        """A thin wavy break line from a to b (ГОСТ 2.303)."""
+        a, b = np.asarray(a, float), np.asarray(b, float)
+        L = float(np.hypot(*(b - a)))
+        if L < 1e-6:
+            return None
+        u = (b - a) / L
+        n = np.array([-u[1], u[0]])
+        t = np.linspace(0.0, L, max(8, int(L / 1.0)))
+        w = amp * np.sin(2 * np.pi * t / wave) * np.minimum(1.0, np.minimum(t, L - t) / 2.0)
+        return self.poly(a + np.outer(t, u) + np.outer(w, n), layer)
+
     # ------------------------------------------------------------------------ dimensions
-    def dim_linear(self, a, b, offset, text: str, h: float = 3.5, ext: bool = True):
+    def dim_linear(self, a, b, offset, text: str, h: float = H_LABEL, ext: bool = True, within=None, priority=5):
         """A dimension between points a, b [sheet mm], its line shifted by the vector `offset`:
-        extension lines, a thin line with two arrows, the text above its middle (exploded into
-        plain entities, so every CAD program shows it as drawn)."""
+        extension lines, a thin line with two arrows, the text above the line (placed by the label
+        placer along it, or beyond an end on a shelf), exploded into plain entities so that every
+        CAD program shows it as drawn."""
         a, b, off = (np.asarray(v, dtype=float) for v in (a, b, offset))
         pa, pb = a + off, b + off
         d = pb - pa
@@ -357,8 +488,8 @@ class Sheet:
             n = off / np.hypot(*off)
             self.line(a + n * 1.0, pa + n * 2.0, "Размеры")
             self.line(b + n * 1.0, pb + n * 2.0, "Размеры")
-        inside = L > 9.0
-        if inside:
+        inside_ = L > 9.0
+        if inside_:
             self.line(pa, pb, "Размеры")
             self.arrow(pa, -u, "Размеры", 3.0, 0.9)
             self.arrow(pb, u, "Размеры", 3.0, 0.9)
@@ -366,19 +497,30 @@ class Sheet:
             self.line(pa - 7 * u, pb + 7 * u, "Размеры")
             self.arrow(pa, u, "Размеры", 3.0, 0.9)
             self.arrow(pb, -u, "Размеры", 3.0, 0.9)
-        ang = math.degrees(math.atan2(u[1], u[0]))
-        if ang > 90.5 or ang < -89.5:
-            ang += 180.0
-            u = -u
-        nrm = np.array([-u[1], u[0]])
-        mid = (pa + pb) / 2 + nrm * 1.0
-        if not inside:
-            mid = mid + u * (L / 2 + 9.0)
-        self.text(mid[0], mid[1], text, h, align="center" if inside else "left", rot=((ang + 180) % 360) - 180)
+        rot = readable(math.degrees(math.atan2(u[1], u[0])))
+        ur = np.array([math.cos(math.radians(rot)), math.sin(math.radians(rot))])
+        nr = np.array([-ur[1], ur[0]])
+        w = self.text_width(text, h)
+        sub = any(lv for _, lv in rich_parts(text))
+        d_lo = (SUB_DESCENTS if sub else DESCENTS) * h
+        pos = []
+        for lift in (1.0, 2.5):
+            for t in ((0.5, 0.3, 0.7, 0.15, 0.85) if inside_ else (0.5,)):
+                m = pa + d * t
+                for side in (1.0, -1.0):
+                    # above the line: the box's bottom `lift` over it; below: its top `lift` under it
+                    off = (lift + d_lo + CLEAR) if side > 0 else -(lift + h + CLEAR)
+                    base = m - ur * w / 2 + nr * off
+                    pos.append((float(base[0]), float(base[1]), rot))
+        self.label(text, tuple((pa + pb) / 2), h, within=within, positions=tuple(pos), dirs=(), dists=(),
+                   leader=True, priority=priority, rot=rot,
+                   anchors=[tuple(pa + d * t) for t in (0.3, 0.7, 0.15, 0.85)] if inside_ else ())
 
-    def dim_arc(self, c, r, a0, a1, text: str, h: float = 3.5, ext_from: float | None = None):
+    def dim_arc(self, c, r, a0, a1, text: str, h: float = H_LABEL, ext_from: float | None = None, within=None,
+                priority=5):
         """An angular/arc dimension: an arc of radius r [sheet mm] from a0 to a1 [deg, ccw] with
-        arrows at both ends; extension lines from radius `ext_from`; text outside its middle."""
+        arrows at both ends; extension lines from radius `ext_from`; the text upright beside the
+        arc's middle (placed by the label placer)."""
         c = np.asarray(c, dtype=float)
         self.arc(c, r, a0, a1, "Размеры")
         for ang, sgn in ((a0, 1.0), (a1, -1.0)):
@@ -390,13 +532,12 @@ class Sheet:
                 q0 = c + ext_from * np.array([math.cos(e), math.sin(e)])
                 q1 = c + (r + 2.0) * np.array([math.cos(e), math.sin(e)])
                 self.line(q0, q1, "Размеры")
-        am = math.radians((a0 + a1) / 2)
-        q = c + (r + 1.2) * np.array([math.cos(am), math.sin(am)])
-        rot = math.degrees(am) - 90.0
-        if math.sin(am) < 0:
-            rot += 180.0
-            q = c + (r + 1.2 + h) * np.array([math.cos(am), math.sin(am)])
-        self.text(q[0], q[1], text, h, align="center", rot=rot)
+        if text:
+            am = math.radians((a0 + a1) / 2)
+            q = c + r * np.array([math.cos(am), math.sin(am)])
+            out = np.array([math.cos(am), math.sin(am)])
+            dirs = _dirs_towards(out)
+            self.label(text, tuple(q), h, within=within, dirs=dirs, dists=(1.0, 2.5, 5.0), priority=priority)
 
     # ------------------------------------------------------------------------------ text
     def font(self, h: float, wf: float = 1.0):
@@ -407,34 +548,65 @@ class Sheet:
             self._fonts[key] = fonts.make_font(self.font_file, h, wf)
         return self._fonts[key]
 
-    def text_width(self, text: str, h: float, wf: float = 1.0) -> float:
-        w = 0.0
-        for part, lv in rich_parts(text):
-            hh = h if lv == 0 else h * SUB_RATIO
-            w += self.font(hh, wf).text_width(part)
+    def _w(self, part: str, h: float, wf: float = 1.0) -> float:
+        key = (part, round(h, 4), round(wf, 4))
+        w = self._widths.get(key)
+        if w is None:
+            w = self._widths[key] = self.font(h, wf).text_width(part)
         return w
 
-    def caption(self, x0: float, x1: float, y_bottom: float, lines: list[str], h: float, step: float) -> None:
+    def text_width(self, text: str, h: float, wf: float = 1.0) -> float:
+        w = 0.0
+        for part, lv in rich_parts(text.translate(GLYPHS)):
+            w += self._w(part, h if lv == 0 else h * SUB_RATIO, wf)
+        return w
+
+    def caption(self, x0: float, x1: float, y_bottom: float, lines: list[str], h: float, step: float) -> float:
         """`lines` of height `h` stacked `step` mm apart upwards from `y_bottom`, the last one lowest,
-        each kept within x0 … x1 (2 mm in from either side)."""
+        each kept within x0 … x1 (2 mm in from either side); returns the top of the block."""
         y = y_bottom + step * (len(lines) - 1)
+        top = y + h
         for t in lines:
             self.text(x0 + 2.0, y, t, h, width=x1 - x0 - 4.0)
             y -= step
+        return top
+
+    def _put(self, x, y, text: str, h: float, wf: float, rot: float, layer: str, register: bool = True):
+        """One line of text with its insertion at the left end of the baseline; TEXT when plain,
+        MTEXT when it carries an index."""
+        text = text.translate(GLYPHS)
+        parts = rich_parts(text)
+        sub = any(lv for _, lv in parts)
+        if not sub:
+            e = self.msp.add_text("".join(t for t, _ in parts), height=h, rotation=rot,
+                                  dxfattribs={"layer": layer, "style": STYLE, "width": wf})
+            e.set_placement((float(x), float(y)))
+        else:
+            e = self.msp.add_mtext(mtext_content(text), dxfattribs={
+                "layer": layer, "style": STYLE, "char_height": h, "insert": (float(x), float(y)),
+                "attachment_point": 7, "rotation": rot})
+            if abs(wf - 1.0) > 1e-6:
+                e.text = f"\\W{wf:.3f};" + e.text
+        if register:
+            w = self.text_width(text, h, wf)
+            self.obstacles.add_box(text_corners(x, y, w, h, rot, sub=sub))
+        return e
 
     def text(self, x, y, text: str, h: float = 3.5, *, align: str = "left", valign: str = "base",
              width: float | None = None, rot: float = 0.0, layer: str = "Текст", max_lines: int = 1,
-             line_gap: float = 0.5, height_max: float | None = None) -> list:
+             line_gap: float = 0.5, height_max: float | None = None, min_h: float = MIN_HEIGHT,
+             min_wf: float = MIN_WIDTH_FACTOR) -> list:
         """Text at (x, y) [sheet mm] with ГОСТ height `h`; markup _{sub}, ^{sup}.
 
-        A text wider than `width` is first narrowed (width factor down to 0.6), then wrapped
-        into at most `max_lines` lines, then set a size smaller — never spilled over a line.
+        A text wider than `width` is first narrowed (width factor down to `min_wf`), then wrapped
+        into at most `max_lines` lines, then set a size smaller (never below `min_h`), and at the
+        smallest size narrowed as far as needed — never spilled over a line.
         `height_max` limits the height of the whole block (valign 'top'/'middle' blocks).
         Returns the entities.
         """
         if not text:
             return []
-        h, wf, lines = self._fit(text, h, width, max_lines, height_max, line_gap)
+        h, wf, lines = self._fit(text, h, width, max_lines, height_max, line_gap, min_h, min_wf)
         n = len(lines)
         step = h * (1.0 + line_gap + 0.15)
         if valign == "top":
@@ -451,27 +623,17 @@ class Sheet:
             w = self.text_width(line, h, wf)
             dx = {"left": 0.0, "center": -w / 2, "right": -w}[align]
             dy = y0 - k * step
-            cx = dx
-            for part, lv in rich_parts(line):
-                hh = h if lv == 0 else h * SUB_RATIO
-                off = 0.0 if lv == 0 else (-0.3 * h if lv < 0 else 0.55 * h)
-                px, py = cx, dy + off
-                X, Y = x + c * px - s * py, y + s * px + c * py
-                e = self.msp.add_text(part, height=hh, rotation=rot,
-                                      dxfattribs={"layer": layer, "style": STYLE, "width": wf})
-                e.set_placement((X, Y))
-                out.append(e)
-                cx += self.font(hh, wf).text_width(part)
+            X, Y = x + c * dx - s * dy, y + s * dx + c * dy
+            out.append(self._put(X, Y, line, h, wf, rot, layer))
         return out
 
-    def _fit(self, text, h, width, max_lines, height_max, gap):
+    def _fit(self, text, h, width, max_lines, height_max, gap, min_h=MIN_HEIGHT, min_wf=MIN_WIDTH_FACTOR):
         def block_h(hh, n):
             return hh * n + (n - 1) * hh * (gap + 0.15)
 
-        heights = [x for x in TEXT_HEIGHTS if x <= h + 1e-9][::-1] or [h]
-        heights += [2.0, 1.8]
+        heights = [x for x in TEXT_HEIGHTS if min_h - 1e-9 <= x <= h + 1e-9][::-1] or [h]
         for hh in heights:
-            if height_max is not None and block_h(hh, 1) > height_max + 1e-9:
+            if height_max is not None and block_h(hh, 1) > height_max + 1e-9 and hh != heights[-1]:
                 continue
             for n in range(1, max_lines + 1):
                 if height_max is not None and block_h(hh, n) > height_max + 1e-9:
@@ -484,8 +646,8 @@ class Sheet:
                 w = max(self.text_width(t, hh) for t in lines)
                 if w <= width:
                     return hh, 1.0, lines
-                if w * MIN_WIDTH_FACTOR <= width:
-                    return hh, max(MIN_WIDTH_FACTOR, width / w * 0.999), lines
+                if w * min_wf <= width:
+                    return hh, max(min_wf, width / w * 0.999), lines
         # last resort: the smallest height, as many lines as allowed, narrowed as far as needed
         hh = heights[-1]
         best = [text]
@@ -496,28 +658,129 @@ class Sheet:
         w = max(self.text_width(t, hh) for t in best)
         return hh, min(1.0, (width or w) / w * 0.999), best
 
+    # ---------------------------------------------------------------------------- labels
+    def label(self, text: str, anchor, h: float = H_LABEL, *, within=None, rot: float = 0.0, dirs=None,
+              dists=None, leader: bool = True, priority: int = 0, positions=(), dot: bool = False,
+              anchors=()) -> Label:
+        """Queue a label near `anchor` [sheet mm]; :meth:`place_labels` puts it where it touches no
+        line and no text (candidates: `positions` first — (x, y, rot) insertion points —, then
+        the directions `dirs` at the distances `dists`, then rings farther out with a leader)."""
+        lab = Label(text=text, anchor=(float(anchor[0]), float(anchor[1])), h=h, within=within or FRAME_INNER,
+                    rot=readable(rot), leader=leader, priority=priority, positions=tuple(positions), dot=dot,
+                    order=len(self.labels), anchors=tuple(tuple(map(float, a)) for a in anchors))
+        if dirs is not None:
+            lab.dirs = tuple(dirs)
+        if dists is not None:
+            lab.dists = tuple(dists)
+        self.labels.append(lab)
+        return lab
+
+    def place_labels(self) -> None:
+        """Place every queued label (higher priority first, then in the order asked)."""
+        todo = sorted(self.labels, key=lambda lb: (-lb.priority, lb.order))
+        self.labels = []
+        for lab in todo:
+            self._place(lab)
+
+    def _free(self, corners, within) -> bool:
+        return (inside(corners, within) and self.obstacles.text_hits(corners) == 0
+                and self.obstacles.line_hits(corners) == 0)
+
+    def _place(self, lab: Label) -> None:
+        text = lab.text.translate(GLYPHS)
+        h = lab.h
+        w = self.text_width(text, h)
+        sub = any(lv for _, lv in rich_parts(text))
+        cands = [(x, y, r) for x, y, r in lab.positions]
+        if lab.rot == 0.0:
+            cands += [(x, y, 0.0) for x, y in ring_positions(lab.anchor, w, h, lab.dirs, lab.dists, sub)]
+        else:  # a turned label: along its direction, centred on the anchor's normal
+            c, s = math.cos(math.radians(lab.rot)), math.sin(math.radians(lab.rot))
+            for dist in lab.dists:
+                for side in (1.0, -1.0):
+                    off = dist + (0 if side > 0 else h + DESCENTS * h)
+                    x = lab.anchor[0] - c * w / 2 - s * off * side
+                    y = lab.anchor[1] - s * w / 2 + c * off * side
+                    cands.append((x, y, lab.rot))
+        for x, y, r in cands:
+            box = text_corners(x, y, w, h, r, sub=sub, pad=CLEAR)
+            if self._free(box, lab.within):
+                self._put(x, y, text, h, 1.0, r, "Текст")
+                return
+        if lab.leader:
+            best = self._leader_spot(lab, text, w, h, sub)
+            if best is not None:
+                return
+        # nowhere free: the least crowded candidate, and the sheet remembers it (tests fail on it)
+        x, y, r = min(cands, key=lambda c: self._cost(text_corners(c[0], c[1], w, h, c[2], sub=sub, pad=CLEAR), lab))
+        self._put(x, y, text, h, 1.0, r, "Текст")
+        self.unplaced.append(text)
+
+    def _cost(self, box, lab) -> float:
+        return (0.0 if inside(box, lab.within) else 100.0) + 3.0 * self.obstacles.text_hits(box) \
+            + self.obstacles.line_hits(box)
+
+    def _leader_spot(self, lab: Label, text, w, h, sub):
+        """A place farther out with a leader: the text on a shelf, a thin line from the anchor to
+        the shelf's near end; neither the text nor the leader touches text (the leader may cross
+        lines, as on any drawing)."""
+        d_lo = (SUB_DESCENTS if sub else DESCENTS) * h
+        anchors = [lab.anchor] + list(lab.anchors)
+        for dist in (7.0, 10.0, 14.0, 19.0, 25.0, 32.0, 40.0, 50.0, 62.0, 76.0, 92.0):
+            for k in range(24):
+              for ax, ay in anchors:
+                t = 2 * math.pi * k / 24 + math.pi / 4
+                ex, ey = ax + dist * math.cos(t), ay + dist * math.sin(t)
+                right = math.cos(t) >= -1e-9
+                x = ex if right else ex - w
+                y = ey + d_lo + 0.6
+                box = text_corners(x, y, w, h, 0.0, sub=sub, pad=CLEAR)
+                if not self._free(box, lab.within):
+                    continue
+                shelf = ((x - 0.5, ey), (x + w + 0.5, ey))
+                start = np.array([ax, ay]) + 0.4 * np.array([math.cos(t), math.sin(t)])
+                if self.obstacles.segment_hits_text(start, (ex, ey)) or self.obstacles.segment_hits_text(*shelf):
+                    continue
+                self.line(start, (ex, ey), "Тонкие")
+                self.line(*shelf, "Тонкие")
+                if lab.dot:
+                    self.dot((ax, ay), 0.5, "Тонкие")
+                self._put(x, y, text, h, 1.0, 0.0, "Текст")
+                return True
+        return None
+
     # ----------------------------------------------------------------------------- fields
     def add_field(self, name: str, box, heading: str, *, origin=(0.0, 0.0), scale: float = 1.0,
-                  scale_label: str = "", heading_h: float = 5.0, scale_text: str | None = None) -> Field:
+                  scale_label: str = "", heading_h: float = H_TITLE, scale_text: str | None = None) -> Field:
         """A field with its heading centred at the top (upper case, as on the book's sheets).
 
         The heading carries XDATA: name, box, origin, scale, scale label (read by the tests).
         `scale_text` is printed under the heading (e.g. "М 1:2").
         """
         x0, y0, x1, y1 = box
-        head = self.text((x0 + x1) / 2, y1 - 1.5, heading.upper(), heading_h, align="center", valign="top",
-                         width=x1 - x0 - 4, max_lines=2)
-        top = y1 - 1.5 - heading_h
-        if len(head) and head[-1].dxf.insert[1] < top - 1:
-            top = head[-1].dxf.insert[1]
-        if scale_text:
-            self.text((x0 + x1) / 2, top - 2.0, scale_text, 5.0, align="center", valign="top", width=x1 - x0 - 4)
-            top -= 2.0 + 5.0
+        head = self.text((x0 + x1) / 2, y1 - 2.0, heading.upper(), heading_h, align="center", valign="top",
+                         width=x1 - x0 - 4, max_lines=2, min_h=5.0)
+        low = min(e.dxf.insert[1] for e in head)
+        top = low - DESCENTS * heading_h - 2.0
+        if scale_text:  # on its own line under the heading (ГОСТ 2.316: «М 1:2»)
+            self.text((x0 + x1) / 2, top - 0.5, scale_text, H_LABEL, align="center", valign="top", width=x1 - x0 - 4,
+                      min_h=3.5)
+            top -= 0.5 + H_LABEL * (1 + SUB_DESCENTS) + 1.5
         tags = [(1000, name)] + [(1040, float(v)) for v in (*box, *origin, scale)] + [(1000, scale_label or "")]
         head[0].set_xdata(XDATA_APP, tags)
-        f = Field(self, name, tuple(box), tuple(origin), scale, scale_label, inner=(x0, y0, x1, top - 2.0))
+        f = Field(self, name, tuple(box), tuple(origin), scale, scale_label, inner=(x0 + 1.0, y0 + 1.0, x1 - 1.0, top))
         self.fields.append(f)
         return f
+
+    def set_field_transform(self, f: Field, origin, scale: float, scale_label: str) -> None:
+        """Fix a field's transform after its heading was written (the XDATA follows)."""
+        f.origin, f.scale, f.scale_label = tuple(origin), scale, scale_label
+        for e in self.msp:
+            if e.has_xdata(XDATA_APP):
+                tags = [t.value for t in e.get_xdata(XDATA_APP)]
+                if tags[0] == f.name:
+                    new = [(1000, f.name)] + [(1040, float(v)) for v in (*f.box, *f.origin, f.scale)] + [(1000, scale_label)]
+                    e.set_xdata(XDATA_APP, new)
 
     # ------------------------------------------------------------------- frame, title block
     def frame(self):
@@ -554,6 +817,7 @@ class Sheet:
         L(155, 15, 155, 20, thick)
 
         def T(x, y, s, h=2.5, w=None, align="left", **kw):
+            kw.setdefault("min_wf", 0.3)
             return self.text(X + x, Y + y, s, h, width=w, align=align, **kw)
 
         for x, w, s in ((0, 7, "Изм."), (7, 10, "Лист"), (17, 23, "№ докум."), (40, 15, "Подп."), (55, 10, "Дата")):
@@ -562,8 +826,9 @@ class Sheet:
         for k, s in enumerate(("Разраб.", "Пров.", "Т.контр.", "", "Н.контр.", "Утв.")):
             if s:
                 T(0.8, 25 - k * 5 + 1.2, s, 2.5, 15.5)
-        T(17.6, 27.5, title.student, 3.5, 22.0, valign="middle", max_lines=2, height_max=4.6)
-        T(17.6, 22.5, title.teacher, 3.5, 22.0, valign="middle", max_lines=2, height_max=4.6)
+        # a full name: one line of 3.5 or 2.5 mm, condensed as far as needed (never smaller)
+        T(17.6, 26.2, title.student, 3.5, 22.0, height_max=3.6)
+        T(17.6, 21.2, title.teacher, 3.5, 22.0, height_max=3.6)
         for x, w, s in ((135, 15, "Лит."), (150, 17, "Масса"), (167, 18, "Масштаб")):
             T(x + w / 2, 36.2, s, 2.5, w - 1, "center")
         T(176, 27.5, scale, 5.0, 16, "center", valign="middle")
@@ -576,6 +841,49 @@ class Sheet:
         if org_extra:
             org = f"{org}, {org_extra}" if org else org_extra
         T(160, 7.5, org, 3.5, 48, "center", valign="middle", max_lines=3, height_max=13.5)
+
+    # ---------------------------------------------------------------------------- finish
+    def finish(self) -> None:
+        """Place the labels, then the paper space: one layout "A1" of 841 × 594 mm printing the
+        model at 1:1 (plot settings, limits, units), and no text style nobody uses."""
+        if self.finished:
+            return
+        self.finished = True
+        self.place_labels()
+        doc = self.doc
+        names = [lay for lay in doc.layouts.names() if lay != "Model"]
+        for n in names[1:]:
+            doc.layouts.delete(n)
+        if names and names[0] != "A1":
+            doc.layouts.rename(names[0], "A1")
+        ps = doc.layouts.get("A1")
+        ps.page_setup(size=(SHEET_W, SHEET_H), margins=(0, 0, 0, 0), units="mm", offset=(0, 0), rotation=0,
+                      scale=16, name="ISO_full_bp_A1_(841.00_x_594.00_MM)", device="DWG To PDF.pc3")
+        ps.add_viewport(center=(SHEET_W / 2, SHEET_H / 2), size=(SHEET_W, SHEET_H),
+                        view_center_point=(SHEET_W / 2, SHEET_H / 2), view_height=SHEET_H)
+        lay = ps.dxf_layout.dxf
+        lay.limmin = (0, 0)
+        lay.limmax = (SHEET_W, SHEET_H)
+        lay.extmin = (0, 0, 0)
+        lay.extmax = (SHEET_W, SHEET_H, 0)
+        doc.header["$PLIMMIN"] = (0, 0)
+        doc.header["$PLIMMAX"] = (SHEET_W, SHEET_H)
+        used = {STYLE, "Standard"}
+        for st in list(doc.styles):
+            if st.dxf.name not in used:
+                doc.styles.remove(st.dxf.name)
+
+
+FRAME_INNER = (FRAME[0] + 1.0, FRAME[1] + 1.0, FRAME[2] - 1.0, FRAME[3] - 1.0)
+DESCENTS = 0.25  # = layout.DESCENT
+SUB_DESCENTS = 0.45  # = layout.SUB_DESCENT
+
+
+def _dirs_towards(v) -> tuple[str, ...]:
+    """The compass directions ordered by closeness to the vector v (a label goes outward first)."""
+    vecs = {"e": (1, 0), "ne": (0.707, 0.707), "n": (0, 1), "nw": (-0.707, 0.707), "w": (-1, 0),
+            "sw": (-0.707, -0.707), "s": (0, -1), "se": (0.707, -0.707)}
+    return tuple(sorted(vecs, key=lambda k: -(vecs[k][0] * v[0] + vecs[k][1] * v[1])))
 
 
 def _wrap(text: str, n: int) -> list[str] | None:
@@ -593,17 +901,3 @@ def _wrap(text: str, n: int) -> list[str] | None:
             cur = f"{cur} {w}" if cur else w
     lines.append(cur)
     return lines
-
-
-def _add_matplotlib_fonts() -> None:
-    """Let ezdxf find the DejaVu fonts matplotlib ships (a machine without system fonts)."""
-    try:
-        from pathlib import Path
-
-        import matplotlib
-        from ezdxf.fonts import fonts
-
-        folder = Path(matplotlib.get_data_path()) / "fonts" / "ttf"
-        fonts.font_manager.build([str(folder)], support_dirs=False)
-    except Exception:  # pragma: no cover - ezdxf then uses its own fallback font
-        pass

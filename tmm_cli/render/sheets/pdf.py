@@ -8,9 +8,10 @@ millimetres, so 1 mm of the model is 1 mm of paper (print at 100 %).
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
-from .paper import SHEET_H, SHEET_W
+from .paper import FONT, SHEET_H, SHEET_W, mtext_runs, run_offsets
 
 MM_PER_INCH = 25.4
 
@@ -35,15 +36,72 @@ def _backend(ax):
     return SheetBackend(ax, adjust_figure=False)
 
 
-def sheet_figure(doc):
-    """A matplotlib Figure of the whole sheet at true size (no pyplot)."""
-    from ezdxf.addons.drawing import Frontend, RenderContext
+def _frontend(ctx, backend, cfg):
+    """ezdxf's Frontend, with the sheets' MTEXT (a text with stacked indices, ``paper.mtext_content``)
+    laid out here: ezdxf's own MTEXT layout raises an index instead of lowering it. Each run is
+    drawn like a TEXT: the base at the cap height, an index at 0.7 of it, SUB_DROP lower — the
+    positions the sheet measured when it placed the label."""
+    from ezdxf.addons.drawing import Frontend
+    from ezdxf.math import Matrix44
+
+    class SheetFrontend(Frontend):
+        def draw_mtext_entity(self, entity, properties):
+            dxf = entity.dxf
+            h = dxf.char_height
+            content = entity.text
+            wf = 1.0
+            if content.startswith("\\W"):
+                head, _, content = content.partition(";")
+                wf = float(head[2:])
+            from ezdxf.fonts import fonts
+
+            name = properties.font.filename if properties.font else FONT
+            cache = {}
+
+            def measure(t, hh):
+                f = cache.get(hh)
+                if f is None:
+                    f = cache[hh] = fonts.make_font(name, hh, wf)
+                return f.text_width(t)
+
+            ins = dxf.insert
+            rot = Matrix44.z_rotate(math.radians(dxf.get("rotation", 0.0)))
+            for t, dx, dy, hh in run_offsets(mtext_runs(content), h, measure):
+                m = Matrix44.scale(wf, 1.0, 1.0) @ Matrix44.translate(dx, dy, 0) @ rot @ Matrix44.translate(ins.x, ins.y, 0)
+                self.pipeline.draw_text(t, m, properties, hh, "MTEXT")
+
+    return SheetFrontend(ctx, backend, config=cfg)
+
+
+def render_config():
+    """The drawing add-on's configuration of the PDF: black on white, absolute lineweights read as
+    points (× 72/25.4), linetypes drawn as their dashes (the default, stated)."""
     from ezdxf.addons.drawing.config import (
         BackgroundPolicy,
         ColorPolicy,
         Configuration,
+        LinePolicy,
         LineweightPolicy,
     )
+
+    return Configuration(
+        color_policy=ColorPolicy.BLACK,
+        background_policy=BackgroundPolicy.WHITE,
+        lineweight_policy=LineweightPolicy.ABSOLUTE,
+        lineweight_scaling=72.0 / MM_PER_INCH,
+        line_policy=LinePolicy.ACCURATE,
+    )
+
+
+def draw(doc, backend) -> None:
+    """Render the model space of `doc` through `backend` as the PDF does (tests record it)."""
+    from ezdxf.addons.drawing import RenderContext
+
+    _frontend(RenderContext(doc), backend, render_config()).draw_layout(doc.modelspace(), finalize=True)
+
+
+def sheet_figure(doc):
+    """A matplotlib Figure of the whole sheet at true size (no pyplot)."""
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(SHEET_W / MM_PER_INCH, SHEET_H / MM_PER_INCH))
@@ -56,15 +114,7 @@ def sheet_figure(doc):
     # Bézier segment of every text glyph (seconds per sheet, for nothing)
     ax._update_patch_limits = lambda patch: None
     ax._update_line_limits = lambda line: None
-    cfg = Configuration(
-        color_policy=ColorPolicy.BLACK,
-        background_policy=BackgroundPolicy.WHITE,
-        lineweight_policy=LineweightPolicy.ABSOLUTE,
-        lineweight_scaling=72.0 / MM_PER_INCH,
-    )
-    ctx = RenderContext(doc)
-    backend = _backend(ax)
-    Frontend(ctx, backend, config=cfg).draw_layout(doc.modelspace(), finalize=True)
+    draw(doc, _backend(ax))
     ax.set_xlim(0.0, SHEET_W)
     ax.set_ylim(0.0, SHEET_H)
     ax.set_aspect("equal", adjustable="box")

@@ -1,0 +1,57 @@
+"""Make tmm's copy of osifont (tmm_cli/render/sheets/fonts/osifont.ttf) from the Debian one.
+
+osifont 0.1.20220224 draws Э, э, Ё, ё as empty boxes. This script adds them: Э and э as the
+mirror images of Є and є (the same strokes turned), Ё and ё as references to Ë and ë (the same
+letters). Nothing else changes; the version string says so (GPL: modified files carry a notice).
+
+    python tools/patch_osifont.py /usr/share/fonts/truetype/osifont/osifont.ttf tmm_cli/render/sheets/fonts/osifont.ttf
+"""
+
+import sys
+
+from fontTools.pens.recordingPen import DecomposingRecordingPen
+from fontTools.pens.transformPen import TransformPen
+from fontTools.pens.ttGlyphPen import TTGlyphPen
+from fontTools.ttLib import TTFont
+
+
+def mirrored(font, src: str):
+    """The glyph `src` mirrored left–right within its advance width (contours reversed)."""
+    gs = font.getGlyphSet()
+    adv, lsb = font["hmtx"][src]
+    rec = DecomposingRecordingPen(gs)
+    gs[src].draw(rec)
+    pen = TTGlyphPen(gs)
+    from fontTools.pens.reverseContourPen import ReverseContourPen
+
+    rec.replay(ReverseContourPen(TransformPen(pen, (-1, 0, 0, 1, adv, 0))))
+    return pen.glyph(), adv
+
+
+def copied(font, src: str):
+    gs = font.getGlyphSet()
+    rec = DecomposingRecordingPen(gs)
+    gs[src].draw(rec)
+    pen = TTGlyphPen(gs)
+    rec.replay(pen)
+    return pen.glyph(), font["hmtx"][src][0]
+
+
+def main(src: str, dst: str) -> None:
+    f = TTFont(src)
+    cm = f.getBestCmap()
+    for code, how, base in ((0x042D, mirrored, 0x0404), (0x044D, mirrored, 0x0454),
+                            (0x0401, copied, 0x00CB), (0x0451, copied, 0x00EB)):
+        name = cm[code]
+        glyph, adv = how(f, cm[base])
+        glyph.recalcBounds(f["glyf"])
+        f["glyf"][name] = glyph
+        f["hmtx"][name] = (adv, glyph.xMin if hasattr(glyph, "xMin") else 0)
+    for rec in f["name"].names:
+        if rec.nameID == 5:
+            rec.string = rec.toUnicode() + "; tmm: U+042D U+044D U+0401 U+0451 added"
+    f.save(dst)
+
+
+if __name__ == "__main__":
+    main(*sys.argv[1:3])
