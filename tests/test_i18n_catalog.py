@@ -17,11 +17,14 @@ from tmm_cli.i18n import tr, trc  # noqa: E402
 PACKAGE = Path(__file__).resolve().parents[1] / "tmm_cli"
 PROSE = re.compile("[а-яё]{3,}")  # three lower-case Cyrillic letters: a word, not a symbol's subscript (n_кр, φ_дс)
 # rooms whose text is still written inline (pick(lang, en, ru)); each is to move into the catalogue
-PENDING = {"render/note", "render/sheets", "render/terminal/check.py", "render/terminal/batch.py",
+PENDING = {"render/note", "render/terminal/check.py", "render/terminal/batch.py",
            "render/data/summary.py", "teacher", "i18n/lang.py"}
 # Russian that is data, not a translation
 ALLOWED = {"авто",  # `--shift авто` is read as `--shift auto`
            'name = "Механизм"',  # an example line of a mechanism file, in an error message
+           # the drawing's layer names and the ESKD title block's own words (ГОСТ 2.104 form 1), Russian on every sheet
+           "Основные", "Тонкие", "Штриховые", "Осевые", "Рабочие", "Размеры", "Текст", "Рамка", "Лист", "Листов 1",
+           "Лист 1", "№ докум.", "Подп.", "Дата", "Разраб.", "Пров.", "Т.контр.", "Н.контр.", "Масса", "Масштаб",
            'Student\'s name for the title block and the note, e.g. "Иванов И. И." (or in tmm.toml).'}
 
 

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...i18n.lang import pick
+from ...i18n import tr
 from ...i18n.numbers import num
 from .layout import fit_view, nice_scale
 from .paper import FRAME, H_LABEL, H_MIN_LABEL, TB_BOX, TB_H, Sheet, gost_label
@@ -44,7 +44,7 @@ def _g(x, lang, sig=4):
 
 def _m(lang, lab: str) -> str:
     """A scale label as printed: 'М 1:2,5' (ru), 'M 1:2.5' (en)."""
-    return f"{pick(lang, 'M', 'М')} {pick(lang, lab.replace(',', '.'), lab)}"
+    return tr(lang, "M") + " " + (lab if lang == "ru" else lab.replace(",", "."))  # the scale's decimal sign
 
 
 # ----------------------------------------------------------------------------------------------
@@ -176,7 +176,7 @@ def _numbers_below(sh, box, rows, xs, y, h=H_MIN_LABEL):
 def _motion_field(sh: Sheet, r, lang: str, box) -> None:
     v, m = r.variant, r.motion
     sc = m.scales
-    f = sh.add_field("motion", box, pick(lang, "Follower motion laws", "Законы движения толкателя"))
+    f = sh.add_field("motion", box, tr(lang, "Follower motion laws"))
     x0b, y0b, x1b, y1b = f.inner
     hv, ha = sc.h_v_mm, sc.h_a_mm
     pole_room = max(hv, ha) + 10.0
@@ -217,26 +217,26 @@ def _motion_field(sh: Sheet, r, lang: str, box) -> None:
         sh.label(f"P_{{{nm if not rocker else ('ω' if nm == 'V' else 'ε')}}}", (px, y0), H_LABEL, within=f.inner,
                  dirs=("n", "s", "nw", "sw", "ne"), priority=7)
     # scales
-    mm = pick(lang, "mm", "мм")
+    mm = tr(lang, "mm")
     if rocker:
-        s_unit, v_unit, a_unit = (pick(lang, "rad/mm", "рад/мм"), pick(lang, "rad/(s·mm)", "рад/(с·мм)"),
-                                  pick(lang, "rad/(s²·mm)", "рад/(с²·мм)"))
+        s_unit, v_unit, a_unit = (tr(lang, "rad/mm"), tr(lang, "rad/(s·mm)"),
+                                  tr(lang, "rad/(s²·mm)"))
         kn = ("k_{γ}", "k_{ω}", "k_{ε}")
     else:
-        s_unit, v_unit, a_unit = (pick(lang, "m/mm", "м/мм"), pick(lang, "m/(s·mm)", "м/(с·мм)"),
-                                  pick(lang, "m/(s²·mm)", "м/(с²·мм)"))
+        s_unit, v_unit, a_unit = (tr(lang, "m/mm"), tr(lang, "m/(s·mm)"),
+                                  tr(lang, "m/(s²·mm)"))
         kn = ("k_{S}", "k_{V}", "k_{a}")
     lines = [
         f"k_{{φ}} = {_g(sc.k_phi_deg_mm, lang)} °/{mm};  k_{{t}} = {_g(sc.k_t_s_mm, lang)} "
-        + pick(lang, "s/mm", "с/мм") + f";  b = {num(sc.b_mm, lang, sig=6)} {mm}",
+        + tr(lang, "s/mm") + f";  b = {num(sc.b_mm, lang, sig=6)} {mm}",
         f"{kn[0]} = {_g(sc.k_s, lang)} {s_unit};  {kn[1]} = {_g(sc.k_v, lang)} {v_unit}",
         f"{kn[2]} = {_g(sc.k_a, lang)} {a_unit};  H_{{V}} = {num(hv, lang, sig=6)} {mm};  H_{{a}} = {num(ha, lang, sig=6)} {mm}",
-        pick(lang, f"law {v.law}", f"закон {v.law}") + f";  {pick(lang, 'n_{c}', 'n_{к}')} = {num(abs(v.n_cam_rpm), lang, sig=6)} "
-        + pick(lang, "rpm", "об/мин"),
+        tr(lang, "law {law}").format(law=v.law) + ";  " + tr(lang, "n_{c}")
+        + f" = {num(abs(v.n_cam_rpm), lang, sig=6)} " + tr(lang, "rpm"),
     ]
     if rocker:
-        lines[-1] += (f";  k_{{SB}} = k_{{γ}}·l_{{BC}} = {_g(sc.k_s_b, lang)} {pick(lang, 'm/mm', 'м/мм')}"
-                      f";  k_{{γ,°}} = {_g(sc.k_gamma_deg_mm, lang)} °/{mm}")
+        lines[-1] += (f";  k_{{SB}} = k_{{γ}}·l_{{BC}} = {_g(sc.k_s_b, lang)} " + tr(lang, "m/mm")
+                      + f";  k_{{γ,°}} = {_g(sc.k_gamma_deg_mm, lang)} °/{mm}")
     sh.caption(box[0], box[2], box[1] + 2.5, lines, H_NOTE, LINE)
 
 
@@ -280,13 +280,13 @@ def _zone_field(sh: Sheet, r, lang: str, box):
     v, z, p = r.variant, r.sizing, r.profile
     zn = z.zone
     k = 1000.0
-    mm = pick(lang, "mm", "мм")
+    mm = tr(lang, "mm")
     B, D = zn.b * k, zn.d * k
     O = np.array(z.centre) * k
     BV = np.array(z.book_centre) * k
     piv = None if z.pivot is None else np.array(z.pivot) * k
     lo, hi = _zone_window(r)
-    f = sh.add_field("zone", box, pick(lang, "Minimum cam radius", "Определение минимального радиуса кулачка"))
+    f = sh.add_field("zone", box, tr(lang, "Minimum cam radius"))
     x0b, y0b, x1b, y1b = box
     room = (x0b + 1.0, y0b + ZONE_CAPS, x1b - 1.0, y1b - ZONE_HEAD)
     fit = fit_view(lo, hi, room, margin=ZONE_MARGIN)
@@ -365,7 +365,7 @@ def _zone_field(sh: Sheet, r, lang: str, box):
     sh.dim_linear(rb0, ro, nrm * 10.0, f"r_{{0}} = {_n(z.r0_m * k, lang, 2)}", H_LABEL, within=within, priority=8)
     if np.hypot(*(BV - O)) * fac > 2.0 and window[0] < f.p(*BV)[0] < window[2] and window[1] < f.p(*BV)[1] < window[3]:
         sh.circle(f.p(*BV), 1.2, "Тонкие")
-        f.label("O_{" + pick(lang, "b", "кн") + "}", BV, H_MIN_LABEL, within=within, priority=4)
+        f.label("O_{" + tr(lang, "b") + "}", BV, H_MIN_LABEL, within=within, priority=4)
     if piv is not None:
         _pivot(sh, f.p(*piv))
         f.label("C", piv, H_LABEL, within=within, dirs=("ne", "nw", "e", "w", "n"), priority=9)
@@ -404,13 +404,11 @@ def _zone_field(sh: Sheet, r, lang: str, box):
         f"ν_{{max}} = {num(v.nu_max_deg, lang, sig=6)}°;  r_{{0}} = {_n(z.r0_m * k, lang, 2)} {mm};  "
         + (f"l_{{OC}} = {_n(z.l_oc_m * k, lang, 2)} {mm};  l_{{BC}} = {num(v.l_bc_m * k, lang, sig=6)} {mm}"
            if z.rocker else f"e = {_n(z.e_m * k, lang, 2)} {mm}"),
-        pick(lang, "Hatched: the centres with ν ≤ ν_max at every position (the wedges at D_i)",
-             "Заштрихована область центров с ν ≤ ν_max во всех положениях (углы при D_i)"),
-        pick(lang, f"O_b — the book's vertex: r_0 = {_n(z.book_r0_m * k, lang, 2)} mm",
-             f"O_{{кн}} — вершина по пособию: r_{{0}} = {_n(z.book_r0_m * k, lang, 2)} мм"),
+        tr(lang, "Hatched: the centres with ν ≤ ν_max at every position (the wedges at D_i)"),
+        tr(lang, "O_b — the book's vertex: r_0 = {v} mm").format(v=_n(z.book_r0_m * k, lang, 2)),
     ]
     if not fit.fits:
-        txt[-1] += pick(lang, " (the construction is cut at the field's edge)", " (построение обрезано по полю)")
+        txt[-1] += tr(lang, " (the construction is cut at the field's edge)")
     sh.caption(box[0], box[2], box[1] + 2.5, txt, H_NOTE, LINE)
     return f
 
@@ -610,7 +608,7 @@ def _profile_field(sh: Sheet, r, lang: str, box):
     v, z, p, d = r.variant, r.sizing, r.profile, r.drawing
     k = 1000.0
     name, fac, (cx, cy) = profile_layout(r, box)
-    f = sh.add_field("profile", box, pick(lang, "Cam profile synthesis", "Синтез профиля кулачка"),
+    f = sh.add_field("profile", box, tr(lang, "Cam profile synthesis"),
                      origin=(cx, cy), scale=fac, scale_label=name)
     _field_scale_text(sh, f, lang, name)
     x0b, y0b, x1b, y1b = f.inner
@@ -668,7 +666,7 @@ def _profile_field(sh: Sheet, r, lang: str, box):
         f.label("C_0", c0, H_LABEL, within=within, dirs=("ne", "nw", "e", "w", "n"), priority=9)
         f.line(c0, P[0], "Основные")
     # profile angles ψ as arcs outside the cam, between rays from O (the core's values)
-    names = ("ψ_{у}", "ψ_{дс}", "ψ_{в}") if lang == "ru" else ("ψ_{r}", "ψ_{fd}", "ψ_{ret}")
+    names = (tr(lang, "ψ_{r}"), tr(lang, "ψ_{fd}"), tr(lang, "ψ_{ret}"))  # the book's symbols in Russian
     vals = (p.psi_rise_deg, p.psi_far_deg, p.psi_return_deg)
     for j, lo_a, hi_a, rr in _psi_arcs(r, fac):
         for a in (lo_a, hi_a):
@@ -685,13 +683,13 @@ def _profile_field(sh: Sheet, r, lang: str, box):
     tang = np.array([-math.sin(e), math.cos(e)]) * (1 if v.ccw else -1)
     sh.arrow(tip, tang, "Основные", 3.5, 1.2)
     qm = o_s + (rr * math.cos(math.radians(225)), rr * math.sin(math.radians(225)))
-    sh.label("ω_{к}" if lang == "ru" else "ω_{c}", qm, H_LABEL, within=within, dirs=("sw", "w", "s", "nw", "se"),
+    sh.label(tr(lang, "ω_{c}"), qm, H_LABEL, within=within, dirs=("sw", "w", "s", "nw", "se"),
              priority=7)
     # captions: k_Sk and the roller; the scale is the core's (the note states the same)
-    txt = [f"k_{{Sk}} = {_g(d.k_sk, lang)} {pick(lang, 'm/mm', 'м/мм')};  {pick(lang, 'r_{r}', 'r_{р}')} = {_roller_text(p, lang)}"]
+    txt = [f"k_{{Sk}} = {_g(d.k_sk, lang)} " + tr(lang, "m/mm") + ";  " + tr(lang, "r_{r}") + f" = {_roller_text(p, lang)}"]
     if not d.fits:
-        txt.append(pick(lang, f"({d.scale.replace(',', '.')}: beyond Table 1.1, the cam is too large for 1:10)",
-                        f"({d.scale}: вне табл. 1.1 — кулачок не помещается и в 1:10)"))
+        scale = d.scale if lang == "ru" else d.scale.replace(",", ".")
+        txt.append(tr(lang, "({scale}: beyond Table 1.1, the cam is too large for 1:10)").format(scale=scale))
     sh.caption(box[0], box[2], box[1] + 2.5, txt, H_NOTE, LINE)
     return f
 
@@ -709,8 +707,7 @@ def _dirs(v) -> tuple[str, ...]:
 def _pressure_field(sh: Sheet, r, lang: str, box):
     v, m, p, z = r.variant, r.motion, r.profile, r.sizing
     sc = m.scales
-    f = sh.add_field("pressure", box, pick(lang, "Pressure angle against cam position",
-                                           "Зависимость угла давления от положения кулачка"))
+    f = sh.add_field("pressure", box, tr(lang, "Pressure angle against cam position"))
     x0b, y0b, x1b, y1b = f.inner
     xo = x0b + 22.0
     yo = y0b + 2.5 + LINE * 2 + 12.0
@@ -751,12 +748,10 @@ def _pressure_field(sh: Sheet, r, lang: str, box):
         sh.line((xo - 1.5, y), (xo, y), "Тонкие")
         sh.label(f"{t}", (xo - 1.5, y), H_MIN_LABEL, within=f.inner, dirs=("w",), dists=(1.0, 2.0), leader=False,
                  priority=6)
-    lab = [pick(lang, f"k_ν = {_g(k_nu, lang)} °/mm;  k_φ = {_g(sc.k_phi_deg_mm, lang)} °/mm",
-                f"k_{{ν}} = {_g(k_nu, lang)} °/мм;  k_{{φ}} = {_g(sc.k_phi_deg_mm, lang)} °/мм"),
-           pick(lang, f"max ν: rise {_n(z.nu_rise_max_deg, lang, 1)}°, return {_n(z.nu_return_max_deg, lang, 1)}°",
-                f"ν на удалении ≤ {_n(z.nu_rise_max_deg, lang, 1)}°, на возвращении ≤ {_n(z.nu_return_max_deg, lang, 1)}°")]
+    lab = [tr(lang, "k_ν = {k_nu} °/mm;  k_φ = {k_phi_deg_mm} °/mm").format(k_nu=_g(k_nu, lang), k_phi_deg_mm=_g(sc.k_phi_deg_mm, lang)),
+           tr(lang, "max ν: rise {nu_rise_max_deg}°, return {nu_return_max_deg}°").format(nu_rise_max_deg=_n(z.nu_rise_max_deg, lang, 1), nu_return_max_deg=_n(z.nu_return_max_deg, lang, 1))]
     if z.closure == "force":
-        lab[1] += pick(lang, " (spring: return not limited)", " (силовое замыкание: не ограничивается)")
+        lab[1] += tr(lang, " (spring: return not limited)")
     sh.caption(box[0], box[2], box[1] + 2.5, lab, H_NOTE, LINE)
     return f
 
@@ -790,12 +785,13 @@ def table(sh: Sheet, box, title: str, rows: list[tuple[str, str]], col1: float =
 def _roller_text(p, lang: str) -> str:
     """The carried roller and the rule that gave it (the core's ``roller_rule``); the book's
     0.2·r_0 beside it when the roller differs from it."""
-    mm = pick(lang, "mm", "мм")
+    mm = tr(lang, "mm")
     val = f"{_n(p.roller_m * 1000.0, lang)} {mm}"
-    book = f"0{pick(lang, '.', ',')}2·r_{{0}}"
+    sign = "," if lang == "ru" else "."  # the decimal sign
+    book = f"0{sign}2·r_{{0}}"
     if p.roller_rule == "book":
         return f"{val} ({book})"
-    rule = {"limited": f"0{pick(lang, '.', ',')}8·ρ_{{min}}", "student": pick(lang, "given", "задан")}.get(p.roller_rule, p.roller_rule)
+    rule = {"limited": f"0{sign}8·ρ_{{min}}", "student": tr(lang, "given")}.get(p.roller_rule, p.roller_rule)
     return f"{val} ({rule}; {book} = {_n(p.roller_book_m * 1000.0, lang)})"
 
 
@@ -806,31 +802,30 @@ def _results_rows(r) -> int:
 def _results(sh: Sheet, r, lang: str, box, prof_scale: str) -> None:
     v, z, p, sc = r.variant, r.sizing, r.profile, r.motion.scales
     k = 1000.0
-    mm = pick(lang, "mm", "мм")
-    ru = lang == "ru"
+    mm = tr(lang, "mm")
     rows = [
-        (pick(lang, "Minimum cam radius r_0", "Минимальный радиус кулачка r_0"), f"{_n(z.r0_m * k, lang)} {mm}"),
+        (tr(lang, "Minimum cam radius r_0"), f"{_n(z.r0_m * k, lang)} {mm}"),
     ]
     if z.rocker:
-        rows += [(pick(lang, "Centre distance l_{OC}", "Межосевое расстояние l_{OC}"), f"{_n(z.l_oc_m * k, lang)} {mm}"),
-                 (pick(lang, "Rocker length l_{BC}", "Длина коромысла l_{BC}"), f"{_n(v.l_bc_m * k, lang)} {mm}")]
+        rows += [(tr(lang, "Centre distance l_{OC}"), f"{_n(z.l_oc_m * k, lang)} {mm}"),
+                 (tr(lang, "Rocker length l_{BC}"), f"{_n(v.l_bc_m * k, lang)} {mm}")]
     else:
-        rows.append((pick(lang, "Offset e", "Эксцентриситет e"), f"{_n(z.e_m * k, lang)} {mm}"))
+        rows.append((tr(lang, "Offset e"), f"{_n(z.e_m * k, lang)} {mm}"))
     rows += [
-        (pick(lang, "Roller radius r_{r}", "Радиус ролика r_{р}"), _roller_text(p, lang)),
-        (pick(lang, "Pressure angle ν_{max} (given / reached)", "Угол давления ν_{max} (задан / получен)"),
+        (tr(lang, "Roller radius r_{r}"), _roller_text(p, lang)),
+        (tr(lang, "Pressure angle ν_{max} (given / reached)"),
          f"{num(v.nu_max_deg, lang, sig=6)}° / {_n(max(z.nu_rise_max_deg, z.nu_return_max_deg if z.closure == 'form' else 0), lang, 1)}°"),
-        (("Профильные углы ψ_{у}, ψ_{дс}, ψ_{в}" if ru else "Profile angles ψ"),
+        (tr(lang, "Profile angles ψ"),
          f"{_n(p.psi_rise_deg, lang, 1)}°; {_n(p.psi_far_deg, lang, 1)}°; {_n(p.psi_return_deg, lang, 1)}°"),
-        (pick(lang, "Scales k_{S}, k_{V}, k_{a}", "Масштабы k_{S}, k_{V}, k_{a}") if not z.rocker
-         else pick(lang, "Scales k_{γ}, k_{ω}, k_{ε}", "Масштабы k_{γ}, k_{ω}, k_{ε}"),
+        (tr(lang, "Scales k_{S}, k_{V}, k_{a}") if not z.rocker
+         else tr(lang, "Scales k_{γ}, k_{ω}, k_{ε}"),
          f"{_g(sc.k_s, lang, 3)}; {_g(sc.k_v, lang, 3)}; {_g(sc.k_a, lang, 3)}"),
-        (pick(lang, "Profile scale (k_{Sk})", "Масштаб профиля (k_{Sk})"), _m(lang, prof_scale)),
-        (pick(lang, "Closure, follower", "Замыкание, толкатель"),
-         pick(lang, f"{z.closure}, {'rocker' if z.rocker else 'translating'}",
-              f"{'силовое' if z.closure == 'force' else 'геометрическое'}, {'коромысло' if z.rocker else 'поступательный'}")),
+        (tr(lang, "Profile scale (k_{Sk})"), _m(lang, prof_scale)),
+        (tr(lang, "Closure, follower"),
+         (tr(lang, "force closure") if z.closure == "force" else tr(lang, "form closure")) + ", "
+         + (tr(lang, "rocker") if z.rocker else tr(lang, "translating"))),
     ]
-    table(sh, box, pick(lang, "Main results", "Основные результаты"), rows)
+    table(sh, box, tr(lang, "Main results"), rows)
 
 
 def sheet3(result, lang: str, title) -> Sheet:
@@ -844,7 +839,7 @@ def sheet3(result, lang: str, title) -> Sheet:
     _zone_field(sh, result, lang, lay.zone)
     _results(sh, result, lang, lay.table, prof.scale_label)
     v = result.variant
-    sh.title_block(title, name=pick(lang, "Cam mechanism synthesis", "Синтез кулачкового механизма"),
+    sh.title_block(title, name=tr(lang, "Cam mechanism synthesis"),
                    designation=title.designation_for(3, v.number), scale=prof.scale_label)
     sh.finish()
     return sh

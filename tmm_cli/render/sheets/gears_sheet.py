@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from ...gears.involute import flank_construction
-from ...i18n.lang import pick
+from ...i18n import tr
 from ...i18n.numbers import num
 from ..figures.gears import _mesh_geometry, _shift_kw, tooth_outline
 from .cam_sheet import LINE, _dirs, _m, table
@@ -122,8 +122,7 @@ def _scheme_field(sh: Sheet, r, lang: str):
     split = x0b + 0.6 * (x1b - x0b)
     lo = np.array([-0.55 * rmax, -1.22 * rmax])
     hi = np.array([x_end + 1.0 * gap + 0.3 * rmax, 1.22 * rmax])
-    fld = sh.add_field("scheme", BOX_SCHEME, pick(lang, "Planetary reducer scheme and linear velocities",
-                                                  "Схема планетарного механизма и картина скоростей"))
+    fld = sh.add_field("scheme", BOX_SCHEME, tr(lang, "Planetary reducer scheme and linear velocities"))
     room = (x0b + 2.0, y0b + 2.5 + LINE * 2 + 2.0, split, fld.inner[3] - 2.0)
     fit = fit_view(lo, hi, room, margin=(14.0, 4.0, 6.0, 4.0), choices=ENLARGE)
     f = fit.scale
@@ -170,9 +169,9 @@ def _scheme_field(sh: Sheet, r, lang: str):
         prev = xh
     sh.line(P(prev, 0), P(prev + 0.85 * gap, 0), "Основные")  # output shaft
     _bearing(sh, P(prev + 0.45 * gap, 0), (1, 0))
-    sh.label(pick(lang, "from motor", "от двигателя"), P(-0.45 * rmax, 0), H_MIN_LABEL, within=inner,
+    sh.label(tr(lang, "from motor"), P(-0.45 * rmax, 0), H_MIN_LABEL, within=inner,
              dirs=("n", "nw", "ne", "s"), dists=(3.0, 5.0), priority=6)
-    sh.label(pick(lang, "to crank", "к кривошипу"), P(prev + 0.85 * gap, 0), H_MIN_LABEL, within=inner,
+    sh.label(tr(lang, "to crank"), P(prev + 0.85 * gap, 0), H_MIN_LABEL, within=inner,
              dirs=("n", "ne", "nw", "s", "se"), dists=(3.0, 5.0), priority=6)
     # the linear velocities on the scheme's radius scale: V_A drawn v_a·kv mm (velocities in the
     # core's drawn units, module units × kv)
@@ -218,14 +217,14 @@ def _scheme_field(sh: Sheet, r, lang: str):
     sh.dim_arc(V(0, 0), rr, 90 - s0.phi_k_deg, 90, "φ_{k}", H_MIN_LABEL, within=inner)
     sh.dim_arc(V(0, 0), rr * 1.45, 90 - sl.phi_h_deg, 90, "φ_{H}", H_MIN_LABEL, within=inner)
     ratios = " · ".join(_n(s.ratio, lang, 4) for s in v.stages)
-    mm = pick(lang, "mm", "мм")
+    mm = tr(lang, "mm")
     teeth = "; ".join(", ".join(f"{n} = {val}" for n, val in zip(
         ("z_{k}", "z_{c}", "z_{c′}", "z_{n}") if s.z_planet2 is not None else ("z_{k}", "z_{c}", "z_{n}"), s.teeth))
         + f", k = {s.planets}" for s in d.stages)
     lines = [
-        f"K_{{S}} = {num(k_s, lang, sig=3)} {pick(lang, 'm/mm', 'м/мм')} ({_m(lang, fit.label)}, m = 1 {mm});  "
-        + f"k_{{V}} = {num(k_v, lang, sig=3)} {pick(lang, '(m/s)/mm', '(м/с)/мм')};  "
-        + pick(lang, f"scheme {d.scheme}: ", f"схема {d.scheme}: ") + teeth,
+        f"K_{{S}} = {num(k_s, lang, sig=3)} " + tr(lang, "m/mm") + f" ({_m(lang, fit.label)}, m = 1 {mm});  "
+        + f"k_{{V}} = {num(k_v, lang, sig=3)} " + tr(lang, "(m/s)/mm") + ";  "
+        + tr(lang, "scheme {scheme}: ").format(scheme=d.scheme) + teeth,
         f"i = tg φ_{{k}} / tg φ_{{H}} = {ratios};  φ_{{k}} = "
         + "; ".join(f"{_n(s.phi_k_deg, lang, 2)}°" for s in v.stages)
         + ";  φ_{H} = " + "; ".join(f"{_n(s.phi_h_deg, lang, 2)}°" for s in v.stages),
@@ -256,7 +255,7 @@ def _angular_field(sh: Sheet, r, lang: str):
         pts.append((h * tc, f"c{suf}"))
         pts.append((h * th, f"h{suf}"))
     xs = [p[0] for p in pts] + [0.0]
-    fld = sh.add_field("angular", BOX_ANGULAR, pick(lang, "Angular velocities", "Картина угловых скоростей"))
+    fld = sh.add_field("angular", BOX_ANGULAR, tr(lang, "Angular velocities"))
     ix0, iy0, ix1, iy1 = fld.inner
     span = max(xs) - min(xs)
     room_w = ix1 - ix0 - 24.0
@@ -281,8 +280,8 @@ def _angular_field(sh: Sheet, r, lang: str):
         sh.dot(q, 0.5)
         sh.label(name, q, H_LABEL, within=inner, dirs=("n", "ne", "nw"), dists=(1.2, 2.5, 4.0), priority=7)
     lines = [f"i = ok/oh = {_n(v.ok, lang, 1)}/{_n(v.oh, lang, 2)} = {_n(v.ratio, lang, 4)}",
-             f"k_{{ω}} = {num(k_w, lang, sig=3)} {pick(lang, '(rad/s)/mm', '(рад/с)/мм')};  "
-             + pick(lang, "pole distance", "полюсное расстояние") + f" {_n(h * f, lang, 1)} {pick(lang, 'mm', 'мм')}"]
+             f"k_{{ω}} = {num(k_w, lang, sig=3)} " + tr(lang, "(rad/s)/mm") + ";  "
+             + tr(lang, "pole distance") + f" {_n(h * f, lang, 1)} " + tr(lang, "mm")]
     sh.caption(x0b, x1b, y0b + 2.5, lines, H_NOTE, LINE)
     return fld
 
@@ -290,17 +289,16 @@ def _angular_field(sh: Sheet, r, lang: str):
 def _assembly_field(sh: Sheet, r, lang: str):
     d = r.planetary
     n = len(d.stages)
-    fld = sh.add_field("assembly", BOX_ASSEMBLY, pick(lang, "Assembly order", "Порядок сборки планетарного механизма"))
+    fld = sh.add_field("assembly", BOX_ASSEMBLY, tr(lang, "Assembly order"))
     x0b, y0b, x1b, y1b = fld.inner
-    order = pick(lang, "Fit planet 1; turn the carrier by φ_{H1} = c·2β; fit the next planet at the same place; repeat.",
-                 "Установить сателлит 1; повернуть водило на φ_{H1} = c·2β; установить следующий сателлит на то же место; повторить.")
+    order = tr(lang, "Fit planet 1; turn the carrier by φ_{H1} = c·2β; fit the next planet at the same place; repeat.")
     ents = sh.text((x0b + x1b) / 2, y1b - 1.0, order, H_NOTE, align="center", valign="top", width=x1b - x0b - 4.0,
                    max_lines=3)
     top = min(e.dxf.insert[1] for e in ents) - 4.0
     cw = (x1b - x0b) / n
     caps = []
     for j, (st, ch) in enumerate(zip(d.stages, r.checks.stages)):
-        suf = pick(lang, f"Stage {j + 1}: ", f"Ступень {j + 1}: ") if n > 1 else ""
+        suf = tr(lang, "Stage {v}: ").format(v=j + 1) if n > 1 else ""
         caps.append(suf + f"K = {st.planets};  c = {ch.assembly_c};  2β = 360°/{st.planets} = {num(360.0 / st.planets, lang, sig=4)}°")
         caps.append(f"φ_{{H1}} = c·2β = {num(ch.carrier_turn_deg, lang, sig=5)}°"
                     + (f" = {int(ch.carrier_turn_deg // 360)}·360° + {num(ch.carrier_turn_deg % 360, lang, sig=4)}°"
@@ -393,7 +391,7 @@ def _mesh_field(sh: Sheet, r, lang: str):
     x0b, y0b, x1b, y1b = BOX_MESH
     o1, o2, p, u, n1, at = _mesh_geometry(g, r.directions.motor)
     sx = 1.0 if u[0] > 0 else -1.0
-    fld = sh.add_field("mesh", BOX_MESH, pick(lang, "Spur gear mesh synthesis", "Геометрический синтез зубчатого зацепления"),
+    fld = sh.add_field("mesh", BOX_MESH, tr(lang, "Spur gear mesh synthesis"),
                        origin=fit.origin, scale=f, scale_label=fit.label)
     from .cam_sheet import _field_scale_text
 
@@ -584,7 +582,7 @@ def _mesh_field(sh: Sheet, r, lang: str):
             sh.label(f"a_{{w}} = {num(aw, lang, sig=6)}", (xa, (seen[1] + end_y) / 2), H_LABEL, within=within,
                      rot=90.0, dists=(1.5, 3.0), priority=9)
     # captions
-    mm = pick(lang, "mm", "мм")
+    mm = tr(lang, "mm")
 
     def g3(val):
         return num(val, lang, sig=6)
@@ -611,12 +609,10 @@ def _mesh_field(sh: Sheet, r, lang: str):
         ]
     lines += [
         f"ε_{{α}} = P_{{1}}P_{{2}}/p_{{b}} = {_n(g.g_alpha_mm, lang, 1)}/{_n(g.pb_mm, lang)} = {_n(g.eps_alpha, lang, 3)};  "
-        + pick(lang, "zones: 2 — two pairs, 1 — one pair; working profiles — heavy line; 1…4 — the involute constructed",
-               "зоны: 2 — двухпарное, 1 — однопарное зацепление; рабочие участки профилей — утолщённая линия; "
-               "1…4 — построение эвольвенты"),
+        + tr(lang, "zones: 2 — two pairs, 1 — one pair; working profiles — heavy line; 1…4 — the involute constructed"),
     ]
     if not centres:
-        lines[-1] += pick(lang, "; the centre beyond the field: a_w broken", "; центр за пределами поля: a_w с обрывом")
+        lines[-1] += tr(lang, "; the centre beyond the field: a_w broken")
     sh.caption(x0b, x1b, y0b + 2.5, lines, H_NOTE, LINE)
     return fld
 
@@ -650,22 +646,22 @@ def _results(sh: Sheet, r, lang: str):
     d, g = r.planetary, r.spur
     teeth = " + ".join("/".join(map(str, s.teeth)) for s in d.stages)
     rows = [
-        (pick(lang, "Motor speed n_{d}", "Частота двигателя n_{д}"), f"{r.motor_rpm} " + pick(lang, "rpm", "об/мин")),
-        (pick(lang, "Reducer scheme; teeth", "Схема редуктора; числа зубьев"), f"{d.scheme}; {teeth}"),
-        (pick(lang, "Planets k", "Число сателлитов k"), str(d.planets)),
-        (pick(lang, "i_{pl}: required / obtained", "i_{пл}: требуемое / получено"),
+        (tr(lang, "Motor speed n_{d}"), f"{r.motor_rpm} " + tr(lang, "rpm")),
+        (tr(lang, "Reducer scheme; teeth"), f"{d.scheme}; {teeth}"),
+        (tr(lang, "Planets k"), str(d.planets)),
+        (tr(lang, "i_{pl}: required / obtained"),
          f"{_n(r.i_planetary, lang, 3)} / {_n(d.ratio, lang, 3)} ({num(d.ratio_error_pct, lang, decimals=2)} %)"),
-        (pick(lang, "Spur pair z_{1}/z_{2}, m", "Передача z_{1}/z_{2}, m"), f"{g.z1}/{g.z2}, {_g6(g.m_mm, lang)} " + pick(lang, "mm", "мм")),
-        (pick(lang, "i_{12}: required / obtained", "i_{12}: требуемое / получено"), f"{_n(r.i_spur, lang, 3)} / {_n(g.i_actual, lang, 3)}"),
+        (tr(lang, "Spur pair z_{1}/z_{2}, m"), f"{g.z1}/{g.z2}, {_g6(g.m_mm, lang)} " + tr(lang, "mm")),
+        (tr(lang, "i_{12}: required / obtained"), f"{_n(r.i_spur, lang, 3)} / {_n(g.i_actual, lang, 3)}"),
     ]
     if g.shifted:
         pr = g.pair
-        rule = {"given": pick(lang, "given", "заданы"), "auto": pick(lang, "auto", "авто"),
-                "aw": pick(lang, "from a_{w}", "по a_{w}")}.get(g.shift_rule, g.shift_rule)
+        rule = {"given": tr(lang, "given"), "auto": tr(lang, "auto"),
+                "aw": tr(lang, "from a_{w}")}.get(g.shift_rule, g.shift_rule)
         rows += [
-            (pick(lang, "Shifts x_{1}; x_{2}", "Смещения x_{1}; x_{2}"),
+            (tr(lang, "Shifts x_{1}; x_{2}"),
              f"{num(g.x1, lang, sig=4)}; {num(g.x2, lang, sig=4)} ({rule})"),
-            (pick(lang, "a_{w}; α_{w}", "a_{w}; α_{w}"), f"{_g6(aw_of(g), lang)}; {num(g.alpha_w_deg, lang, sig=5)}°"),
+            (tr(lang, "a_{w}; α_{w}"), f"{_g6(aw_of(g), lang)}; {num(g.alpha_w_deg, lang, sig=5)}°"),
             ("d_{w1}; d_{w2}", f"{_n(pr.dw_mm[0], lang)}; {_n(pr.dw_mm[1], lang)}"),
         ]
     rows += [
@@ -673,11 +669,11 @@ def _results(sh: Sheet, r, lang: str):
         ("d_{a1}; d_{a2}", f"{_n(g.da1_mm, lang)}; {_n(g.da2_mm, lang)}" if g.shifted else f"{_g6(g.da1_mm, lang)}; {_g6(g.da2_mm, lang)}"),
         ("d_{f1}; d_{f2}", f"{_n(g.df1_mm, lang)}; {_n(g.df2_mm, lang)}" if g.shifted else f"{_g6(g.df1_mm, lang)}; {_g6(g.df2_mm, lang)}"),
         ("d_{b1}; d_{b2}", f"{_n(g.db1_mm, lang)}; {_n(g.db2_mm, lang)}"),
-        (pick(lang, "a_{w}; contact ratio ε_{α}", "a_{w}; коэффициент перекрытия ε_{α}") if not g.shifted
-         else pick(lang, "a; contact ratio ε_{α}", "a; коэффициент перекрытия ε_{α}"),
+        (tr(lang, "a_{w}; contact ratio ε_{α}") if not g.shifted
+         else tr(lang, "a; contact ratio ε_{α}"),
          f"{_g6(g.a_mm, lang)}; {_n(g.eps_alpha, lang, 3)}"),
     ]
-    table(sh, BOX_TABLE, pick(lang, "Gear data", "Параметры зубчатых механизмов"), rows, col1=0.55)
+    table(sh, BOX_TABLE, tr(lang, "Gear data"), rows, col1=0.55)
 
 
 def sheet4(result, variant: int, lang: str, title) -> Sheet:
@@ -689,7 +685,7 @@ def sheet4(result, variant: int, lang: str, title) -> Sheet:
     _assembly_field(sh, result, lang)
     mesh = _mesh_field(sh, result, lang)
     _results(sh, result, lang)
-    sh.title_block(title, name=pick(lang, "Gear mechanisms: synthesis and analysis", "Синтез и анализ зубчатых механизмов"),
+    sh.title_block(title, name=tr(lang, "Gear mechanisms: synthesis and analysis"),
                    designation=title.designation_for(4, variant), scale=mesh.scale_label)
     sh.finish()
     return sh

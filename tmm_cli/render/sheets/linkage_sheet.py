@@ -285,7 +285,7 @@ def _plan_field(sh: Sheet, plan: Plan, box, label: str, lang: str):
 def _results(sh: Sheet, s: Sheet1, lang: str) -> None:
     m, c, st = s.mechanism, s.cycle, s.structure
     rows = [(tr(lang, "Structural formula; W"), f"{st.formula}; W = {st.dof}"),
-            (tr(lang, "Crank speed n_{{1}}"),
+            (tr(lang, "Crank speed n_{1}"),
              f"{num(m.crank.rpm, lang, sig=5)} " + tr(lang, "rpm"))]
     if c.stroke is not None:
         if m.output.kind == "slider":
