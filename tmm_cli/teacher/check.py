@@ -99,7 +99,7 @@ def check_one(variant, answers: dict, *, crank_rpm=None, torque_nm=None, rtol_pc
     except (TmmError, ArithmeticError, ValueError) as exc:
         if shift is None:
             raise
-        from ..i18n.help_ru import error_text
+        from ..i18n.errors import error_text
 
         shift_error = error_text(str(exc), lang) if isinstance(exc, TmmError) else \
             pick(lang, "the pair's geometry cannot be computed", "геометрию передачи не вычислить")

@@ -175,7 +175,7 @@ def check_page(out_dir: Path, group, lang: str, rtol_pct: float, sheets):
         links = _student_links(out_dir, rel, lang, _feedback_files(out_dir, rep.fname))
         detail = ""
         if rep.error:
-            from ..i18n.help_ru import error_text
+            from ..i18n.errors import error_text
 
             detail = error_text(rep.error, lang)
         elif rep.findings:
@@ -275,7 +275,7 @@ def batch_page(out_dir: Path, rows: list[dict], lang: str, tolerance_pct: float 
         links = _student_links(out_dir, rel, lang, _feedback_files(out_dir, fname))
         detail = ""
         if st != "ok" and r.get("error"):
-            from ..i18n.help_ru import error_text
+            from ..i18n.errors import error_text
 
             detail = error_text(str(r["error"]), lang)
         out.append(PageRow(status, tuple(cells), links, detail))

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ...i18n.lang import pick
+from ...i18n import N_, tr, trc
 from ...i18n.numbers import num
 from ..note.doc import typst_escape, typst_string
 
@@ -37,15 +37,22 @@ def _date(d, lang: str) -> str:
     return _t(d.strftime("%d.%m.%Y") if lang == "ru" else d.isoformat())
 
 
-# the book's symbols as typst math (Cyrillic subscripts upright, as the book prints them)
+# the book's symbols as typst math (Cyrillic subscripts upright, as the book prints them; the
+# English text writes them with Latin letters)
 SYM = {
-    "scheme": "№ сх.", "law": "№ зак.",
-    "l_bc": '$l_"BC"$', "nu_max": '$nu_max$', "n_k": '$n_"к"$', "s_max": '$S_max$', "gamma_max": '$gamma_max$',
-    "phi_rise": '$φ_"у"$', "phi_far": '$φ_"дс"$', "phi_return": '$φ_"в"$', "phi_near": '$φ_"бс"$',
-    "n_cr": '$n_"кр"$', "torque": '$M_"пр"$', "n_d": '$n_"д"$',
+    "l_bc": '$l_"BC"$', "nu_max": '$nu_max$', "s_max": '$S_max$', "gamma_max": '$gamma_max$',
+    "n_k": ('$n_k$', '$n_"к"$'), "phi_rise": ('$φ_"rise"$', '$φ_"у"$'), "phi_far": ('$φ_"far"$', '$φ_"дс"$'),
+    "phi_return": ('$φ_"ret"$', '$φ_"в"$'), "phi_near": ('$φ_"near"$', '$φ_"бс"$'), "n_cr": ('$n_"cr"$', '$n_"кр"$'),
+    "torque": ("$M$", '$M_"пр"$'), "n_d": ("$n_d$", '$n_"д"$'),
 }
-SYM_EN = {**SYM, "scheme": "Scheme", "law": "Law", "n_k": "$n_k$", "phi_rise": '$φ_"rise"$', "phi_far": '$φ_"far"$',
-          "phi_return": '$φ_"ret"$', "phi_near": '$φ_"near"$', "n_cr": '$n_"cr"$', "torque": "$M$", "n_d": "$n_d$"}
+
+
+def _symbols(lang: str) -> dict:
+    """SYM in `lang`'s letters, and the table's column words for the scheme and law numbers."""
+    out = {k: (v[1] if lang == "ru" else v[0]) if isinstance(v, tuple) else v for k, v in SYM.items()}
+    out["scheme"] = _t(trc(lang, "column, short", "Scheme"))
+    out["law"] = _t(trc(lang, "column, short", "Law"))
+    return out
 
 
 def _rows3(a, lang: str) -> list[tuple[str, str, str]]:
@@ -53,30 +60,29 @@ def _rows3(a, lang: str) -> list[tuple[str, str, str]]:
     from ..terminal.variants import law_words, rotation_words, scheme_words
 
     v = a.variant
-    sym = SYM if lang == "ru" else SYM_EN
+    sym = _symbols(lang)
     deg = "°"
-    rows = [(sym["scheme"], _t(pick(lang, "cam mechanism (Fig. 1.8): ", "схема кулачкового механизма (рис. 1.8): ")
+    rows = [(sym["scheme"], _t(tr(lang, 'cam mechanism (Fig. 1.8): ')
                                + scheme_words(v.scheme, lang)), str(v.scheme))]
     if v.is_rocker:
-        rows.append((sym["l_bc"], _t(pick(lang, "rocker length", "длина коромысла")), f"{_n(v.l_bc_m, lang)} " + pick(lang, "m", "м")))
-    rows.append((sym["nu_max"], _t(pick(lang, "largest allowed pressure angle", "максимально допустимый угол давления")),
+        rows.append((sym["l_bc"], _t(tr(lang, 'rocker length')), f"{_n(v.l_bc_m, lang)} " + tr(lang, 'm')))
+    rows.append((sym["nu_max"], _t(tr(lang, 'largest allowed pressure angle')),
                  f"{_n(v.nu_max_deg, lang)}{deg}"))
-    rows.append((sym["n_k"], _t(pick(lang, "cam speed, ", "частота вращения кулачка, ") + rotation_words(v, lang).split(" (")[0]),
-                 f"{_n(v.n_cam_rpm, lang)} " + pick(lang, "rpm", "об/мин")))
+    rows.append((sym["n_k"], _t(tr(lang, 'cam speed, ') + rotation_words(v, lang).split(" (")[0]),
+                 f"{_n(v.n_cam_rpm, lang)} " + tr(lang, 'rpm')))
     if v.is_rocker:
-        rows.append((sym["gamma_max"], _t(pick(lang, "rocker swing", "максимальный угол поворота коромысла")),
+        rows.append((sym["gamma_max"], _t(tr(lang, 'rocker swing')),
                      f"{_n(v.stroke, lang)}{deg}"))
     else:
-        rows.append((sym["s_max"], _t(pick(lang, "follower stroke", "максимальное перемещение толкателя")),
-                     f"{_n(v.stroke, lang)} " + pick(lang, "m", "м")))
-    rows.append((sym["law"], _t(pick(lang, "follower acceleration law (Fig. 1.9): ", "закон ускорений толкателя (рис. 1.9): ")
+        rows.append((sym["s_max"], _t(tr(lang, 'follower stroke')),
+                     f"{_n(v.stroke, lang)} " + tr(lang, 'm')))
+    rows.append((sym["law"], _t(tr(lang, 'follower acceleration law (Fig. 1.9): ')
                                 + law_words(v.law, lang)), str(v.law)))
-    for key, en, ru, value in (("phi_rise", "phase angle of rise", "фазовый угол удаления", v.phi_rise_deg),
-                               ("phi_far", "phase angle of far dwell", "фазовый угол дальнего стояния", v.phi_far_dwell_deg),
-                               ("phi_return", "phase angle of return", "фазовый угол возвращения", v.phi_return_deg),
-                               ("phi_near", "near dwell: 360° less the three phases",
-                                "ближнее стояние: 360° без трёх фаз", v.phi_near_dwell_deg)):
-        rows.append((sym[key], _t(pick(lang, en, ru)), f"{_n(value, lang)}{deg}"))
+    for key, meaning, value in (("phi_rise", N_("phase angle of rise"), v.phi_rise_deg),
+                                ("phi_far", N_("phase angle of far dwell"), v.phi_far_dwell_deg),
+                                ("phi_return", N_("phase angle of return"), v.phi_return_deg),
+                                ("phi_near", N_("near dwell: 360° less the three phases"), v.phi_near_dwell_deg)):
+        rows.append((sym[key], _t(tr(lang, meaning)), f"{_n(value, lang)}{deg}"))
     return rows
 
 
@@ -85,61 +91,39 @@ def _rows4(a, lang: str) -> list[tuple[str, str, str]]:
     them), the cam speed, the standard motor speeds and the spur pair's constants (§2.2, §2.3)."""
     from ...gears.drive import DEFAULT_CRANK_RPM, MOTOR_RPM
 
-    sym = SYM if lang == "ru" else SYM_EN
-    rpm = pick(lang, "rpm", "об/мин")
+    sym = _symbols(lang)
+    rpm = tr(lang, 'rpm')
     crank = (f"{_n(a.crank_rpm, lang)} {rpm}" if a.crank_rpm is not None else
-             pick(lang, f"from sheet 1 (if none: {DEFAULT_CRANK_RPM:g} rpm, §2.2)",
-                  f"по листу 1 (если нет — {DEFAULT_CRANK_RPM:g} об/мин, п. 2.2)"))
-    torque = (f"{_n(a.torque_nm, lang)} " + pick(lang, "N·m", "Н·м") if a.torque_nm is not None else
-              pick(lang, "from sheet 2", "по листу 2"))
+             tr(lang, 'from sheet 1 (if none: {rpm:g} rpm, §2.2)').format(rpm=DEFAULT_CRANK_RPM))
+    torque = (f"{_n(a.torque_nm, lang)} " + tr(lang, 'N·m') if a.torque_nm is not None else
+              tr(lang, 'from sheet 2'))
     speeds = ", ".join(str(n) for n in MOTOR_RPM)
-    rule = pick(lang, 'motor: the smallest standard speed with $n_d >= 3 n_"cr"$ (§2.2)',
-                'двигатель: наименьшая стандартная частота с $n_"д" >= 3 n_"кр"$ (п. 2.2)')
+    rule = tr(lang, 'motor: the smallest standard speed with $n_d >= 3 n_"cr"$ (§2.2)')
     return [
-        (sym["n_cr"], _t(pick(lang, "crank speed of the linkage (sheet 1)", "частота вращения кривошипа (лист 1)")), _t(crank)),
-        (sym["torque"], _t(pick(lang, "mean reduced moment (sheet 2), for the motor power (§2.6)",
-                                "средний приведённый момент (лист 2), для мощности двигателя (п. 2.6)")), _t(torque)),
-        (sym["n_k"], _t(pick(lang, "cam speed (sheet 3)", "частота вращения кулачка (лист 3)")),
+        (sym["n_cr"], _t(tr(lang, 'crank speed of the linkage (sheet 1)')), _t(crank)),
+        (sym["torque"], _t(tr(lang, 'mean reduced moment (sheet 2), for the motor power (§2.6)')), _t(torque)),
+        (sym["n_k"], _t(tr(lang, 'cam speed (sheet 3)')),
          f"{_n(abs(a.variant.n_cam_rpm), lang)} {rpm}"),
         (sym["n_d"], rule, f"{speeds} {rpm}"),
-        ("$m, alpha$", _t(pick(lang, "spur pair of zero gears (§2.3): module, pressure angle",
-                               "простая передача из нулевых колёс (п. 2.3): модуль, угол профиля")),
-         pick(lang, "20 mm, 20°", "20 мм, 20°")),
+        ("$m, alpha$", _t(tr(lang, 'spur pair of zero gears (§2.3): module, pressure angle')),
+         tr(lang, '20 mm, 20°')),
     ]
 
 
 def sheets_list(lang: str) -> list[str]:
     """The drawing sheets and what each holds (A1)."""
     return [
-        pick(lang, "Sheet 3, «Synthesis of the cam mechanism»: the follower's motion diagrams; the zone of the cam "
-                   "centre and the main dimensions (base radius, offset or centre distance); the cam profile (pitch and working) at a standard "
-                   "scale with the profile angles; the pressure angle over the cycle.",
-             "Лист 3 «Синтез кулачкового механизма»: диаграммы движения толкателя; зона положения центра кулачка и "
-             "основные размеры (минимальный радиус, эксцентриситет или межцентровое расстояние); профиль кулачка (теоретический и действительный) в стандартном "
-             "масштабе с профильными углами; угол давления за цикл."),
-        pick(lang, "Sheet 4, «Synthesis and analysis of the gear mechanisms»: the spur mesh with the line of action and "
-                   "the zones of one- and two-pair contact; the planetary reducer's scheme with the linear and angular "
-                   "velocity pictures; the assembly of the planets.",
-             "Лист 4 «Синтез и анализ зубчатых механизмов»: картина эвольвентного зацепления простой передачи с линией "
-             "зацепления и зонами одно- и двухпарного зацепления; схема планетарного редуктора с планами линейных и "
-             "угловых скоростей; схема сборки сателлитов."),
+        tr(lang, "Sheet 3, «Synthesis of the cam mechanism»: the follower's motion diagrams; the zone of the cam centre and the main dimensions (base radius, offset or centre distance); the cam profile (pitch and working) at a standard scale with the profile angles; the pressure angle over the cycle."),
+        tr(lang, "Sheet 4, «Synthesis and analysis of the gear mechanisms»: the spur mesh with the line of action and the zones of one- and two-pair contact; the planetary reducer's scheme with the linear and angular velocity pictures; the assembly of the planets."),
     ]
 
 
 def note_chapters(lang: str) -> list[str]:
     """The explanatory note's chapters, as the note (render/note) has them."""
     return [
-        pick(lang, "1. Synthesis of the cam mechanism: input data; motion law of the follower; scales of the diagrams; "
-                   "main dimensions; profile of the cam; pressure angle over the cycle.",
-             "1. Синтез кулачкового механизма: исходные данные; закон движения толкателя; масштабы диаграмм; "
-             "определение основных размеров; построение профиля кулачка; угол давления за цикл."),
-        pick(lang, "2. Synthesis of the gear mechanisms: motor speed and gear ratios; scheme of the planetary reducer; "
-                   "tooth numbers (the book's procedure and the smallest set); conditions of synthesis; checking the "
-                   "ratio; the spur pair; power of the motor.",
-             "2. Синтез зубчатых механизмов: выбор двигателя и передаточных отношений; выбор схемы планетарного "
-             "редуктора; подбор чисел зубьев; проверка условий синтеза; проверка передаточного отношения; расчёт "
-             "простой зубчатой передачи; потребная мощность двигателя."),
-        pick(lang, "Conclusion. References.", "Заключение. Список литературы."),
+        tr(lang, '1. Synthesis of the cam mechanism: input data; motion law of the follower; scales of the diagrams; main dimensions; profile of the cam; pressure angle over the cycle.'),
+        tr(lang, "2. Synthesis of the gear mechanisms: motor speed and gear ratios; scheme of the planetary reducer; tooth numbers (the book's procedure and the smallest set); conditions of synthesis; checking the ratio; the spur pair; power of the motor."),
+        tr(lang, 'Conclusion. References.'),
     ]
 
 
@@ -156,46 +140,42 @@ def page_source(a, lang: str, *, teacher: str = "", org: str = "", issued=None, 
 
     org_lines = [s.strip() for s in (org or "").split(",") if s.strip()]
     org_arg = "(" + "".join(typst_string(s) + ", " for s in org_lines) + ")"
-    who = pick(lang, f"Student: *{_t(a.student)}*", f"Студент: *{_t(a.student)}*")
+    who = tr(lang, 'Student: *{student}*').format(student=_t(a.student))
     if a.group:
-        who += pick(lang, f" #h(1.5em) Group: *{_t(a.group)}*", f" #h(1.5em) Группа: *{_t(a.group)}*")
-    who += pick(lang, f" #h(1.5em) Variant: *{a.variant.number}*", f" #h(1.5em) Вариант: *{a.variant.number}*")
+        who += tr(lang, ' #h(1.5em) Group: *{group}*').format(group=_t(a.group))
+    who += tr(lang, ' #h(1.5em) Variant: *{number}*').format(number=a.variant.number)
     body = [
-        "*" + pick(lang, "1. Subject.", "1. Тема.") + "* " + _t(pick(
-            lang, "Synthesis of the cam mechanism (sheet 3) and synthesis and analysis of the gear mechanisms of the "
-                  "drive (sheet 4) by the book [1].",
-            "Синтез кулачкового механизма (лист 3), синтез и анализ зубчатых механизмов привода (лист 4) по пособию [1].")),
-        "*" + pick(lang, f"2. Input data for sheet 3", "2. Исходные данные к листу 3") + "* " + _t(pick(
-            lang, f"(Table 1.2, variant {a.variant.number}):", f"(табл. 1.2, вариант {a.variant.number}):")),
+        "*" + tr(lang, '1. Subject.') + "* " + _t(tr(lang, 'Synthesis of the cam mechanism (sheet 3) and synthesis and analysis of the gear mechanisms of the drive (sheet 4) by the book [1].')),
+        "*" + tr(lang, "2. Input data for sheet 3") + "* " + _t(tr(lang, '(Table 1.2, variant {number}):').format(number=a.variant.number)),
         _table(_rows3(a, lang)),
-        "*" + pick(lang, "3. Input data for sheet 4:", "3. Исходные данные к листу 4:") + "*",
+        "*" + tr(lang, '3. Input data for sheet 4:') + "*",
         _table(_rows4(a, lang)),
-        "*" + pick(lang, "4. Drawings", "4. Графическая часть") + "* " + _t(pick(lang, "(two A1 sheets):", "(два листа формата А1):")),
+        "*" + tr(lang, '4. Drawings') + "* " + _t(tr(lang, '(two A1 sheets):')),
         "\n".join(f"- {_t(s)}" for s in sheets_list(lang)),
-        "*" + pick(lang, "5. Explanatory note", "5. Расчётно-пояснительная записка") + "* " + _t(pick(
-            lang, "(A4, with every quantity as formula, substitution and result):",
-            "(формат А4; каждая величина — формула, подстановка, результат):")),
+        "*" + tr(lang, '5. Explanatory note') + "* " + _t(tr(lang, '(A4, with every quantity as formula, substitution and result):')),
         "\n".join(f"#pad(left: 1em)[{_t(s)}]" for s in note_chapters(lang)),
-        "*" + pick(lang, "6. Literature:", "6. Литература:") + "* " + _t("1. " + (TEXTBOOK["ru"] if lang == "ru" else TEXTBOOK["en"])),
+        "*" + tr(lang, '6. Literature:') + "* " + _t("1. " + (TEXTBOOK["ru"] if lang == "ru" else TEXTBOOK["en"])),
         "#v(0.5em)",
-        pick(lang, "Issued: ", "Дата выдачи задания: ") + _date(issued, lang) + " #h(2em) "
-        + pick(lang, "Due: ", "Срок сдачи проекта: ") + _date(due, lang),
+        tr(lang, 'Issued: ') + _date(issued, lang) + " #h(2em) "
+        + tr(lang, 'Due: ') + _date(due, lang),
         "#v(0.8em)",
-        f"#sign([{pick(lang, 'Teacher', 'Руководитель')}], [{_t(teacher)}])",
+        "#sign([" + tr(lang, "Teacher") + f"], [{_t(teacher)}])",
         "#v(0.5em)",
-        f"#sign([{pick(lang, 'Accepted by the student', 'Задание принял к исполнению')}], [{_t(a.student)}], "
-        f"date-label: [{pick(lang, 'date', 'дата')} #blank(2.5cm)])",
+        "#sign([" + tr(lang, "Accepted by the student") + f"], [{_t(a.student)}], date-label: ["
+        + tr(lang, "date") + " #blank(2.5cm)])",
     ]
-    return (f"#assignment(org: {org_arg}, title: [{pick(lang, 'ASSIGNMENT', 'ЗАДАНИЕ')}],\n"
-            f"  subtitle: [{_t(pick(lang, 'for the course project in the Theory of Mechanisms and Machines', 'на курсовой проект по теории механизмов и машин'))}],\n"
+    title = tr(lang, "ASSIGNMENT")
+    subtitle = _t(tr(lang, "for the course project in the Theory of Mechanisms and Machines"))
+    return (f"#assignment(org: {org_arg}, title: [{title}],\n  subtitle: [{subtitle}],\n"
             f"  who: [{who}])[\n" + "\n\n".join(body) + "\n]\n")
 
 
 def document_source(items, lang: str, **common) -> str:
     """A typst document of the pages of `items` (one page each)."""
+    title = typst_string(tr(lang, "Course project assignments"))
     head = (f"// Assignments written by `tmm assign`.\n#import \"{STYLE_FILE}\": *\n"
             f"#set text(lang: \"{'ru' if lang == 'ru' else 'en'}\")\n"
-            f"#set document(title: {typst_string(pick(lang, 'Course project assignments', 'Задания на курсовой проект'))})\n")
+            f"#set document(title: {title})\n")
     pages = [page_source(a, lang, **common) for a in items]
     return head + "\n#pagebreak()\n".join(pages)
 

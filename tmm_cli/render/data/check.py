@@ -5,30 +5,31 @@ the likely cause — and a line for a student who could not be checked. A spread
 
 from __future__ import annotations
 
-from ...i18n.lang import note_text, pick
+from ...i18n import tr, trc
+from ...i18n.lang import note_text
 from ..feedback.words import basis_word, place_text, status_word, symbol
 
 
 def check_header(lang: str) -> list[str]:
-    return [pick(lang, "student", "студент"), pick(lang, "group", "группа"), pick(lang, "variant", "вариант"),
-            pick(lang, "verdict", "итог"), pick(lang, "key", "ключ"), pick(lang, "value", "величина"),
-            pick(lang, "given", "ответ"), pick(lang, "expected", "верно"), pick(lang, "deviation", "отклонение"),
-            pick(lang, "deviation, %", "отклонение, %"), pick(lang, "tolerance, %", "допуск, %"),
-            pick(lang, "tolerance", "допуск (абс.)"), pick(lang, "result", "результат"),
-            pick(lang, "compared with", "сравнение с"), pick(lang, "where to look", "где смотреть"),
-            pick(lang, "comment", "комментарий")]
+    return [tr(lang, 'student'), tr(lang, 'group'), tr(lang, 'variant'),
+            tr(lang, 'verdict'), tr(lang, 'key'), tr(lang, 'value'),
+            trc(lang, "check", "given"), tr(lang, 'expected'), tr(lang, 'deviation'),
+            tr(lang, 'deviation, %'), tr(lang, 'tolerance, %'),
+            tr(lang, 'tolerance'), tr(lang, 'result'),
+            tr(lang, 'compared with'), tr(lang, 'where to look'),
+            tr(lang, 'comment')]
 
 
 NUMERIC = {2, 6, 7, 8, 9, 10, 11}
 
 
 def check_rows(group, lang: str) -> list[list]:
-    from ...i18n.help_ru import error_text
+    from ...i18n.errors import error_text
 
     body = []
     for rep in group.reports:
-        verdict = (pick(lang, "error", "ошибка") if rep.error else
-                   pick(lang, "passed", "зачтено") if rep.passed else pick(lang, "not passed", "не зачтено"))
+        verdict = (tr(lang, 'error') if rep.error else
+                   tr(lang, 'passed') if rep.passed else tr(lang, 'not passed'))
         lead = [rep.label, rep.group, rep.variant or "", verdict]
         if rep.error or not rep.rows:
             body.append(lead + ["", "", "", "", "", "", "", "", "", "", "", error_text(rep.error, lang)])

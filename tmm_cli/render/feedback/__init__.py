@@ -10,8 +10,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ...i18n.lang import note_text, pick
-from ...i18n.numbers import num, plural
+from ...i18n import ntr, tr, trc
+from ...i18n.lang import note_text
+from ...i18n.numbers import num
 from .words import (
     deviation_text,
     findings_lines,
@@ -45,46 +46,45 @@ def student_doc(report, lang: str):
     rows = report.rows
     good = [r for r in rows if passed(r)]
     bad = [r for r in rows if not passed(r)]
-    facts = [pick(lang, f"Variant {report.variant}", f"Вариант {report.variant}")]
+    facts = [tr(lang, 'Variant {variant}').format(variant=report.variant)]
     if report.group:
-        facts.append(pick(lang, "group ", "группа ") + _plain(report.group))
-    facts.append(pick(lang, "tolerance ", "допуск ") + f"{num(report.rtol_pct, lang, sig=3, sci=False)} %")
+        facts.append(tr(lang, 'group ') + _plain(report.group))
+    facts.append(tr(lang, 'tolerance ') + f"{num(report.rtol_pct, lang, sig=3, sci=False)} %")
     if report.answers_file:
-        facts.append(pick(lang, "answers file ", "файл ответов ") + _plain(report.answers_file))
+        facts.append(tr(lang, 'answers file ') + _plain(report.answers_file))
     doc.p("; ".join(facts) + ".")
     if report.error:
-        from ...i18n.help_ru import error_text
+        from ...i18n.errors import error_text
 
-        doc.p(pick(lang, "The answers could not be checked: ", "Ответы не удалось проверить: ")
+        doc.p(tr(lang, 'The answers could not be checked: ')
               + _plain(error_text(report.error, lang)))
         return doc
-    verdict = pick(lang, "PASSED", "ЗАЧТЕНО") if report.passed else pick(lang, "NOT PASSED", "НЕ ЗАЧТЕНО")
-    doc.p(pick(lang, f"Verdict: {verdict} — {len(good)} of {len(rows)} values right.",
-               f"Итог: {verdict} — верно {len(good)} из {len(rows)}."))
+    verdict = tr(lang, 'PASSED') if report.passed else tr(lang, 'NOT PASSED')
+    doc.p(tr(lang, 'Verdict: {verdict} — {good} of {total} values right.').format(verdict=verdict, good=len(good), total=len(rows)))
     for note in report.notes:
         doc.p(note_text(note, lang))
     if bad:
-        doc.h(2, pick(lang, "What to correct", "Что исправить"), numbered=False)
+        doc.h(2, tr(lang, 'What to correct'), numbered=False)
         doc.items([_plain(row_sentence(r, lang)) for r in bad])
     if report.findings:
-        doc.h(2, pick(lang, "Remarks", "Замечания"), numbered=False)
+        doc.h(2, tr(lang, 'Remarks'), numbered=False)
         doc.items([_plain(t) for t in findings_lines(report.findings, lang)])
     if good:
-        doc.h(2, pick(lang, "Right", "Верно"), numbered=False)
+        doc.h(2, tr(lang, 'Right'), numbered=False)
         doc.items([_plain(row_sentence(r, lang)) for r in good])
-    header = [pick(lang, "Value", "Величина"), pick(lang, "Yours", "Ваш ответ"), pick(lang, "Right", "Верно"),
-              pick(lang, "Deviation", "Отклонение"), pick(lang, "Tolerance", "Допуск"), pick(lang, "Result", "Итог"),
-              pick(lang, "Where to look", "Где смотреть")]
+    header = [trc(lang, "check", "Value"), tr(lang, 'Yours'), tr(lang, 'Right'),
+              tr(lang, 'Deviation'), tr(lang, 'Tolerance'), tr(lang, 'Result'),
+              tr(lang, 'Where to look')]
     body = [[_plain(symbol(r.key, lang) if r.status != "unknown key" else r.written or r.key),
              _plain(value_text(r.given, r.key, lang)), value_text(r.expected, r.key, lang), deviation_text(r, lang),
              tolerance_text(r, lang), status_word(r.status, lang), place_text(r.place, lang)] for r in rows]
-    doc.table("values", pick(lang, "Every checked value", "Все проверенные величины"), header, body,
+    doc.table("values", tr(lang, 'Every checked value'), header, body,
               align="left, right, right, right, left, left, left")
     return doc
 
 
 def _title(report, lang: str) -> str:
-    return pick(lang, f"Check: {report.label}", f"Проверка: {report.label}")
+    return tr(lang, 'Check: {student}').format(student=report.label)
 
 
 def student_markdown(report, lang: str) -> str:
@@ -149,25 +149,22 @@ def group_markdown(group, lang: str, rtol_pct: float, sheets, table) -> str:
 
     header, body = table
     n_pass = sum(rep.passed for rep in group.reports)
-    title = pick(lang, "Group check", "Проверка группы")
+    title = tr(lang, 'Group check')
     lines = [f"# {title}", "",
-             pick(lang, f"Tolerance {num(rtol_pct, lang)} %, sheets {', '.join(sorted(sheets))}; passed {n_pass} of {len(group.reports)}.",
-                  f"Допуск {num(rtol_pct, lang)} %, листы {', '.join(sorted(sheets))}; зачтено {n_pass} из {len(group.reports)}."), ""]
+             tr(lang, 'Tolerance {tol} %, sheets {sheets}; passed {n_pass} of {total}.').format(tol=num(rtol_pct, lang), sheets=', '.join(sorted(sheets)), n_pass=n_pass, total=len(group.reports)), ""]
     if group.roster_encoding:
-        lines += [pick(lang, f"Roster read as {group.roster_encoding}.", f"Список прочитан в кодировке {group.roster_encoding}."), ""]
+        lines += [tr(lang, 'Roster read as {encoding}.').format(encoding=group.roster_encoding), ""]
     lines.append("| " + " | ".join(cell(h) for h in header) + " |")
     lines.append("|" + "---|" * len(header))
     for row in body:
         lines.append("| " + " | ".join(cell(v) for v in row) + " |")
     if group.unmatched:
-        lines += ["", "## " + pick(lang, "Answers files of nobody on the roster", "Файлы ответов, не найденные в списке"), ""]
+        lines += ["", "## " + tr(lang, 'Answers files of nobody on the roster'), ""]
         for f, near in group.unmatched:
-            hint = pick(lang, f" (like {near}?)", f" (возможно, {near}?)") if near else ""
+            hint = tr(lang, ' (like {near}?)').format(near=near) if near else ""
             lines.append(f"- {cell(f)}{cell(hint)}")
     feedback = [rep for rep in group.reports if getattr(rep, "fname", "")]
     if feedback:
-        lines += ["", pick(lang, f"Each student's feedback: {FEEDBACK_DIR}/check-<name>.md.",
-                           f"Замечания каждому студенту: {FEEDBACK_DIR}/check-<имя>.md."),
-                  plural(len(feedback), lang, {"one": "file", "other": "files"} if lang != "ru" else
-                         {"one": "файл", "few": "файла", "many": "файлов", "other": "файла"}) + "."]
+        lines += ["", tr(lang, "Each student's feedback: {folder}/check-<name>.md.").format(folder=FEEDBACK_DIR),
+                  ntr(lang, "{n} file.", "{n} files.", len(feedback)).format(n=len(feedback))]
     return "\n".join(lines) + "\n"

@@ -7,23 +7,58 @@ A row is a :class:`tmm_cli.teacher.rows.CheckRow` (read by its fields: render/ d
 
 from __future__ import annotations
 
-from ...i18n.lang import note_text, pick
+from ...i18n import N_, tr, trc
+from ...i18n.lang import note_text
 from ...i18n.numbers import num
 
-# key -> (English symbol, Russian symbol): the book's letters
+# key -> the book's symbol (its Russian letters from the catalogue)
 SYMBOLS = {
-    "n_motor_rpm": ("n_d", "n_д"), "i_spur": ("i_d", "i_д"), "i_planetary": ("i_pl", "i_пл"), "i_kh": ("i_kH", "i_kH"),
-    "ratio_error_pct": ("δi", "δi"), "z_sun": ("z_k", "z_k"), "z_planet": ("z_c", "z_c"), "z_planet2": ("z_c′", "z_c′"),
-    "z_ring": ("z_n", "z_n"), "planets": ("k", "k"), "z_sun_2": ("z_k (2)", "z_k (2)"), "z_planet_2": ("z_c (2)", "z_c (2)"),
-    "z_ring_2": ("z_n (2)", "z_n (2)"), "planets_2": ("k (2)", "k (2)"), "z1": ("z1", "z1"), "z2": ("z2", "z2"),
-    "a_mm": ("a", "a"), "eps_alpha": ("ε_α", "ε_α"), "x1": ("x1", "x1"), "x2": ("x2", "x2"), "a_w_mm": ("a_w", "a_w"),
-    "alpha_w_deg": ("α_w", "α_w"), "r0_mm": ("r_0", "r_0"), "e_mm": ("e", "e"), "l_oc_mm": ("l_OC", "l_OC"),
-    "roller_mm": ("r_p", "r_р"), "nu_rise_deg": ("ν_rise", "ν_у"), "nu_return_deg": ("ν_return", "ν_в"),
-    "psi_rise_deg": ("ψ_rise", "ψ_у"), "psi_far_dwell_deg": ("ψ_far", "ψ_дс"), "psi_return_deg": ("ψ_return", "ψ_в"),
-    "phi_rise_deg": ("φ_rise", "φ_у"), "phi_far_dwell_deg": ("φ_far", "φ_дс"), "phi_return_deg": ("φ_return", "φ_в"),
-    "nu_max_deg": ("ν_max", "ν_max"), "n_cam_rpm": ("n_k", "n_к"),
+    'n_motor_rpm': N_('n_d'),
+    'i_spur': N_('i_d'),
+    'i_planetary': N_('i_pl'),
+    'i_kh': 'i_kH',
+    'ratio_error_pct': 'δi',
+    'z_sun': 'z_k',
+    'z_planet': 'z_c',
+    'z_planet2': 'z_c′',
+    'z_ring': 'z_n',
+    'planets': 'k',
+    'z_sun_2': 'z_k (2)',
+    'z_planet_2': 'z_c (2)',
+    'z_ring_2': 'z_n (2)',
+    'planets_2': 'k (2)',
+    'z1': 'z1',
+    'z2': 'z2',
+    'a_mm': 'a',
+    'eps_alpha': 'ε_α',
+    'x1': 'x1',
+    'x2': 'x2',
+    'a_w_mm': 'a_w',
+    'alpha_w_deg': 'α_w',
+    'r0_mm': 'r_0',
+    'e_mm': 'e',
+    'l_oc_mm': 'l_OC',
+    'roller_mm': N_('r_p'),
+    'nu_rise_deg': N_('ν_rise'),
+    'nu_return_deg': N_('ν_return'),
+    'psi_rise_deg': N_('ψ_rise'),
+    'psi_far_dwell_deg': N_('ψ_far'),
+    'psi_return_deg': N_('ψ_return'),
+    'phi_rise_deg': N_('φ_rise'),
+    'phi_far_dwell_deg': N_('φ_far'),
+    'phi_return_deg': N_('φ_return'),
+    'nu_max_deg': 'ν_max',
+    'n_cam_rpm': N_('n_k'),
 }
-UNITS = {"mm": ("mm", "мм"), "deg": ("°", "°"), "rpm": ("rpm", "об/мин"), "%": ("%", "%")}
+
+# unit -> its word
+UNITS = {
+    'mm': N_('mm'),
+    'deg': '°',
+    'rpm': N_('rpm'),
+    '%': '%',
+}
+
 _UNIT_OF = {k: u for k, u in (("n_motor_rpm", "rpm"), ("n_cam_rpm", "rpm"), ("a_mm", "mm"), ("a_w_mm", "mm"),
                               ("alpha_w_deg", "deg"), ("r0_mm", "mm"), ("e_mm", "mm"), ("l_oc_mm", "mm"),
                               ("roller_mm", "mm"), ("ratio_error_pct", "%"))}
@@ -31,29 +66,31 @@ for _k in SYMBOLS:
     if _k.endswith("_deg"):
         _UNIT_OF[_k] = "deg"
 
-# a row's verdict: (English, Russian), short (tables, CSV) and long (the terminal's table)
+# a row's verdict
 STATUS = {
-    "pass": ("pass", "верно"),
-    "pass (book)": ("pass (the book's vertex)", "верно (вершина по пособию)"),
-    "pass (valid alternative)": ("valid alternative", "верная альтернатива"),
-    "pass (book roller)": ("pass (the book's roller 0.2·r0)", "верно (ролик 0,2·r0 по пособию)"),
-    "pass (book roller, undercuts)": ("pass (the book's roller; it undercuts)", "верно (ролик по пособию; подрезает)"),
-    "pass (other swing)": ("pass (the other swing)", "верно (другое направление качания)"),
-    "fail": ("wrong", "неверно"),
-    "unknown key": ("unknown key", "неизвестный ключ"),
-    "not computed": ("not computed for this variant", "не вычисляется для варианта"),
-    "missing": ("missing (required)", "нет ответа (обязательный)"),
-    "unreadable": ("not a number", "не число"),
-    "duplicate": ("given twice", "указан дважды"),
-    "not checked": ("not checked", "не проверено"),
+    'pass': N_('pass'),
+    'pass (book)': N_("pass (the book's vertex)"),
+    'pass (valid alternative)': N_('valid alternative'),
+    'pass (book roller)': N_("pass (the book's roller 0.2·r0)"),
+    'pass (book roller, undercuts)': N_("pass (the book's roller; it undercuts)"),
+    'pass (other swing)': N_('pass (the other swing)'),
+    'fail': N_('wrong'),
+    'unknown key': N_('unknown key'),
+    'not computed': N_('not computed for this variant'),
+    'missing': N_('missing (required)'),
+    'unreadable': N_('not a number'),
+    'duplicate': N_('given twice'),
+    'not checked': N_('not checked'),
 }
+
+# what a value was compared with
 BASIS = {
-    "program": ("the program's design", "расчёт программы"),
-    "book_vertex": ("the book's vertex", "вершина по пособию"),
-    "book_roller": ("the book's roller 0.2·r0", "ролик 0,2·r0 по пособию"),
-    "other_swing": ("the other swing", "другое направление качания"),
-    "student_set": ("your own tooth set", "ваш набор зубьев"),
-    "variant": ("Table 1.2", "табл. 1.2"),
+    'program': N_("the program's design"),
+    'book_vertex': N_("the book's vertex"),
+    'book_roller': N_("the book's roller 0.2·r0"),
+    'other_swing': N_('the other swing'),
+    'student_set': N_('your own tooth set'),
+    'variant': N_('Table 1.2'),
 }
 
 
@@ -62,26 +99,20 @@ def passed(row) -> bool:
 
 
 def status_word(status: str, lang: str) -> str:
-    en, ru = STATUS.get(status, (status, status))
-    return pick(lang, en, ru)
+    return tr(lang, STATUS[status]) if status in STATUS else status
 
 
 def basis_word(basis: str, lang: str) -> str:
-    en, ru = BASIS.get(basis, (basis, basis))
-    return pick(lang, en, ru)
+    return tr(lang, BASIS[basis]) if basis in BASIS else basis
 
 
 def symbol(key: str, lang: str) -> str:
-    en, ru = SYMBOLS.get(key, (key, key))
-    return pick(lang, en, ru)
+    return tr(lang, SYMBOLS[key]) if key in SYMBOLS else key
 
 
 def unit(key: str, lang: str) -> str:
     u = _UNIT_OF.get(key)
-    if not u:
-        return ""
-    en, ru = UNITS[u]
-    return pick(lang, en, ru)
+    return tr(lang, UNITS[u]) if u else ""
 
 
 def value_text(value, key: str, lang: str, with_unit: bool = True) -> str:
@@ -111,15 +142,16 @@ def place_text(place, lang: str) -> str:
         return ""
     parts = []
     if getattr(place, "section", ""):
-        parts.append(pick(lang, "§", "п. ") + place.section)
+        parts.append(tr(lang, '§') + place.section)
     if getattr(place, "steps", ""):
         many = any(ch in place.steps for ch in "–-,")
-        parts.append(pick(lang, "steps " if many else "step ", "этапы " if many else "этап ") + place.steps)
+        parts.append((tr(lang, "steps {steps}") if many else tr(lang, "step {steps}")).format(steps=place.steps))
     if getattr(place, "eq", ""):
         eqs = [e.strip() for e in place.eq.split(",")]
-        parts.append(pick(lang, "", "формулы " if len(eqs) > 1 else "формула ") + ", ".join(f"({e})" for e in eqs))
+        shown = ", ".join(f"({e})" for e in eqs)
+        parts.append((trc(lang, "equations", "{eqs}") if len(eqs) > 1 else trc(lang, "equation", "{eqs}")).format(eqs=shown))
     if getattr(place, "table", ""):
-        parts.append(pick(lang, "Table ", "табл. ") + place.table)
+        parts.append(tr(lang, 'Table ') + place.table)
     if getattr(place, "doc", ""):
         parts.append(place.doc)
     return ", ".join(parts)
@@ -133,8 +165,8 @@ def _unit_suffix(key: str, lang: str) -> str:
 def tolerance_text(row, lang: str) -> str:
     """±3 % (±1,47 мм) / exact."""
     if row.tolerance_pct is None:
-        return pick(lang, "exact", "точно") if row.status in ("pass", "fail", "pass (valid alternative)") else ""
-    share = pick(lang, " of r_0", " от r_0") if row.key == "e_mm" else ""
+        return tr(lang, 'exact') if row.status in ("pass", "fail", "pass (valid alternative)") else ""
+    share = tr(lang, ' of r_0') if row.key == "e_mm" else ""
     text = f"±{num(row.tolerance_pct, lang, sig=3, sci=False)} %{share}"
     if row.tolerance is not None and unit(row.key, lang):
         text += f" (±{num(row.tolerance, lang, sig=3, sci=False)}{_unit_suffix(row.key, lang)})"
@@ -166,12 +198,12 @@ def _how_far(row, lang: str) -> str:
     "the program's set has 38": another set may be right too)."""
     if row.deviation_pct is None or row.tolerance_pct is None:
         if row.key in SET_KEYS:
-            return pick(lang, "the program's set has ", "в наборе программы ") + value_text(row.expected, row.key, lang)
-        return pick(lang, "expected ", "ожидалось ") + value_text(row.expected, row.key, lang)
+            return tr(lang, "the program's set has ") + value_text(row.expected, row.key, lang)
+        return tr(lang, 'expected ') + value_text(row.expected, row.key, lang)
     pct = num(abs(row.deviation_pct), lang, decimals=1)
     if row.deviation < 0:
-        return pick(lang, f"{pct} % too small", f"на {pct} % меньше верного")
-    return pick(lang, f"{pct} % too large", f"на {pct} % больше верного")
+        return tr(lang, '{pct} % too small').format(pct=pct)
+    return tr(lang, '{pct} % too large').format(pct=pct)
 
 
 def findings_lines(findings, lang: str) -> list[str]:
@@ -200,11 +232,10 @@ def row_sentence(row, lang: str) -> str:
     tail = (f": {cause}" if cause else "") + (f" — {where}" if where else "")
     st = row.status
     if st == "missing":
-        return pick(lang, f"{sym}: not given; it is required for this sheet (the value is {value_text(row.expected, row.key, lang)})",
-                    f"{sym}: не указано, а для листа это обязательно (верное значение {value_text(row.expected, row.key, lang)})") \
-            + (f" — {where}" if where else "") + "."
+        text = tr(lang, "{sym}: not given; it is required for this sheet (the value is {value})")
+        return text.format(sym=sym, value=value_text(row.expected, row.key, lang)) + (f" — {where}" if where else "") + "."
     if st == "unknown key":
-        return _end(f"{sym}: {cause}") if cause else f"{sym}: " + pick(lang, "unknown key.", "неизвестный ключ.")
+        return _end(f"{sym}: {cause}") if cause else f"{sym}: " + tr(lang, 'unknown key.')
     if st in ("unreadable", "duplicate", "not checked", "not computed"):
         text = cause or status_word(st, lang)
         return _end(f"{sym}: {text}" + (f" — {where}" if where and st != "not computed" else ""))
@@ -217,16 +248,16 @@ def row_sentence(row, lang: str) -> str:
         return head + (f" — {cause}" if cause else "") + "."
     # a wrong value
     if row.expected is None:  # nothing to compare with (shifts that make no pair): the cause says it all
-        return _end(f"{sym} = {given}" + (f": {cause}" if cause else " " + pick(lang, "is wrong", "неверно"))
+        return _end(f"{sym} = {given}" + (f": {cause}" if cause else " " + tr(lang, 'is wrong'))
                     + (f" — {where}" if where else ""))
     how = _how_far(row, lang)
     ref = value_text(row.expected, row.key, lang)
     tol = tolerance_text(row, lang)
-    detail = pick(lang, f"right is {ref}", f"верно {ref}")
+    detail = tr(lang, 'right is {ref}').format(ref=ref)
     if row.tolerance_pct is not None:
-        detail += pick(lang, f", tolerance {tol}", f", допуск {tol}")
+        detail += tr(lang, ', tolerance {tol}').format(tol=tol)
     if row.basis not in ("program", "variant"):
-        detail += ", " + pick(lang, "compared with ", "сравнение: ") + basis_word(row.basis, lang)
+        detail += ", " + tr(lang, 'compared with ') + basis_word(row.basis, lang)
     if row.tolerance_pct is None:
-        return f"{sym} = {given} " + pick(lang, "is wrong", "неверно") + f" ({how}){tail}."
-    return f"{sym} = {given} " + pick(lang, "is ", "") + f"{how} ({detail}){tail}."
+        return f"{sym} = {given} " + tr(lang, 'is wrong') + f" ({how}){tail}."
+    return tr(lang, "{sym} = {given} is {how} ({detail})").format(sym=sym, given=given, how=how, detail=detail) + f"{tail}."

@@ -15,7 +15,7 @@ import html
 import math
 from urllib.parse import quote
 
-from ...i18n.lang import pick
+from ...i18n import tr
 from ...i18n.numbers import num
 from ...records import record
 
@@ -219,11 +219,11 @@ def chart_svg(chart: Chart, lang: str, width: int = 300, height: int = 130) -> s
     parts.append(f'<text x="{left + w}" y="{top + h + 12}" text-anchor="end">{_e(fmt(hi))}</text>')
     if chart.band is not None and vals and lo < 0 < hi:
         parts.append(f'<text x="{x_of(0):.1f}" y="{top + h + 12}" text-anchor="middle">0</text>')
-    caption = pick(lang, f"{len(vals)} values", f"значений: {len(vals)}") + (f", {chart.unit}" if chart.unit else "")
+    caption = tr(lang, '{n} values').format(n=len(vals)) + (f", {chart.unit}" if chart.unit else "")
     parts.append(f'<text x="{left + w / 2:.1f}" y="{height - 3}" text-anchor="middle">{_e(caption)}</text>')
     if not vals:
         parts.append(f'<text x="{left + w / 2:.1f}" y="{top + h / 2:.1f}" text-anchor="middle">'
-                     f'{_e(pick(lang, "no data", "нет данных"))}</text>')
+                     + _e(tr(lang, "no data")) + "</text>")
     parts.append("</svg>")
     return "".join(parts)
 
@@ -236,7 +236,7 @@ def group_html(page: GroupPage) -> str:
            f"<title>{_e(page.title)}</title>", f"<style>{_CSS}</style>", "</head>", "<body>",
            f"<h1>{_e(page.title)}</h1>", f'<p class="sub">{_e(page.subtitle)}</p>', '<div class="top">']
     if page.stats:
-        out.append('<section><h2>' + _e(pick(lang, "How many passed each check", "Сколько прошло каждую проверку"))
+        out.append('<section><h2>' + _e(tr(lang, 'How many passed each check'))
                    + '</h2><table class="stats"><tbody>')
         for s in page.stats:
             share = 0 if not s.total else round(100 * s.passed / s.total)
@@ -246,17 +246,18 @@ def group_html(page: GroupPage) -> str:
     for ch in page.charts:
         out.append(f"<section><h2>{_e(ch.title)}</h2><figure>{chart_svg(ch, lang)}</figure></section>")
     out.append("</div>")
+    placeholder, filter_label = _e(tr(lang, "Filter: a name, a number…")), _e(tr(lang, "Filter"))
+    status_label, every = _e(tr(lang, "Status")), _e(tr(lang, "every status"))
+    sort_hint = _e(tr(lang, "click a column head to sort"))
     out.append('<div class="controls noprint">'
-               f'<input id="filter" type="search" placeholder="{_e(pick(lang, "Filter: a name, a number…", "Фильтр: фамилия, число…"))}" '
-               f'aria-label="{_e(pick(lang, "Filter", "Фильтр"))}">'
-               f'<select id="status" aria-label="{_e(pick(lang, "Status", "Статус"))}">'
-               f'<option value="">{_e(pick(lang, "every status", "все статусы"))}</option>'
+               f'<input id="filter" type="search" placeholder="{placeholder}" aria-label="{filter_label}">'
+               f'<select id="status" aria-label="{status_label}"><option value="">{every}</option>'
                + "".join(f'<option value="{_e(v)}">{_e(label)}</option>' for v, label in page.statuses)
-               + f'</select><span class="count">{_e(pick(lang, "click a column head to sort", "щелчок по заголовку — сортировка"))}</span></div>')
+               + f'</select><span class="count">{sort_hint}</span></div>')
     out.append('<table class="group" id="group"><thead><tr>')
     for label, numeric in page.columns:
         out.append(f'<th scope="col"{" class=num" if numeric else ""}>{_e(label)}</th>')
-    out.append(f'<th scope="col">{_e(pick(lang, "Files", "Файлы"))}</th></tr></thead><tbody>')
+    out.append('<th scope="col">' + _e(tr(lang, "Files")) + "</th></tr></thead><tbody>")
     numeric_cols = [numeric for _, numeric in page.columns]
     for row in page.rows:
         out.append(f'<tr data-status="{_e(row.status)}">')

@@ -120,7 +120,7 @@ def group_table(group, lang: str) -> tuple[list[str], list[list]]:
               pick(lang, "verdict", "итог"), pick(lang, "correct", "верно"), pick(lang, "of", "из")] + keys + [
               pick(lang, "missing", "нет ответа"), pick(lang, "error", "ошибка")]
     body = []
-    from ...i18n.help_ru import error_text
+    from ...i18n.errors import error_text
 
     for rep in group.reports:
         by = {r.key: r.status for r in rep.rows}
