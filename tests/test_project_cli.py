@@ -207,7 +207,7 @@ def test_batch_figures_reuse_the_reducer_drawing_only_when_it_is_the_same(tmp_pa
 @pytest.mark.parametrize(
     "answers, status",
     [
-        (dict(z_sun=18, z_planet=47, z_ring=112, planets=2), "pass (valid set)"),  # the book's procedure
+        (dict(z_sun=18, z_planet=47, z_ring=112, planets=2), "pass (valid alternative)"),  # the book's procedure
         (dict(z_sun=18, z_planet=47, z_ring=112, planets=3), "fail"),  # neighbouring allows 3, assembly not
         (dict(z_sun=18, z_planet=47, z_ring=113, planets=2), "fail"),  # not coaxial
         (dict(z_sun=18, z_planet=47, z_ring=112), "fail"),  # incomplete: compared number by number

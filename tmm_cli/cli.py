@@ -11,6 +11,7 @@ import sys
 
 import click
 
+from .commands.assign import assign_cmd
 from .commands.batch import batch_cmd
 from .commands.cam import cam_cmd
 from .commands.carrier import carrier_cmd
@@ -59,6 +60,11 @@ class TmmGroup(click.Group):
             click.echo(f"tmm: {say('aborted')}", err=True)
             sys.exit(1)
         except click.ClickException as exc:
+            no_args = getattr(click.exceptions, "NoArgsIsHelpError", ())
+            if isinstance(exc, no_args) or (isinstance(exc, click.UsageError) and exc.ctx is not None
+                                            and exc.ctx.parent is None and not _command_given(args)):
+                click.echo(exc.ctx.get_help())  # bare `tmm`: the help, as `tmm --help` prints it, exit 0
+                sys.exit(0)
             _fail(exc.format_message(), lang)
         except Stopped as exc:  # Ctrl-C (130) or SIGTERM (143) during a command, see interrupt.py
             _remove_what_a_stop_left()
@@ -98,6 +104,20 @@ def _remove_what_a_stop_left() -> None:
     files = sys.modules.get("tmm_cli.output.folder")  # nothing was staged if it was never imported
     if files is not None:
         files.remove_active_staging()
+
+
+def _command_given(args) -> bool:
+    """Whether the command line names anything beyond options (`tmm --lang ru` names nothing)."""
+    words = list(sys.argv[1:] if args is None else args)
+    i = 0
+    while i < len(words):
+        if words[i] == "--lang":
+            i += 2
+            continue
+        if not words[i].startswith("--lang="):
+            return True
+        i += 1
+    return False
 
 
 def _requested_lang(args: list[str]) -> str:
@@ -143,12 +163,12 @@ def cli(lang):
     """tmm — the calculation part of the TMM course project (Pozhbelko et al., 2003, part 2).
 
     Sheet 3: cam mechanism synthesis (`tmm cam`). Sheet 4: gear drive synthesis (`tmm gears`).
-    Both at once, with a report: `tmm project --variant 17`. Teachers: `tmm batch`, `tmm check`.
+    Both at once, with a report: `tmm project --variant 17`. Teachers: `tmm assign`, `tmm batch`, `tmm check`.
     """
 
 
-for _command in (variants_cmd, project_cmd, cam_cmd, gears_cmd, planetary_cmd, linkage_cmd, note_cmd, batch_cmd, check_cmd,
-                 carrier_cmd, chain_cmd):
+for _command in (variants_cmd, project_cmd, cam_cmd, gears_cmd, planetary_cmd, linkage_cmd, note_cmd, assign_cmd, batch_cmd,
+                 check_cmd, carrier_cmd, chain_cmd):
     cli.add_command(_command)
 apply_option_limits(cli)
 

@@ -17,6 +17,7 @@ from .options import (
     out_option,
     resolve_lang,
     sheets_option,
+    title_block,
     torque_option,
     variants_file_option,
 )
@@ -35,8 +36,11 @@ from .options import (
 @click.option("--report", "report", type=click.Choice(["md", "pdf", "none"]), default="md", show_default=True, help="Per-variant report format.")
 @click.option("--csv-locale", type=click.Choice(["ru", "en"]), default=None, help="summary.csv for a Russian (';', decimal comma) or English spreadsheet (default: from --lang).")
 @sheets_option
+@click.option("--teacher", "title_teacher", default=None, metavar="TEXT", help="Teacher's name (or in tmm.toml).")
+@click.option("--org", "title_org", default=None, metavar="TEXT", help="University and department (or in tmm.toml).")
 @lang_option
-def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, fmt, jobs, no_plots, report, csv_locale, sheets, lang):
+def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, fmt, jobs, no_plots, report, csv_locale, sheets,
+              title_teacher, title_org, lang):
     """Teachers: run many variants or a class roster in parallel and write summary.csv."""
     from ..output.folder import ensure_writable_dir
     from ..render.terminal.batch import print_batch, print_batch_intro
@@ -44,6 +48,7 @@ def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, f
     from ..teacher.roster import jobs_from_roster, jobs_from_spec
 
     lang = resolve_lang(lang)
+    title = title_block({"title_teacher": title_teacher, "title_org": title_org})  # tmm.toml, then the options
     if (variants_spec is None) == (roster is None):
         raise TmmError("give exactly one of --variants (e.g. 1-68) or --roster FILE")
     out_dir = ensure_writable_dir(Path(out) if out else Path("tmm-out"))
@@ -58,7 +63,7 @@ def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, f
     summary = run_batch(
         rows, bad, out_dir, variants_file=variants_file, lang=lang, fmt=fmt,
         plots=not no_plots, report=None if report == "none" else report, jobs_n=jobs, progress=True,
-        csv_locale=csv_locale, sheets=sheets,
+        csv_locale=csv_locale, sheets=sheets, title=title,
     )
     print_batch(console, summary, out_dir, lang)
     return 1 if summary.failed else 0

@@ -31,14 +31,18 @@ from .options import (
 @click.option("--rtol", "rtol_pct", type=float, default=3.0, show_default=True, metavar="PCT", help="Tolerance for graphical quantities [%].")
 @click.option("--keys", "show_keys", is_flag=True, help="List the answer keys and exit.")
 @click.option("--sheet", "sheet", type=click.Choice(["3", "4", "all"]), default="all", show_default=True, help="Which sheet's required keys a student must give.")
-@click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Group check: folder for check.csv and check.md (default ./tmm-out).")
+@click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Group check: folder for check.csv, check.md, group.html and the feedback (default ./tmm-out).")
 @click.option("--csv-locale", type=click.Choice(["ru", "en"]), default=None, help="check.csv for a Russian (';', decimal comma) or English spreadsheet (default: from --lang).")
+@click.option("--feedback", type=click.Choice(["md", "pdf", "none"]), default="md", show_default=True,
+              help="Group check: each student's feedback feedback/check-NAME.md (pdf: also as PDF).")
 @json_option
 @lang_option
-def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, torque_nm, rtol_pct, show_keys, sheet, out, csv_locale, as_json, lang):
+def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, torque_nm, rtol_pct, show_keys, sheet, out, csv_locale,
+              feedback, as_json, lang):
     """Teachers: check a student's numbers against the computed ones."""
     from ..render.terminal.check import print_check, print_group, print_keys
     from ..teacher.check import SHEETS, check_group, check_one, read_answers
+    from ..teacher.group import GROUP_FILES
 
     lang = resolve_lang(lang)
     console = console_for(lang)
@@ -51,23 +55,18 @@ def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, t
     if roster is not None or answers_dir is not None:
         if roster is None or answers_dir is None:
             raise TmmError("group check needs both --roster FILE and --answers-dir DIR")
-        from ..output.folder import (
-            ensure_writable_dir,
-            read_manifest,
-            refuse_foreign,
-            write_owned,
-        )
-        from ..render.terminal.check import group_csv, group_markdown
+        from ..output.folder import ensure_writable_dir, read_manifest, refuse_foreign
+        from ..teacher.group import write_group_check
 
         out_dir = ensure_writable_dir(Path(out) if out else Path("tmm-out"))
         if out_dir.is_dir():  # a check.csv of the teacher's own is refused before any work
-            refuse_foreign(out_dir, ["check.csv", "check.md"], read_manifest(out_dir)["files"])
+            refuse_foreign(out_dir, list(GROUP_FILES), read_manifest(out_dir)["files"])
         group = check_group(roster, answers_dir, variants_file=variants_file, crank_rpm=crank_rpm, torque_nm=torque_nm,
-                            rtol_pct=rtol_pct, sheets=sheets)
-        write_owned(out_dir, "check.csv", group_csv(group, lang, csv_locale or lang))
-        write_owned(out_dir, "check.md", group_markdown(group, lang, rtol_pct, sheets).encode("utf-8"))
+                            rtol_pct=rtol_pct, sheets=sheets, lang=lang)
+        written = write_group_check(out_dir, group, lang, csv_locale or lang, rtol_pct, sheets, pdf=feedback == "pdf",
+                                    feedback=feedback != "none")
         if as_json:
-            print_json(group.to_json())
+            print_json(group.to_json(lang))
         else:
             from rich.markup import escape
 
@@ -75,14 +74,15 @@ def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, t
 
             console.print("[cyan]ℹ[/] " + escape(tr(lang, "Roster {roster}: read as {roster_encoding}.").format(roster=roster, roster_encoding=group.roster_encoding)))
             print_group(console, group, lang)
-            print_files(console, out_dir, ["check.csv", "check.md"], lang)
+            print_files(console, out_dir, written, lang)
         return 0 if group.all_passed else 1
     if variant is None or answers is None:
         raise TmmError("give --variant N and --answers FILE (or --roster FILE with --answers-dir DIR)")
     v = variant_row(variant, variants_file)
-    report = check_one(v, read_answers(answers), crank_rpm=crank_rpm, torque_nm=torque_nm, rtol_pct=rtol_pct, sheets=sheets)
+    report = check_one(v, read_answers(answers), crank_rpm=crank_rpm, torque_nm=torque_nm, rtol_pct=rtol_pct, sheets=sheets,
+                       lang=lang)
     if as_json:
-        print_json(report.to_json())
+        print_json(report.to_json(lang))
     else:
         print_check(console, report, lang)
     return 0 if report.passed else 1

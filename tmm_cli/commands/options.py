@@ -145,16 +145,36 @@ def ratio_value(ratio: str | None):
 
 # Limits on every number a user gives (docs/limits.md): ranges set on the options by name --------
 
-class Range(click.ParamType):
-    """A click type: a finite number within [lo, hi] (a whole number when `integer`).
+def parse_decimal(text: str) -> float:
+    """A number as people type it: a decimal dot or a decimal comma (``48,5``), spaces around.
 
-    Unlike click.FloatRange it refuses nan and inf, and an integer too large for a float.
+    ValueError when it is not a number.
+
+    >>> parse_decimal(" 48,5 "), parse_decimal("-0.25"), parse_decimal("1e3")
+    (48.5, -0.25, 1000.0)
+    """
+    text = str(text).strip()
+    if text.count(",") == 1 and "." not in text:
+        text = text.replace(",", ".")
+    return float(text)
+
+
+class Range(click.ParamType):
+    """A click type: a finite number, within [lo, hi] when they are given (a whole number when
+    `integer`), typed with a decimal dot or a decimal comma (``--r0 48,5``).
+
+    Every numeric option of every command has this type (:func:`apply_option_limits`), so all
+    of them read numbers alike. Unlike click.FloatRange it refuses nan and inf, and an integer
+    too large for a float.
     """
 
     name = "number"
 
-    def __init__(self, lo, hi, integer: bool = False):
+    def __init__(self, lo=None, hi=None, integer: bool = False):
         self.lo, self.hi, self.integer = lo, hi, integer
+
+    def _bounded(self) -> bool:
+        return self.lo is not None and self.hi is not None
 
     def convert(self, value, param, ctx):
         if value is None:
@@ -163,18 +183,25 @@ class Range(click.ParamType):
             try:
                 x = value if isinstance(value, int) and not isinstance(value, bool) else int(str(value).strip())
             except ValueError:
+                if not self._bounded():
+                    self.fail(f"'{str(value)[:30]}' is not a whole number; give one such as 3", param, ctx)
                 self.fail(f"'{str(value)[:30]}' is not a whole number; give one from {self.lo} to {self.hi}", param, ctx)
-            if not self.lo <= x <= self.hi:
+            if self._bounded() and not self.lo <= x <= self.hi:
                 shown = str(x) if abs(x) < 10**15 else f"a {len(str(abs(x)))}-digit number"
                 self.fail(f"{shown} is out of range; give a whole number from {self.lo} to {self.hi} (docs/limits.md)", param, ctx)
             return x
         try:
-            x = float(str(value).strip().replace(",", ".")) if not isinstance(value, (int, float)) else float(value)
+            x = parse_decimal(value) if not isinstance(value, (int, float)) else float(value)
         except (ValueError, OverflowError):
+            if not self._bounded():
+                self.fail(f"'{str(value)[:30]}' is not a number; write it with a dot or a comma, e.g. 48.5 or 48,5", param, ctx)
             self.fail(f"'{str(value)[:30]}' is not a number; give one from {self.lo:g} to {self.hi:g}", param, ctx)
-        if not math.isfinite(x) or not self.lo <= x <= self.hi:
-            shown = f"{x:g}" if math.isfinite(x) else str(value)[:30]
-            self.fail(f"{shown} is out of range; give a number from {self.lo:g} to {self.hi:g} (docs/limits.md)", param, ctx)
+        if not math.isfinite(x):
+            if not self._bounded():
+                self.fail(f"'{str(value)[:30]}' is not a finite number; give an ordinary number such as 48,5", param, ctx)
+            self.fail(f"{str(value)[:30]} is out of range; give a number from {self.lo:g} to {self.hi:g} (docs/limits.md)", param, ctx)
+        if self._bounded() and not self.lo <= x <= self.hi:
+            self.fail(f"{x:g} is out of range; give a number from {self.lo:g} to {self.hi:g} (docs/limits.md)", param, ctx)
         return x
 
 
@@ -194,9 +221,13 @@ OPTION_LIMITS = {
 
 
 def apply_option_limits(command) -> None:
-    """Give every option of `command` (and its sub-commands) named in OPTION_LIMITS its range."""
+    """Give every option of `command` (and its sub-commands) named in OPTION_LIMITS its range, and
+    every other numeric option the same reading of numbers (a decimal comma, no nan or inf)."""
     for p in getattr(command, "params", ()):
         if isinstance(p, click.Option) and p.name in OPTION_LIMITS:
             p.type = OPTION_LIMITS[p.name]
+        elif isinstance(p, click.Option) and isinstance(p.type, (click.types.FloatParamType, click.types.IntParamType)) \
+                and not p.is_flag and p.nargs == 1:
+            p.type = Range(integer=isinstance(p.type, click.types.IntParamType))  # a decimal comma everywhere
     for sub in getattr(command, "commands", {}).values():
         apply_option_limits(sub)

@@ -345,7 +345,9 @@ def design_gears(n_cam_rpm: float, crank_rpm: float | None = None, torque_nm: fl
     err = design.ratio_error_pct
     n_cr_actual = n_d / design.ratio
     notes += _aa_bar_hint(i_pl, err)
-    notes.append(Note.make("ratio_error", "warning" if abs(err) >= 1.0 else "assumption", i=f"{design.ratio:.4f}",
+    # a warning only outside the tolerance in force (a forced fraction); within it the error is said, not flagged
+    outside = abs(err) > tolerance_pct * (1 + 1e-9) + 1e-9
+    notes.append(Note.make("ratio_error", "warning" if outside else "assumption", i=f"{design.ratio:.4f}",
                            target=f"{i_pl:.4f}", err=f"{err:+.2f}", tol=f"{tolerance_pct:g}",
                            rpm=f"{n_cr_actual:.1f}", want=f"{n_cr:g}"))
 

@@ -231,8 +231,9 @@ def remove_stale_staging(parent: Path, only_dead: bool = True, dead_pids=()) -> 
             continue
         try:
             pid = int((p / STAGING_MARK).read_text().split()[0])
-        except (OSError, ValueError, IndexError):
-            pid = -1
+        except (OSError, ValueError, IndexError):  # the mark being written right now (empty): the pid in the name
+            m = _STAGING_NAME.fullmatch(p.name)
+            pid = int(m.group(1)) if m else -1
         try:
             old_enough = time.time() - os.lstat(p / STAGING_MARK).st_mtime > STALE_AFTER_S
         except OSError:

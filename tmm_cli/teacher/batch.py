@@ -64,10 +64,32 @@ def _linkage(path: str):
     return analyse_linkage(read_mechanism_tables(path), Path(path).name)
 
 
-def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, fmt: str, plots: bool, report: str | None,
-            sheets: bool = False) -> dict:
-    """Run one row in this process: the project, its folder, its summary row (or a failure row)."""
+def job_title(job: BatchJob, base=None):
+    """The title block of one row: the student and group of the roster row, the teacher, the
+    organisation and the year the whole group shares (`base`: tmm.toml and --teacher/--org; its
+    group is the default of a row without one). None when there is nothing to print.
+
+    >>> from tmm_cli.inputs.titleblock import TitleFields
+    >>> t = job_title(BatchJob("Иванов", "17", fname="Иванов"), TitleFields(teacher="Петров П. П.", group="П-243"))
+    >>> t.student, t.group, t.teacher
+    ('Иванов', 'П-243', 'Петров П. П.')
+    >>> job_title(BatchJob("variant 17", "17")) is None
+    True
+    """
+    from dataclasses import replace
+
     from ..inputs.titleblock import TitleFields
+
+    base = base or TitleFields()
+    shared = replace(TitleFields(), teacher=base.teacher, org=base.org, year=base.year, group=base.group)
+    if job.fname:
+        return replace(shared, student=job.label, group=job.group or base.group)
+    return shared if (shared.teacher or shared.org or shared.group) else None
+
+
+def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, fmt: str, plots: bool, report: str | None,
+            sheets: bool = False, title_base=None) -> dict:
+    """Run one row in this process: the project, its folder, its summary row (or a failure row)."""
     from ..project import run_project
     from ..render.project import write_project_folder
     from ..variants import get_variant
@@ -78,7 +100,7 @@ def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, f
         result = run_project(v, crank_rpm=job.crank_rpm, torque_nm=job.torque_nm, linkage=linkage,
                              linkage_name=Path(job.mechanism).name if job.mechanism else "")
         folder = Path(out_dir) / job.folder
-        title = TitleFields(student=job.label, group=job.group) if job.fname else None
+        title = job_title(job, title_base)
         doc, _ = write_project_folder(result, folder, lang, fmt=fmt, plots=plots, report=report,
                                       figure_cache=_FIGURE_CACHE, title=title, sheets=sheets,
                                       shared_figures=_SHARED[0] if _SHARED else None)
@@ -116,6 +138,7 @@ def prepare_out_dir(out_dir: Path, jobs: list[BatchJob]) -> None:
         (out_dir / "summary.csv").unlink()
     files.discard("summary.csv")
     write_manifest(out_dir, files, {j.folder for j in jobs})
+    # (group.html stays until the new one replaces it: it is written with summary.csv)
 
 
 def _cleanup_after_stop(out_dir: Path, jobs: list[BatchJob], done: set[int], dead_pids=()) -> None:
@@ -170,12 +193,15 @@ def _stop_pool(pool) -> list[int]:
 def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_file: str | None = None,
               lang: str = "en", fmt: str = "png", plots: bool = True, report: str | None = "md",
               jobs_n: int | None = None, progress: bool = False, csv_locale: str | None = None,
-              sheets: bool = False) -> BatchSummary:
+              sheets: bool = False, title=None) -> BatchSummary:
     """Run all jobs (in `jobs_n` processes), write out_dir/summary.csv, return the rows in order.
 
     On Ctrl-C or SIGTERM (:class:`tmm_cli.output.interrupt.Interrupted`) the workers are stopped, the
     summary of the finished rows is written with the rest marked "not run", and Interrupted is
     raised again with a message saying so.
+
+    `title` (TitleFields: tmm.toml and --teacher/--org) gives every row's title block the
+    teacher, the organisation and the year; the student and group come from the roster row.
     """
     csv_locale = csv_locale or lang
     out_dir = Path(out_dir)
@@ -189,7 +215,8 @@ def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_
     try:
         with lock_dir(out_dir, wait=False, what="tmm batch"):  # two batches never mix one folder
             prepare_out_dir(out_dir, jobs)
-            return _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale, sheets)
+            return _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale, sheets,
+                        title)
     except TmmError:
         from ..output.folder import remove_empty_dirs
 
@@ -197,13 +224,14 @@ def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_
         raise
 
 
-def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale, sheets) -> BatchSummary:
+def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale, sheets,
+         title=None) -> BatchSummary:
     import signal
 
     from ..output.interrupt import Interrupted
 
     n_workers = max(1, min(jobs_n or os.cpu_count() or 1, len(jobs) or 1))
-    args = (str(out_dir), variants_file, lang, fmt, plots, report, sheets)
+    args = (str(out_dir), variants_file, lang, fmt, plots, report, sheets, title)
     results: dict[int, dict] = {}
     stopped: KeyboardInterrupt | None = None
 
@@ -280,6 +308,9 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
     rows = [failure_row(b.job, b.reason) for b in bad] + [results.get(i) or failure_row(job, "", status="not run") for i, job in enumerate(jobs)]
     rows.sort(key=lambda r: r.get("line") or 0)  # roster order (stable: --variants rows keep theirs)
     write_summary_csv(out_dir / "summary.csv", rows, lang, csv_locale)
+    from .group import write_batch_page
+
+    write_batch_page(out_dir, rows, lang)  # group.html: the same rows, with links and the group's statistics
     failed = tuple(r for r in rows if r["status"] != "ok")
     not_run = sum(r["status"] == "not run" for r in rows)
     if stopped is not None:

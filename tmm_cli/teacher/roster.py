@@ -161,7 +161,8 @@ def _mechanism_path(raw: str, roster: Path) -> str:
     return str(target)
 
 
-def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float | None, variants_file=None) -> Roster:
+def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float | None, variants_file=None,
+                     need_variant: bool = True) -> Roster:
     """Read a roster (student,variant[,group][,crank_rpm][,torque][,mechanism], English or Russian headers).
 
     A `mechanism` cell names the student's mechanism file, relative to the roster's folder and
@@ -170,7 +171,9 @@ def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float
 
     A bad row (no name, a variant not in the table, a value out of range, two names sharing one
     file name) is returned with its reason among `bad`; a file without the student and variant
-    columns, over the size limits, or not text, is an error for the whole roster.
+    columns, over the size limits, or not text, is an error for the whole roster. With
+    `need_variant` False (`tmm assign --assign-variants`) the variant column may be missing or
+    empty: such a row is a job with the variant "" (the variants are given out afterwards).
     """
     from ..inputs.tables import delimiter, read_text, rows
     from ..variants import load_table
@@ -180,7 +183,7 @@ def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float
     lines = rows(src.text, limits.ROSTER_ROWS, f"roster {path}")
     first = next((i for i, r in enumerate(lines) if r), None)
     header = [_header_key(h) for h in (lines[first] if first is not None else [])]
-    missing = [c for c in ("student", "variant") if c not in header]
+    missing = [c for c in (("student", "variant") if need_variant else ("student",)) if c not in header]
     if missing:
         raise TmmError(f"roster {path} has no column(s) {', '.join(missing)}; the header must be "
                        f"student,variant[,group][,crank_rpm][,torque][,mechanism] (or студент;вариант;группа;n_кр;момент;"
@@ -196,13 +199,14 @@ def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float
         student = display_name(cell["student"])
         group = display_name(cell.get("group", ""))
         label = student or f"line {lineno}"
-        variant = cell["variant"][:10]
+        variant = cell.get("variant", "")[:10]
         try:
             if not student:
                 raise TmmError("the student column is empty")
-            if not variant:
+            if not variant and need_variant:
                 raise TmmError("the variant column is empty")
-            if not variant.isdigit() or int(variant) not in table:
+            pending = not variant  # given out later (tmm assign --assign-variants)
+            if not pending and (not variant.isdigit() or int(variant) not in table):
                 raise TmmError(f"variant {variant} is not in the table; choose a variant from {min(table)} to {max(table)}")
             mechanism = _mechanism_path(cell.get("mechanism", ""), Path(path))
             if mechanism:
@@ -226,6 +230,10 @@ def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float
         except TmmError as exc:
             bad.append(BadRow(BatchJob(label=label, variant=variant, group=group, line=lineno),
                               f"roster line {lineno}: {exc}"))
+            continue
+        if pending:  # no variant yet
+            jobs.append(BatchJob(label=student, variant="", crank_rpm=crank, torque_nm=torque, folder="", group=group,
+                                 fname=fname, line=lineno, mechanism=mechanism))
             continue
         n = int(variant)
         jobs.append(BatchJob(label=student, variant=str(n), crank_rpm=crank, torque_nm=torque,

@@ -10,32 +10,28 @@ from .roster import BatchJob
 SUMMARY_COLUMNS = tuple(f[0] for f in SUMMARY_FIELDS)
 
 
-def flag_of(code: str) -> str:
-    """The summary name of a warning's code.
+# a warning's code -> its name in the summary (the four the course grades first have their own columns)
+_FLAG_PREFIXES = (
+    ("cam_fail_undercut", "undercut"), ("cam_undercut", "undercut"), ("undercut", "undercut"),
+    ("cam_fail_nu", "pressure_angle"), ("cam_pressure_over", "pressure_angle"),
+    ("ratio_error_large", "ratio_over_3"), ("ratio_error", "ratio_error"), ("eps_low", "contact_ratio"),
+    ("few_planets", "few_planets"), ("power_above_series", "power"), ("cam_pivot", "pivot"),
+    ("cam_book_vertex_over", "book_vertex"), ("cam_small_vs_rocker", "small_cam"), ("cam_stroke_long", "long_stroke"),
+    ("cam_roller", "roller"), ("book_", "book"), ("cam_drawing", "drawing"),
+    ("two_stage_range", "stage_range"), ("assembly_forms_differ", "assembly"), ("spur_shift", "shift"),
+    ("linkage_", "linkage"),
+)
 
-    >>> [flag_of(c) for c in ("undercut", "cam_undercut_convex", "cam_pressure_over", "eps_low", "x_y")]
-    ['undercut', 'undercut', 'pressure_angle', 'contact_ratio', 'x_y']
+
+def flag_of(code: str) -> str:
+    """The summary name of a warning's code (render/data/summary.py says it in words).
+
+    >>> [flag_of(c) for c in ("undercut", "cam_fail_undercut_convex", "cam_fail_nu_rise", "eps_low", "ratio_error_large", "x_y")]
+    ['undercut', 'undercut', 'pressure_angle', 'contact_ratio', 'ratio_over_3', 'x_y']
     """
-    if code == "undercut" or code.startswith("cam_undercut"):
-        return "undercut"
-    if code == "cam_pressure_over":
-        return "pressure_angle"
-    if code == "ratio_error":
-        return "ratio_error"
-    if code == "eps_low":
-        return "contact_ratio"
-    if code == "few_planets":
-        return "few_planets"
-    if code == "power_above_series":
-        return "power"
-    if code.startswith("cam_pivot"):
-        return "pivot"
-    if code.startswith("cam_roller"):
-        return "roller"
-    if code.startswith("book_"):
-        return "book"
-    if code.startswith("cam_drawing"):
-        return "drawing"
+    for prefix, flag in _FLAG_PREFIXES:
+        if code == prefix or code.startswith(prefix):
+            return flag
     return code
 
 
@@ -58,7 +54,11 @@ def summary_row(job: BatchJob, doc: dict, folder: str, codes=()) -> dict:
     )
     planets = "+".join(str(s["planets"]) for s in stages)
     pa = c["pressure_angle_max_deg"]
-    flags = tuple(dict.fromkeys(flag_of(code) for code in codes))
+    flags = [flag_of(code) for code in codes if flag_of(code) != "ratio_error"]
+    # the ratio error is a fault only outside the tolerance in force (the note is said at any size)
+    if abs(float(pl["ratio_error_pct"])) > float(g.get("tolerance_pct") or 5.0) * (1 + 1e-9) + 1e-9:
+        flags.insert(0, "ratio_error")
+    flags = tuple(dict.fromkeys(flags))
     row = {
         "student": job.label,
         "group": job.group,

@@ -52,6 +52,14 @@ FLAGS = {
     "roller": ("roller", "ролик"),
     "book": ("the book's example", "пример пособия"),
     "drawing": ("drawing size", "размер чертежа"),
+    "ratio_over_3": ("ratio error over 3 % (within tolerance)", "погрешность i больше 3 % (в допуске)"),
+    "book_vertex": ("the book's vertex exceeds the allowed pressure angle", "вершина по пособию превышает допустимый угол давления"),
+    "small_cam": ("cam much smaller than the rocker", "кулачок много меньше коромысла"),
+    "long_stroke": ("unusually long stroke", "необычно большой ход"),
+    "stage_range": ("stage ratios outside 3…8", "ступени вне диапазона 3…8"),
+    "assembly": ("assembly forms differ", "формы условия сборки расходятся"),
+    "shift": ("a shift is suggested", "рекомендовано смещение"),
+    "linkage": ("linkage", "рычажный механизм"),
 }
 
 
@@ -59,7 +67,8 @@ STATUS = {"ok": ("ok", "готово"), "failed": ("failed", "ошибка"), "n
 
 
 def flag_name(flag: str, lang: str) -> str:
-    en, ru = FLAGS.get(flag, (flag.replace("_", " "), flag.replace("_", " ")))
+    """A warning's name in words (an unknown code still reads as words, never as a code)."""
+    en, ru = FLAGS.get(flag, (flag.replace("_", " "), "предупреждение: " + flag.replace("_", " ")))
     return pick(lang, en, ru)
 
 

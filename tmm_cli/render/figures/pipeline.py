@@ -56,7 +56,9 @@ def prepare_figures(svg) -> None:
 
     _warm_up()
     if svg:
-        import matplotlib.backends.backend_svg  # noqa: F401
+        from .kit import share_svg_text
+
+        share_svg_text()
     calm_collector()
 
 
@@ -83,6 +85,10 @@ def _draw_and_save(tmp: Path, result, lang: str, fmt: str, names, svg) -> None:
     figs = {**(gears_figures(result.gears, lang, names=gear) if gear else {}),
             **(cam_figures(result.cam, lang, names=cam) if cam else {})}
     save_figures(tmp, figs, fmt)
+    if svg:
+        from .kit import share_svg_text
+
+        share_svg_text()
     for name, fig in figs.items():
         if name in svg:
             fig.savefig(tmp / f"{name}.svg", format="svg")  # the same drawn figure, another renderer
