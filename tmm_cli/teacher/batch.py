@@ -15,7 +15,7 @@ from dataclasses import field
 from pathlib import Path
 
 from ..errors import TmmError
-from ..i18n.lang import pick
+from ..i18n import tr
 from ..records import record
 from .roster import BatchJob
 from .summary import failure_row, summary_row, write_summary_csv
@@ -316,8 +316,5 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
     if stopped is not None:
         signum = getattr(stopped, "signum", signal.SIGINT)
         done = len(jobs) - not_run
-        raise Interrupted(signum, pick(lang, f"interrupted: {done} of {len(jobs)} rows finished; "
-                                             f"{out_dir / 'summary.csv'} lists them and marks the rest not run",
-                                       f"прервано: выполнено {done} из {len(jobs)}; {out_dir / 'summary.csv'} "
-                                       f"перечисляет их, остальные отмечены как не выполненные"))
+        raise Interrupted(signum, tr(lang, "interrupted: {done} of {jobs} rows finished; {v} lists them and marks the rest not run").format(done=done, jobs=len(jobs), v=out_dir / 'summary.csv'))
     return BatchSummary(rows=tuple(rows), failed=failed, complete=True, not_run=0)

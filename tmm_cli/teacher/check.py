@@ -19,7 +19,7 @@ import os
 from pathlib import Path
 
 from ..errors import TmmError
-from ..i18n.lang import pick
+from ..i18n import tr
 from ..notes import Note
 from .answers import Unreadable, read_answers  # noqa: F401  (read_answers: the public reader)
 from .keys import ANSWER_KEYS, KEYS_BY_NAME, REQUIRED, SHEETS, resolve_key, suggest_key  # noqa: F401
@@ -102,7 +102,7 @@ def check_one(variant, answers: dict, *, crank_rpm=None, torque_nm=None, rtol_pc
         from ..i18n.errors import error_text
 
         shift_error = error_text(str(exc), lang) if isinstance(exc, TmmError) else \
-            pick(lang, "the pair's geometry cannot be computed", "геометрию передачи не вычислить")
+            tr(lang, "the pair's geometry cannot be computed")
         result = run_project(variant, crank_rpm=crank_rpm, torque_nm=torque_nm, shift=None)
     doc = project_document(result, lang)
     required = required_keys(doc, sheets)

@@ -14,13 +14,14 @@ import json
 import os
 from pathlib import Path
 
-from ..i18n.lang import note_text, pick
+from ..i18n import N_, tr
+
 from ..i18n.numbers import num
 
 GROUP_FILES = ("check.csv", "check.md", "check.json", "group.html")
 PAGE = "group.html"
-STUDENT_FILES = (("note.pdf", "note", "записка"), ("sheet3.pdf", "sheet 3", "лист 3"), ("sheet4.pdf", "sheet 4", "лист 4"),
-                 ("report.md", "report", "отчёт"), ("results.json", "JSON", "JSON"))
+STUDENT_FILES = (("note.pdf", N_("note")), ("sheet3.pdf", N_("sheet 3")), ("sheet4.pdf", N_("sheet 4")),
+                 ("report.md", N_("report")), ("results.json", "JSON"))
 
 
 # links -------------------------------------------------------------------------------------------
@@ -48,13 +49,13 @@ def _student_links(out_dir: Path, rel: str | None, lang: str, feedback: list[str
 
     links = []
     if rel:
-        names = [n for n, _, _ in STUDENT_FILES]
+        names = [n for n, _ in STUDENT_FILES]
         found = set(written_files(out_dir, rel, names))
-        for name, en, ru in STUDENT_FILES:
+        for name, label in STUDENT_FILES:
             if f"{rel}/{name}" in found:
-                links.append(PageLink(pick(lang, en, ru), f"{rel}/{name}"))
+                links.append(PageLink(tr(lang, label), f"{rel}/{name}"))
     for f in feedback:
-        links.append(PageLink(pick(lang, "feedback", "замечания") + (" (PDF)" if f.endswith(".pdf") else ""), f))
+        links.append(PageLink(tr(lang, "feedback") + (" (PDF)" if f.endswith(".pdf") else ""), f))
     return tuple(links)
 
 
@@ -114,7 +115,7 @@ def _check_stats(group, keys, lang):
     from ..render.feedback.words import passed, symbol
     from ..render.html.group import Stat
 
-    stats = [Stat(pick(lang, "passed the check", "зачтено"), sum(r.passed for r in group.reports),
+    stats = [Stat(tr(lang, "passed the check"), sum(r.passed for r in group.reports),
                   len(group.reports))]
     for k in keys:
         rows = [r for rep in group.reports for r in rep.rows if r.key == k]
@@ -131,8 +132,8 @@ def _check_charts(group, lang):
     tol = group.reports[0].rtol_pct if group.reports else 3.0
     sets = [rep.set_ratio_error_pct for rep in group.reports if rep.set_ratio_error_pct is not None]
     ratio_tol = next((rep.ratio_tolerance_pct for rep in group.reports if rep.rows), 5.0)
-    return [Chart(pick(lang, "Deviation of r_0 from the right value", "Отклонение r_0 от верного"), tuple(r0), "%", tol),
-            Chart(pick(lang, "Ratio error of the students' tooth sets", "Погрешность передаточного отношения наборов зубьев"),
+    return [Chart(tr(lang, "Deviation of r_0 from the right value"), tuple(r0), "%", tol),
+            Chart(tr(lang, "Ratio error of the students' tooth sets"),
                   tuple(sets), "%", ratio_tol)]
 
 
@@ -140,10 +141,10 @@ def _verdict_cell(rep, lang):
     from ..render.html.group import PageCell
 
     if rep.error:
-        return PageCell(pick(lang, "error", "ошибка"), "bad", 2), "error"
+        return PageCell(tr(lang, "error"), "bad", 2), "error"
     if rep.passed:
-        return PageCell(pick(lang, "passed", "зачтено"), "good", 0), "passed"
-    return PageCell(pick(lang, "not passed", "не зачтено"), "bad", 1), "not passed"
+        return PageCell(tr(lang, "passed"), "good", 0), "passed"
+    return PageCell(tr(lang, "not passed"), "bad", 1), "not passed"
 
 
 # pages -------------------------------------------------------------------------------------------
@@ -161,9 +162,9 @@ def check_page(out_dir: Path, group, lang: str, rtol_pct: float, sheets):
     from ..render.html.group import GroupPage, PageCell, PageRow
 
     keys = group.keys()
-    columns = [(pick(lang, "Student", "Студент"), False), (pick(lang, "Group", "Группа"), False),
-               (pick(lang, "Var.", "Вар."), True), (pick(lang, "Verdict", "Итог"), False),
-               (pick(lang, "Right", "Верно"), True)] + [(symbol(k, lang), True) for k in keys]
+    columns = [(tr(lang, "Student"), False), (tr(lang, "Group"), False),
+               (tr(lang, "Var."), True), (tr(lang, "Verdict"), False),
+               (tr(lang, "Right"), True)] + [(symbol(k, lang), True) for k in keys]
     rows = []
     for rep in group.reports:
         verdict, status = _verdict_cell(rep, lang)
@@ -183,17 +184,13 @@ def check_page(out_dir: Path, group, lang: str, rtol_pct: float, sheets):
 
             detail = " ".join(findings_lines(rep.findings, lang))
         rows.append(PageRow(status, tuple(cells), links, detail))
-    remarks = [pick(lang, f"Answers file {f} matches no student on the roster", f"Файл ответов {f} не соответствует ни "
-                          "одному студенту списка") + (pick(lang, f" (perhaps {n}?)", f" (возможно, {n}?)") if n else "")
+    remarks = [tr(lang, "Answers file {f} matches no student on the roster").format(f=f) + (tr(lang, " (perhaps {n}?)").format(n=n) if n else "")
                for f, n in group.unmatched]
     n_pass = sum(r.passed for r in group.reports)
-    subtitle = pick(lang, f"Tolerance {num(rtol_pct, lang)} %, sheets {', '.join(sorted(sheets))}; passed {n_pass} of "
-                          f"{len(group.reports)}; {_today(lang)}. Hover a cell for the feedback on it.",
-                    f"Допуск {num(rtol_pct, lang)} %, листы {', '.join(sorted(sheets))}; зачтено {n_pass} из "
-                    f"{len(group.reports)}; {_today(lang)}. Наведите на ячейку — появится замечание.")
-    statuses = (("passed", pick(lang, "passed", "зачтено")), ("not passed", pick(lang, "not passed", "не зачтено")),
-                ("error", pick(lang, "error", "ошибка")))
-    return GroupPage(lang, pick(lang, "Group check", "Проверка группы"), subtitle, tuple(columns), tuple(rows), statuses,
+    subtitle = tr(lang, "Tolerance {rtol_pct} %, sheets {sheets}; passed {n_pass} of {reports}; {today}. Hover a cell for the feedback on it.").format(rtol_pct=num(rtol_pct, lang), sheets=', '.join(sorted(sheets)), n_pass=n_pass, reports=len(group.reports), today=_today(lang))
+    statuses = (("passed", tr(lang, "passed")), ("not passed", tr(lang, "not passed")),
+                ("error", tr(lang, "error")))
+    return GroupPage(lang, tr(lang, "Group check"), subtitle, tuple(columns), tuple(rows), statuses,
                      tuple(_check_stats(group, keys, lang)), tuple(_check_charts(group, lang)), tuple(remarks))
 
 
@@ -212,15 +209,15 @@ def batch_page(out_dir: Path, rows: list[dict], lang: str, tolerance_pct: float 
     if check:
         for s in check.get("students", []):
             checked[(str(s.get("student")), str(s.get("variant")))] = s
-    columns = [(pick(lang, "Student", "Студент"), False), (pick(lang, "Group", "Группа"), False),
-               (pick(lang, "Var.", "Вар."), True), (pick(lang, "Status", "Статус"), False),
-               (pick(lang, "n_d, rpm", "n_д, об/мин"), True), ("i_pl" if lang != "ru" else "i_пл", True),
-               (pick(lang, "teeth × k", "зубья × k"), False), (pick(lang, "ratio error, %", "погрешность i, %"), True),
-               ("z1/z2", False), ("ε_α", True), (pick(lang, "r_0, mm", "r_0, мм"), True),
-               (pick(lang, "e or l_OC, mm", "e или l_OC, мм"), True), (pick(lang, "ν_rise/ν_ret, °", "ν_у/ν_в, °"), False),
-               (pick(lang, "Warnings", "Предупреждения"), False)]
+    columns = [(tr(lang, "Student"), False), (tr(lang, "Group"), False),
+               (tr(lang, "Var."), True), (tr(lang, "Status"), False),
+               (tr(lang, "n_d, rpm"), True), ("i_pl" if lang != "ru" else "i_пл", True),
+               (tr(lang, "teeth × k"), False), (tr(lang, "ratio error, %"), True),
+               ("z1/z2", False), ("ε_α", True), (tr(lang, "r_0, mm"), True),
+               (tr(lang, "e or l_OC, mm"), True), (tr(lang, "ν_rise/ν_ret, °"), False),
+               (tr(lang, "Warnings"), False)]
     if checked:
-        columns.append((pick(lang, "Check", "Проверка"), False))
+        columns.append((tr(lang, "Check"), False))
     out = []
     tol = tolerance_pct if tolerance_pct is not None else 5.0
 
@@ -231,7 +228,7 @@ def batch_page(out_dir: Path, rows: list[dict], lang: str, tolerance_pct: float 
 
     for r in rows:
         st = r.get("status", "")
-        label = pick(lang, *STATUS.get(st, (st, st)))
+        label = tr(lang, STATUS.get(st, st))
         level = "good" if st == "ok" else ("bad" if st == "failed" else "warn")
         lead = [PageCell(str(r.get("student", ""))), PageCell(str(r.get("group", ""))),
                 PageCell(str(r.get("variant", "")), sort=_int(r.get("variant"))), PageCell(label, level)]
@@ -265,12 +262,12 @@ def batch_page(out_dir: Path, rows: list[dict], lang: str, tolerance_pct: float 
             else:
                 fname = s.get("file_name") or ""
                 if s.get("error"):
-                    cells.append(PageCell(pick(lang, "error", "ошибка"), "bad", 2))
+                    cells.append(PageCell(tr(lang, "error"), "bad", 2))
                 elif s.get("passed"):
-                    cells.append(PageCell(pick(lang, "passed", "зачтено"), "good", 0))
+                    cells.append(PageCell(tr(lang, "passed"), "good", 0))
                 else:
                     wrong = [x["key"] for x in s.get("rows", []) if not str(x.get("status", "")).startswith("pass")]
-                    cells.append(PageCell(pick(lang, "not passed", "не зачтено"), "bad", 1, ", ".join(wrong)))
+                    cells.append(PageCell(tr(lang, "not passed"), "bad", 1, ", ".join(wrong)))
         rel = _rel_folder(out_dir, r.get("folder")) if st == "ok" else None
         links = _student_links(out_dir, rel, lang, _feedback_files(out_dir, fname))
         detail = ""
@@ -280,25 +277,22 @@ def batch_page(out_dir: Path, rows: list[dict], lang: str, tolerance_pct: float 
             detail = error_text(str(r["error"]), lang)
         out.append(PageRow(status, tuple(cells), links, detail))
     ok = [r for r in rows if r.get("status") == "ok"]
-    stats = [Stat(pick(lang, "computed", "рассчитано"), len(ok), len(rows))]
-    for flag, en, ru in (("ratio_error", "ratio within tolerance", "передаточное отношение в допуске"),
-                         ("undercut", "no undercut", "без подрезания"),
-                         ("pressure_angle", "pressure angle within ν_max", "угол давления не больше ν_max"),
-                         ("contact_ratio", "contact ratio enough", "коэффициент перекрытия достаточен")):
-        stats.append(Stat(pick(lang, en, ru), sum(1 for r in ok if flag not in (r.get("warnings") or ())), len(ok)))
+    stats = [Stat(tr(lang, "computed"), len(ok), len(rows))]
+    for flag, label in (("ratio_error", N_("ratio within tolerance")), ("undercut", N_("no undercut")),
+                        ("pressure_angle", N_("pressure angle within ν_max")), ("contact_ratio", N_("contact ratio enough"))):
+        stats.append(Stat(tr(lang, label), sum(1 for r in ok if flag not in (r.get("warnings") or ())), len(ok)))
     if checked:
         students = check.get("students", [])
-        stats.append(Stat(pick(lang, "passed the check", "зачтено при проверке"), sum(1 for s in students if s.get("passed")),
+        stats.append(Stat(tr(lang, "passed the check"), sum(1 for s in students if s.get("passed")),
                           len(students)))
-    charts = [Chart(pick(lang, "Base radius r_0 of the group", "Минимальный радиус r_0 по группе"),
-                    tuple(float(r["r0_mm"]) for r in ok if r.get("r0_mm") not in (None, "")), pick(lang, "mm", "мм")),
-              Chart(pick(lang, "Ratio error of the reducers", "Погрешность передаточного отношения редукторов"),
+    charts = [Chart(tr(lang, "Base radius r_0 of the group"),
+                    tuple(float(r["r0_mm"]) for r in ok if r.get("r0_mm") not in (None, "")), tr(lang, "mm")),
+              Chart(tr(lang, "Ratio error of the reducers"),
                     tuple(float(r["ratio_error_pct"]) for r in ok if r.get("ratio_error_pct") not in (None, "")), "%", tol)]
     n_ok = len(ok)
-    subtitle = pick(lang, f"{n_ok} of {len(rows)} computed; {_today(lang)}.", f"Рассчитано {n_ok} из {len(rows)}; {_today(lang)}.")
-    statuses = (("ok", pick(lang, *STATUS["ok"])), ("failed", pick(lang, *STATUS["failed"])),
-                ("not run", pick(lang, *STATUS["not run"])))
-    return GroupPage(lang, pick(lang, "The group at a glance", "Группа: сводка"), subtitle, tuple(columns), tuple(out),
+    subtitle = tr(lang, "{n_ok} of {rows} computed; {today}.").format(n_ok=n_ok, rows=len(rows), today=_today(lang))
+    statuses = tuple((code, tr(lang, STATUS[code])) for code in ("ok", "failed", "not run"))
+    return GroupPage(lang, tr(lang, "The group at a glance"), subtitle, tuple(columns), tuple(out),
                      statuses, tuple(stats), tuple(charts))
 
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import difflib
 import unicodedata
 
+from ..i18n import N_
 from ..records import record
 
 
@@ -19,97 +20,81 @@ class AnswerKey:
     key: str
     path: tuple  # path into the project JSON document
     kind: str  # "int" exact, "float" within tolerance, "input" the variant's data (exact)
-    en: str
-    ru: str
+    meaning: str  # English msgid (shown with tr)
     scale_path: tuple | None = None  # tolerance relative to this value instead (e.g. e relative to r0)
     book_path: tuple | None = None  # the book's graphical answer, also accepted (status "pass (book)")
     aliases: tuple = ()  # other names students write (the book's symbols)
     unit: str = ""  # "mm", "deg", "rpm", "%", "m", "" (a count or a ratio)
 
 
-def _k(key, path, kind, en, ru, scale_path=None, book_path=None, aliases=(), unit=""):
-    return AnswerKey(key, tuple(path), kind, en, ru, None if scale_path is None else tuple(scale_path),
+def _k(key, path, kind, meaning, scale_path=None, book_path=None, aliases=(), unit=""):
+    return AnswerKey(key, tuple(path), kind, meaning, None if scale_path is None else tuple(scale_path),
                      None if book_path is None else tuple(book_path), tuple(aliases), unit)
 
 
 ANSWER_KEYS: tuple[AnswerKey, ...] = (
-    _k("n_motor_rpm", ("gears", "motor", "n_rpm"), "int", "motor speed n_d [rpm]", "частота вращения двигателя n_д [об/мин]",
+    _k("n_motor_rpm", ("gears", "motor", "n_rpm"), "int", N_("motor speed n_d [rpm]"),
        aliases=("n_д", "n_d", "n_дв", "n_motor"), unit="rpm"),
-    _k("i_spur", ("gears", "i_spur"), "float", "spur-pair ratio i_d", "передаточное отношение простой передачи i_д",
+    _k("i_spur", ("gears", "i_spur"), "float", N_("spur-pair ratio i_d"),
        aliases=("i_д", "i_d", "u_д", "u_d", "i_пп")),
-    _k("i_planetary", ("gears", "i_planetary"), "float", "required planetary ratio i_pl = n_d/n_cr",
-       "требуемое передаточное отношение планетарного редуктора i_пл = n_д/n_кр", aliases=("i_пл", "i_pl", "u_пл", "u_pl")),
-    _k("i_kh", ("gears", "planetary", "ratio"), "float", "ratio of the tooth set i_kH = 1 + z_c·z_n/(z_k·z_c′) (2.1)",
-       "передаточное отношение подобранного редуктора i_kH = 1 + z_c·z_n/(z_k·z_c′) (2.1)",
+    _k("i_planetary", ("gears", "i_planetary"), "float", N_("required planetary ratio i_pl = n_d/n_cr"), aliases=("i_пл", "i_pl", "u_пл", "u_pl")),
+    _k("i_kh", ("gears", "planetary", "ratio"), "float", N_("ratio of the tooth set i_kH = 1 + z_c·z_n/(z_k·z_c′) (2.1)"),
        aliases=("u_1H", "i_1H", "i_kH", "u_kH", "i_кН", "u_кН", "i_kH^n", "i_set")),
     _k("ratio_error_pct", ("gears", "planetary", "ratio_error_pct"), "float",
-       "ratio error of the tooth set [%] (tolerance in percentage points)", "погрешность передаточного отношения [%]",
+       N_("ratio error of the tooth set [%] (tolerance in percentage points)"),
        aliases=("δi", "Δi", "delta_i", "ratio_error", "err_i", "погрешность_i"), unit="%"),
-    _k("z_sun", ("gears", "planetary", "stages", 0, "z_sun"), "int", "sun teeth z_k (stage 1)", "число зубьев центрального колеса z_k",
+    _k("z_sun", ("gears", "planetary", "stages", 0, "z_sun"), "int", N_("sun teeth z_k (stage 1)"),
        aliases=("z_k", "z_к", "zk")),
-    _k("z_planet", ("gears", "planetary", "stages", 0, "z_planet"), "int", "planet teeth z_c (stage 1)", "число зубьев сателлита z_c",
+    _k("z_planet", ("gears", "planetary", "stages", 0, "z_planet"), "int", N_("planet teeth z_c (stage 1)"),
        aliases=("z_c", "z_с", "zc")),
-    _k("z_planet2", ("gears", "planetary", "stages", 0, "z_planet2"), "int", "second planet row z_c′ (scheme 2)",
-       "число зубьев второго венца сателлита z_c′", aliases=("z_c′", "z_c'", "z_с′", "z_с'", "z_c2", "zc2")),
-    _k("z_ring", ("gears", "planetary", "stages", 0, "z_ring"), "int", "ring teeth z_n (stage 1)", "число зубьев корончатого колеса z_n",
+    _k("z_planet2", ("gears", "planetary", "stages", 0, "z_planet2"), "int", N_("second planet row z_c′ (scheme 2)"), aliases=("z_c′", "z_c'", "z_с′", "z_с'", "z_c2", "zc2")),
+    _k("z_ring", ("gears", "planetary", "stages", 0, "z_ring"), "int", N_("ring teeth z_n (stage 1)"),
        aliases=("z_n", "z_н", "zn")),
-    _k("planets", ("gears", "planetary", "stages", 0, "planets"), "int", "number of planets k (stage 1)", "число сателлитов k",
+    _k("planets", ("gears", "planetary", "stages", 0, "planets"), "int", N_("number of planets k (stage 1)"),
        aliases=("k", "k_наиб", "n_сат", "число_сателлитов")),
-    _k("z_sun_2", ("gears", "planetary", "stages", 1, "z_sun"), "int", "sun teeth, stage 2", "z_k второй ступени",
+    _k("z_sun_2", ("gears", "planetary", "stages", 1, "z_sun"), "int", N_("sun teeth, stage 2"),
        aliases=("z_k2", "z_к2", "z_k_2")),
-    _k("z_planet_2", ("gears", "planetary", "stages", 1, "z_planet"), "int", "planet teeth, stage 2", "z_c второй ступени",
+    _k("z_planet_2", ("gears", "planetary", "stages", 1, "z_planet"), "int", N_("planet teeth, stage 2"),
        aliases=("z_c_2", "z_с2")),
-    _k("z_ring_2", ("gears", "planetary", "stages", 1, "z_ring"), "int", "ring teeth, stage 2", "z_n второй ступени",
+    _k("z_ring_2", ("gears", "planetary", "stages", 1, "z_ring"), "int", N_("ring teeth, stage 2"),
        aliases=("z_n2", "z_н2", "z_n_2")),
-    _k("planets_2", ("gears", "planetary", "stages", 1, "planets"), "int", "planets, stage 2", "число сателлитов второй ступени",
+    _k("planets_2", ("gears", "planetary", "stages", 1, "planets"), "int", N_("planets, stage 2"),
        aliases=("k2", "k_2")),
-    _k("z1", ("gears", "spur", "z1"), "int", "spur pinion teeth z1", "число зубьев шестерни z1", aliases=("z_1",)),
-    _k("z2", ("gears", "spur", "z2"), "int", "spur wheel teeth z2", "число зубьев колеса z2", aliases=("z_2",)),
-    _k("a_mm", ("gears", "spur", "a_mm"), "float", "spur centre distance a [mm]", "межосевое расстояние a [мм]",
+    _k("z1", ("gears", "spur", "z1"), "int", N_("spur pinion teeth z1"), aliases=("z_1",)),
+    _k("z2", ("gears", "spur", "z2"), "int", N_("spur wheel teeth z2"), aliases=("z_2",)),
+    _k("a_mm", ("gears", "spur", "a_mm"), "float", N_("spur centre distance a [mm]"),
        aliases=("a",), unit="mm"),
-    _k("eps_alpha", ("gears", "spur", "eps_alpha"), "float", "transverse contact ratio ε_α", "коэффициент перекрытия ε_α",
+    _k("eps_alpha", ("gears", "spur", "eps_alpha"), "float", N_("transverse contact ratio ε_α"),
        aliases=("ε_α", "ε_a", "eps_a", "epsilon_alpha", "e_alpha")),
-    _k("x1", ("gears", "spur", "x1"), "float", "spur shift x1 (the pair is recomputed with the given x1, x2; 0: the book's)",
-       "коэффициент смещения x1 (пара пересчитывается с заданными x1, x2)", aliases=("x_1",)),
-    _k("x2", ("gears", "spur", "x2"), "float", "spur shift x2 (the pair is recomputed with the given x1, x2; 0: the book's)",
-       "коэффициент смещения x2 (пара пересчитывается с заданными x1, x2)", aliases=("x_2",)),
-    _k("a_w_mm", ("gears", "spur", "a_w_mm"), "float", "spur working centre distance a_w [mm]", "межосевое расстояние a_w [мм]",
+    _k("x1", ("gears", "spur", "x1"), "float", N_("spur shift x1 (the pair is recomputed with the given x1, x2; 0: the book's)"), aliases=("x_1",)),
+    _k("x2", ("gears", "spur", "x2"), "float", N_("spur shift x2 (the pair is recomputed with the given x1, x2; 0: the book's)"), aliases=("x_2",)),
+    _k("a_w_mm", ("gears", "spur", "a_w_mm"), "float", N_("spur working centre distance a_w [mm]"),
        aliases=("a_w", "aw"), unit="mm"),
-    _k("alpha_w_deg", ("gears", "spur", "alpha_w_deg"), "float", "spur working pressure angle α_w [deg]", "угол зацепления α_w [°]",
+    _k("alpha_w_deg", ("gears", "spur", "alpha_w_deg"), "float", N_("spur working pressure angle α_w [deg]"),
        aliases=("α_w", "alpha_w"), unit="deg"),
-    _k("r0_mm", ("cam", "r0_mm"), "float", "cam base radius r0 [mm] (the book's vertex is accepted too)",
-       "минимальный радиус кулачка r_0 [мм] (принимается и вершина по пособию)", book_path=("cam", "book_vertex", "r0_mm"),
+    _k("r0_mm", ("cam", "r0_mm"), "float", N_("cam base radius r0 [mm] (the book's vertex is accepted too)"), book_path=("cam", "book_vertex", "r0_mm"),
        aliases=("r_0", "r0", "r_min", "rmin"), unit="mm"),
-    _k("e_mm", ("cam", "e_mm"), "float", "offset e [mm] (tolerance relative to r0; the book's vertex accepted)",
-       "эксцентриситет e [мм] (допуск от r_0; принимается и вершина по пособию)", ("cam", "r0_mm"), ("cam", "book_vertex", "e_mm"),
+    _k("e_mm", ("cam", "e_mm"), "float", N_("offset e [mm] (tolerance relative to r0; the book's vertex accepted)"), ("cam", "r0_mm"), ("cam", "book_vertex", "e_mm"),
        aliases=("e", "e_c", "e_т"), unit="mm"),
-    _k("l_oc_mm", ("cam", "l_oc_mm"), "float", "centre distance l_OC [mm] (the book's vertex accepted)",
-       "межцентровое расстояние l_OC [мм] (принимается и вершина по пособию)", book_path=("cam", "book_vertex", "l_oc_mm"),
+    _k("l_oc_mm", ("cam", "l_oc_mm"), "float", N_("centre distance l_OC [mm] (the book's vertex accepted)"), book_path=("cam", "book_vertex", "l_oc_mm"),
        aliases=("l_OC", "l_oc", "l_ОС", "loc"), unit="mm"),
-    _k("roller_mm", ("cam", "roller_mm"), "float", "roller radius r_p [mm] (the book's 0.2·r0 accepted, marked)",
-       "радиус ролика r_р [мм] (принимается и 0,2·r0 по пособию)", aliases=("r_р", "r_p", "rp", "r_ролика", "roller", "r_roller"),
+    _k("roller_mm", ("cam", "roller_mm"), "float", N_("roller radius r_p [mm] (the book's 0.2·r0 accepted, marked)"), aliases=("r_р", "r_p", "rp", "r_ролика", "roller", "r_roller"),
        unit="mm"),
-    _k("nu_rise_deg", ("cam", "pressure_angle_max_deg", "rise"), "float", "max pressure angle on rise [deg]",
-       "максимальный угол давления на удалении [°]", aliases=("ν_у", "nu_у", "ν_max_у", "nu_rise", "ν_rise"), unit="deg"),
-    _k("nu_return_deg", ("cam", "pressure_angle_max_deg", "return"), "float", "max pressure angle on return [deg]",
-       "максимальный угол давления на возвращении [°]", aliases=("ν_в", "nu_в", "ν_max_в", "nu_return", "ν_return"), unit="deg"),
-    _k("psi_rise_deg", ("cam", "psi_deg", "rise"), "float", "profile angle ψ_у [deg]", "профильный угол удаления ψ_у [°]",
+    _k("nu_rise_deg", ("cam", "pressure_angle_max_deg", "rise"), "float", N_("max pressure angle on rise [deg]"), aliases=("ν_у", "nu_у", "ν_max_у", "nu_rise", "ν_rise"), unit="deg"),
+    _k("nu_return_deg", ("cam", "pressure_angle_max_deg", "return"), "float", N_("max pressure angle on return [deg]"), aliases=("ν_в", "nu_в", "ν_max_в", "nu_return", "ν_return"), unit="deg"),
+    _k("psi_rise_deg", ("cam", "psi_deg", "rise"), "float", N_("profile angle ψ_у [deg]"),
        aliases=("ψ_у", "psi_у", "psi_y", "ψ_y"), unit="deg"),
-    _k("psi_far_dwell_deg", ("cam", "psi_deg", "far_dwell"), "float", "profile angle ψ_дс [deg]", "профильный угол дальнего стояния ψ_дс [°]",
+    _k("psi_far_dwell_deg", ("cam", "psi_deg", "far_dwell"), "float", N_("profile angle ψ_дс [deg]"),
        aliases=("ψ_дс", "psi_дс", "ψ_ds", "psi_ds"), unit="deg"),
-    _k("psi_return_deg", ("cam", "psi_deg", "return"), "float", "profile angle ψ_в [deg]", "профильный угол возвращения ψ_в [°]",
+    _k("psi_return_deg", ("cam", "psi_deg", "return"), "float", N_("profile angle ψ_в [deg]"),
        aliases=("ψ_в", "psi_в", "ψ_v", "psi_v"), unit="deg"),
     # the variant's own data (Table 1.2): a student who restates it is checked against the variant
     # (a mismatch means the wrong row of the table); never required
-    _k("phi_rise_deg", ("input", "phi_rise_deg"), "input", "phase angle of rise φ_у [deg] (Table 1.2)",
-       "фазовый угол удаления φ_у [°] (табл. 1.2)", aliases=("φ_у", "phi_у", "phi_y", "φ_y"), unit="deg"),
-    _k("phi_far_dwell_deg", ("input", "phi_far_dwell_deg"), "input", "phase angle of far dwell φ_дс [deg] (Table 1.2)",
-       "фазовый угол дальнего стояния φ_дс [°] (табл. 1.2)", aliases=("φ_дс", "phi_дс", "phi_ds"), unit="deg"),
-    _k("phi_return_deg", ("input", "phi_return_deg"), "input", "phase angle of return φ_в [deg] (Table 1.2)",
-       "фазовый угол возвращения φ_в [°] (табл. 1.2)", aliases=("φ_в", "phi_в", "phi_v"), unit="deg"),
-    _k("nu_max_deg", ("input", "nu_max_deg"), "input", "allowed pressure angle ν_max [deg] (Table 1.2)",
-       "допустимый угол давления ν_max [°] (табл. 1.2)", aliases=("ν_max", "nu_max", "ν_доп"), unit="deg"),
-    _k("n_cam_rpm", ("input", "n_cam_rpm"), "input", "cam speed n_k [rpm] (Table 1.2)", "частота вращения кулачка n_к [об/мин] (табл. 1.2)",
+    _k("phi_rise_deg", ("input", "phi_rise_deg"), "input", N_("phase angle of rise φ_у [deg] (Table 1.2)"), aliases=("φ_у", "phi_у", "phi_y", "φ_y"), unit="deg"),
+    _k("phi_far_dwell_deg", ("input", "phi_far_dwell_deg"), "input", N_("phase angle of far dwell φ_дс [deg] (Table 1.2)"), aliases=("φ_дс", "phi_дс", "phi_ds"), unit="deg"),
+    _k("phi_return_deg", ("input", "phi_return_deg"), "input", N_("phase angle of return φ_в [deg] (Table 1.2)"), aliases=("φ_в", "phi_в", "phi_v"), unit="deg"),
+    _k("nu_max_deg", ("input", "nu_max_deg"), "input", N_("allowed pressure angle ν_max [deg] (Table 1.2)"), aliases=("ν_max", "nu_max", "ν_доп"), unit="deg"),
+    _k("n_cam_rpm", ("input", "n_cam_rpm"), "input", N_("cam speed n_k [rpm] (Table 1.2)"),
        aliases=("n_к", "n_k", "n_кул"), unit="rpm"),
 )
 KEYS_BY_NAME = {k.key: k for k in ANSWER_KEYS}

@@ -2,89 +2,91 @@
 
 from __future__ import annotations
 
-from ...i18n.lang import pick
+from ...i18n import N_, tr
 
-# key, English header, Russian header, numeric
+
+# key, header (English msgid), numeric
 SUMMARY_FIELDS = (
-    ("student", "student", "студент", False),
-    ("group", "group", "группа", False),
-    ("variant", "variant", "вариант", True),
-    ("scheme", "scheme", "схема", True),
-    ("law", "law", "закон", True),
-    ("status", "status", "статус", False),
-    ("crank_rpm", "crank_rpm", "n_кр, об/мин", True),
-    ("n_motor_rpm", "n_motor_rpm", "n_д, об/мин", True),
-    ("power_kw", "power_kw", "N_д, кВт", True),
-    ("i_spur", "i_spur", "i_пп (простая передача)", True),
-    ("i_planetary", "i_planetary", "i_пл", True),
-    ("planetary_scheme", "planetary_scheme", "схема редуктора", False),
-    ("teeth", "teeth", "зубья z_k/z_c/z_n", False),
-    ("planets", "planets", "сателлиты k", False),
-    ("ratio_error_pct", "ratio_error_pct", "погрешность i_пл, %", True),
-    ("z1", "z1", "z1", True),
-    ("z2", "z2", "z2", True),
-    ("eps_alpha", "eps_alpha", "ε_α", True),
-    ("r0_mm", "r0_mm", "r0, мм", True),
-    ("e_mm", "e_mm", "e, мм", True),
-    ("l_oc_mm", "l_oc_mm", "l_OC, мм", True),
-    ("roller_mm", "roller_mm", "r_р, мм", True),
-    ("nu_rise_deg", "nu_rise_deg", "ν_у, °", True),
-    ("nu_return_deg", "nu_return_deg", "ν_в, °", True),
-    ("undercut", "undercut", "подрезание", True),
-    ("pressure_angle", "pressure_angle", "угол давления", True),
-    ("ratio_error", "ratio_error", "ошибка i", True),
-    ("contact_ratio", "contact_ratio", "перекрытие", True),
-    ("warnings", "warnings", "предупреждения", False),
-    ("folder", "folder", "папка", False),
-    ("error", "error", "ошибка", False),
+    ("student", N_("student"), False),
+    ("group", N_("group"), False),
+    ("variant", N_("variant"), True),
+    ("scheme", N_("scheme"), True),
+    ("law", N_("law"), True),
+    ("status", N_("status"), False),
+    ("crank_rpm", N_("crank_rpm"), True),
+    ("n_motor_rpm", N_("n_motor_rpm"), True),
+    ("power_kw", N_("power_kw"), True),
+    ("i_spur", N_("i_spur"), True),
+    ("i_planetary", N_("i_planetary"), True),
+    ("planetary_scheme", N_("planetary_scheme"), False),
+    ("teeth", N_("teeth"), False),
+    ("planets", N_("planets"), False),
+    ("ratio_error_pct", N_("ratio_error_pct"), True),
+    ("z1", N_("z1"), True),
+    ("z2", N_("z2"), True),
+    ("eps_alpha", N_("eps_alpha"), True),
+    ("r0_mm", N_("r0_mm"), True),
+    ("e_mm", N_("e_mm"), True),
+    ("l_oc_mm", N_("l_oc_mm"), True),
+    ("roller_mm", N_("roller_mm"), True),
+    ("nu_rise_deg", N_("nu_rise_deg"), True),
+    ("nu_return_deg", N_("nu_return_deg"), True),
+    ("undercut", N_("undercut"), True),
+    ("pressure_angle", N_("pressure_angle"), True),
+    ("ratio_error", N_("ratio_error"), True),
+    ("contact_ratio", N_("contact_ratio"), True),
+    ("warnings", N_("warnings"), False),
+    ("folder", N_("folder"), False),
+    ("error", N_("error"), False),
 )
 
 
 # a warning's name in the summary, from the codes of the notes (the four the course grades first)
 FLAGS = {
-    "undercut": ("undercut", "подрезание"),
-    "pressure_angle": ("pressure angle", "угол давления"),
-    "ratio_error": ("ratio error", "ошибка передаточного отношения"),
-    "contact_ratio": ("contact ratio", "коэффициент перекрытия"),
-    "few_planets": ("few planets", "мало сателлитов"),
-    "power": ("motor power", "мощность двигателя"),
-    "pivot": ("rocker pivot", "ось коромысла"),
-    "roller": ("roller", "ролик"),
-    "book": ("the book's example", "пример пособия"),
-    "drawing": ("drawing size", "размер чертежа"),
-    "ratio_over_3": ("ratio error over 3 % (within tolerance)", "погрешность i больше 3 % (в допуске)"),
-    "book_vertex": ("the book's vertex exceeds the allowed pressure angle", "вершина по пособию превышает допустимый угол давления"),
-    "small_cam": ("cam much smaller than the rocker", "кулачок много меньше коромысла"),
-    "long_stroke": ("unusually long stroke", "необычно большой ход"),
-    "stage_range": ("stage ratios outside 3…8", "ступени вне диапазона 3…8"),
-    "assembly": ("assembly forms differ", "формы условия сборки расходятся"),
-    "shift": ("a shift is suggested", "рекомендовано смещение"),
-    "linkage": ("linkage", "рычажный механизм"),
+    "undercut": N_("undercut"),
+    "pressure_angle": N_("pressure angle"),
+    "ratio_error": N_("ratio error"),
+    "contact_ratio": N_("contact ratio"),
+    "few_planets": N_("few planets"),
+    "power": N_("motor power"),
+    "pivot": N_("rocker pivot"),
+    "roller": N_("roller"),
+    "book": N_("the book's example"),
+    "drawing": N_("drawing size"),
+    "ratio_over_3": N_("ratio error over 3 % (within tolerance)"),
+    "book_vertex": N_("the book's vertex exceeds the allowed pressure angle"),
+    "small_cam": N_("cam much smaller than the rocker"),
+    "long_stroke": N_("unusually long stroke"),
+    "stage_range": N_("stage ratios outside 3…8"),
+    "assembly": N_("assembly forms differ"),
+    "shift": N_("a shift is suggested"),
+    "linkage": N_("linkage"),
 }
 
 
-STATUS = {"ok": ("ok", "готово"), "failed": ("failed", "ошибка"), "not run": ("not run (interrupted)", "не выполнен (прервано)")}
+STATUS = {"ok": N_("ok"), "failed": N_("failed"), "not run": N_("not run (interrupted)")}
 
 
 def flag_name(flag: str, lang: str) -> str:
     """A warning's name in words (an unknown code still reads as words, never as a code)."""
-    en, ru = FLAGS.get(flag, (flag.replace("_", " "), "предупреждение: " + flag.replace("_", " ")))
-    return pick(lang, en, ru)
+    if flag in FLAGS:
+        return tr(lang, FLAGS[flag])
+    return tr(lang, "warning: {name}").format(name=flag.replace("_", " "))
 
 
 def summary_csv(rows: list[dict], lang: str, csv_locale: str) -> bytes:
     """summary.csv: headers and status in `lang`; ';' and decimal commas under the ru CSV locale."""
     from .csv import csv_encoding, csv_text
 
-    header = [pick(lang, en, ru) for _, en, ru, _ in SUMMARY_FIELDS]
-    numeric = {i for i, f in enumerate(SUMMARY_FIELDS) if f[3]}
+    header = [tr(lang, head) for _, head, _ in SUMMARY_FIELDS]
+    numeric = {i for i, f in enumerate(SUMMARY_FIELDS) if f[2]}
     body = []
     for r in rows:
         cells = []
         for key, *_ in SUMMARY_FIELDS:
             v = r.get(key)
             if key == "status":
-                v = pick(lang, *STATUS.get(v, (v, v)))
+                v = tr(lang, STATUS.get(v, v))
             elif key == "warnings":
                 v = ", ".join(flag_name(f, lang) for f in (v or ()))
             cells.append(v)

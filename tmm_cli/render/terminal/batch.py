@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ...i18n.lang import pick
+from ...i18n import ntr, tr
 from ...i18n.numbers import num
 
 
@@ -23,30 +23,22 @@ def print_batch_intro(console, lang: str, *, roster=None, default_crank: bool = 
     from rich.markup import escape
 
     if roster is not None:
-        sep = pick(lang, "';'", "«;»") if roster.delimiter == ";" else pick(lang, "','", "«,»")
-        console.print("[cyan]ℹ[/] " + escape(pick(lang, f"Roster {roster.path}: read as {roster.encoding}, separator {sep}.",
-                                                     f"Список {roster.path}: кодировка {roster.encoding}, разделитель {sep}.")))
+        sep = tr(lang, "';'") if roster.delimiter == ";" else tr(lang, "','")
+        console.print("[cyan]ℹ[/] " + escape(tr(lang, "Roster {path}: read as {encoding}, separator {sep}.").format(path=roster.path, encoding=roster.encoding, sep=sep)))
     from ...gears.drive import DEFAULT_CRANK_RPM
 
     if roster is not None and roster.jobs and any(j.crank_rpm is None for j in roster.jobs):
-        from ...i18n.numbers import plural
-
         n = sum(j.crank_rpm is None for j in roster.jobs)
         if n == len(roster.jobs):
             default_crank = True
         else:
-            rows = plural(n, lang, {"one": "row", "other": "rows"} if lang != "ru" else
-                          {"one": "строка", "few": "строки", "many": "строк", "other": "строки"})
-            console.print("[cyan]ℹ[/] " + pick(
-                lang, f"{rows} without crank_rpm use the book's crank speed n_cr = {DEFAULT_CRANK_RPM:g} rpm (§2.4).",
-                f"{rows} без n_кр: принята частота вращения кривошипа по пособию n_кр = {DEFAULT_CRANK_RPM:g} об/мин (п. 2.4)."))
+            console.print("[cyan]ℹ[/] " + ntr(
+                lang, "{n} row without crank_rpm uses the book's crank speed n_cr = {rpm:g} rpm (§2.4).",
+                "{n} rows without crank_rpm use the book's crank speed n_cr = {rpm:g} rpm (§2.4).", n).format(
+                n=n, rpm=DEFAULT_CRANK_RPM))
     if default_crank:
 
-        console.print("[cyan]ℹ[/] " + pick(
-            lang, f"Every row uses the book's crank speed n_cr = {DEFAULT_CRANK_RPM:g} rpm (§2.4); give --crank-rpm "
-                  "or a roster with a crank_rpm column for the students' own speeds.",
-            f"Во всех строках принята частота вращения кривошипа по пособию n_кр = {DEFAULT_CRANK_RPM:g} об/мин "
-            "(п. 2.4); задайте --crank-rpm или список со столбцом n_кр для частот студентов."))
+        console.print("[cyan]ℹ[/] " + tr(lang, "Every row uses the book's crank speed n_cr = {DEFAULT_CRANK_RPM:g} rpm (§2.4); give --crank-rpm or a roster with a crank_rpm column for the students' own speeds.").format(DEFAULT_CRANK_RPM=DEFAULT_CRANK_RPM))
 
 
 def print_batch(console, summary, out_dir: Path, lang: str) -> None:
@@ -57,11 +49,11 @@ def print_batch(console, summary, out_dir: Path, lang: str) -> None:
     from ..data.summary import STATUS, flag_name
 
     roster = any(not str(r["student"]).startswith("variant ") for r in summary.rows)
-    t = Table(title=pick(lang, "Batch summary", "Сводка по группе"), header_style="bold", box=box.SIMPLE_HEAD, pad_edge=False)
-    heads = ([pick(lang, "Student", "Студент")] if roster else []) + [
-        pick(lang, "Var", "Вар"), "n_d" if lang != "ru" else "n_д", "i_pl" if lang != "ru" else "i_пл",
-        pick(lang, "teeth × k", "зубья × k"), "z1/z2", "ε_α",
-        pick(lang, "r0, mm", "r0, мм"), "e|l_OC", pick(lang, "ν_rise/ν_ret, °", "ν_у/ν_в, °"), pick(lang, "warnings", "предупреждения"),
+    t = Table(title=tr(lang, "Batch summary"), header_style="bold", box=box.SIMPLE_HEAD, pad_edge=False)
+    heads = ([tr(lang, "Student")] if roster else []) + [
+        tr(lang, "Var"), "n_d" if lang != "ru" else "n_д", "i_pl" if lang != "ru" else "i_пл",
+        tr(lang, "teeth × k"), "z1/z2", "ε_α",
+        tr(lang, "r0, mm"), "e|l_OC", tr(lang, "ν_rise/ν_ret, °"), tr(lang, "warnings"),
     ]
     for i, head in enumerate(heads):
         t.add_column(head, justify="left" if (roster and i == 0) or i == len(heads) - 1 else "right",
@@ -70,7 +62,7 @@ def print_batch(console, summary, out_dir: Path, lang: str) -> None:
         lead = [escape(str(r["student"]))] if roster else []
         if r["status"] != "ok":
             colour = "red" if r["status"] == "failed" else "yellow"
-            t.add_row(*lead, escape(str(r["variant"] or "—")), f"[{colour}]{pick(lang, *STATUS[r['status']])}[/]",
+            t.add_row(*lead, escape(str(r["variant"] or "—")), "[" + colour + "]" + tr(lang, STATUS[r["status"]]) + "[/]",
                       *[""] * (len(heads) - len(lead) - 2))
             continue
         other = r["e_mm"] if r.get("e_mm") not in (None, "") else r["l_oc_mm"]
@@ -90,5 +82,4 @@ def print_batch(console, summary, out_dir: Path, lang: str) -> None:
     ok = len(summary.rows) - len(summary.failed)
     n_failed = sum(r["status"] == "failed" for r in summary.rows)
     path = escape(str(Path(out_dir) / "summary.csv"))
-    console.print(pick(lang, f"{ok} done, {n_failed} failed; summary: {path}",
-                       f"выполнено {ok}, с ошибкой {n_failed}; сводка: {path}"))
+    console.print(tr(lang, "{ok} done, {n_failed} failed; summary: {path}").format(ok=ok, n_failed=n_failed, path=path))

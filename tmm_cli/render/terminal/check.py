@@ -3,7 +3,8 @@ the answer keys."""
 
 from __future__ import annotations
 
-from ...i18n.lang import pick
+from ...i18n import tr
+from ...i18n.numbers import num
 from ..feedback.words import (
     STATUS,  # noqa: F401  (the verdict words, for callers that list them)
     deviation_text,
@@ -32,29 +33,21 @@ def print_keys(console, lang: str, keys, required: dict) -> None:
     them under, and the sheet that requires each (`required`: sheet -> its keys)."""
     from rich.table import Table
 
-    t = Table(title=pick(lang, "Answer keys for `tmm check`", "Ключи ответов для `tmm check`"), header_style="bold")
-    t.add_column(pick(lang, "Key", "Ключ"))
-    t.add_column(pick(lang, "Also written", "Можно писать"))
-    t.add_column(pick(lang, "Compared", "Сравнение"))
-    t.add_column(pick(lang, "Required", "Обязателен"))
-    t.add_column(pick(lang, "Meaning", "Смысл"))
+    t = Table(title=tr(lang, "Answer keys for `tmm check`"), header_style="bold")
+    t.add_column(tr(lang, "Key"))
+    t.add_column(tr(lang, "Also written"))
+    t.add_column(tr(lang, "Compared"))
+    t.add_column(tr(lang, "Required"))
+    t.add_column(tr(lang, "Meaning"))
     for k in keys:
         sheet = next((s for s, names in required.items() if k.key in names), "")
-        req = pick(lang, f"sheet {sheet}", f"лист {sheet}") if sheet else "—"
-        how = {"int": pick(lang, "exact", "точно"), "input": pick(lang, "Table 1.2", "табл. 1.2")}.get(
-            k.kind, pick(lang, "within tolerance", "с допуском"))
-        t.add_row(k.key, ", ".join(k.aliases[:4]), how, req, pick(lang, k.en, k.ru))
+        req = tr(lang, "sheet {sheet}").format(sheet=sheet) if sheet else "—"
+        how = {"int": tr(lang, "exact"), "input": tr(lang, "Table 1.2")}.get(
+            k.kind, tr(lang, "within tolerance"))
+        t.add_row(k.key, ", ".join(k.aliases[:4]), how, req, tr(lang, k.meaning))
     console.print(t)
-    console.print(pick(lang, "A required key is needed when the variant computes it (z_planet2: scheme 2; *_2: a two-stage "
-                             "reducer; e_mm: translating follower; l_oc_mm: rocker); a missing one fails the check. "
-                             "--sheet 3 or --sheet 4 checks one sheet. A key may be written as in the book (r_0, z_1, "
-                             "u_1H, φ_у …); a misspelt one gets a suggestion.",
-                       "Обязательный ключ нужен, если он вычисляется для варианта (z_planet2 — схема 2; *_2 — двухступенчатый "
-                       "редуктор; e_mm — поступательный толкатель; l_oc_mm — коромысло); без него проверка не пройдена. "
-                       "--sheet 3 или --sheet 4 проверяет один лист. Ключ можно писать как в пособии (r_0, z_1, u_1H, "
-                       "φ_у …); для ключа с опечаткой предлагается верный."))
-    console.print(pick(lang, "TOML example:  r0_mm = 41.5   z_sun = 40   eps_alpha = 1.58",
-                       "Пример TOML:  r0_mm = 41.5   z_sun = 40   eps_alpha = 1.58"))
+    console.print(tr(lang, "A required key is needed when the variant computes it (z_planet2: scheme 2; *_2: a two-stage reducer; e_mm: translating follower; l_oc_mm: rocker); a missing one fails the check. --sheet 3 or --sheet 4 checks one sheet. A key may be written as in the book (r_0, z_1, u_1H, φ_у …); a misspelt one gets a suggestion."))
+    console.print(tr(lang, "TOML example:  r0_mm = 41.5   z_sun = 40   eps_alpha = 1.58"))
 
 
 def _who(report, lang: str) -> str:
@@ -70,12 +63,13 @@ def print_check(console, report, lang: str) -> None:
     from ...i18n.lang import note_text
 
     who = escape(_who(report, lang))
-    t = Table(title=pick(lang, f"Check — {who}variant {report.variant}, tolerance {report.rtol_pct:g} %",
-                         f"Проверка — {who}вариант {report.variant}, допуск {report.rtol_pct:g} %".replace(".", ",")),
+    tol = num(report.rtol_pct, lang)
+    t = Table(title=tr(lang, "Check — {who}variant {variant}, tolerance {tol} %").format(
+        who=who, variant=report.variant, tol=tol),
               header_style="bold")
-    heads = (pick(lang, "Value", "Величина"), pick(lang, "Yours", "Ответ"), pick(lang, "Right", "Верно"),
-             pick(lang, "Deviation", "Отклонение"), pick(lang, "Tolerance", "Допуск"), pick(lang, "Result", "Итог"),
-             pick(lang, "Where to look", "Где смотреть"))
+    heads = (tr(lang, "Value"), tr(lang, "Yours"), tr(lang, "Right"),
+             tr(lang, "Deviation"), tr(lang, "Tolerance"), tr(lang, "Result"),
+             tr(lang, "Where to look"))
     for i, head in enumerate(heads):
         t.add_column(head, justify="right" if i in (1, 2, 3) else "left", overflow="fold")
     for r in report.rows:
@@ -89,7 +83,7 @@ def print_check(console, report, lang: str) -> None:
         console.print(f"[cyan]ℹ[/] {escape(note_text(note, lang))}")
     bad = [r for r in report.rows if not passed(r)]
     if bad:
-        console.print(pick(lang, "[bold]What to correct[/]", "[bold]Что исправить[/]"))
+        console.print(tr(lang, "[bold]What to correct[/]"))
         for r in bad:
             console.print(f"  [red]✘[/] {escape(row_sentence(r, lang))}")
     remarks = [r for r in report.rows if passed(r) and r.status != "pass" and r.cause is not None]
@@ -101,24 +95,23 @@ def print_check(console, report, lang: str) -> None:
         if not any(r.cause == n for n in report.findings):
             console.print(f"  [green]✔[/] {escape(row_sentence(r, lang))}")
     n_pass = sum(passed(r) for r in report.rows)
-    verdict = (pick(lang, "[green]PASSED[/]", "[green]ЗАЧТЕНО[/]") if report.passed
-               else pick(lang, "[red]NOT PASSED[/]", "[red]НЕ ЗАЧТЕНО[/]"))
-    console.print(pick(lang, f"Verdict: {verdict} ({n_pass} of {len(report.rows)} values correct)",
-                       f"Итог: {verdict} (верно {n_pass} из {len(report.rows)})"))
+    verdict = (tr(lang, "[green]PASSED[/]") if report.passed
+               else tr(lang, "[red]NOT PASSED[/]"))
+    console.print(tr(lang, "Verdict: {verdict} ({n_pass} of {rows} values correct)").format(verdict=verdict, n_pass=n_pass, rows=len(report.rows)))
 
 
 def _verdict(rep, lang: str) -> str:
     if rep.error:
-        return pick(lang, "error", "ошибка")
-    return pick(lang, "passed", "зачтено") if rep.passed else pick(lang, "not passed", "не зачтено")
+        return tr(lang, "error")
+    return tr(lang, "passed") if rep.passed else tr(lang, "not passed")
 
 
 def group_table(group, lang: str) -> tuple[list[str], list[list]]:
     """The rows of check.md: one per student, the verdict and the result of every key."""
     keys = group.keys()
-    header = [pick(lang, "student", "студент"), pick(lang, "group", "группа"), pick(lang, "variant", "вариант"),
-              pick(lang, "verdict", "итог"), pick(lang, "correct", "верно"), pick(lang, "of", "из")] + keys + [
-              pick(lang, "missing", "нет ответа"), pick(lang, "error", "ошибка")]
+    header = [tr(lang, "student"), tr(lang, "group"), tr(lang, "variant"),
+              tr(lang, "verdict"), tr(lang, "correct"), tr(lang, "of")] + keys + [
+              tr(lang, "missing"), tr(lang, "error")]
     body = []
     from ...i18n.errors import error_text
 
@@ -145,9 +138,9 @@ def print_group(console, group, lang: str) -> None:
 
     from ...i18n.errors import error_text
 
-    t = Table(title=pick(lang, "Group check", "Проверка группы"), header_style="bold")
-    for head in (pick(lang, "Student", "Студент"), pick(lang, "Variant", "Вариант"), pick(lang, "Correct", "Верно"),
-                 pick(lang, "Wrong or missing", "Неверно или нет ответа"), pick(lang, "Verdict", "Итог")):
+    t = Table(title=tr(lang, "Group check"), header_style="bold")
+    for head in (tr(lang, "Student"), tr(lang, "Variant"), tr(lang, "Correct"),
+                 tr(lang, "Wrong or missing"), tr(lang, "Verdict")):
         t.add_column(head)
     for rep in group.reports:
         if rep.error:
@@ -155,12 +148,11 @@ def print_group(console, group, lang: str) -> None:
             continue
         good = sum(passed(r) for r in rep.rows)
         wrong = ", ".join((symbol(r.key, lang) if r.status != "unknown key" else (r.written or r.key))
-                          + (pick(lang, " (missing)", " (нет)") if r.status == "missing" else "")
+                          + (tr(lang, " (missing)") if r.status == "missing" else "")
                           for r in rep.rows if not passed(r)) or "—"
-        verdict = pick(lang, "[green]passed[/]", "[green]зачтено[/]") if rep.passed else pick(lang, "[red]not passed[/]", "[red]не зачтено[/]")
+        verdict = tr(lang, "[green]passed[/]") if rep.passed else tr(lang, "[red]not passed[/]")
         t.add_row(escape(rep.label), str(rep.variant), f"{good}/{len(rep.rows)}", escape(wrong), verdict)
     console.print(t)
     for f, near in group.unmatched:
-        hint = pick(lang, f" — perhaps {near}?", f" — возможно, это {near}?") if near else ""
-        console.print("[yellow]![/] " + escape(pick(lang, f"Answers file {f} matches no student on the roster",
-                                                    f"Файл ответов {f} не соответствует ни одному студенту списка") + hint))
+        hint = tr(lang, " — perhaps {near}?").format(near=near) if near else ""
+        console.print("[yellow]![/] " + escape(tr(lang, "Answers file {f} matches no student on the roster").format(f=f) + hint))
