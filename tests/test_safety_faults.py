@@ -12,10 +12,10 @@ import os
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
+from cli_helpers import group_gone, wait_for
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="POSIX signals, fork")
 
@@ -55,21 +55,6 @@ def _started(marks: Path) -> dict[str, int]:
     return out
 
 
-def _wait_for(predicate, timeout=60.0):
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if predicate():
-            return True
-        time.sleep(0.02)
-    return False
-
-
-def _group_gone(pgid) -> bool:
-    try:
-        os.killpg(pgid, 0)
-    except ProcessLookupError:
-        return True
-    return False
 
 
 def _no_temporaries(out: Path, tmp: Path):
@@ -87,7 +72,7 @@ def test_one_killed_worker_fails_its_row_only(tmp_path):
     out = tmp_path / "o"
     p, marks, tmp = _start(tmp_path, ["--variants", "1-6", "--jobs", 2, "--out", out, "--no-plots", "--report", "none"],
                            delay=0.4)
-    assert _wait_for(lambda: "3" in _started(marks) or p.poll() is not None)
+    assert wait_for(lambda: "3" in _started(marks) or p.poll() is not None)
     os.kill(_started(marks)["3"], signal.SIGKILL)
     _, err = p.communicate(timeout=120)
     assert p.returncode == 1, err  # a failed row
@@ -95,7 +80,7 @@ def test_one_killed_worker_fails_its_row_only(tmp_path):
     assert rows["3"]["status"] == "failed" and "SIGKILL" in rows["3"]["error"], rows["3"]
     assert all(rows[str(v)]["status"] == "ok" for v in (1, 2, 4, 5, 6)), rows
     assert {q.name for q in out.iterdir() if q.is_dir()} == {f"variant-{v:02d}" for v in (1, 2, 4, 5, 6)}
-    assert _wait_for(lambda: _group_gone(p.pid), 5), "a worker outlived the batch"
+    assert wait_for(lambda: group_gone(p.pid), 5), "a worker outlived the batch"
     _no_temporaries(out, tmp)
 
 
@@ -104,11 +89,11 @@ def test_killing_the_parent_kills_its_workers_and_frees_the_folder(tmp_path):
     drawings' temporary folder goes, and the next batch takes the stale lock over, saying so."""
     out = tmp_path / "o"
     p, marks, tmp = _start(tmp_path, ["--variants", "1-4", "--jobs", 2, "--out", out, "--report", "none"], delay=3)
-    assert _wait_for(lambda: len(_started(marks)) >= 2 or p.poll() is not None)
+    assert wait_for(lambda: len(_started(marks)) >= 2 or p.poll() is not None)
     workers = set(_started(marks).values())
     os.kill(p.pid, signal.SIGKILL)
     p.communicate(timeout=30)
-    assert _wait_for(lambda: _group_gone(p.pid), 5), "a worker outlived its killed batch"
+    assert wait_for(lambda: group_gone(p.pid), 5), "a worker outlived its killed batch"
     for pid in workers:
         with pytest.raises(ProcessLookupError):
             os.kill(pid, 0)
@@ -131,14 +116,14 @@ def test_ctrl_c_or_hangup_stop_the_batch_and_leave_nothing(tmp_path, sig, code, 
     out = tmp_path / "o"
     p, marks, tmp = _start(tmp_path, ["--variants", "1-6", "--jobs", 2, "--out", out, "--report", "none", plots],
                            delay=0.3)
-    assert _wait_for(lambda: len(list(out.glob("variant-*/results.json"))) >= 2 and len(_started(marks)) >= 4
+    assert wait_for(lambda: len(list(out.glob("variant-*/results.json"))) >= 2 and len(_started(marks)) >= 4
                      or p.poll() is not None, 120)
     assert p.poll() is None, p.communicate()
     os.killpg(p.pid, sig)
     _, err = p.communicate(timeout=60)
     assert p.returncode == code, err
     assert err.decode().strip().startswith("tmm: interrupted:"), err
-    assert _wait_for(lambda: _group_gone(p.pid), 5)
+    assert wait_for(lambda: group_gone(p.pid), 5)
     rows = _rows(out)
     done = {v for v, r in rows.items() if r["status"] == "ok"}
     assert done and any(r["status"].startswith("not run") for r in rows.values())  # a row whose result was on its

@@ -16,6 +16,7 @@ import time
 from pathlib import Path
 
 import pytest
+from cli_helpers import group_gone, wait_for
 from click.testing import CliRunner
 
 from tmm_cli.cli import cli
@@ -257,7 +258,7 @@ def test_ctrl_c_ends_a_long_compile_within_a_second(note_folder):
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True,
                          env=dict(os.environ, LANG="en_US.UTF-8"))
     # typst is compiling once the private root holds the note
-    assert _wait(lambda: any(p.name.startswith(".note.tmp-") for p in note_folder.iterdir()) or p.poll() is not None)
+    assert wait_for(lambda: any(p.name.startswith(".note.tmp-") for p in note_folder.iterdir()) or p.poll() is not None)
     time.sleep(0.5)
     assert p.poll() is None
     t0 = time.monotonic()
@@ -265,24 +266,9 @@ def test_ctrl_c_ends_a_long_compile_within_a_second(note_folder):
     _, err = p.communicate(timeout=30)
     assert time.monotonic() - t0 < 1.5, time.monotonic() - t0
     assert p.returncode == 130 and err.decode().strip() == "tmm: interrupted"
-    assert _wait(lambda: _group_gone(p.pid), 5) and no_temporaries(note_folder)
+    assert wait_for(lambda: group_gone(p.pid), 5) and no_temporaries(note_folder)
 
 
-def _wait(predicate, timeout=60.0):
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if predicate():
-            return True
-        time.sleep(0.02)
-    return False
-
-
-def _group_gone(pgid) -> bool:
-    try:
-        os.killpg(pgid, 0)
-    except ProcessLookupError:
-        return True
-    return False
 
 
 # files the user gives --------------------------------------------------------------------------
