@@ -29,3 +29,26 @@ def assert_one_line_error(res, *words):
     assert err.startswith("tmm: error:")
     for w in words:
         assert w in err, (w, err)
+
+
+def wait_for(predicate, timeout=60.0) -> bool:
+    """Poll `predicate` every 20 ms until it holds (True) or `timeout` seconds pass (False)."""
+    import time
+
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        if predicate():
+            return True
+        time.sleep(0.02)
+    return False
+
+
+def group_gone(pgid) -> bool:
+    """Whether no process of the process group `pgid` is left (a run and all it started)."""
+    import os
+
+    try:
+        os.killpg(pgid, 0)
+    except ProcessLookupError:
+        return True
+    return False

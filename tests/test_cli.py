@@ -129,6 +129,12 @@ def test_rerun_never_mixes_two_runs(tmp_path):
     names = {p.name for p in folder.iterdir()}
     assert not any(n.startswith("cam_") and n.endswith(".png") for n in names)
     assert "gears_mesh.png" in names  # another command's files stay
+    before = names - {"cam_profile.csv"}
     assert run("project", "--variant", 2, "--out", tmp_path, "--no-plots", "--no-sheets").exit_code == 0
-    assert sorted(p.name for p in folder.iterdir()) == [".tmm-files.json", "cam_profile.csv", "note-style.typ", "note.pdf",
-                                                        "note.typ", "results.json"]
+    # commands sharing a folder own only their own files (issue 19): the project's are exactly its
+    # own, and `tmm gears`'s and `tmm cam`'s stay until those commands drop them
+    names = {p.name for p in folder.iterdir()}
+    assert names - before == {"cam_profile.csv", "note-style.typ", "note.pdf", "note.typ", "results.json"}
+    assert before <= names and "gears.json" in names
+    assert run("gears", "--variant", 2, "--out", tmp_path, "--crank-rpm", 100, "--no-plots").exit_code == 0
+    assert not any(n.startswith("gears_") for n in {p.name for p in folder.iterdir()})

@@ -85,8 +85,9 @@ def test_a_roster_rows_error_is_translated_inside_its_frame():
 
 # every message these modules raise, rebuilt from their source with each field set to 7 -------------
 MODULES = ("limits", "teacher/check", "teacher/batch", "teacher/roster", "teacher/summary", "inputs/tables", "inputs/names", "variants", "inputs/titleblock",
-           "output/folder", "gears/shifted",
-           "gears/aa_bar", "linkage/inputs", "linkage/geometry", "render/note/__init__", "render/sheets/__init__",
+           "output/folder", "output/lock", "inputs/files", "inputs/mechanism", "render/note/typeset", "teacher/workers",
+           "gears/shifted", "gears/aa_bar", "linkage/inputs", "linkage/geometry", "linkage/analysis",
+           "render/note/__init__", "render/sheets/__init__",
            "commands/linkage", "commands/planetary", "commands/options", "commands/batch", "commands/check", "cli",
            "accuracy/card", "accuracy/carrier", "accuracy/chain_input", "accuracy/chain", "commands/carrier",
            "commands/chain", "commands/project", "project")

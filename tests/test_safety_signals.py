@@ -11,6 +11,7 @@ import time
 from pathlib import Path
 
 import pytest
+from cli_helpers import group_gone, wait_for
 
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
 
@@ -23,21 +24,6 @@ def _start(args, cwd):
                             start_new_session=True, env=env)
 
 
-def _wait_for(predicate, timeout=120.0):
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if predicate():
-            return True
-        time.sleep(0.05)
-    return False
-
-
-def _group_gone(pgid) -> bool:
-    try:
-        os.killpg(pgid, 0)
-    except ProcessLookupError:
-        return True
-    return False
 
 
 @pytest.mark.parametrize("sig, code, to_group", [(signal.SIGINT, 130, True), (signal.SIGTERM, 143, False),
@@ -49,7 +35,7 @@ def test_batch_stops_at_once(tmp_path, sig, code, to_group):
     assert first.wait(timeout=120) == 0 and (out / "variant-42" / "results.json").is_file()
     p = _start(["batch", "--variants", "1-40", "--jobs", 2, "--out", out, "--no-plots", "--report", "md"], tmp_path)
     # wait until at least one row is done and others are under way
-    assert _wait_for(lambda: len(list(out.glob("variant-*/results.json"))) >= 3 or p.poll() is not None)
+    assert wait_for(lambda: len(list(out.glob("variant-*/results.json"))) >= 3 or p.poll() is not None)
     assert p.poll() is None, p.communicate()
     t0 = time.monotonic()
     (os.killpg if to_group else os.kill)(p.pid, sig)  # Ctrl-C in a terminal signals the whole group
@@ -60,7 +46,7 @@ def test_batch_stops_at_once(tmp_path, sig, code, to_group):
     assert elapsed < 10, elapsed  # liveness: the workers were stopped, not waited for
     lines = err.decode().strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("tmm: interrupted:") and "not run" in lines[0], lines
-    assert _wait_for(lambda: _group_gone(p.pid), 5), "a worker process outlived the batch"
+    assert wait_for(lambda: group_gone(p.pid), 5), "a worker process outlived the batch"
     left = [q for q in out.rglob("*") if ".tmp-" in q.name]
     assert left == []
     rows = list(csv.DictReader((out / "summary.csv").open(encoding="utf-8")))
@@ -79,7 +65,7 @@ def test_batch_stops_at_once(tmp_path, sig, code, to_group):
 def test_project_stops_on_sigterm_and_leaves_no_staging(tmp_path):
     p = _start(["project", "--variant", 17, "--out", tmp_path / "o", "--report", "md"], tmp_path)
     # figures are being drawn into the staging folder
-    assert _wait_for(lambda: any(".tmp-" in q.name for q in (tmp_path / "o").glob(".*")) or p.poll() is not None)
+    assert wait_for(lambda: any(".tmp-" in q.name for q in (tmp_path / "o").glob(".*")) or p.poll() is not None)
     t0 = time.monotonic()
     p.send_signal(signal.SIGTERM)
     _, err = p.communicate(timeout=60)
@@ -95,7 +81,7 @@ def test_project_stops_on_sigterm_and_leaves_no_staging(tmp_path):
 def test_two_batches_never_write_into_one_folder_at_once(tmp_path):
     out = tmp_path / "o"
     a = _start(["batch", "--variants", "1-6", "--no-plots", "--jobs", 1, "--out", out, "--report", "none"], tmp_path)
-    assert _wait_for(lambda: (out / ".tmm-files.json").exists() or a.poll() is not None)
+    assert wait_for(lambda: (out / ".tmm-files.json").exists() or a.poll() is not None)
     b = subprocess.run(TMM + ["batch", "--variants", "7", "--no-plots", "--out", str(out)], capture_output=True, text=True,
                        cwd=tmp_path)
     a.communicate(timeout=120)

@@ -50,6 +50,8 @@ class TmmGroup(click.Group):
         from .output.interrupt import Stopped, handle_signals
 
         say = _words(lang)
+        if not _streams_ready(lang):
+            sys.exit(2)
         try:
             with handle_signals(), warnings.catch_warnings():
                 warnings.simplefilter("ignore", RuntimeWarning)  # numpy's overflow chatter is never shown
@@ -66,14 +68,27 @@ class TmmGroup(click.Group):
                 click.echo(exc.ctx.get_help())  # bare `tmm`: the help, as `tmm --help` prints it, exit 0
                 sys.exit(0)
             _fail(exc.format_message(), lang)
-        except Stopped as exc:  # Ctrl-C (130) or SIGTERM (143) during a command, see interrupt.py
+        except Stopped as exc:  # Ctrl-C (130), SIGTERM (143) or SIGHUP (129) during a command, see interrupt.py
             _remove_what_a_stop_left()
-            click.echo(f"tmm: {say(exc.message)}", err=True)
+            _say_stopped(f"tmm: {say(exc.message)}")
             sys.exit(exc.exit_code)
-        except KeyboardInterrupt as exc:  # Ctrl-C (130) or SIGTERM (143), see interrupt.py
+        except KeyboardInterrupt as exc:  # Ctrl-C (130), SIGTERM (143) or SIGHUP (129), see interrupt.py
             _remove_what_a_stop_left()
-            click.echo(f"tmm: {say(getattr(exc, 'message', '') or 'interrupted')}", err=True)
+            _say_stopped(f"tmm: {say(getattr(exc, 'message', '') or 'interrupted')}")
             sys.exit(getattr(exc, "exit_code", 130))
+        except BrokenPipeError:  # `tmm gears | head -1`: the reader has gone; silent, exit 1 (as click does)
+            from .output.streams import silence_stdout
+
+            silence_stdout()
+            sys.exit(1)
+        except OSError as exc:  # the system refused: a full disk, a path too long, stdout on /dev/full
+            if os.environ.get("TMM_DEBUG"):
+                raise
+            from .output.streams import stdout_failed
+
+            where = "standard output" if stdout_failed(exc) else (exc.filename or "")
+            _fail(f"cannot write {where} ({exc.strerror or exc.__class__.__name__})" if where else
+                  f"the system refused: {exc.strerror or exc}", lang)
         except Exception as exc:  # a bug: one line, not a traceback, unless TMM_DEBUG is set
             if os.environ.get("TMM_DEBUG"):
                 raise
@@ -96,6 +111,29 @@ class TmmGroup(click.Group):
             if stop is None:
                 raise
             raise Stopped(stop) from None  # the error a signal caused: an interruption (see received)
+
+
+def _streams_ready(lang: str) -> bool:
+    """Standard output must be open (False, with one line on stderr, if it is closed); text the
+    output's encoding cannot hold is written as near as it can (output/streams.py)."""
+    from .i18n import tr
+    from .output.streams import stdout_closed, tolerate_narrow_encodings
+
+    tolerate_narrow_encodings()
+    if stdout_closed():
+        if sys.stderr is not None:
+            click.echo("tmm: " + tr(lang, "error: standard output is closed; run tmm with its output going to a "
+                                          "terminal, a file or a pipe (e.g. > out.txt)"), err=True)
+        return False
+    return True
+
+
+def _say_stopped(line: str) -> None:
+    """The one line after a signal; the terminal may be gone (SIGHUP): then nothing."""
+    try:
+        click.echo(line, err=True)
+    except (OSError, ValueError):
+        pass
 
 
 def _remove_what_a_stop_left() -> None:

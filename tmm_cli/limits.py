@@ -21,6 +21,18 @@ PLANETS = (1, 12)  # forced number of planets
 RTOL_PCT = (0.01, 50.0)  # tmm check tolerance [%]; default 3
 JOBS = (1, 64)  # batch worker processes
 
+# tmm linkage (sheets 1-2) ------------------------------------------------------------------
+LINKAGE_LENGTH_M = (1e-4, 100.0)  # r1, h, r2, r3 [m] (|c|, |b| up to the same 100 m)
+LINKAGE_RPM = (0.1, 10000.0)  # --rpm [rpm]
+LINKAGE_OMEGA = (0.01, 1100.0)  # --omega [rad/s] (10000 rpm is 1047 rad/s)
+LINKAGE_EPS = (-1.0e6, 1.0e6)  # --eps-crank [rad/s²]
+
+# tmm planetary (seed 000) and the spur pair's shifts ----------------------------------------
+PLANETARY_Z = (6, 400)  # --z-min / --z-max: teeth of any wheel of the AA-bar mechanism
+PLANETARY_FAMILY = (1, 20)  # --family K
+MODULE_MM = (0.1, 100.0)  # --module [mm]
+SHIFT_X = (-5.0, 5.0)  # a profile shift coefficient (--shift, --x1, --x2); the results are checked too
+
 # Table 1.2 rows (--variants-file) -----------------------------------------------------------
 N_CAM_RPM = (300.0, 5000.0)  # |n_k| [rpm]; Table 1.2 has 700…2500 (below 300 the spur pair outgrows 160 teeth)
 S_MAX_M = (0.001, 1.0)  # stroke S_max [m]; Table 1.2 has 0.02…0.25
@@ -46,6 +58,15 @@ FILE_NAME_CHARS = 64  # a student's name as a file or folder name (cut to this l
 CARD_BYTES = 64 << 10  # 64 KiB: a measurement card (a 12-bore card is under 1 KiB)
 CHAIN_BYTES = 256 << 10  # 256 KiB: a dimensional chain file
 CHAIN_LINKS = 200  # links of one chain (the article's longest has 11)
+SETTINGS_BYTES = 64 << 10  # tmm.toml (title fields)
+INPUT_FILE_BYTES = 64 << 10  # tmm linkage --input
+NOTE_TEMPLATE_BYTES = 1 << 20  # --note-template
+
+# the note's typesetting ---------------------------------------------------------------------
+TYPST_MEMORY_BYTES = 2 << 30  # memory typst may use (RLIMIT_DATA on Linux, RLIMIT_AS on other Unix)
+NOTE_FOLDER_FILES = 2000  # `tmm note`: regular files of the note's folder given to typst
+NOTE_FOLDER_BYTES = 512 << 20  # ... of them copied where hard links are not possible
+NOTE_FOLDER_DEPTH = 4  # ... sub-folder levels
 
 
 def check_range(value, lo, hi, what: str, hint: str = "") -> float:

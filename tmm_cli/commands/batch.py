@@ -7,10 +7,11 @@ from pathlib import Path
 import click
 
 from ..errors import TmmError
-from .emit import console_for
+from .emit import console_for, print_kept
 from .options import (
     CONTEXT,
     crank_option,
+    force_option,
     format_option,
     lang_option,
     no_plots_option,
@@ -38,9 +39,10 @@ from .options import (
 @sheets_option
 @click.option("--teacher", "title_teacher", default=None, metavar="TEXT", help="Teacher's name (or in tmm.toml).")
 @click.option("--org", "title_org", default=None, metavar="TEXT", help="University and department (or in tmm.toml).")
+@force_option
 @lang_option
 def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, fmt, jobs, no_plots, report, csv_locale, sheets,
-              title_teacher, title_org, lang):
+              title_teacher, title_org, force, lang):
     """Teachers: run many variants or a class roster in parallel and write summary.csv."""
     from ..output.folder import ensure_writable_dir
     from ..render.terminal.batch import print_batch, print_batch_intro
@@ -60,10 +62,14 @@ def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, f
         plan = jobs_from_roster(roster, crank_rpm, torque_nm, variants_file)
         rows, bad = plan.jobs, plan.bad
         print_batch_intro(console, lang, roster=plan)
+    from rich.markup import escape
+
     summary = run_batch(
         rows, bad, out_dir, variants_file=variants_file, lang=lang, fmt=fmt,
         plots=not no_plots, report=None if report == "none" else report, jobs_n=jobs, progress=True,
-        csv_locale=csv_locale, sheets=sheets, title=title,
+        csv_locale=csv_locale, sheets=sheets, title=title, force=force,
+        say=lambda text: console.print("[cyan]ℹ[/] " + escape(text)),
     )
     print_batch(console, summary, out_dir, lang)
+    print_kept(console, list(summary.kept) + [k for r in summary.rows for k in r.get("kept", ())], lang)
     return 1 if summary.failed else 0

@@ -9,6 +9,7 @@ from .options import (
     CONTEXT,
     cam_choice,
     cam_choice_options,
+    force_option,
     format_option,
     json_option,
     lang_option,
@@ -33,12 +34,13 @@ from .options import (
 @format_option
 @no_plots_option
 @json_option
+@force_option
 @step_option
 @cam_choice_options
 @sheets_option
 @title_options
 @lang_option
-def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, sheets, lang, **title_kw):
+def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, force, step_deg, sheets, lang, **title_kw):
     """Sheet 3: follower diagrams, main dimensions, cam profile, pressure angle."""
     choice = cam_choice(title_kw)
     title = title_block(title_kw)
@@ -71,4 +73,4 @@ def cam_cmd(variant, variants_file, out, fmt, no_plots, as_json, step_deg, sheet
 
     emit(folder, {"cam.json": doc, "cam_profile.csv": profile_csv(result)}, None if no_plots else figures,
           fmt, doc if as_json else None, show, result.notes, lang, owns=("cam_*.*", "sheet3.*"),
-          extra=sheet if sheets else None, figure_names=figure_names("cam"))
+          extra=sheet if sheets else None, figure_names=figure_names("cam"), writer="cam", force=force)

@@ -12,7 +12,7 @@ from pathlib import Path
 import click
 
 from .emit import emit
-from .options import CONTEXT, format_option, json_option, lang_option, no_plots_option, resolve_lang
+from .options import CONTEXT, force_option, format_option, json_option, lang_option, no_plots_option, resolve_lang
 
 FIGURES = ("carrier",)
 DATA_FILES = ("carrier.json",)
@@ -31,12 +31,13 @@ OWNS = DATA_FILES + tuple(f"{name}.{ext}" for name in FIGURES for ext in ("png",
 @click.option("--exclude", multiple=True, metavar="NAME",
               help="Leave a measurement out of the fit, e.g. --exclude h3 (repeatable).")
 @json_option
+@force_option
 @no_plots_option
 @click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR",
               help="Output folder (default ./tmm-out); files go to DIR/carrier/.")
 @format_option
 @lang_option
-def carrier_cmd(card, radius_mm, tol_radial_um, tol_tangential_um, exclude, as_json, no_plots, out, fmt, lang):
+def carrier_cmd(card, radius_mm, tol_radial_um, tol_tangential_um, exclude, as_json, force, no_plots, out, fmt, lang):
     """Planet carrier: bore positions from the plant's measurement card (Leontiev, Nasonov, Bedny, 2012).
 
     CARD is a CSV file, one row per bore: bore,R,R_prime,h,h_prime,s[,e] in millimetres (docs/accuracy.md).
@@ -76,4 +77,4 @@ def carrier_cmd(card, radius_mm, tol_radial_um, tol_tangential_um, exclude, as_j
         print_carrier(console, fit, lang)
 
     emit(folder, {"carrier.json": doc}, None if no_plots else figures, fmt, doc if as_json else None, show,
-         fit.notes, lang, owns=OWNS)
+         fit.notes, lang, owns=OWNS, writer="carrier", force=force)

@@ -12,7 +12,7 @@ from pathlib import Path
 import click
 
 from .emit import emit
-from .options import CONTEXT, json_option, lang_option, resolve_lang
+from .options import CONTEXT, force_option, json_option, lang_option, resolve_lang
 
 
 def _json_name(stem: str) -> str:
@@ -32,10 +32,11 @@ def _json_name(stem: str) -> str:
 @click.option("--risk", "risk_pct", type=float, default=0.27, show_default=True, metavar="PCT",
               help="Risk that the closing link falls outside its probabilistic limits [%] (0.27: t = 3).")
 @json_option
+@force_option
 @click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR",
               help="Output folder (default ./tmm-out); files go to DIR/chain/.")
 @lang_option
-def chain_cmd(chain_file, risk_pct, as_json, out, lang):
+def chain_cmd(chain_file, risk_pct, as_json, force, out, lang):
     """Dimensional chain: the closing link by the maximum–minimum and the probabilistic methods.
 
     FILE.toml holds the chain's name, units and [[link]] tables (name, nominal, es, ei, sign; optional
@@ -67,4 +68,4 @@ def chain_cmd(chain_file, risk_pct, as_json, out, lang):
 
         print_chain(console, result, lang)
 
-    emit(folder, {name: doc}, None, "png", doc if as_json else None, show, result.notes, lang, owns=(name,))
+    emit(folder, {name: doc}, None, "png", doc if as_json else None, show, result.notes, lang, owns=(name,), writer="chain", force=force)

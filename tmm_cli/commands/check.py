@@ -7,7 +7,7 @@ from pathlib import Path
 import click
 
 from ..errors import TmmError
-from .emit import console_for, print_files, print_json
+from .emit import console_for, print_files, print_json, print_kept
 from .options import (
     CONTEXT,
     crank_option,
@@ -63,10 +63,12 @@ def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, t
             refuse_foreign(out_dir, list(GROUP_FILES), read_manifest(out_dir)["files"])
         group = check_group(roster, answers_dir, variants_file=variants_file, crank_rpm=crank_rpm, torque_nm=torque_nm,
                             rtol_pct=rtol_pct, sheets=sheets, lang=lang)
+        kept: list = []  # a check.csv the teacher edited is kept, the new one written beside it
         written = write_group_check(out_dir, group, lang, csv_locale or lang, rtol_pct, sheets, pdf=feedback == "pdf",
-                                    feedback=feedback != "none")
+                                    feedback=feedback != "none", kept=kept)
         if as_json:
             print_json(group.to_json(lang))
+            print_kept(None, kept, lang)
         else:
             from rich.markup import escape
 
@@ -75,6 +77,7 @@ def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, t
             console.print("[cyan]ℹ[/] " + escape(tr(lang, "Roster {roster}: read as {roster_encoding}.").format(roster=roster, roster_encoding=group.roster_encoding)))
             print_group(console, group, lang)
             print_files(console, out_dir, written, lang)
+            print_kept(console, kept, lang)
         return 0 if group.all_passed else 1
     if variant is None or answers is None:
         raise TmmError("give --variant N and --answers FILE (or --roster FILE with --answers-dir DIR)")

@@ -31,24 +31,56 @@ def print_notes(console, notes, lang: str) -> None:
 
 
 def print_files(console, folder: Path, names: list[str], lang: str) -> None:
+    from rich.markup import escape
+
     from ..i18n import tr
 
     if names:
-        console.print(tr(lang, "Files written to ") + f"[bold]{folder}[/]: " + ", ".join(names))
+        console.print(tr(lang, "Files written to ") + f"[bold]{escape(str(folder))}[/]: " + escape(", ".join(names)))
+
+
+def kept_lines(kept, lang: str) -> list[str]:
+    """One sentence per file of the user's met where a run writes (output/folder.Kept)."""
+    from ..i18n import tr
+
+    lines = []
+    for k in kept:
+        path = str(Path(k.folder) / k.name)
+        if k.beside:
+            lines.append(tr(lang, "{path} was changed since tmm wrote it: kept as it is; the new version is {new} "
+                                  "(--force replaces the file, keeping a copy as .bak)").format(path=path, new=k.beside))
+        else:
+            lines.append(tr(lang, "{path} was changed since tmm wrote it: kept as {bak}, then replaced (--force)"
+                            ).format(path=path, bak=k.backup))
+    return lines
+
+
+def print_kept(console, kept, lang: str) -> None:
+    """Say which of the user's files were kept (on the console, or on stderr under --json)."""
+    if console is None:
+        for line in kept_lines(kept, lang):
+            click.echo("tmm: " + line, err=True)
+        return
+    from rich.markup import escape
+
+    for line in kept_lines(kept, lang):
+        console.print("[yellow]⚠[/] " + escape(line))
 
 
 def emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, lang: str, owns=(), extra=None,
-          figure_names=()) -> None:
+          figure_names=(), writer: str | None = None, force: bool = False) -> None:
     """Write `files` (name -> JSON object or text) and the figures atomically, then either print
     `json_doc` alone or the tables (`show(console)`), the notes and the list of files.
 
     `figures(names=None)` draws the figures (a dict name -> Figure); given their `figure_names`,
     they are drawn and saved one by one over two processes where a fork is possible, as
-    `tmm project` does."""
-    from ..output.folder import staged_dir, staged_names, write_text
+    `tmm project` does. `writer` is the command's name in the folder's manifest; a file the user
+    changed is kept (or replaced after a backup with `force`) and the run says so."""
+    from ..output.folder import final_names, staged_dir, staged_names, write_text
     from ..render.data.jsontext import write_json
 
-    with staged_dir(folder, owns) as tmp:
+    kept: list = []
+    with staged_dir(folder, owns, writer=writer, force=force, kept=kept) as tmp:
         for name, content in files.items():
             (write_text if isinstance(content, str) else write_json)(tmp / name, content)
         if figures is not None:
@@ -56,13 +88,16 @@ def emit(folder: Path, files: dict, figures, fmt: str, json_doc, show, notes, la
         if extra is not None:  # e.g. the A1 drawing sheet (--sheets)
             extra(tmp)
         written = staged_names(tmp)
+    written = final_names(written, kept)
     if json_doc is not None:
         print_json(json_doc)
+        print_kept(None, kept, lang)
         return
     console = console_for(lang)
     show(console)
     print_notes(console, notes, lang)
     print_files(console, folder, written, lang)
+    print_kept(console, kept, lang)
 
 
 def figure_names(sheet: str) -> tuple:

@@ -9,6 +9,7 @@ from .options import (
     CONTEXT,
     aw_option,
     crank_option,
+    force_option,
     format_option,
     json_option,
     lang_option,
@@ -50,10 +51,11 @@ from .options import (
 @format_option
 @no_plots_option
 @json_option
+@force_option
 @sheets_option
 @title_options
 @lang_option
-def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, stiffness, shift, a_w_mm, select, out, fmt, no_plots, as_json, sheets, lang, **title_kw):
+def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct, planets, stiffness, shift, a_w_mm, select, out, fmt, no_plots, as_json, force, sheets, lang, **title_kw):
     """Sheet 4: motor, ratio split, planetary reducer synthesis, spur pair to the cam."""
     title = title_block(title_kw)
     from ..gears.design import design_gears
@@ -87,4 +89,4 @@ def gears_cmd(variant, variants_file, crank_rpm, torque_nm, ratio, tolerance_pct
 
     emit(folder, {"gears.json": doc}, None if no_plots else figures, fmt, doc if as_json else None, show,
           result.notes, lang, owns=("gears_*.*", "sheet4.*"), extra=sheet if sheets else None,
-          figure_names=figure_names("gears"))
+          figure_names=figure_names("gears"), writer="gears", force=force)

@@ -16,6 +16,7 @@ from ..errors import TmmError
 from .emit import emit
 from .options import (
     CONTEXT,
+    force_option,
     format_option,
     json_option,
     lang_option,
@@ -63,6 +64,7 @@ def _metres(name: str, help_text: str):
 @click.option("--input", "input_file", type=click.Path(dir_okay=False), default=None, metavar="FILE", help="TOML file with the same keys (r1, h, c, r2, r3, b, rpm, …); options beat it.")
 @click.option("--variant", default=None, metavar="N", help="With --input holding [variants.N] tables: the variant to take.")
 @json_option
+@force_option
 @no_plots_option
 @click.option("--out", type=click.Path(file_okay=False), default=None, metavar="DIR", help="Output folder (default ./tmm-out); files go to DIR/linkage/.")
 @format_option
@@ -70,7 +72,7 @@ def _metres(name: str, help_text: str):
 @title_options
 @lang_option
 def linkage_cmd(mechanism_file, plan, no_forces, r1, h, c, r2, r3, b, rpm, omega, eps_crank, n_positions, at_deg, input_file,
-                variant, as_json, no_plots, out, fmt, sheets, lang, **title_kw):
+                variant, as_json, force, no_plots, out, fmt, sheets, lang, **title_kw):
     """Sheets 1 and 2: a lever mechanism — structure, positions, plans, diagrams; forces and the flywheel.
 
     MECH.toml describes the mechanism as the structural formula builds it: the frame, the crank and
@@ -93,7 +95,7 @@ def linkage_cmd(mechanism_file, plan, no_forces, r1, h, c, r2, r3, b, rpm, omega
             raise TmmError(f"{mechanism_file} describes the mechanism; drop {', '.join(extra)} (the options of the "
                            "Whitworth mechanism)")
         _mechanism(mechanism_file, plan, n_positions, as_json, no_plots, out, fmt, lang, sheets, title_block(title_kw),
-                   no_forces)
+                   no_forces, force)
         return
     if no_forces:
         raise TmmError("--no-forces needs a mechanism file (tmm linkage MECH.toml --no-forces)")
@@ -106,9 +108,11 @@ def linkage_cmd(mechanism_file, plan, no_forces, r1, h, c, r2, r3, b, rpm, omega
              "eps_crank": eps_crank, "positions": n_positions, "at": at_deg}
     values = {}
     if input_file is not None:
-        from ..linkage.inputs import read_input
+        from ..inputs.files import read_file
+        from ..linkage.inputs import MAX_BYTES, parse_input
 
-        values = read_input(input_file, variant)
+        raw = read_file(input_file, f"linkage input {input_file}", MAX_BYTES)  # a regular file, size first
+        values = parse_input(raw, input_file, variant)
     elif variant is not None:
         raise TmmError("--variant needs --input FILE with [variants.N] tables")
     values.update({k: v for k, v in given.items() if v is not None})
@@ -130,10 +134,16 @@ def linkage_cmd(mechanism_file, plan, no_forces, r1, h, c, r2, r3, b, rpm, omega
     from ..linkage.geometry import make_geometry
 
     lang = resolve_lang(lang)
-    speed = float(values["rpm"]) * math.pi / 30.0 if "rpm" in values else float(values["omega"])
-    if not (math.isfinite(speed) and speed > 0):
-        which = "--rpm" if "rpm" in values else "--omega"
+    from ..limits import LINKAGE_OMEGA, LINKAGE_RPM, check_range
+
+    which = "--rpm" if "rpm" in values else "--omega"
+    given_speed = float(values["rpm"] if "rpm" in values else values["omega"])
+    if not (math.isfinite(given_speed) and given_speed > 0):
         raise TmmError(f"{which} is {values.get('rpm', values.get('omega'))}; give a positive crank speed (φ21 grows with time)")
+    if "rpm" in values:  # checked before any work: --rpm 1e160 gave a table of nulls
+        speed = check_range(given_speed, *LINKAGE_RPM, "--rpm [rpm]") * math.pi / 30.0
+    else:
+        speed = check_range(given_speed, *LINKAGE_OMEGA, "--omega [rad/s]")
     geom = make_geometry(values["r1"], values["h"], values.get("c", 0.0), values["r2"], values["r3"], values["b"])
     result = analyse(geom, speed, float(values.get("eps_crank", 0.0)), int(values.get("positions", 12)),
                      float(values.get("at", 45.0)))
@@ -156,10 +166,11 @@ def linkage_cmd(mechanism_file, plan, no_forces, r1, h, c, r2, r3, b, rpm, omega
         print_linkage(console, result, lang)
 
     emit(folder, {"linkage.json": doc, "linkage_curve.csv": curve_csv(result)}, None if no_plots else figures,
-          fmt, doc if as_json else None, show, result.notes, lang, owns=OWNS)
+          fmt, doc if as_json else None, show, result.notes, lang, owns=OWNS, writer="linkage", force=force)
 
 
-def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang, sheets, title, no_forces=False) -> None:
+def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang, sheets, title, no_forces=False,
+               force=False) -> None:
     """`tmm linkage MECH.toml`: read, analyse, write and show sheet 1 of the mechanism, and sheet 2
     when the file gives masses or a load (unless --no-forces)."""
     import dataclasses
@@ -238,4 +249,4 @@ def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang, sheet
             save_sheet(sheet2(s2, lang, title), tmp, "sheet2")
 
     emit(folder, files, None if no_plots else figures, fmt, doc if as_json else None, show, notes, lang,
-         owns=OWNS_MECHANISM, extra=a1 if sheets else None, figure_names=names)
+         owns=OWNS_MECHANISM, extra=a1 if sheets else None, figure_names=names, writer="linkage", force=force)

@@ -18,8 +18,12 @@ from ..limits import (
     CHAIN_RISK_PCT,
     CRANK_RPM,
     JOBS,
+    MODULE_MM,
+    PLANETARY_FAMILY,
+    PLANETARY_Z,
     PLANETS,
     RTOL_PCT,
+    SHIFT_X,
     STEP_DEG,
     TOLERANCE_PCT,
     TORQUE_NM,
@@ -62,6 +66,7 @@ out_option = click.option("--out", type=click.Path(file_okay=False), default=Non
 format_option = click.option("--format", "fmt", type=click.Choice(["png", "svg", "pdf"]), default="png", show_default=True, help="Figure file format.")
 no_plots_option = click.option("--no-plots", is_flag=True, help="Do not draw figures (faster).")
 sheets_option = click.option("--sheets", is_flag=True, help="Also write the A1 drawing sheet (DXF and PDF, ESKD frame and title block).")
+force_option = click.option("--force", is_flag=True, help="Replace the files you changed since tmm wrote them (each kept as NAME.bak first).")
 json_option = click.option("--json", "as_json", is_flag=True, help="Print only JSON on stdout.")
 lang_option = click.option("--lang", type=click.Choice(["ru", "en"]), default=None, help="Output language (default: from the locale).")
 step_option = click.option("--step", "step_deg", type=float, default=10.0, show_default=True, metavar="DEG", help="Cam angle step of the printed tables [deg].")
@@ -217,6 +222,13 @@ OPTION_LIMITS = {
     "tol_radial_um": Range(*CARRIER_TOL_UM),
     "tol_tangential_um": Range(*CARRIER_TOL_UM),
     "risk_pct": Range(*CHAIN_RISK_PCT),
+    # tmm planetary
+    "module_mm": Range(*MODULE_MM),
+    "x1": Range(*SHIFT_X),
+    "x2": Range(*SHIFT_X),
+    "z_min": Range(*PLANETARY_Z, integer=True),
+    "z_max": Range(*PLANETARY_Z, integer=True),
+    "multiple": Range(*PLANETARY_FAMILY, integer=True),
 }
 
 

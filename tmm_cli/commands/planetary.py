@@ -7,6 +7,7 @@ import click
 from .emit import emit
 from .options import (
     CONTEXT,
+    force_option,
     format_option,
     json_option,
     lang_option,
@@ -33,8 +34,9 @@ from .options import (
 @format_option
 @no_plots_option
 @json_option
+@force_option
 @lang_option
-def planetary_cmd(ratio, c_text, planets, module_mm, x1, x2, z_min, z_max, multiple, out, fmt, no_plots, as_json, lang):
+def planetary_cmd(ratio, c_text, planets, module_mm, x1, x2, z_min, z_max, multiple, out, fmt, no_plots, as_json, force, lang):
     """Planetary mechanism AA̅ with shifted gears and different meshing angles (S. N. Kavetsky, 2010).
 
     Tooth numbers from the ratio i and C = cos α_w12/cos α_w34, the common centre distance,
@@ -74,4 +76,4 @@ def planetary_cmd(ratio, c_text, planets, module_mm, x1, x2, z_min, z_max, multi
         print_planetary(console, design, lang, examples)
 
     emit(folder, {"planetary.json": doc}, None if no_plots else figures, fmt, doc if as_json else None, show,
-          design.notes, lang, owns=("planetary*.*",))
+          design.notes, lang, owns=("planetary*.*",), writer="planetary", force=force)

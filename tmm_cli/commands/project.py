@@ -5,13 +5,14 @@ from __future__ import annotations
 import click
 
 from ..errors import TmmError
-from .emit import console_for, print_files
+from .emit import console_for, print_files, print_kept
 from .options import (
     CONTEXT,
     aw_option,
     cam_choice,
     cam_choice_options,
     crank_option,
+    force_option,
     format_option,
     json_option,
     lang_option,
@@ -55,6 +56,7 @@ from .options import (
 @format_option
 @no_plots_option
 @json_option
+@force_option
 @click.option("--report", "report", type=click.Choice(["md", "pdf"]), default="pdf", show_default=True,
               help="pdf: the explanatory note (note.pdf and its source note.typ); md: report.md.")
 @click.option("--note-template", "note_template", type=click.Path(dir_okay=False), default=None, metavar="FILE",
@@ -64,7 +66,7 @@ from .options import (
 @cam_choice_options
 @title_options
 @lang_option
-def project_cmd(variant, variants_file, crank_rpm, torque_nm, mechanism_file, ratio, tolerance_pct, planets, stiffness, shift, a_w_mm, select, out, fmt, no_plots, as_json, report, note_template, step_deg, no_sheets, lang, **title_kw):
+def project_cmd(variant, variants_file, crank_rpm, torque_nm, mechanism_file, ratio, tolerance_pct, planets, stiffness, shift, a_w_mm, select, out, fmt, no_plots, as_json, force, report, note_template, step_deg, no_sheets, lang, **title_kw):
     """The whole project for one variant: sheet 4 then sheet 3, figures, results.json, the note and the drawing sheets."""
     choice = cam_choice(title_kw)
     title = title_block(title_kw)
@@ -113,11 +115,15 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, mechanism_file, ra
             print_project(console, result, lang)
         shown.append(capture.get())
 
+    kept: list = []
     doc, written = write_project_folder(result, folder, lang, fmt=fmt, plots=not no_plots, report=report, title=title,
                                         note_template=template, sheets=not no_sheets,
-                                        meanwhile=None if as_json else render_report)
+                                        meanwhile=None if as_json else render_report, force=force, kept=kept)
     if as_json:  # the very text of results.json (encoding 180 kB of JSON twice costs ~0.1 s)
-        click.echo((folder / "results.json").read_text(encoding="utf-8"), nl=False)
+        from ..output.folder import final_names
+
+        click.echo((folder / final_names(["results.json"], kept)[0]).read_text(encoding="utf-8"), nl=False)
+        print_kept(None, kept, lang)
         return
     if shown:
         console.file.write(shown[0])
@@ -127,3 +133,4 @@ def project_cmd(variant, variants_file, crank_rpm, torque_nm, mechanism_file, ra
 
         print_project(console, result, lang)
     print_files(console, folder, written, lang)
+    print_kept(console, kept, lang)

@@ -42,6 +42,7 @@ from .shifted import (
     HA_STAR,
     PairGeometry,
     pair_geometry,
+    require_working,
     shift_sum_for_distance,
 )
 
@@ -295,6 +296,10 @@ def synthesize(i: Fraction, c: Fraction, planets: int, module_mm: float = 5.0, x
                                   f"{p34.x_sum:.3f} to wheel 4, a negative first pair (x1 + x2 < 0) lowers "
                                   "α_w34, or choose a smaller C" if names[j] == "4" else
                                   "choose a smaller shift for it"))
+    # a tip inside its root circle is no gear; ε_α < 1 stays the blocking contour's hard warning (the
+    # seed's own ×2 family has ε_α34 = 0.958)
+    require_working(p12, "1-2", contact=False)
+    require_working(p34, "3-4", contact=False)
     ch12, ch34 = check_pair(p12), check_pair(p34)
     nb = check_neighbours(a_w, planets, da_pl)
     notes += pair_notes("1-2", ch12, (z1, z2), m) + pair_notes("3-4", ch34, (z3, z4), m)

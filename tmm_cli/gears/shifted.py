@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 
 from ..errors import TmmError
+from ..limits import SHIFT_X
 from ..records import record
 from .involute import inv, inv_inverse
 
@@ -232,19 +233,19 @@ def pair_geometry(z1: int, z2: int, m_mm: float, x1: float, x2: float, alpha_deg
     da_nom = tuple(di + 2 * (ha_star + xi - dy) * m for di, xi in zip(d, xx))
     da = tuple(da_mm) if da_mm is not None else da_nom
     df = tuple(di - 2 * (ha_star + c_star - xi) * m for di, xi in zip(d, xx))
+    rb1, rb2 = db[0] / 2, db[1] / 2
+    ra1, ra2 = da[0] / 2, da[1] / 2
+    if ra1 <= rb1 or ra2 <= rb2:  # before any involute function is asked outside its domain (--shift 10,-10)
+        if x_sum > 0 and dy > 0 and min(xx) >= 0:  # the tip reduction, not a negative shift, cut the tips away
+            raise TmmError(f"the shift sum x1 + x2 = {x_sum:.4g} is so large that the tip reduction Δy = {dy:.4g} puts a "
+                           f"tip circle inside its base circle; take a smaller shift sum (a_w closer to a = {a:.4g} mm)")
+        raise TmmError("a tip circle lies inside its base circle: the shifts are far too negative for these teeth")
     s = tuple(pitch_thickness_mm(m, xi, alpha_deg) for xi in xx)
     sw = tuple(thickness_at_radius_mm(dwi / 2, dbi / 2, si, di, alpha_deg) for dwi, dbi, si, di in zip(dw, db, s, d))
     sa = tuple(thickness_at_radius_mm(dai / 2, dbi / 2, si, di, alpha_deg) for dai, dbi, si, di in zip(da, db, s, d))
     p = math.pi * m
     pb = p * math.cos(alpha)
     pw = math.pi * dw[0] / z1
-    rb1, rb2 = db[0] / 2, db[1] / 2
-    ra1, ra2 = da[0] / 2, da[1] / 2
-    if ra1 <= rb1 or ra2 <= rb2:
-        if x_sum > 0 and dy > 0 and min(xx) >= 0:  # the tip reduction, not a negative shift, cut the tips away
-            raise TmmError(f"the shift sum x1 + x2 = {x_sum:.4g} is so large that the tip reduction Δy = {dy:.4g} puts a "
-                           f"tip circle inside its base circle; take a smaller shift sum (a_w closer to a = {a:.4g} mm)")
-        raise TmmError("a tip circle lies inside its base circle: the shifts are far too negative for these teeth")
     n1n2 = a_w * math.sin(alpha_w)
     pole = rb1 * math.tan(alpha_w)
     p2 = math.sqrt(ra1 * ra1 - rb1 * rb1)
@@ -258,6 +259,26 @@ def pair_geometry(z1: int, z2: int, m_mm: float, x1: float, x2: float, alpha_deg
         p1_mm=p1, p2_mm=p2, g_alpha_mm=g, eps_alpha=g / pb, rho_l_mm=rho_l, rho_contact_mm=(p1, n1n2 - p2),
         x_min=(x_min_undercut(z1, ha_star), x_min_undercut(z2, ha_star)),
     )
+
+
+def require_working(g: PairGeometry, pair: str, contact: bool = True) -> None:
+    """TmmError (with the reason) for a designed pair that cannot be made or cannot run: a tip
+    circle inside its root circle (d_a ≤ d_f: the tip reduction Δy took the whole tooth), or (with
+    `contact`) a contact ratio ε_α < 1 (a pair of teeth leaves the mesh before the next engages).
+
+    >>> require_working(pair_geometry(17, 20, 20, 0.3, 0.3), "z1-z2")
+    >>> require_working(pair_geometry(24, 17, 20, 5, 5), "z1-z2")
+    Traceback (most recent call last):
+    tmm_cli.errors.TmmError: pair z1-z2: gear 1 (z = 24) would have its tip circle d_a = 565.299 mm inside its root circle d_f = 630.000 mm (the tip reduction Δy = 3.868 of x1 + x2 = 10 takes the whole tooth); take smaller shifts (or --shift auto)
+    """
+    for j in range(2):
+        if g.da_mm[j] <= g.df_mm[j]:
+            raise TmmError(f"pair {pair}: gear {j + 1} (z = {g.z[j]}) would have its tip circle d_a = {g.da_mm[j]:.3f} mm "
+                           f"inside its root circle d_f = {g.df_mm[j]:.3f} mm (the tip reduction Δy = {g.dy:.3f} of "
+                           f"x1 + x2 = {g.x_sum:.4g} takes the whole tooth); take smaller shifts (or --shift auto)")
+    if contact and not g.eps_alpha >= 1.0:
+        raise TmmError(f"pair {pair}: the contact ratio ε_α = {g.eps_alpha:.3f} < 1: a pair of teeth leaves the mesh "
+                       f"before the next one engages, so the gears cannot run; take smaller shifts (or --shift auto)")
 
 
 def auto_shift(z1: int, z2: int, ha_star: float = HA_STAR) -> tuple[float, float]:
@@ -317,6 +338,11 @@ def parse_shift(text: str) -> tuple[float, float] | str:
                        "e.g. --shift 0.3,-0.3, or --shift auto") from None
     if not (math.isfinite(x1) and math.isfinite(x2)):
         raise TmmError(f"--shift {text!r} must be two finite numbers, e.g. --shift 0.3,-0.3")
+    lo, hi = SHIFT_X
+    for name, x in (("x1", x1), ("x2", x2)):
+        if not lo <= x <= hi:
+            raise TmmError(f"--shift {text!r}: {name} = {x:g} is outside {lo:g} … {hi:g}; profile shift coefficients "
+                           f"lie within about ±1.5 (e.g. --shift 0.3,-0.3, or --shift auto)")
     return x1, x2
 
 

@@ -172,7 +172,7 @@ def spur_geometry(z1: int, z2: int, i_d: float | None = None, m_mm: float = M_MM
     (380.0, 23.799, True, 1.364)
     """
     from .blocking import check_pair
-    from .shifted import pair_geometry
+    from .shifted import pair_geometry, require_working
 
     pg = pair_geometry(z1, z2, m_mm, x1, x2, alpha_deg, ha_star, c_star)
     for j, z in enumerate((z1, z2)):
@@ -180,6 +180,7 @@ def spur_geometry(z1: int, z2: int, i_d: float | None = None, m_mm: float = M_MM
             raise TmmError(f"the shift x{j + 1} = {pg.x[j]:g} makes gear {j + 1} (z = {z}) pointed: its tip thickness "
                            f"would be s_a = {pg.sa_mm[j]:.3f} mm ≤ 0; choose a smaller shift (s_a ≥ 0.25·m = "
                            f"{0.25 * m_mm:g} mm is the limit) or --shift auto")
+    require_working(pg, "z1-z2")  # validated after: --shift 5,5 gave ε_α = −0,97 and d_a < d_f
     alpha = math.radians(alpha_deg)
     m = m_mm
     d1, d2 = pg.d_mm

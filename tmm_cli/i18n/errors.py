@@ -24,6 +24,13 @@ _PLACES = (
     (r"^roster (.*)$", N_("roster {0}")),
     (r"^variants file (.*)$", N_("variants file {0}")),
     (r"^note template (.*)$", N_("note template {0}")),
+    (r"^linkage input (.*)$", N_("linkage input {0}")),
+    (r"^standard output$", N_("standard output")),
+    (r"^(\d+) KiB$", N_("{0} KiB")), (r"^(\d+) MiB$", N_("{0} MiB")), (r"^(\d+) GiB$", N_("{0} GiB")),
+    (r"^killed by (SIG\w+)$", N_("killed by {0}")),  # a batch worker's end (teacher/batch.py)
+    (r"^exit status (\d+)$", N_("exit status {0}")),
+    (r"^typst needed more memory than the limit of (\d+) MiB$", N_("typst needed more memory than the limit of {0} MiB")),
+    (r"^typst stopped \((.*)\)$", N_("typst stopped ({0})")),
     (r"(\S) line (\d+)", N_("{0} line {1}")),  # "table.csv line 3" → "table.csv, строка 3"
     (r"(\S) bore (\d+)$", N_("{0} bore {1}")),  # a measurement card's row (tmm carrier)
     (r"^link (\d+)", N_("link {0}")),  # a dimensional chain's link (tmm chain)

@@ -7,6 +7,7 @@ line naming it.
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 from ..errors import TmmError
@@ -18,19 +19,22 @@ def read_mechanism_tables(path) -> dict:
     """The tables of the mechanism file at `path`, as tomllib reads them."""
     import tomllib
 
+    from .files import read_file
+
     path = Path(path)
+    if not os.path.lexists(path):
+        raise TmmError(f"{path} does not exist; give the mechanism's TOML file (see docs/mechanism.md)")
+    if os.path.isdir(path):
+        raise TmmError(f"{path} is a folder; give a TOML file")
+    if os.stat(path).st_size > MAX_BYTES:  # said in the file's own words (read_file checks it again, on the open file)
+        raise TmmError(f"{path} is larger than 256 KiB; a mechanism file holds a few tables")
+    raw = read_file(path, str(path), MAX_BYTES)  # a regular file (a FIFO is refused, not waited on), size first
     try:
-        if path.stat().st_size > MAX_BYTES:
-            raise TmmError(f"{path} is larger than 256 KiB; a mechanism file holds a few tables")
-        data = tomllib.loads(path.read_bytes().decode("utf-8-sig"))
-    except FileNotFoundError:
-        raise TmmError(f"{path} does not exist; give the mechanism's TOML file (see docs/mechanism.md)") from None
-    except IsADirectoryError:
-        raise TmmError(f"{path} is a folder; give a TOML file") from None
+        data = tomllib.loads(raw.decode("utf-8-sig"))
     except UnicodeDecodeError:
         raise TmmError(f"{path} is not UTF-8 text; save it as UTF-8") from None
     except (tomllib.TOMLDecodeError, RecursionError) as exc:
         raise TmmError(f"{path} is not valid TOML ({exc}); see docs/mechanism.md for the form") from None
-    except OSError as exc:
-        raise TmmError(f"cannot read {path} ({exc.strerror})") from None
+    except ValueError:  # an integer of thousands of digits (Python's conversion limit)
+        raise TmmError(f"{path} is not valid TOML (a number too long); see docs/mechanism.md for the form") from None
     return data

@@ -16,7 +16,10 @@ from ..limits import FILE_NAME_CHARS, NAME_CHARS
 
 # characters that end a line in some reader: str.splitlines() splits on all of these
 LINE_BREAKS = "\n\r\v\f\x1c\x1d\x1e\x85\u2028\u2029"
-_RESERVED = re.compile(r"(variant-.*|summary|check|con|prn|aux|nul|com\d|lpt\d)", re.IGNORECASE)
+# our own names, and Windows's device names (COM¹…COM³ and LPT¹…LPT³ with superscript digits too,
+# which Python's \d does not match): a file named so opens the device on Windows
+_RESERVED = re.compile(r"(variant-.*|summary|check|con|prn|aux|nul|conin\$?|conout\$?|clock\$?|com[0-9¹²³]|lpt[0-9¹²³])",
+                       re.IGNORECASE)
 
 
 def clean_text(text: str, limit: int | None = None) -> str:
@@ -58,6 +61,8 @@ def file_name(name: str) -> str:
     'secret_creds'
     >>> file_name("variant-40")
     'student-variant-40'
+    >>> file_name("COM¹"), file_name("lpt².txt"), file_name("Comte")
+    ('student-COM¹', 'student-lpt².txt', 'Comte')
     >>> file_name("=HYPERLINK(\\"http://x\\")")
     'HYPERLINK_http_x'
     """
@@ -65,7 +70,7 @@ def file_name(name: str) -> str:
     text = re.sub(r"[^\w.-]+", "_", text, flags=re.UNICODE)
     text = re.sub(r"_{2,}", "_", text).strip("._- ")
     text = text[:FILE_NAME_CHARS].rstrip("._- ")
-    if _RESERVED.fullmatch(text.split(".")[0] if text else ""):
+    if _RESERVED.fullmatch(text.split(".")[0].rstrip(" ") if text else ""):
         text = f"student-{text}"
     return text
 

@@ -16,7 +16,6 @@ from __future__ import annotations
 import csv
 import io
 import math
-import os
 from pathlib import Path
 
 from ..errors import TmmError
@@ -71,22 +70,10 @@ def decode(raw: bytes, what: str) -> tuple[str, str]:
 
 def read_text(path: str | Path, what: str, max_bytes: int) -> TextFile:
     """Read a small text file: size limit first (one stat, nothing read), then :func:`decode`."""
+    from .files import read_file
+
     p = Path(path)
-    try:
-        with open(p, "rb") as fh:
-            size = os.fstat(fh.fileno()).st_size
-            if size > max_bytes:
-                raise TmmError(f"{what} is {size} bytes, over the limit of {max_bytes} bytes; "
-                               f"is it the right file? (limits: docs/limits.md)")
-            raw = fh.read(max_bytes + 1)
-    except FileNotFoundError:
-        raise TmmError(f"{what} does not exist; check the path") from None
-    except IsADirectoryError:
-        raise TmmError(f"{what} is a folder, not a file; give the file") from None
-    except OSError as exc:
-        raise TmmError(f"{what} cannot be read ({exc.strerror or exc.__class__.__name__}); check the path") from None
-    if len(raw) > max_bytes:  # a pipe or a file that grew meanwhile
-        raise TmmError(f"{what} is over the limit of {max_bytes} bytes; is it the right file? (limits: docs/limits.md)")
+    raw = read_file(p, what, max_bytes)  # a regular file (a FIFO is refused, not waited on), size first
     text, enc = decode(raw, what)
     return TextFile(p, text, enc)
 
@@ -111,13 +98,15 @@ def rows(text: str, max_rows: int, what: str) -> list[list[str]]:
     """
     reader = csv.reader(io.StringIO(text, newline=""), delimiter=delimiter(text))
     out = []
+    filled = 0  # counted as they come: a file of blank lines stays linear
     try:
         for row in reader:
             if any(c.strip() for c in row):
                 out.append(row)
+                filled += 1
             else:
                 out.append([])  # keep line numbers
-            if sum(1 for r in out if r) > max_rows:
+            if filled > max_rows:
                 raise TmmError(f"{what} has more than {max_rows} rows, over the limit; split it (limits: docs/limits.md)")
     except csv.Error as exc:
         raise TmmError(f"{what} line {reader.line_num} is not valid CSV ({exc}); check the quotes") from None

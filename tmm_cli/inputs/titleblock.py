@@ -16,6 +16,7 @@ stay empty: the sheets leave the cell blank, the note leaves a line to fill in b
 from __future__ import annotations
 
 import datetime as _dt
+import os
 from dataclasses import replace
 from pathlib import Path
 
@@ -70,21 +71,22 @@ def load_settings(folder: Path | None = None) -> dict[str, str]:
     Unknown keys are refused (a typo would otherwise leave a field silently blank).
     """
     path = Path(folder or ".") / SETTINGS_FILE
-    if not path.is_file():
+    if not os.path.lexists(path):
         return {}
     import tomllib
 
+    from ..limits import SETTINGS_BYTES
+    from .files import read_file
+
+    raw = read_file(path, str(path), SETTINGS_BYTES)  # a regular file; its size checked before reading
     try:
-        raw = path.read_bytes()
-        if len(raw) > 64 * 1024:
-            raise TmmError(f"{path} is larger than 64 KiB; it should hold only the title fields")
         data = tomllib.loads(raw.decode("utf-8-sig"))
     except UnicodeDecodeError:
         raise TmmError(f"{path} is not UTF-8 text; save it as UTF-8") from None
     except (tomllib.TOMLDecodeError, RecursionError) as exc:
         raise TmmError(f"{path} is not valid TOML ({exc}); write lines like student = \"Иванов И. И.\"") from None
-    except OSError as exc:
-        raise TmmError(f"cannot read {path} ({exc.strerror})") from None
+    except ValueError:  # an integer of thousands of digits (Python's conversion limit)
+        raise TmmError(f"{path} is not valid TOML (a number too long); write lines like year = 2026") from None
     unknown = sorted(set(data) - set(FIELDS) - {"year"})
     if unknown:
         raise TmmError(f"{path}: unknown key(s) {', '.join(unknown)}; known keys: {', '.join(FIELDS)}, year")

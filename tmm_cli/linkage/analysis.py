@@ -12,6 +12,7 @@ import math
 import numpy as np
 
 from ..errors import TmmError
+from ..limits import LINKAGE_EPS, LINKAGE_OMEGA, check_range
 from ..notes import Note
 from ..records import record
 from .geometry import WHITWORTH, Geometry, positions
@@ -169,8 +170,10 @@ def analyse(g: Geometry, omega: float, eps: float = 0.0, n_positions: int = 12, 
     """
     if not (math.isfinite(omega) and omega > 0):
         raise TmmError(f"the crank speed is {omega:g} rad/s; give a positive --rpm or --omega (φ21 grows with time)")
+    check_range(omega, *LINKAGE_OMEGA, "the crank speed ω21 [rad/s]", " (--rpm from 0.1 to 10000)")
     if not math.isfinite(eps):
         raise TmmError(f"--eps-crank is {eps}; give a finite angular acceleration in rad/s²")
+    check_range(eps, *LINKAGE_EPS, "--eps-crank [rad/s²]")
     if not isinstance(n_positions, int) or not 2 <= n_positions <= 360:
         raise TmmError(f"--positions is {n_positions}; give a whole number of crank positions from 2 to 360 (the book uses 12)")
     if not (math.isfinite(at_deg) and 0.0 <= at_deg <= 360.0):
@@ -228,9 +231,34 @@ def analyse(g: Geometry, omega: float, eps: float = 0.0, n_positions: int = 12, 
     if len(roots) > 2:
         notes.append(Note.make("linkage_reversals", "warning", count=len(roots)))
 
-    return LinkageResult(
+    result = LinkageResult(
         geometry=g, omega=float(omega), eps=float(eps), regime=g.regime, stroke=x_max - x_min, x_min=x_min, x_max=x_max,
         time_ratio=working / ret, working_rad=working, return_rad=ret, dead=(float(_norm(start)), float(_norm(other))),
         working_direction=direction, stationary=len(roots), positions=tuple(states), at=at_state, dead_state=dead_state, curve=curve,
         plans=plans(g, at_phi, omega, eps), residual=residual, rod_angle_max=rod_max, notes=tuple(notes),
     )
+    if not finite_everywhere(result):  # validated after, too: a number that overflowed is an error, not a null
+        raise TmmError("the motion of this mechanism cannot be computed in finite numbers (a position where a link "
+                       "stands across its guide, or dimensions too far apart); check the dimensions")
+    return result
+
+
+def finite_everywhere(x) -> bool:
+    """Whether every number in a result (records, tuples, dicts, arrays) is finite.
+
+    >>> finite_everywhere((1.0, {"a": np.array([2.0, 3.0])})), finite_everywhere([1.0, float("nan")])
+    (True, False)
+    """
+    import dataclasses
+
+    if isinstance(x, float):
+        return math.isfinite(x)
+    if isinstance(x, np.ndarray):
+        return x.dtype.kind not in "fc" or bool(np.all(np.isfinite(x)))
+    if isinstance(x, (tuple, list)):
+        return all(finite_everywhere(v) for v in x)
+    if isinstance(x, dict):
+        return all(finite_everywhere(v) for v in x.values())
+    if dataclasses.is_dataclass(x) and not isinstance(x, type):
+        return all(finite_everywhere(getattr(x, f.name)) for f in dataclasses.fields(x))
+    return True

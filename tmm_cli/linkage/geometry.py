@@ -26,6 +26,7 @@ import math
 import numpy as np
 
 from ..errors import TmmError
+from ..limits import LINKAGE_LENGTH_M
 from ..records import record
 
 WHITWORTH = "whitworth"
@@ -95,7 +96,7 @@ class Geometry:
         return max(abs(self.b - lo), abs(self.b - hi))
 
 
-LENGTH_MAX_M = 100.0  # every length and offset [m]: a shaping machine's links are well below a metre
+LENGTH_MAX_M = LINKAGE_LENGTH_M[1]  # every length and offset [m]: a shaping machine's links are well below a metre
 
 
 def _finite(name: str, value) -> float:
@@ -134,6 +135,9 @@ def make_geometry(r1, h, c, r2, r3, b) -> Geometry:
     for name, value in (("r1", r1), ("h", h), ("r2", r2), ("r3", r3)):
         if value <= 0:
             raise TmmError(f"--{name} is {value:g} m; lengths must be positive ({what[name]})")
+        if value < LINKAGE_LENGTH_M[0]:
+            raise TmmError(f"--{name} is {value:g} m, below the shortest length of {LINKAGE_LENGTH_M[0]:g} m (0.1 mm); "
+                           "give metres (e.g. 0.1 for a 100 mm crank)")
     for name, value in (("r1", r1), ("h", h), ("c", c), ("r2", r2), ("r3", r3), ("b", b)):
         if abs(value) > LENGTH_MAX_M:
             raise TmmError(f"--{name} is {value:g} m, over the limit of {LENGTH_MAX_M:g} m; give metres "

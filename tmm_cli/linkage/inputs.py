@@ -27,9 +27,10 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..errors import TmmError
+from ..limits import INPUT_FILE_BYTES
 
 KEYS = ("r1", "h", "c", "r2", "r3", "b", "rpm", "omega", "eps_crank", "positions", "at")
-MAX_BYTES = 64 * 1024
+MAX_BYTES = INPUT_FILE_BYTES  # 64 KiB (limits.py)
 MAX_VARIANTS = 1000
 
 
@@ -47,29 +48,25 @@ def _check_values(table: dict, where: str) -> dict:
     return out
 
 
-def read_input(path, variant: str | None = None) -> dict:
-    """The keys of `path` as a dict {key: number}; for a table of variants, those of `variant`.
+def parse_input(raw: bytes, path, variant: str | None = None) -> dict:
+    """The keys of the TOML text `raw` (the file `path`, read by the command with
+    tmm_cli.inputs.files.read_file) as a dict {key: number}; for a table of variants, those of
+    `variant`.
 
-    TmmError (one line) for a missing, oversized, non-UTF-8 or malformed file, an unknown key, a
-    value that is not a number, or a variant the file does not have.
+    TmmError (one line) for a non-UTF-8 or malformed file, an unknown key, a value that is not a
+    number, or a variant the file does not have.
     """
     path = Path(path)
     import tomllib
 
     try:
-        if path.stat().st_size > MAX_BYTES:
-            raise TmmError(f"{path} is larger than 64 KiB; it should hold only the mechanism's dimensions")
-        data = tomllib.loads(path.read_bytes().decode("utf-8-sig"))
-    except FileNotFoundError:
-        raise TmmError(f"{path} does not exist; give the TOML file with the mechanism's dimensions") from None
-    except IsADirectoryError:
-        raise TmmError(f"{path} is a folder; give a TOML file") from None
+        data = tomllib.loads(raw.decode("utf-8-sig"))
     except UnicodeDecodeError:
         raise TmmError(f"{path} is not UTF-8 text; save it as UTF-8") from None
     except (tomllib.TOMLDecodeError, RecursionError) as exc:
         raise TmmError(f"{path} is not valid TOML ({exc}); write lines like r1 = 0.10 (a decimal dot)") from None
-    except OSError as exc:
-        raise TmmError(f"cannot read {path} ({exc.strerror})") from None
+    except ValueError:  # an integer of thousands of digits (Python's conversion limit)
+        raise TmmError(f"{path} is not valid TOML (a number too long); write lines like r1 = 0.10 (a decimal dot)") from None
     if "crank" in data or "frame" in data:
         raise TmmError(f"{path} is a mechanism file; run tmm linkage {path} (without --input)")
     table = data.pop("variants", None)

@@ -1,33 +1,55 @@
-"""Writing results to disk, atomically, and removing only what this program wrote.
+"""Writing results to disk, atomically, and replacing or removing only what this program wrote.
 
 Everything is first written into a staging folder beside the target and moved into place at the
 end, so an error part-way leaves no half-written file. Every folder `tmm` writes into keeps a
-manifest, ``.tmm-files.json``, of the files it put there: a later run removes an old file of its
-own that it did not write again (a figure of an earlier run with other options), and nothing
-else. A file `tmm` did not write is never deleted nor overwritten; a symbolic link is never
-followed to delete or write anything. A staging folder is removed on error, on Ctrl-C and on
-SIGTERM; one left by a killed run (``.variant-17.tmp-…`` with our mark inside and a dead process)
-is removed by the next run that writes beside it.
+manifest, ``.tmm-files.json`` (output/manifest.py), of the files it put there, with the sha256 of
+their bytes and the commands that wrote them:
+
+- a later run replaces a file of its own, and removes one it did not write again (a figure of an
+  earlier run with other options) only if no other command's last run claims it; so `tmm cam`
+  into a project's folder never deletes the project's files;
+- a file whose bytes changed since `tmm` wrote it is the user's now: it is kept, the new version
+  is written beside it (``note.typ`` → ``note.new.typ``) and the run says so; ``--force`` replaces
+  it after keeping a copy (``note.typ.bak``);
+- a file `tmm` did not write is never deleted nor overwritten (the run stops with one line);
+- a symbolic link is never followed to delete or write anything: one at a final name is replaced,
+  never its target.
+
+A staging folder is removed on error, on Ctrl-C and on SIGTERM; one left by a killed run
+(``.variant-17.tmp-…`` with our mark inside and a dead process) is removed by the next run that
+writes beside it, and so are the temporary files of a dead writer.
 """
 
 from __future__ import annotations
 
 import fnmatch
-import json
 import os
-import re
 import shutil
-import stat
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator
 
 from ..errors import TmmError
+from ..records import record
+from .atomic import _ACTIVE, TEMP_NAME, atomic_write, is_real_dir, is_real_file, remove_active, remove_temp_file
+from .manifest import MANIFEST, claims, digest, plain_name, read_manifest, unchanged, write_manifest
+
+__all__ = ["MANIFEST", "read_manifest", "write_manifest", "remove_temp_file", "staged_dir", "write_owned", "Kept"]
 
 FIGURE_FORMATS = ("png", "svg", "pdf")
-MANIFEST = ".tmm-files.json"
 STAGING_MARK = ".tmm-staging"  # inside each staging folder: the writer's pid
-_ACTIVE: set[str] = set()  # staging folders and temporary files of this process (removed on a signal)
+_is_real_dir, _is_real_file, _plain = is_real_dir, is_real_file, plain_name  # the names other modules used
+
+
+@record
+class Kept:
+    """A file of the user's found where this run writes: `beside` is the name the new version got
+    (``note.new.typ``), or `backup` the copy kept before it was replaced (``--force``)."""
+
+    folder: str
+    name: str
+    beside: str = ""
+    backup: str = ""
 
 
 # checks and folders ------------------------------------------------------------------------------
@@ -84,18 +106,22 @@ def remove_empty_dirs(created: list[Path]) -> None:
             break
 
 
-def _is_real_dir(p: Path) -> bool:
+def check_inside(root: Path, target: Path) -> None:
+    """Every folder from below `root` down to `target` that exists is a real folder, not a link
+    (a student folder planted as a link out of a batch's --out); TmmError otherwise."""
+    root, target = Path(root), Path(target)
     try:
-        return stat.S_ISDIR(os.lstat(p).st_mode)
-    except OSError:
-        return False
-
-
-def _is_real_file(p: Path) -> bool:
-    try:
-        return stat.S_ISREG(os.lstat(p).st_mode)
-    except OSError:
-        return False
+        rel = target.relative_to(root)
+    except ValueError:
+        raise TmmError(f"{target} is not inside {root}; choose another --out") from None
+    probe = root
+    for part in rel.parts:
+        probe = probe / part
+        if not os.path.lexists(probe):
+            return
+        if not is_real_dir(probe):
+            raise TmmError(f"{probe} is a symbolic link or not a folder; tmm writes only into real folders inside "
+                           f"{root}: remove it or choose another --out")
 
 
 @contextmanager
@@ -110,7 +136,7 @@ def lock_dir(folder: Path, wait: bool = True, what: str = "tmm"):
     except ImportError:  # pragma: no cover - Windows
         yield
         return
-    fd = os.open(folder, os.O_RDONLY)
+    fd = os.open(folder, os.O_RDONLY | getattr(os, "O_CLOEXEC", 0))
     try:
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | (0 if wait else fcntl.LOCK_NB))
@@ -123,76 +149,81 @@ def lock_dir(folder: Path, wait: bool = True, what: str = "tmm"):
         os.close(fd)
 
 
-# the manifest ------------------------------------------------------------------------------------
-
-
-def _plain(name) -> bool:
-    return isinstance(name, str) and name not in ("", ".", "..", MANIFEST) and "/" not in name and "\\" not in name and "\x00" not in name
-
-
-def read_manifest(folder: Path) -> dict:
-    """{"files": set of names, "dirs": set of relative paths} this program wrote into `folder`.
-
-    An unreadable or foreign manifest counts as empty: then nothing is removed.
-    """
-    p = Path(folder) / MANIFEST
-    files, dirs = set(), set()
-    if _is_real_file(p):
-        try:
-            data = json.loads(p.read_text(encoding="utf-8"))
-        except (OSError, ValueError, RecursionError):
-            data = {}
-        if isinstance(data, dict) and data.get("tool") == "tmm":
-            files = {n for n in data.get("files", []) if _plain(n)}
-            dirs = {d for d in data.get("dirs", []) if isinstance(d, str) and d and all(_plain(c) for c in d.split("/"))}
-    return {"files": files, "dirs": dirs}
-
-
-def write_manifest(folder: Path, files=(), dirs=()) -> None:
-    """Record (atomically) the files and sub-folders this program wrote into `folder`."""
-    folder = Path(folder)
-    data = {"tool": "tmm", "note": "files written by tmm; tmm removes only these", "files": sorted(set(files)),
-            "dirs": sorted(set(dirs))}
-    with _temp_file(folder / f".{MANIFEST}.tmp-{os.getpid()}") as tmp:
-        tmp.write_text(json.dumps(data, ensure_ascii=False, indent=1) + "\n", encoding="utf-8")
-        os.replace(tmp, folder / MANIFEST)
-
-
-@contextmanager
-def _temp_file(tmp: Path) -> Iterator[Path]:
-    """A temporary file beside its target, removed however the block ends: on an error, and from a
-    signal handler too (:func:`remove_active_staging`): a batch worker stopped between writing it
-    and moving it into place left ``..tmm-files.json.tmp-PID`` behind."""
-    _ACTIVE.add(str(tmp))  # before the file exists: a signal can come at any moment after this
-    try:
-        yield tmp
-    finally:
-        remove_temp_file(tmp)
-        _ACTIVE.discard(str(tmp))
-
-
-def remove_temp_file(tmp: Path) -> None:
-    """Remove the file `tmp` if it is a file (never a folder, nothing followed); quietly."""
-    if _is_real_file(tmp) or os.path.islink(tmp):
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-
-
 def refuse_foreign(target: Path, names, manifest: set[str]) -> None:
+    """TmmError for the first of `names` that exists in `target` but is not in its manifest."""
     for name in sorted(names):
-        dst = target / name
-        if os.path.lexists(dst) and (name not in manifest or not _is_real_file(dst)):
+        dst = Path(target) / name
+        if os.path.lexists(dst) and name not in manifest:
             raise TmmError(f"{dst} was not written by tmm (it is not in {MANIFEST}); tmm never overwrites "
                            f"such a file: move it away or choose another --out")
+
+
+# the user's files where we write -----------------------------------------------------------------
+
+
+def beside_name(name: str, n: int = 1) -> str:
+    """The name of the new version written beside a file of the user's.
+
+    >>> beside_name("note.typ"), beside_name("summary.csv", 2), beside_name("README")
+    ('note.new.typ', 'summary.new2.csv', 'README.new')
+    """
+    stem, dot, ext = name.rpartition(".")
+    tag = "new" if n == 1 else f"new{n}"
+    return f"{stem}.{tag}.{ext}" if dot and stem else f"{name}.{tag}"
+
+
+def _free_beside(folder: Path, name: str, entries: dict, taken: set[str]) -> str:
+    """A name beside `name` that is free, or a file of ours with its bytes unchanged."""
+    for n in range(1, 1000):
+        cand = beside_name(name, n)
+        if cand in taken:
+            continue
+        if not os.path.lexists(folder / cand) or unchanged(folder / cand, entries.get(cand)):
+            return cand
+    raise TmmError(f"too many new versions of {folder / name} beside it; move them away")
+
+
+def _free_backup(folder: Path, name: str) -> str:
+    for n in range(1, 1000):
+        cand = f"{name}.bak" if n == 1 else f"{name}.bak{n}"
+        if not os.path.lexists(folder / cand):
+            return cand
+    raise TmmError(f"too many backups of {folder / name} beside it; move them away")
+
+
+def _placement(folder: Path, names, entries: dict, force: bool) -> tuple[dict, list[Kept]]:
+    """Where each new file goes: {name: final name}, and the user's files met on the way.
+
+    A name that exists but is not in the manifest is refused (TmmError, before anything changed).
+    A file of ours whose bytes changed (or a link, or anything not a regular file, at its name) is
+    kept and the new version goes beside it; with `force`, a regular file or link is moved to a
+    backup name first (that happens in :func:`_make_backups`)."""
+    refuse_foreign(folder, names, set(entries))
+    dest, kept, taken = {}, [], set()
+    for name in sorted(names):
+        dst = folder / name
+        if not os.path.lexists(dst) or unchanged(dst, entries.get(name)):
+            dest[name] = name
+        elif force and (is_real_file(dst) or os.path.islink(dst)):
+            dest[name] = name
+            kept.append(Kept(str(folder), name, backup=_free_backup(folder, name)))
+        else:
+            dest[name] = _free_beside(folder, name, entries, taken | set(names))
+            kept.append(Kept(str(folder), name, beside=dest[name]))
+        taken.add(dest[name])
+    return dest, kept
+
+
+def _make_backups(folder: Path, kept: list[Kept]) -> None:
+    for k in kept:
+        if k.backup:
+            os.rename(folder / k.name, folder / k.backup)  # a link is renamed as a link
 
 
 # staging -----------------------------------------------------------------------------------------
 
 
 STALE_AFTER_S = 24 * 3600  # a staging folder this old is stale whoever wrote it
-_STAGING_NAME = re.compile(r"\..+\.tmp-(\d+)-[0-9a-f]{8}")  # see _new_staging
 
 
 def _pid_alive(pid: int) -> bool:
@@ -207,14 +238,18 @@ def _pid_alive(pid: int) -> bool:
     return True
 
 
+pid_alive = _pid_alive
+
+
 def is_our_staging(p: Path) -> bool:
     """A real folder named ``.NAME.tmp-…`` holding our mark."""
-    return p.name.startswith(".") and ".tmp-" in p.name and _is_real_dir(p) and _is_real_file(p / STAGING_MARK)
+    return p.name.startswith(".") and ".tmp-" in p.name and is_real_dir(p) and is_real_file(p / STAGING_MARK)
 
 
 def remove_stale_staging(parent: Path, only_dead: bool = True, dead_pids=()) -> list[Path]:
     """Remove staging folders of ours in `parent` whose writer is gone (a dead pid, one of
-    `dead_pids`, or older than a day), or all of ours when `only_dead` is False."""
+    `dead_pids`, or older than a day), or all of ours when `only_dead` is False; and our temporary
+    files (``.NAME.tmp-PID-XXXXXXXX``) whose writer is dead or one of `dead_pids`."""
     import time
 
     removed = []
@@ -223,24 +258,31 @@ def remove_stale_staging(parent: Path, only_dead: bool = True, dead_pids=()) -> 
     except OSError:
         return removed
     for p in entries:
+        if str(p) in _ACTIVE:
+            continue
         if not is_our_staging(p):
-            m = _STAGING_NAME.fullmatch(p.name)
-            if m and int(m.group(1)) in dead_pids and _is_real_dir(p):  # a killed worker's, before its mark
+            m = TEMP_NAME.fullmatch(p.name)
+            if not m:
+                continue
+            pid = int(m.group(1))
+            dead = pid in dead_pids or (pid != os.getpid() and not _pid_alive(pid))
+            if dead and is_real_dir(p) and pid in dead_pids:  # a killed worker's, before its mark
                 shutil.rmtree(p, ignore_errors=True)
+                removed.append(p)
+            elif dead and is_real_file(p):  # a temporary file of a killed writer
+                remove_temp_file(p)
                 removed.append(p)
             continue
         try:
             pid = int((p / STAGING_MARK).read_text().split()[0])
         except (OSError, ValueError, IndexError):  # the mark being written right now (empty): the pid in the name
-            m = _STAGING_NAME.fullmatch(p.name)
+            m = TEMP_NAME.fullmatch(p.name)
             pid = int(m.group(1)) if m else -1
         try:
             old_enough = time.time() - os.lstat(p / STAGING_MARK).st_mtime > STALE_AFTER_S
         except OSError:
             old_enough = False
         if only_dead and pid > 0 and pid != os.getpid() and pid not in dead_pids and not old_enough and _pid_alive(pid):
-            continue
-        if pid == os.getpid() and str(p) in _ACTIVE and only_dead:
             continue
         shutil.rmtree(p, ignore_errors=True)
         removed.append(p)
@@ -250,29 +292,31 @@ def remove_stale_staging(parent: Path, only_dead: bool = True, dead_pids=()) -> 
 def remove_active_staging() -> None:
     """Remove this process's staging folders and temporary files (called from signal handlers
     before exiting)."""
-    for p in list(_ACTIVE):
-        if _is_real_dir(Path(p)):
-            shutil.rmtree(p, ignore_errors=True)
-        else:
-            remove_temp_file(Path(p))
-        _ACTIVE.discard(p)
+    remove_active()
 
 
 @contextmanager
-def staged_dir(target: Path, owns: tuple[str, ...] = ()) -> Iterator[Path]:
+def staged_dir(target: Path, owns: tuple[str, ...] = (), writer: str | None = None, force: bool = False,
+               kept: list | None = None, root: Path | None = None) -> Iterator[Path]:
     """Yield an empty staging folder; on success its files move into `target`, on error it vanishes.
 
     Files are moved one by one with :func:`os.replace` (atomic per file), only after everything
     was written, so a failed run leaves no half-written file and keeps what `target` had; the
-    folders it had to create are removed again. `owns` lists glob patterns of the files this
-    command writes: an older file matching them that this run did not write again is removed
-    only if the manifest says this program wrote it. A file of the same name that this program
-    did not write, or a `target` that is a symbolic link, is refused with a TmmError.
+    folders it had to create are removed again. `owns` lists glob patterns of the files the
+    command `writer` writes: an older file matching them that this run did not write again is
+    removed only if the manifest says `writer` wrote it, no other command's last run claims it,
+    and its bytes are unchanged. A file of the same name that this program did not write, or a
+    `target` that is a symbolic link, is refused with a TmmError; a file the user changed is kept
+    and the new version written beside it (or, with `force`, replaced after a backup): each such
+    file is appended to `kept` (:class:`Kept`). With `root`, every folder between it and `target`
+    must be a real folder (a batch's student folders).
     """
     target = Path(target)
+    if root is not None:
+        check_inside(root, target)
     if os.path.islink(target):
         raise TmmError(f"{target} is a symbolic link; tmm writes only into real folders: remove the link or choose another --out")
-    if os.path.lexists(target) and not _is_real_dir(target):
+    if os.path.lexists(target) and not is_real_dir(target):
         raise TmmError(f"{target} exists and is not a folder; move it away or choose another --out")
     parent = target.parent
     created = make_dirs(parent)
@@ -283,17 +327,21 @@ def staged_dir(target: Path, owns: tuple[str, ...] = ()) -> Iterator[Path]:
         remove_empty_dirs(created)
         raise TmmError(f"cannot write to output folder {parent} ({exc.strerror}); choose a writable folder with --out") from None
     try:
-        (tmp / STAGING_MARK).write_text(f"{os.getpid()}\n")
-        yield tmp
-        fresh = {item.name for item in tmp.iterdir()} - {STAGING_MARK}
         try:
+            (tmp / STAGING_MARK).write_text(f"{os.getpid()}\n")
+            yield tmp
+            fresh = {item.name for item in tmp.iterdir()} - {STAGING_MARK}
+            if root is not None:
+                check_inside(root, target)
             if not os.path.lexists(target):
                 target.mkdir()
                 created.append(target)
-        except OSError as exc:
-            raise TmmError(f"cannot create {target} ({exc.strerror}); choose a writable folder with --out") from None
+        except OSError as exc:  # a full disk, a name too long, a folder gone: one line
+            raise _write_error(target, exc) from None
         with lock_dir(target):  # two runs into one folder: one commits after the other
-            _commit(tmp, target, fresh, owns)
+            found = _commit(tmp, target, fresh, owns, writer, force)
+        if kept is not None:
+            kept.extend(found)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         remove_empty_dirs(created)
@@ -301,6 +349,11 @@ def staged_dir(target: Path, owns: tuple[str, ...] = ()) -> Iterator[Path]:
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
         _ACTIVE.discard(str(tmp))
+
+
+def _write_error(where: Path, exc: OSError) -> TmmError:
+    what = exc.strerror or exc.__class__.__name__
+    return TmmError(f"cannot write into {where} ({what}); choose a writable folder with --out")
 
 
 def _new_staging(parent: Path, name: str) -> Path:
@@ -325,74 +378,138 @@ def _new_staging(parent: Path, name: str) -> Path:
             raise
 
 
-def _commit(tmp: Path, target: Path, fresh: set[str], owns) -> None:
-    """Move the staged files into `target` and drop this program's stale files (manifest ∩ owns)."""
-    if not _is_real_dir(target):
+def _commit(tmp: Path, target: Path, fresh: set[str], owns, writer: str | None, force: bool) -> list[Kept]:
+    """Move the staged files into `target` and drop this writer's stale files; returns the user's
+    files met (kept, or backed up under `force`)."""
+    if not is_real_dir(target):
         raise TmmError(f"{target} is not a real folder; choose another --out")
     old = read_manifest(target)
-    refuse_foreign(target, fresh, old["files"])
+    entries = dict(old["entries"])
+    dest, kept = _placement(target, fresh, entries, force)
+    hashes = {name: digest(tmp / name) for name in fresh}
+    written = set(dest.values())
     try:
-        stale = {n for n in old["files"] - fresh if any(fnmatch.fnmatchcase(n, pat) for pat in owns)}
-        write_manifest(target, old["files"] | fresh, old["dirs"])  # a crash below leaves a true superset
-        for name in sorted(fresh):
-            os.replace(tmp / name, target / name)
-        for name in stale:
-            if _is_real_file(target / name):
-                (target / name).unlink()
-        write_manifest(target, (old["files"] - stale) | fresh, old["dirs"])
+        _make_backups(target, kept)  # first: the user's version is safe whatever happens below
+        # then a true superset: a crash below leaves every file listed (the new ones of unknown bytes)
+        interim = dict(entries)
+        for name, final in dest.items():
+            interim[final] = {"sha256": None, "by": None}
+        write_manifest(target, set(interim), old["dirs"], interim)
+        backed = {k.name for k in kept if k.backup}
+        for name, final in sorted(dest.items()):
+            os.replace(tmp / name, target / final)
+            entries[final] = {"sha256": hashes[name], "by": _writers(None if final in backed else entries.get(final), writer)}
+        for name in sorted(set(old["entries"]) - written - {k.name for k in kept}):
+            if any(fnmatch.fnmatchcase(name, pat) for pat in owns) and claims(entries[name], writer):
+                _drop_claim(target, name, entries, writer)
+        write_manifest(target, set(entries), old["dirs"], entries)
     except OSError as exc:
-        raise TmmError(f"cannot write into {target} ({exc.strerror}); choose a writable folder with --out") from None
+        raise _write_error(target, exc) from None
+    return kept
 
 
-def write_owned(folder: Path, name: str, data: bytes) -> Path:
-    """Write one file (summary.csv, check.md) into `folder` atomically and record it as ours.
+def _writers(previous: dict | None, writer: str | None):
+    """The writers of a file `writer` has just written over `previous` (its entry, if it was ours)."""
+    if writer is None:
+        return None
+    if previous is None or previous.get("by") is None:
+        return (writer,)
+    return tuple(sorted(set(previous["by"]) | {writer}))
 
-    Refused (TmmError) when a file of that name exists that this program did not write.
+
+def _drop_claim(folder: Path, name: str, entries: dict, writer: str | None) -> None:
+    """`writer`'s last run no longer wrote `name`: take its claim away; the last claim gone, the
+    file goes too — unless its bytes changed (the user's now: kept, still listed)."""
+    e = entries[name]
+    rest = () if e.get("by") is None or writer is None else tuple(w for w in e["by"] if w != writer)
+    if rest:
+        entries[name] = {**e, "by": rest}
+        return
+    path = folder / name
+    if not os.path.lexists(path):
+        del entries[name]
+    elif unchanged(path, e):
+        path.unlink()
+        del entries[name]
+    else:
+        entries[name] = {**e, "by": ()}
+
+
+def write_owned(folder: Path, name: str, data: bytes, writer: str | None = None, force: bool = False,
+                kept: list | None = None) -> Path:
+    """Write one file (summary.csv, check.md) into `folder` atomically and record it as ours;
+    returns the path written.
+
+    Refused (TmmError) when a file of that name exists that this program did not write; a file of
+    that name the user changed is kept and the new version goes beside it (``summary.new.csv``),
+    or with `force` it is replaced after a backup; either is appended to `kept`.
     """
     folder = Path(folder)  # the --out folder the user named (it may be a link the user made)
     make_dirs(folder)
     man = read_manifest(folder)
-    refuse_foreign(folder, [name], man["files"])
+    entries = dict(man["entries"])
+    dest, found = _placement(folder, [name], entries, force)
+    final = dest[name]
     try:
-        write_manifest(folder, man["files"] | {name}, man["dirs"])
-        with _temp_file(folder / f".{name}.tmp-{os.getpid()}") as tmp:
-            tmp.write_bytes(data)
-            os.replace(tmp, folder / name)
+        _make_backups(folder, found)
+        interim = {**entries, final: {"sha256": None, "by": None}}
+        write_manifest(folder, set(interim), man["dirs"], interim)
+        atomic_write(folder, final, data)
+        import hashlib
+
+        backed = {k.name for k in found if k.backup}
+        entries[final] = {"sha256": hashlib.sha256(data).hexdigest(),
+                          "by": _writers(None if final in backed else entries.get(final), writer)}
+        write_manifest(folder, set(entries), man["dirs"], entries)
     except OSError as exc:
-        raise TmmError(f"cannot write {folder / name} ({exc.strerror}); choose a writable folder with --out") from None
-    return folder / name
+        raise TmmError(f"cannot write {folder / final} ({exc.strerror}); choose a writable folder with --out") from None
+    if kept is not None:
+        kept.extend(found)
+    return folder / final
 
 
-def remove_written_tree(root: Path, rel: str) -> bool:
-    """Remove the folder `root/rel` that this program wrote: only the files its manifest lists,
-    then the folder (and `rel`'s parents below `root`) when empty. Never follows a symbolic link.
-    Returns True when the folder is gone, False when something not ours keeps it.
+def remove_written_tree(root: Path, rel: str, writer: str | None = None) -> bool:
+    """Remove the folder `root/rel` that this program wrote: only the files its manifest lists as
+    `writer`'s (and no other command's) with their bytes unchanged, then the folder (and `rel`'s
+    parents below `root`) when empty. Never follows a symbolic link. Returns True when the folder
+    is gone, False when something not ours keeps it.
     """
     root = Path(root)
     parts = rel.split("/")
-    if not all(_plain(c) for c in parts):
+    if not all(plain_name(c) for c in parts):
         return False
     chain = [root.joinpath(*parts[: i + 1]) for i in range(len(parts))]
-    if not all(_is_real_dir(p) for p in chain):
+    if not all(is_real_dir(p) for p in chain):
         return not any(os.path.lexists(p) for p in chain[-1:])
     folder = chain[-1]
     man = read_manifest(folder)
     for sub in sorted(man["dirs"], reverse=True):
-        remove_written_tree(folder, sub)
-    for name in man["files"]:
-        if _is_real_file(folder / name):
-            (folder / name).unlink()
+        remove_written_tree(folder, sub, writer)
+    entries = dict(man["entries"])
+    for name in sorted(man["entries"]):
+        if claims(entries[name], writer):
+            _drop_claim(folder, name, entries, writer)
     remove_stale_staging(folder, only_dead=True)
-    if _is_real_file(folder / MANIFEST):
+    if is_real_file(folder / MANIFEST):
         leftovers = [p for p in folder.iterdir() if p.name != MANIFEST]
         if not leftovers:
             (folder / MANIFEST).unlink()
+        elif entries != man["entries"]:
+            write_manifest(folder, set(entries), man["dirs"], entries)
     for d in reversed(chain):
         try:
             os.rmdir(d)
         except OSError:
             return d != folder and not os.path.lexists(folder)
     return True
+
+
+def folder_writers(folder: Path) -> set[str]:
+    """The commands whose files the folder's manifest lists ('?' for an older tmm's, unknown)."""
+    out = set()
+    for e in read_manifest(folder)["entries"].values():
+        out.update(e["by"] if e.get("by") is not None else ("?",))
+    return out
 
 
 # writers -----------------------------------------------------------------------------------------
@@ -403,7 +520,15 @@ def staged_names(tmp: Path) -> list[str]:
     return sorted(p.name for p in Path(tmp).iterdir() if p.name != STAGING_MARK)
 
 
+def final_names(names, kept) -> list[str]:
+    """The names as they landed: a file of the user's kept makes its new version land beside it.
+
+    >>> final_names(["a.png", "note.typ"], [Kept("f", "note.typ", beside="note.new.typ")])
+    ['a.png', 'note.new.typ']
+    """
+    moved = {k.name: k.beside for k in kept if k.beside}
+    return sorted(moved.get(n, n) for n in names)
+
+
 def write_text(path: Path, text: str) -> None:
     Path(path).write_text(text, encoding="utf-8")
-
-

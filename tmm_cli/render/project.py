@@ -30,7 +30,8 @@ def markdown_report(result, lang: str, figure_files: list[str]) -> str:
 def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", plots: bool = True,
                          report: str | None = "md", figure_cache: dict | None = None, title=None,
                          note_template: str | None = None, sheets: bool = False, meanwhile=None,
-                         shared_figures=None):
+                         shared_figures=None, writer: str = "project", force: bool = False, kept: list | None = None,
+                         root: Path | None = None):
     """Write results.json, cam_profile.csv, the figures and the report into `folder`, atomically.
 
     `report`: "md" writes report.md, "pdf" the typeset note (note.pdf, its source note.typ and
@@ -48,16 +49,21 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     `sheets` adds the A1 drawings sheet3.dxf/.pdf and sheet4.dxf/.pdf (render/sheets).
     `meanwhile` (no arguments) runs in this process while a forked child starts on the figures,
     before this process takes its share (`tmm project` renders its terminal report there).
+    `writer` names the command in the folder's manifest ("project", or "batch" for a batch's row,
+    whose folder must lie inside `root` through real folders only); a file the user changed since
+    is kept and the new version written beside it, or replaced after a backup with `force`
+    (output/folder.py): each such file is appended to `kept`.
     Returns (the JSON document, the sorted list of file names written).
     """
-    from ..output.folder import staged_dir, staged_names, write_text
+    from ..output.folder import final_names, staged_dir, staged_names, write_text
     from .data.cam import profile_csv
     from .data.jsontext import write_json
     from .note import NOTE_FIGURES
 
     doc = project_document(result, lang)
     # the project owns its folder: nothing of an earlier run (other options) stays beside it
-    with staged_dir(folder, owns=("*",)) as tmp:
+    found: list = []
+    with staged_dir(folder, owns=("*",), writer=writer, force=force, kept=found, root=root) as tmp:
         svg = set(NOTE_FIGURES) if report == "pdf" and fmt != "svg" else set()  # SVG copies for the note
         cached, finish_cached = set(), lambda: None
         if plots and figure_cache is not None:
@@ -99,9 +105,11 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
                 note_error = _write_note(tmp, result, lang, title, fmt, note_template)
         # ----------------------------------------------------------------------------------------
         written = staged_names(tmp)
+    if kept is not None:
+        kept.extend(found)
     if note_error is not None:
         raise note_error
-    return doc, written
+    return doc, final_names(written, found)
 
 
 def _write_linkage_data(tmp: Path, s2, lang: str) -> None:

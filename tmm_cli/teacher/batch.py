@@ -1,11 +1,15 @@
 """Teachers' batch: many variants or a class roster, run in parallel, one summary row each.
 
-A failing row never stops the batch: it becomes a row with its reason. The summary row is read
-from the same JSON document that ``results.json`` holds, so the summary can never disagree with
-the per-variant folders. The output folder's manifest records the folders of the last batch run:
-a new run first removes them (only the files `tmm` wrote), so ``summary.csv`` always describes
-exactly the folders beside it, and two rosters or runs are never mixed. Ctrl-C or SIGTERM stop the
-workers at once; the summary then lists what finished and marks the rest "not run".
+A failing row never stops the batch: it becomes a row with its reason, and so does a row whose
+worker process died (teacher/workers.py: the other rows go on). The summary row is read from the
+same JSON document that ``results.json`` holds, so the summary can never disagree with the
+per-variant folders. The output folder's manifest records the folders of the last batch run: a
+new run first removes them (only the files the batch wrote, unchanged since), so ``summary.csv``
+always describes exactly the folders beside it, and two rosters or runs are never mixed. A batch
+never takes over a folder another command wrote (`tmm project --out` the same folder), never
+writes through a student folder that is a link, and a batch with no row to run changes nothing.
+Ctrl-C, SIGTERM or SIGHUP stop the workers at once; the summary then lists what finished and
+marks the rest "not run".
 """
 
 from __future__ import annotations
@@ -27,12 +31,8 @@ class BatchSummary:
     failed: tuple[dict, ...] = field(default=())
     complete: bool = True
     not_run: int = 0
-
-
-# --variants ------------------------------------------------------------------------------------
-
-
-# --roster --------------------------------------------------------------------------------------
+    summary_path: str = ""  # '' when nothing ran (and nothing was written)
+    kept: tuple = ()  # files of the user's met (a summary.csv the teacher edited): output/folder.Kept
 
 
 # rows ------------------------------------------------------------------------------------------
@@ -41,14 +41,21 @@ class BatchSummary:
 _FIGURE_CACHE: dict = {}  # per worker process: drawings shared by rows (the reducer's at one crank speed, a spur mesh)
 _FIGURE_CACHE_SIZE = 48  # drawings kept, the least recently used dropped first (a few MB; a roster stays small)
 _SHARED: list = []  # this worker's SharedFigures: the same drawings, between the batch's workers
+WRITER = "batch"  # the batch's name in the manifests of the folders it writes
 
 
-def _worker_start(shared_root: str | None) -> None:
-    """Initializer of a batch worker process: signals (interrupt.worker_init) and the batch's
-    folder of shared drawings."""
+def _worker_start(parent_pid: int | None, shared_root: str | None) -> None:
+    """Initializer of a batch worker process: signals (interrupt.worker_init; if the batch dies,
+    the worker removes the shared drawings the batch can no longer remove) and the batch's folder
+    of shared drawings."""
     from ..output.interrupt import worker_init
 
-    worker_init()
+    orphaned = ()
+    if shared_root:
+        import shutil
+
+        orphaned = (lambda: shutil.rmtree(shared_root, ignore_errors=True),)
+    worker_init(parent_pid, orphaned)
     _SHARED.clear()
     if shared_root:
         from ..render.figures.shared import SharedFigures
@@ -101,13 +108,18 @@ def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, f
                              linkage_name=Path(job.mechanism).name if job.mechanism else "")
         folder = Path(out_dir) / job.folder
         title = job_title(job, title_base)
+        kept: list = []
         doc, _ = write_project_folder(result, folder, lang, fmt=fmt, plots=plots, report=report,
                                       figure_cache=_FIGURE_CACHE, title=title, sheets=sheets,
-                                      shared_figures=_SHARED[0] if _SHARED else None)
+                                      shared_figures=_SHARED[0] if _SHARED else None, writer=WRITER,
+                                      kept=kept, root=Path(out_dir))
         while len(_FIGURE_CACHE) > _FIGURE_CACHE_SIZE:
             _FIGURE_CACHE.pop(next(iter(_FIGURE_CACHE)))
         codes = [n.code for n in result.notes if n.level == "warning"]
-        return summary_row(job, doc, str(folder), codes)
+        row = summary_row(job, doc, str(folder), codes)
+        if kept:
+            row["kept"] = tuple(kept)
+        return row
     except TmmError as exc:
         return failure_row(job, str(exc))
     except Exception as exc:  # a bug must not stop the class's batch; it is reported in its row
@@ -117,88 +129,106 @@ def run_job(job: BatchJob, out_dir: str, variants_file: str | None, lang: str, f
 # the run ---------------------------------------------------------------------------------------
 
 
-def prepare_out_dir(out_dir: Path, jobs: list[BatchJob]) -> None:
-    """Before any work: refuse a foreign summary.csv, remove the folders of the previous batch
-    run (only the files tmm wrote) and the old summary, record the folders this run will write."""
+def prepare_out_dir(out_dir: Path, jobs: list[BatchJob]) -> list[str]:
+    """Before any work: refuse a foreign summary.csv and a folder another command wrote where a
+    row is to go; remove the folders of the previous batch run (only the files the batch wrote,
+    unchanged since) and the old summary (unless the user changed it), record the folders this
+    run will write. Returns the folders of rows that cannot be written (a link on the way)."""
     from ..output.folder import (
+        check_inside,
+        folder_writers,
         make_dirs,
         read_manifest,
         refuse_foreign,
         remove_written_tree,
+        unchanged,
         write_manifest,
     )
 
     make_dirs(out_dir)
     man = read_manifest(out_dir)
     refuse_foreign(out_dir, ["summary.csv"], man["files"])
-    for rel in sorted(man["dirs"]):
-        remove_written_tree(out_dir, rel)
-    files = set(man["files"])
-    if "summary.csv" in files and (out_dir / "summary.csv").is_file() and not (out_dir / "summary.csv").is_symlink():
-        (out_dir / "summary.csv").unlink()
-    files.discard("summary.csv")
-    write_manifest(out_dir, files, {j.folder for j in jobs})
-    # (group.html stays until the new one replaces it: it is written with summary.csv)
-
-
-def _cleanup_after_stop(out_dir: Path, jobs: list[BatchJob], done: set[int], dead_pids=()) -> None:
-    """After the workers were stopped: their staging folders, and the folders of rows whose result
-    never reached the summary (a worker killed while moving its files in, or just after), so the
-    summary describes exactly the folders beside it."""
-    from ..output.folder import (
-        MANIFEST,
-        remove_stale_staging,
-        remove_temp_file,
-        remove_written_tree,
-    )
-
-    parents = {out_dir} | {(out_dir / j.folder).parent for j in jobs}
-    for p in parents:
-        remove_stale_staging(p, only_dead=True, dead_pids=set(dead_pids))
-    for folder in parents | {out_dir / j.folder for j in jobs}:  # a worker killed while writing a manifest
-        for pid in dead_pids:
-            remove_temp_file(folder / f".{MANIFEST}.tmp-{pid}")
-    for i, j in enumerate(jobs):
-        if i not in done:
-            remove_written_tree(out_dir, j.folder)
-            if "/" in j.folder:
-                try:
-                    os.rmdir(out_dir / j.folder.split("/")[0])
-                except OSError:
-                    pass
-
-
-def _stop_pool(pool) -> list[int]:
-    """Stop the worker processes now: SIGTERM (they remove their staging folder), then SIGKILL;
-    returns their pids."""
-    import time
-
-    procs = list((getattr(pool, "_processes", None) or {}).values())
-    for p in procs:
+    blocked = []
+    for j in jobs:
         try:
-            p.terminate()
-        except Exception:
-            pass
-    deadline = time.monotonic() + 1.0
-    for p in procs:
-        p.join(max(0.0, deadline - time.monotonic()))
-    for p in procs:
-        if p.is_alive():
-            p.kill()
-            p.join(1.0)
-    pool.shutdown(wait=False, cancel_futures=True)
-    return [p.pid for p in procs]
+            check_inside(out_dir, out_dir / j.folder)
+        except TmmError:
+            blocked.append(j.folder)
+            continue
+        if j.folder in man["dirs"]:
+            continue
+        others = folder_writers(out_dir / j.folder) - {WRITER}
+        if others:
+            who = ", ".join(f"tmm {w}" for w in sorted(others) if w != "?") or "tmm"
+            raise TmmError(f"{out_dir / j.folder} holds the results of {who}, not of a batch; a batch never takes "
+                           f"over such a folder: choose another --out for the batch")
+    for rel in sorted(man["dirs"]):
+        remove_written_tree(out_dir, rel, WRITER)
+    entries = dict(man["entries"])
+    summary = out_dir / "summary.csv"
+    if "summary.csv" in entries and unchanged(summary, entries["summary.csv"]):
+        summary.unlink()
+        del entries["summary.csv"]
+    write_manifest(out_dir, set(entries), {j.folder for j in jobs}, entries)
+    # (group.html stays until the new one replaces it: it is written with summary.csv)
+    return blocked
 
 
-def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_file: str | None = None,
+def _sweep(out_dir: Path, jobs: list[BatchJob], rows, dead_pids) -> None:
+    """After workers died or were stopped: their staging folders and temporary files, and the
+    folders of `rows` whose result never reached the summary (a worker killed while moving its
+    files in, or just after), so the summary describes exactly the folders beside it."""
+    from ..output.folder import remove_stale_staging, remove_written_tree
+
+    dead = set(dead_pids)
+    places = {out_dir} | {(out_dir / j.folder).parent for j in jobs} | {out_dir / jobs[i].folder for i in rows}
+    for p in places:
+        remove_stale_staging(p, only_dead=True, dead_pids=dead)
+    for i in rows:
+        j = jobs[i]
+        remove_written_tree(out_dir, j.folder, WRITER)
+        if "/" in j.folder:
+            try:
+                os.rmdir(out_dir / j.folder.split("/")[0])
+            except OSError:
+                pass
+
+
+def _death_reason(code: int | None) -> str:
+    """Why a worker ended, from its exit code: "killed by SIGKILL", "exit status 1".
+
+    >>> _death_reason(-9), _death_reason(143), _death_reason(1)
+    ('killed by SIGKILL', 'killed by SIGTERM', 'exit status 1')
+    """
+    import signal
+
+    from ..output.interrupt import EXIT_CODES
+
+    by_code = {c: s for s, c in EXIT_CODES.items()}
+    if code is not None and code < 0:
+        try:
+            return f"killed by {signal.Signals(-code).name}"
+        except ValueError:
+            return f"killed by signal {-code}"
+    if code in by_code:
+        return f"killed by {signal.Signals(by_code[code]).name}"
+    return f"exit status {code}"
+
+
+def run_batch(jobs: list[BatchJob], bad: list, out_dir: Path, *, variants_file: str | None = None,
               lang: str = "en", fmt: str = "png", plots: bool = True, report: str | None = "md",
               jobs_n: int | None = None, progress: bool = False, csv_locale: str | None = None,
-              sheets: bool = False, title=None) -> BatchSummary:
+              sheets: bool = False, title=None, force: bool = False, say=None,
+              start_method: str | None = None) -> BatchSummary:
     """Run all jobs (in `jobs_n` processes), write out_dir/summary.csv, return the rows in order.
 
-    On Ctrl-C or SIGTERM (:class:`tmm_cli.output.interrupt.Interrupted`) the workers are stopped, the
-    summary of the finished rows is written with the rest marked "not run", and Interrupted is
-    raised again with a message saying so.
+    With no job to run (every roster row has an error) nothing in `out_dir` is touched: the rows
+    come back with their reasons and no summary is written. `say(text)` is told of a stale lock
+    taken over. `start_method` ('fork', 'spawn') overrides the platform's (teacher/workers.py).
+
+    On Ctrl-C, SIGTERM or SIGHUP (:class:`tmm_cli.output.interrupt.Interrupted`) the workers are
+    stopped, the summary of the finished rows is written with the rest marked "not run", and
+    Interrupted is raised again with a message saying so.
 
     `title` (TitleFields: tmm.toml and --teacher/--org) gives every row's title block the
     teacher, the organisation and the year; the student and group come from the roster row.
@@ -209,30 +239,42 @@ def run_batch(jobs: list[BatchJob], bad: list[dict], out_dir: Path, *, variants_
         from ..variants import load_table
 
         load_table(variants_file)
-    from ..output.folder import lock_dir, make_dirs
+    if not jobs:  # nothing to run: the earlier results stay as they are
+        rows = sorted((failure_row(b.job, b.reason) for b in bad), key=lambda r: r.get("line") or 0)
+        return BatchSummary(rows=tuple(rows), failed=tuple(rows))
+    from ..output.folder import make_dirs, remove_empty_dirs
+    from ..output.lock import batch_lock
+
+    def stale(pid: int) -> None:
+        if say is not None:
+            say(tr(lang, "took over the lock of {out}: the tmm batch that held it (process {pid}) is gone").format(
+                out=out_dir, pid=pid))
 
     created = make_dirs(out_dir)
     try:
-        with lock_dir(out_dir, wait=False, what="tmm batch"):  # two batches never mix one folder
-            prepare_out_dir(out_dir, jobs)
-            return _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale, sheets,
-                        title)
+        with batch_lock(out_dir, what="tmm batch", say=stale):  # two batches never mix one folder
+            blocked = prepare_out_dir(out_dir, jobs)
+            return _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale,
+                        sheets, force, blocked, start_method, title)
     except TmmError:
-        from ..output.folder import remove_empty_dirs
-
         remove_empty_dirs(created)
         raise
 
 
-def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale, sheets,
-         title=None) -> BatchSummary:
+def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, progress, csv_locale, sheets, force,
+         blocked, start_method, title=None) -> BatchSummary:
     import signal
 
-    from ..output.interrupt import Interrupted
+    from ..output.interrupt import STOPPING, Interrupted
 
-    n_workers = max(1, min(jobs_n or os.cpu_count() or 1, len(jobs) or 1))
     args = (str(out_dir), variants_file, lang, fmt, plots, report, sheets, title)
     results: dict[int, dict] = {}
+    for i, job in enumerate(jobs):  # a link on the way to the row's folder: the row fails, nothing is written
+        if job.folder in blocked:
+            results[i] = failure_row(job, f"{out_dir / job.folder.split('/')[0]} is a symbolic link or not a folder; "
+                                          f"a batch writes only into real folders inside {out_dir}")
+    todo = [i for i in range(len(jobs)) if i not in results]
+    n_workers = max(1, min(jobs_n or os.cpu_count() or 1, len(todo) or 1))
     stopped: KeyboardInterrupt | None = None
 
     # what every row needs, loaded once here (forked workers share it; the collector is calmed)
@@ -252,49 +294,56 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
             TimeElapsedColumn,
         )
 
-        bar = Progress(TextColumn("[bold]{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), transient=False)
-        task = bar.add_task("tmm batch", total=len(jobs))
-    pool = shared_root = None
-    try:
-        if n_workers == 1:
-            if bar is not None:
-                bar.start()
-            for i, job in enumerate(jobs):
-                results[i] = run_job(job, *args)
-                if bar is not None:
-                    bar.advance(task)
-        else:
-            import multiprocessing as mp
-            from concurrent.futures import ProcessPoolExecutor, as_completed
+        # refreshed at each row, never by a thread: a worker forked beside a thread could inherit a lock it holds
+        bar = Progress(TextColumn("[bold]{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
+                       transient=False, auto_refresh=False)
+        task = bar.add_task("tmm batch", total=len(todo))
 
-            ctx = mp.get_context("fork") if "fork" in mp.get_all_start_methods() else None
+    def advance():
+        if bar is not None:
+            bar.update(task, advance=1, refresh=True)
+
+    workers = shared_root = None
+    try:
+        if bar is not None:
+            bar.start()
+        if n_workers == 1:
+            for i in todo:
+                results[i] = run_job(jobs[i], *args)
+                advance()
+        else:
+            from ..output.lock import held_descriptors
+            from .workers import Workers
+
             if plots:  # drawings one worker made serve the others (render/figures/shared.py), removed below
                 import tempfile
 
                 shared_root = tempfile.mkdtemp(prefix="tmm-figures-")
-            pool = ProcessPoolExecutor(max_workers=n_workers, mp_context=ctx, initializer=_worker_start,
-                                       initargs=(shared_root,))
-            futures = {pool.submit(run_job, job, *args): i for i, job in enumerate(jobs)}
-            if bar is not None:  # its refresh thread only now: the workers are forked at the first submit,
-                bar.start()      # and a fork beside a running thread can inherit a lock it holds
-            for fut in as_completed(futures):
-                i = futures[fut]
-                try:
-                    results[i] = fut.result()
-                except Exception as exc:  # a crashed worker: report the row, go on
-                    results[i] = failure_row(jobs[i], f"worker failed: {exc.__class__.__name__}: {exc}")
-                if bar is not None:
-                    bar.advance(task)
-            pool.shutdown(wait=True)
+            workers = Workers(n_workers, run_job, _worker_start, (shared_root,), method=start_method,
+                              inherit=held_descriptors())
+
+            def on_result(k: int, row: dict) -> None:
+                results[todo[k]] = row
+                advance()
+
+            def on_death(k: int, code, pid: int) -> None:
+                i = todo[k]
+                results[i] = failure_row(jobs[i], f"the worker process running this row stopped "
+                                                  f"({_death_reason(code)}); the other rows went on")
+                _sweep(out_dir, jobs, [i], [pid])
+                advance()
+
+            workers.run([(jobs[i], *args) for i in todo], on_result, on_death)
+            _sweep(out_dir, jobs, [], workers.dead_pids)
     except KeyboardInterrupt as exc:
         stopped = exc
         try:  # a second Ctrl-C must not cut the clean-up short
-            old = {s: signal.signal(s, signal.SIG_IGN) for s in (signal.SIGINT, signal.SIGTERM)}
+            old = {s: signal.signal(s, signal.SIG_IGN) for s in STOPPING}
         except ValueError:  # not the main thread
             old = {}
         try:
-            pids = _stop_pool(pool) if pool is not None else []
-            _cleanup_after_stop(out_dir, jobs, set(results), pids)
+            pids = workers.stop() if workers is not None else []
+            _sweep(out_dir, jobs, [i for i in range(len(jobs)) if i not in results], pids)
         finally:
             for s, h in old.items():
                 signal.signal(s, h)
@@ -307,7 +356,8 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
             shutil.rmtree(shared_root, ignore_errors=True)
     rows = [failure_row(b.job, b.reason) for b in bad] + [results.get(i) or failure_row(job, "", status="not run") for i, job in enumerate(jobs)]
     rows.sort(key=lambda r: r.get("line") or 0)  # roster order (stable: --variants rows keep theirs)
-    write_summary_csv(out_dir / "summary.csv", rows, lang, csv_locale)
+    kept: list = []
+    path = write_summary_csv(out_dir / "summary.csv", rows, lang, csv_locale, writer=WRITER, force=force, kept=kept)
     from .group import write_batch_page
 
     write_batch_page(out_dir, rows, lang)  # group.html: the same rows, with links and the group's statistics
@@ -316,5 +366,6 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
     if stopped is not None:
         signum = getattr(stopped, "signum", signal.SIGINT)
         done = len(jobs) - not_run
-        raise Interrupted(signum, tr(lang, "interrupted: {done} of {jobs} rows finished; {v} lists them and marks the rest not run").format(done=done, jobs=len(jobs), v=out_dir / 'summary.csv'))
-    return BatchSummary(rows=tuple(rows), failed=failed, complete=True, not_run=0)
+        raise Interrupted(signum, tr(lang, "interrupted: {done} of {jobs} rows finished; {v} lists them and marks the rest "
+                                           "not run").format(done=done, jobs=len(jobs), v=path))
+    return BatchSummary(rows=tuple(rows), failed=failed, complete=True, not_run=0, summary_path=str(path), kept=tuple(kept))

@@ -320,9 +320,10 @@ def read_check_json(out_dir: Path) -> dict | None:
 
 
 def write_group_check(out_dir: Path, group, lang: str, csv_locale: str, rtol_pct: float, sheets, *, pdf: bool = False,
-                      feedback: bool = True) -> list[str]:
+                      feedback: bool = True, kept: list | None = None) -> list[str]:
     """The files of a group check: feedback/check-<name>.md (.pdf), check.csv, check.md, check.json
-    and group.html, each written atomically and recorded as ours. Returns the names written."""
+    and group.html, each written atomically and recorded as ours. Returns the names written (a file
+    the teacher changed since is kept and the new one written beside it: appended to `kept`)."""
     from ..output.folder import staged_dir, write_owned
     from ..render.data.check import check_csv, check_json
     from ..render.feedback import FEEDBACK_DIR, write_feedback
@@ -331,14 +332,15 @@ def write_group_check(out_dir: Path, group, lang: str, csv_locale: str, rtol_pct
 
     written = []
     if feedback and any(rep.fname for rep in group.reports):
-        with staged_dir(Path(out_dir) / FEEDBACK_DIR, owns=("check-*.md", "check-*.pdf")) as tmp:
+        with staged_dir(Path(out_dir) / FEEDBACK_DIR, owns=("check-*.md", "check-*.pdf"), writer="check", kept=kept) as tmp:
             write_feedback(tmp, group.reports, lang, pdf=pdf)
         written.append(f"{FEEDBACK_DIR}/")
-    write_owned(out_dir, "check.csv", check_csv(group, lang, csv_locale))
-    write_owned(out_dir, "check.md", group_markdown(group, lang, rtol_pct, sheets).encode("utf-8"))
-    write_owned(out_dir, "check.json", check_json(group, lang))
-    write_owned(out_dir, PAGE, group_html(check_page(out_dir, group, lang, rtol_pct, sheets)).encode("utf-8"))
-    return written + ["check.csv", "check.md", "check.json", PAGE]
+    for name, data in (("check.csv", check_csv(group, lang, csv_locale)),
+                       ("check.md", group_markdown(group, lang, rtol_pct, sheets).encode("utf-8")),
+                       ("check.json", check_json(group, lang)),
+                       (PAGE, group_html(check_page(out_dir, group, lang, rtol_pct, sheets)).encode("utf-8"))):
+        written.append(write_owned(out_dir, name, data, writer="check", kept=kept).name)
+    return written
 
 
 def write_batch_page(out_dir: Path, rows: list[dict], lang: str, tolerance_pct: float | None = None) -> str:
@@ -347,8 +349,7 @@ def write_batch_page(out_dir: Path, rows: list[dict], lang: str, tolerance_pct: 
     from ..render.html.group import group_html
 
     page = batch_page(out_dir, rows, lang, tolerance_pct, read_check_json(out_dir))
-    write_owned(out_dir, PAGE, group_html(page).encode("utf-8"))
-    return PAGE
+    return write_owned(out_dir, PAGE, group_html(page).encode("utf-8"), writer="batch").name
 
 
 

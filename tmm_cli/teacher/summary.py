@@ -93,10 +93,12 @@ def summary_row(job: BatchJob, doc: dict, folder: str, codes=()) -> dict:
     return row
 
 
-def write_summary_csv(path: Path, rows: list[dict], lang: str = "en", csv_locale: str = "en") -> None:
-    """summary.csv, written atomically and recorded in the folder's manifest."""
+def write_summary_csv(path: Path, rows: list[dict], lang: str = "en", csv_locale: str = "en", writer: str | None = None,
+                      force: bool = False, kept: list | None = None) -> Path:
+    """summary.csv, written atomically and recorded in the folder's manifest; returns the path
+    written (``summary.new.csv`` beside a summary.csv the teacher changed, see output/folder.py)."""
     from ..output.folder import write_owned
     from ..render.data.summary import summary_csv
 
     path = Path(path)
-    write_owned(path.parent, path.name, summary_csv(rows, lang, csv_locale))
+    return write_owned(path.parent, path.name, summary_csv(rows, lang, csv_locale), writer=writer, force=force, kept=kept)

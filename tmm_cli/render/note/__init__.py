@@ -10,16 +10,18 @@ same document as Markdown. Nothing is computed here: every number is read from t
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 from ...errors import TmmError
+from ...limits import NOTE_TEMPLATE_BYTES
 
 STYLE_FILE = "note-style.typ"
 NOTE_FILES = ("note.typ", STYLE_FILE, "note.pdf")
 # the figures of the note, in its order (cam_profile_scaled is a drawing at scale, not a figure)
 NOTE_FIGURES = ("cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle",
                 "gears_planetary", "gears_assembly", "gears_mesh")
-MAX_TEMPLATE_BYTES = 1024 * 1024
+MAX_TEMPLATE_BYTES = NOTE_TEMPLATE_BYTES
 
 TEXTBOOK = {
     "ru": "Пожбелко, В. И. Курсовое проектирование по теории механизмов и машин : учебное пособие. Ч. 2 / "
@@ -38,17 +40,16 @@ def default_template() -> str:
 
 def read_template(path) -> str:
     """A department's style file; TmmError if it cannot be read as typst source."""
+    from ...inputs.files import read_file
+
     p = Path(path)
+    if not os.path.exists(p):
+        raise TmmError(f"note template {p} does not exist; give a typst file (start from tmm's note-style.typ, see docs/note.md)")
+    raw = read_file(p, f"note template {p}", MAX_TEMPLATE_BYTES)  # a regular file, its size checked first
     try:
-        if not p.is_file():
-            raise TmmError(f"note template {p} does not exist; give a typst file (start from tmm's note-style.typ, see docs/note.md)")
-        if p.stat().st_size > MAX_TEMPLATE_BYTES:
-            raise TmmError(f"note template {p} is larger than 1 MiB; it should hold only the note's style")
-        return p.read_text(encoding="utf-8-sig")
+        return raw.decode("utf-8-sig")
     except UnicodeDecodeError:
         raise TmmError(f"note template {p} is not UTF-8 text; save it as UTF-8") from None
-    except OSError as exc:
-        raise TmmError(f"cannot read note template {p} ({exc.strerror})") from None
 
 
 def note_meta(result, lang: str, title) -> dict:
@@ -197,37 +198,21 @@ def note_source(doc, meta: dict) -> str:
     return doc.to_typst(head)
 
 
-def _typst_error(exc: Exception) -> str:
-    """'unknown variable: n1 at note.typ:2:7' from a typst error (its diagnostic names the place)."""
-    import re
-
-    message = getattr(exc, "message", None) or next((ln.strip() for ln in str(exc).splitlines() if ln.strip()),
-                                                     exc.__class__.__name__)
-    where = re.search(r"┌─\s*(\S+:\d+:\d+)", str(getattr(exc, "diagnostic", "") or ""))
-    return f"{message} at {where.group(1)}" if where else str(message)
-
-
 def compile_note(folder: Path, source: str = "note.typ", output: str = "note.pdf") -> Path:
-    """Compile folder/source to folder/output; TmmError (one line) on any typst error."""
-    try:
-        import typst
-    except ImportError:  # pragma: no cover - typst is a dependency
-        raise TmmError("the typst package is missing; reinstall tmm (pip install tmm) to write the note") from None
-    folder = Path(folder)
-    try:
-        typst.compile(str(folder / source), output=str(folder / output), root=str(folder))
-    except Exception as exc:  # typst.TypstError and its relatives
-        raise TmmError(f"the note could not be typeset ({_typst_error(exc)}); check the note template or "
-                       f"{source}") from None
-    return folder / output
+    """Compile folder/source to folder/output (a folder holding only what tmm wrote: the staging
+    folder) in a child process (render/note/typeset.py); TmmError (one line) on any failure."""
+    from .typeset import typeset
+
+    return typeset(Path(folder), source, output)
 
 
 def recompile(path: Path) -> Path:
     """`tmm note`: compile an edited note.typ (a folder holding it, or the .typ file) to PDF beside it.
 
-    The PDF is first written under a temporary name, so a failed compile keeps the old PDF.
+    typst's root is a private copy of the folder's regular files (no link is followed, nothing
+    outside the folder is read), and the PDF replaces the old one only once it is complete.
     """
-    import os
+    from .typeset import typeset_in_copy
 
     path = Path(path)
     src = path / "note.typ" if path.is_dir() else path
@@ -235,15 +220,7 @@ def recompile(path: Path) -> Path:
         raise TmmError(f"no {src} here; run tmm note in the folder of the note (or give the .typ file)")
     if src.suffix != ".typ":
         raise TmmError(f"{src} is not a typst file (.typ)")
-    tmp = f".{src.stem}.tmp.pdf"
-    try:
-        compile_note(src.parent, src.name, tmp)
-        os.replace(src.parent / tmp, src.with_suffix(".pdf"))
-    except OSError as exc:
-        raise TmmError(f"cannot write {src.with_suffix('.pdf')} ({exc.strerror})") from None
-    finally:
-        (src.parent / tmp).unlink(missing_ok=True)
-    return src.with_suffix(".pdf")
+    return typeset_in_copy(src.parent, src.name, src.with_suffix(".pdf"))
 
 
 def write_note(folder: Path, result, lang: str, title, figures: dict[str, str], template: str | None = None) -> list[str]:

@@ -81,5 +81,9 @@ def print_batch(console, summary, out_dir: Path, lang: str) -> None:
             console.print(f"[red]✘[/] {escape(str(r['student']))}: {escape(error_text(str(r['error']), lang))}")
     ok = len(summary.rows) - len(summary.failed)
     n_failed = sum(r["status"] == "failed" for r in summary.rows)
-    path = escape(str(Path(out_dir) / "summary.csv"))
+    if not summary.summary_path:  # no row could run: nothing was written
+        console.print(tr(lang, "no row can run: nothing was run, and {out} was left as it was").format(
+            out=escape(str(out_dir))))
+        return
+    path = escape(summary.summary_path)
     console.print(tr(lang, "{ok} done, {n_failed} failed; summary: {path}").format(ok=ok, n_failed=n_failed, path=path))
