@@ -62,7 +62,7 @@ STYLE = "OpenGostTypeB-Regular"  # LibreCAD maps this name to its GOST type B fo
 FONT = "osifont.ttf"  # ships in tmm_cli/render/sheets/fonts (GPL with the font exception)
 FONT_DIR = Path(__file__).with_name("fonts")
 # characters osifont lacks, written with ones it has
-GLYPHS = str.maketrans({"′": "'", "−": "-", "…": "...", "\u2009": " ", "\u202f": " ", "\xa0": " "})
+GLYPHS = str.maketrans({"′": "'", "−": "-", "→": "–", "…": "...", "\u2009": " ", "\u202f": " ", "\xa0": " "})
 
 
 def gost_scale(label: str) -> float:
