@@ -31,7 +31,6 @@ from .cam_sheet import table
 from .layout import GOST_SCALES, fit_view
 from .lever_parts import (
     GAP,
-    HEAD,
     MM,
     NUMBERS_H,
     SCALE_H,
@@ -41,11 +40,14 @@ from .lever_parts import (
     diagram_height,
     dirs_from,
     draw_links,
+    field,
     ground,
+    head,
     link_segments,
     position_numbers,
     rotation_arrow,
     scale_line,
+    shown,
     sub,
     wrap_items,
 )
@@ -91,10 +93,13 @@ def _arrow_len(size: float, biggest: float) -> float:
     return ARROW_MIN + (ARROW_MM - ARROW_MIN) * math.sqrt(max(size, 0.0) / biggest)
 
 
-def _force_label(sh: Sheet, tip, d, text: str, within, priority=6) -> None:
-    u = np.asarray(d, float)
+def _force_label(sh: Sheet, tail, tip, text: str, within, priority=6) -> None:
+    """A force's name beside its arrow's tip (a leader may start anywhere along the arrow)."""
+    tail, tip = np.asarray(tail, float), np.asarray(tip, float)
+    u = tip - tail
     u = u / (np.hypot(*u) or 1.0)
-    sh.label(text, tuple(tip), H_LABEL, within=within, dirs=dirs_from(u, 6), dists=(0.8, 2.0, 3.5), priority=priority)
+    sh.label(text, tuple(tip), H_LABEL, within=within, dirs=dirs_from(u, 6), dists=(0.8, 2.0, 3.5), priority=priority,
+             anchors=[tuple(tail + (tip - tail) * t) for t in (0.7, 0.45)])
 
 
 LABEL_PAD = (13.0, 9.0)  # [mm] beyond an arrow's tip: its name (sideways, up or down)
@@ -221,7 +226,7 @@ def _draw_group(sh: Sheet, f, s: Sheet2, group: int, i: int, lang: str, within) 
         u = np.array([v.real, v.imag]) / abs(v)
         b = a + u * _arrow_len(abs(v), biggest)
         _arrow(sh, a, b, "Основные" if kind == "applied" else "Тонкие")
-        _force_label(sh, b, u, label, within)
+        _force_label(sh, a, b, label, within)
     for z, mom, label in _couples_on(s, group, i, lang):
         c = np.array(f.p(z.real, z.imag))
         mid, out = rotation_arrow(sh, c, 6.5, 1 if mom > 0 else -1, 45.0, "Основные")
@@ -268,13 +273,18 @@ def _polygon_size(sh: Sheet, pg, lang: str, width: float | None = None) -> tuple
     lo, hi = _polygon_extent(pg)
     w = max(hi[0] - lo[0] + POLY_PAD[0] + POLY_PAD[2], 110.0)
     n = len(wrap_items(sh, _polygon_items(pg, lang), (width or w) - 4.0))
-    return w, hi[1] - lo[1] + POLY_PAD[1] + POLY_PAD[3] + HEAD + SCALE_H + caption_height(n)
+    return w, hi[1] - lo[1] + POLY_PAD[1] + POLY_PAD[3] + head(sh, _polygon_heading(pg, lang), w) + SCALE_H \
+        + caption_height(n)
+
+
+def _polygon_heading(pg, lang: str) -> str:
+    if pg.group == 0:
+        return tr(lang, "Force polygon of the crank")
+    return tr(lang, "Force polygon of group {group}").format(group=pg.group)
 
 
 def _polygon_field(sh: Sheet, s: Sheet2, pg, box, lang: str) -> None:
-    heading = tr(lang, "Force polygon of the crank") if pg.group == 0 else tr(
-        lang, "Force polygon of group {group}").format(group=pg.group)
-    f = sh.add_field(f"polygon_{pg.group}", box, heading)
+    f = field(sh, f"polygon_{pg.group}", box, _polygon_heading(pg, lang))
     lines = wrap_items(sh, _polygon_items(pg, lang), box[2] - box[0] - 4.0)
     x0, _, x1, y1 = f.inner
     room = (x0, box[1] + caption_height(len(lines)), x1, y1 - SCALE_H)
@@ -377,11 +387,14 @@ def _lever_scale(s: Sheet2, room):
     return last
 
 
+def _lever_heading(s: Sheet2, lang: str) -> str:
+    label = s.sheet1.cycle.positions[s.force_position].label
+    return tr(lang, "Zhukovsky's lever, position {label}").format(label=label)
+
+
 def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
-    i = s.force_position
     plan = s.sheet1.plans[0].velocity
-    label = s.sheet1.cycle.positions[i].label
-    f = sh.add_field("lever", box, tr(lang, "Zhukovsky's lever, position {label}").format(label=label))
+    f = field(sh, "lever", box, _lever_heading(s, lang))
     lines = wrap_items(sh, _lever_items(s, lang), box[2] - box[0] - 4.0)
     x0, _, x1, y1 = f.inner
     room = (x0, box[1] + caption_height(len(lines)), x1, y1 - SCALE_H)
@@ -410,7 +423,7 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
         u = np.array([v.real, v.imag]) / abs(v)
         b = a + u * _arrow_len(abs(v), biggest)
         _arrow(sh, a, b, "Основные")
-        _force_label(sh, b, u, lab, room, priority=7 if balancing else 6)
+        _force_label(sh, a, b, lab, room, priority=7 if balancing else 6)
     named = set()
     centre = np.mean([at(z) for z in pts.values()], axis=0)
     for n in sorted(pts, key=lambda q: (q != plan.pole, q)):
@@ -466,15 +479,20 @@ def _diagram_items(s: Sheet2, lang: str) -> list[str]:
 def _diagrams_size(sh: Sheet, s: Sheet2, lang: str) -> tuple[float, float]:
     w = DIAGRAM_LEFT + s.scales.axis_mm + 9.0 + DIAGRAM_RIGHT
     n = len(wrap_items(sh, _diagram_items(s, lang), w - 4.0))
-    h = HEAD + sum(diagram_height([c[0] for c in curves]) + 4.0 for *_, curves in _series(s, lang)) + NUMBERS_H \
+    h = head(sh, _diagrams_heading(lang), w) + sum(diagram_height([c[0] for c in curves]) + 4.0
+                                                   for *_, curves in _series(s, lang)) + NUMBERS_H \
         + caption_height(n)
     return w, h
+
+
+def _diagrams_heading(lang: str) -> str:
+    return tr(lang, "Diagrams of the reduced moments, works and energy")
 
 
 def _diagrams_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
     d, sc = s.dynamics, s.scales
     c = s.sheet1.cycle
-    f = sh.add_field("dynamics_diagrams", box, tr(lang, "Diagrams of the reduced moments, works and energy"))
+    f = field(sh, "dynamics_diagrams", box, _diagrams_heading(lang))
     x0b, y0b, x1b, y1b = f.inner
     length = sc.axis_mm
     x0 = x0b + DIAGRAM_LEFT - 1.0 + max(0.0, (x1b - x0b) - (DIAGRAM_LEFT + length + 9.0 + DIAGRAM_RIGHT)) / 2
@@ -488,7 +506,7 @@ def _diagrams_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
         y_axis = diagram(sh, within, x0, y, length, xs, curves, name, marks)
         down = max(max(float(-np.min(cv[0])) for cv in curves), 0.0)
         y = y_axis - down - 3.0 - 4.0
-    position_numbers(sh, within, [(x0 + p.travel / sc.phi, p.label) for p in c.positions], y + 4.0)
+    position_numbers(sh, within, [(x0 + p.travel / sc.phi, p.label) for p in shown(c.positions)], y + 4.0)
     caption(sh, box, lines)
 
 
@@ -502,7 +520,7 @@ def _witt_items(s: Sheet2, lang: str) -> list[str]:
 def _wittenbauer_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
     d, fw = s.dynamics, s.flywheel
     wi = fw.wittenbauer
-    f = sh.add_field("wittenbauer", box, tr(lang, "Energy–mass diagram (Wittenbauer)"))
+    f = field(sh, "wittenbauer", box, tr(lang, "Energy–mass diagram (Wittenbauer)"))
     lines = wrap_items(sh, _witt_items(s, lang), box[2] - box[0] - 4.0)
     x0, _, x1, y1 = f.inner
     room = (x0, box[1] + caption_height(len(lines)), x1, y1 - SCALE_H)
@@ -562,12 +580,119 @@ class Layout2:
     group_scale: tuple  # (label, paper mm per real mm) of the groups' drawings
 
 
+def _series_mu() -> list[float]:
+    return sorted(float(f"{c * 10.0 ** e:.6g}") for c in (1.0, 2.0, 2.5, 4.0, 5.0) for e in range(-9, 10))
+
+
+def _lever_ks(s: Sheet2) -> list[tuple[float, float]]:
+    """(μ, drawing mm per plan mm) the lever may take, the largest drawing first: round μ from
+    μ_v/4 up to μ_v, at most LEVER_MM across (μ_v itself always)."""
+    mu_v = s.sheet1.plans[0].velocity.scale
+    lo, hi = _lever_extent(s)
+    size = float(max(hi[0] - lo[0], hi[1] - lo[1], 1e-9))
+    out = [(mu, mu_v / mu) for mu in _series_mu() if mu_v / 4.0 * (1 - 1e-9) <= mu <= mu_v * (1 + 1e-9)]
+    return [(mu, k) for mu, k in out if size * k <= LEVER_MM or k <= 1.0 + 1e-9]
+
+
+def _lever_need(sh: Sheet, s: Sheet2, lang: str, k: float, width: float | None = None) -> tuple[float, float]:
+    """(width, height) [mm] of the lever's field at k drawing mm per plan mm: the turned plan, the
+    arrows, their names, the heading, the scale and the caption."""
+    ends = [z * k for z in list(_lever_points(s).values()) + [p for p, *_ in _lever_forces(s, "en")]]
+    ends += [p * k + v for p, v in _lever_arrows(s)]
+    w = max(z.real for z in ends) - min(z.real for z in ends) + 2 * LABEL_PAD[0] + 4.0
+    w = max(w, 150.0)
+    cap = caption_height(len(wrap_items(sh, _lever_items(s, lang), (width or w) - 4.0)))
+    h = max(z.imag for z in ends) - min(z.imag for z in ends) + 2 * LABEL_PAD[1] + 4.0 + SCALE_H + cap \
+        + head(sh, _lever_heading(s, lang), width or w)
+    return w, h
+
+
+def _group_heading(s: Sheet2, g: int, lang: str) -> str:
+    if g == 0:
+        return tr(lang, "The crank")
+    return tr(lang, "Group {g} ({kind})").format(g=g, kind=s.sheet1.mechanism.groups[g - 1].kind)
+
+
+def _group_scale(sh: Sheet, s: Sheet2, lang: str, widths, h_max: float):
+    """The largest ГОСТ 2.302 scale (at most 5:1) at which every group with its arrows fits a field
+    of widths[j] × h_max; (label, factor, the height it needs)."""
+    i = s.force_position
+    for lab, fac in sorted(GOST_SCALES, key=lambda c: -c[1]):
+        if fac > 5.0:
+            continue
+        need_h, ok = 0.0, True
+        for pg, w in zip(s.polygons, widths):
+            pts, arrows = _group_drawing(s, pg.group, i, fac)
+            hd = head(sh, _group_heading(s, pg.group, lang), w)
+            room = (0.0, 0.0, w - 2.0, h_max - hd - SCALE_H - 2.0)
+            if not fit_arrows(pts, arrows, room, fac, pad=(8.0, 8.0)).fits:
+                ok = False
+                break
+            tips = [complex(p) * fac for p in pts] + [complex(p) * fac + complex(v) for p, v in arrows]
+            need_h = max(need_h, max(z.imag for z in tips) - min(z.imag for z in tips) + 2 * LABEL_PAD[1] + hd)
+        if ok:
+            return lab, fac, need_h + SCALE_H + 12.0
+    lab, fac = min(GOST_SCALES, key=lambda c: c[1])
+    return lab, fac, h_max
+
+
+def _columns(needs, width: float) -> list[float]:
+    n = len(needs)
+    spare = width - sum(needs) - GAP * (n - 1)
+    if spare >= 0:
+        return [w + spare / n for w in needs]
+    return [w * (width - GAP * (n - 1)) / sum(needs) for w in needs]
+
+
+def _left(sh: Sheet, s: Sheet2, lang: str, x0: float, x1: float, column: bool):
+    """The groups over their polygons and the lever in the left part x0…x1: the lever under them
+    across the width, or (`column`) in a column of the full height at the right; returns
+    (groups, polygons, lever box, group scale, lever's k) or None when the lever's column leaves
+    the groups no room."""
+    y0, y1 = FRAME[1] + GAP, FRAME[3] - GAP
+    sizes = [_polygon_size(sh, pg, lang) for pg in s.polygons]
+    needs = [max(w, 100.0) for w, _ in sizes]
+    h_poly = max(h for _, h in sizes)
+    ks = _lever_ks(s)
+    if column:
+        for mu, k in ks:
+            lw, lh = _lever_need(sh, s, lang, k)
+            if lh <= y1 - y0 and x1 - x0 - lw - GAP >= sum(needs) + GAP * (len(needs) - 1):
+                break
+        else:
+            return None
+        lever = (x1 - lw, y0, x1, y1)
+        widths = _columns(needs, lever[0] - GAP - x0)
+        lab, fac, h_need = _group_scale(sh, s, lang, widths, (y1 - y0) - GAP - h_poly)
+        h_groups = (y1 - y0) - GAP - h_poly
+    else:
+        widths = _columns(needs, x1 - x0)
+        _, h_lever_min = _lever_need(sh, s, lang, ks[-1][1], x1 - x0)
+        rest = (y1 - y0) - 2 * GAP - h_poly
+        if rest - h_lever_min < 120.0:  # the polygons give way (drawn at a larger μ_F, said under them)
+            h_poly = max(90.0, (y1 - y0) - 2 * GAP - 120.0 - h_lever_min)
+            rest = (y1 - y0) - 2 * GAP - h_poly
+        lab, fac, h_need = _group_scale(sh, s, lang, widths, max(rest - h_lever_min, 120.0))
+        h_groups = min(max(rest - h_lever_min, 120.0), h_need)
+        lever = (x0, y0, x1, y1 - h_groups - h_poly - 2 * GAP)
+        k = next((k for _, k in ks if _lever_need(sh, s, lang, k, x1 - x0)[1] <= lever[3] - lever[1]
+                  and _lever_need(sh, s, lang, k, x1 - x0)[0] <= x1 - x0), ks[-1][1])
+    groups, polygons = [], []
+    x = x0
+    for w in widths:
+        groups.append((x, y1 - h_groups, x + w, y1))
+        polygons.append((x, y1 - h_groups - GAP - h_poly, x + w, y1 - h_groups - GAP))
+        x += w + GAP
+    return groups, polygons, lever, (lab, fac), k
+
+
 def layout(sh: Sheet, s: Sheet2, lang: str, rows: int) -> Layout2:
     """The field boxes of sheet 2 from the measured drawings: the right column holds the diagrams
     (their size at the core's scales), the energy–mass diagram (what is left) and the table over
     the title block; the left part a column per group — the group's drawing over its polygon (the
-    polygons at the core's μ_F set the row's height) — and the lever under them."""
-    X0, Y0, X1, Y1 = FRAME
+    polygons at the core's μ_F set the row's height) — and the lever under them or, when that
+    gives the drawings larger scales (a tall lever), in a column of its own at their right."""
+    X0, _, X1, Y1 = FRAME
     dw, dh = _diagrams_size(sh, s, lang)
     wr = max(dw, 215.0)
     xr0, xr1 = X1 - GAP - wr, X1 - GAP
@@ -582,54 +707,10 @@ def layout(sh: Sheet, s: Sheet2, lang: str, rows: int) -> Layout2:
         diagrams = (xr0, table_box[3] + GAP, xr1, Y1 - GAP)
         witt = None
     xl0, xl1 = X0 + GAP, xr0 - GAP
-    n = len(s.polygons)
-    sizes = [_polygon_size(sh, pg, lang) for pg in s.polygons]
-    need = [max(w, 100.0) for w, _ in sizes]
-    spare = (xl1 - xl0) - sum(need) - GAP * (n - 1)
-    widths = [w + spare / n for w in need] if spare >= 0 else [w * (xl1 - xl0 - GAP * (n - 1)) / sum(need) for w in need]
-    # heights: the polygons' row at its need; the groups take the largest ГОСТ 2.302 scale at
-    # which every group fits above it with the lever's least room (at its plan's μ_v) left below;
-    # the lever takes the rest
-    i = s.force_position
-    h_poly = max(h for _, h in sizes)
-    rest = (Y1 - Y0) - 4 * GAP - h_poly
-    lever_w = xl1 - xl0
-    cap = caption_height(len(wrap_items(sh, _lever_items(s, lang), lever_w - 4.0)))
-    ends = list(_lever_points(s).values()) + [p + v for p, v in _lever_arrows(s)]
-    h_lever_min = max(z.imag for z in ends) - min(z.imag for z in ends) + 2 * LABEL_PAD[1] + 2.0 + HEAD + SCALE_H + cap
-    if rest - h_lever_min < 120.0:  # the polygons give way (drawn at a larger μ_F, said under them)
-        h_poly = max(90.0, (Y1 - Y0) - 4 * GAP - 120.0 - h_lever_min)
-        rest = (Y1 - Y0) - 4 * GAP - h_poly
-    h_groups_max = max(rest - h_lever_min, 120.0)
-    best, h_groups = None, h_groups_max
-    for lab, fac in sorted(GOST_SCALES, key=lambda c: -c[1]):
-        if fac > 5.0:
-            continue
-        need_h = 0.0
-        ok = True
-        for pg, w in zip(s.polygons, widths):
-            pts, arrows = _group_drawing(s, pg.group, i, fac)
-            room = (0.0, 0.0, w - 2.0, h_groups_max - HEAD - SCALE_H - 2.0)
-            ok = ok and fit_arrows(pts, arrows, room, fac, pad=(8.0, 8.0)).fits
-            if not ok:
-                break
-            tips = [complex(p) * fac for p in pts] + [complex(p) * fac + complex(v) for p, v in arrows]
-            need_h = max(need_h, max(z.imag for z in tips) - min(z.imag for z in tips) + 2 * LABEL_PAD[1])
-        if ok:
-            best = (lab, fac)
-            h_groups = min(h_groups_max, need_h + HEAD + SCALE_H + 12.0)
-            break
-    if best is None:
-        best = min(GOST_SCALES, key=lambda c: c[1])
-    y_top = Y1 - GAP
-    groups, polygons = [], []
-    x = xl0
-    for w in widths:
-        groups.append((x, y_top - h_groups, x + w, y_top))
-        polygons.append((x, y_top - h_groups - GAP - h_poly, x + w, y_top - h_groups - GAP))
-        x += w + GAP
-    lever = (xl0, Y0 + GAP, xl1, polygons[0][1] - GAP)
-    return Layout2(tuple(groups), tuple(polygons), lever, diagrams, witt, table_box, best)
+    options = [o for o in (_left(sh, s, lang, xl0, xl1, False), _left(sh, s, lang, xl0, xl1, True)) if o is not None]
+    best = max(options, key=lambda o: 2.0 * math.log(o[3][1]) + math.log(o[4]) - 1e-6 * options.index(o))
+    groups, polygons, lever, scale, _ = best
+    return Layout2(tuple(groups), tuple(polygons), lever, diagrams, witt, table_box, scale)
 
 
 def _group_fields(sh: Sheet, s: Sheet2, lang: str, lay: Layout2) -> None:
@@ -638,9 +719,7 @@ def _group_fields(sh: Sheet, s: Sheet2, lang: str, lay: Layout2) -> None:
     mu = num(1.0 / (fac * MM), lang, sig=3)
     for pg, box in zip(s.polygons, lay.groups):
         g = pg.group
-        kind = "" if g == 0 else s.sheet1.mechanism.groups[g - 1].kind
-        heading = tr(lang, "The crank") if g == 0 else tr(lang, "Group {g} ({kind})").format(g=g, kind=kind)
-        f = sh.add_field(f"group_{g}", box, heading)
+        f = field(sh, f"group_{g}", box, _group_heading(s, g, lang))
         x0, y0, x1, y1 = f.inner
         room = (x0, y0, x1, y1 - SCALE_H)
         pts, arrows = _group_drawing(s, g, i, fac)

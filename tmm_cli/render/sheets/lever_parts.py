@@ -19,7 +19,7 @@ MM = 1000.0  # real millimetres per metre
 GAP = 2.0  # between fields
 LINE = 5.6  # caption line pitch (3,5 mm text)
 H_NOTE = 3.5  # captions
-HEAD = 13.0  # a field's heading (7 mm) with its gaps
+HEAD_PAD = 8.0  # a heading keeps this far from its field's sides: neighbouring headings stay apart
 SCALE_H = 10.0  # the scale line under a heading (5 mm text) with its gaps
 
 
@@ -37,6 +37,16 @@ def sub(name: str) -> str:
 def plabel(label: str) -> str:
     """A position's label as printed: the prime ('7′') stays; the sheet's font maps it to '."""
     return label
+
+
+def field(sh: Sheet, name: str, box, heading: str):
+    """A field whose heading keeps HEAD_PAD from its sides."""
+    return sh.add_field(name, box, heading, heading_pad=HEAD_PAD)
+
+
+def head(sh: Sheet, heading: str, width: float) -> float:
+    """The height the heading of a field `width` wide takes (see :func:`field`)."""
+    return sh.heading_height(heading, width, heading_pad=HEAD_PAD)
 
 
 def scale_line(sh: Sheet, f, text: str, h: float = H_LABEL) -> None:
@@ -266,6 +276,19 @@ def fixed(x: float, top: float, lang: str, sig: int = 4) -> str:
     dec = 0 if top <= 0 else max(0, sig - 1 - math.floor(math.log10(top)))
     text = num(abs(x), lang, decimals=dec)
     return "0" if float(text.replace(",", ".")) == 0.0 else text
+
+
+MAX_SHOWN = 24  # positions drawn and numbered on a scheme or under a diagram
+
+
+def shown(positions) -> list:
+    """The positions a sheet draws and numbers: all of them up to MAX_SHOWN, else every k-th of the
+    crank's regular positions and the extreme ones (the diagrams still tick every position)."""
+    regular = [p for p in positions if p.label.isdigit()]
+    if len(positions) <= MAX_SHOWN:
+        return list(positions)
+    k = math.ceil(len(regular) / MAX_SHOWN)
+    return [p for p in positions if p.extreme or (p.label.isdigit() and int(p.label) % k == 0)]
 
 
 def position_numbers(sh: Sheet, within, xs_labels, y: float, h: float = H_MIN_LABEL, rows: int = 3) -> None:

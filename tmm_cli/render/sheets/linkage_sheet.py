@@ -30,7 +30,6 @@ from .layout import fit_view
 from .lever_parts import (
     GAP,
     H_NOTE,
-    HEAD,
     MM,
     NUMBERS_H,
     SCALE_H,
@@ -40,14 +39,17 @@ from .lever_parts import (
     diagram_height,
     dirs_from,
     draw_links,
+    field,
     fixed,
     ground,
     hatched_guide,
+    head,
     link_segments,
     pins,
     position_numbers,
     rotation_arrow,
     scale_line,
+    shown,
     sub,
     wrap_items,
 )
@@ -127,7 +129,8 @@ def _diagram_series(s: Sheet1):
 def _diagrams_size(sh: Sheet, s: Sheet1, lang: str) -> tuple[float, float]:
     w = DIAGRAM_LEFT + s.scales.axis_mm + 9.0 + DIAGRAM_RIGHT
     n_cap = len(wrap_items(sh, _diagram_items(s, lang), w - 4.0))
-    h = HEAD + sum(diagram_height([y]) + 4.0 for *_, y in _diagram_series(s)) + NUMBERS_H + caption_height(n_cap)
+    h = head(sh, _diagrams_heading(s, lang), w) + sum(diagram_height([y]) + 4.0 for *_, y in _diagram_series(s)) \
+        + NUMBERS_H + caption_height(n_cap)
     return w, h
 
 
@@ -164,7 +167,8 @@ def layout(sh: Sheet, s: Sheet1, lang: str) -> Layout1:
     lo, hi = _scheme_extent(s)
     pl, pb, pr, pt = SCHEME_PAD
     sw = (hi[0] - lo[0]) * f + pl + pr + 2.0
-    shh = (hi[1] - lo[1]) * f + pb + pt + HEAD + SCALE_H + caption_height(_scheme_caption_lines(sh, s, lang, sw))
+    shh = (hi[1] - lo[1]) * f + pb + pt + head(sh, _scheme_heading(lang), sw) + SCALE_H \
+        + caption_height(_scheme_caption_lines(sh, s, lang, sw))
     dw, dh = _diagrams_size(sh, s, lang)
     wl = max(sw, dw, 240.0)
     # the plans: each row's needs
@@ -175,7 +179,8 @@ def layout(sh: Sheet, s: Sheet1, lang: str) -> Layout1:
             plo, phi = _plan_extent(plan)
             w = max(phi[0] - plo[0] + PLAN_PAD[0] + PLAN_PAD[2], 150.0)
             cap = len(wrap_items(sh, _plan_items(s, plan, pl_.position.index, lang), w - 4.0))
-            h = phi[1] - plo[1] + PLAN_PAD[1] + PLAN_PAD[3] + HEAD + SCALE_H + caption_height(cap)
+            h = phi[1] - plo[1] + PLAN_PAD[1] + PLAN_PAD[3] + head(sh, _plan_heading(plan, pl_.position.label, lang), w) \
+                + SCALE_H + caption_height(cap)
             need.append((w, h))
         rows.append(need)
     wv = max(r[0][0] for r in rows)
@@ -234,11 +239,25 @@ def _scheme_items(s: Sheet1, lang: str, reduced: str = "") -> list[str]:
     return items
 
 
+def _scheme_heading(lang: str) -> str:
+    return tr(lang, "Scheme of the mechanism in its positions")
+
+
+def _diagrams_heading(s: Sheet1, lang: str) -> str:
+    return tr(lang, "Kinematic diagrams of the output link {link}").format(link=s.mechanism.output.link)
+
+
+def _plan_heading(plan: Plan, label: str, lang: str) -> str:
+    if plan.kind == "velocity":
+        return tr(lang, "Velocity plan, position {label}").format(label=label)
+    return tr(lang, "Acceleration plan, position {label}").format(label=label)
+
+
 def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
     m, c = s.mechanism, s.cycle
     lo, hi = _scheme_extent(s)
     core = _scheme_factor(s)
-    f = sh.add_field("scheme", box, tr(lang, "Scheme of the mechanism in its positions"))
+    f = field(sh, "scheme", box, _scheme_heading(lang))
     # the scale line and the caption take their room first; the drawing is fitted to what is left
     x0, _, x1, y1 = f.inner
     room_top = y1 - SCALE_H
@@ -277,7 +296,8 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
         z = c.curve.kin.z[n] * MM
         f.poly(thin_out(np.column_stack([z.real, z.imag]), 0.5 * unit), "Тонкие", None if n in joints else "DASHED")
     ends = [p.index for p in c.positions if p.extreme == "end"]
-    for p in c.positions:
+    drawn = shown(c.positions)
+    for p in drawn:
         if p.index == 0:
             continue
         draw_links(f, link_segments(m, c.kin, p.index, unit=unit, reach=reach), "Тонкие",
@@ -296,7 +316,7 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
     mid, out = rotation_arrow(sh, o, r, m.crank.sense, 225.0)
     sh.label("ω_{1}", mid, H_LABEL, within=within, dirs=dirs_from(out, 5), dists=(1.0, 2.5, 4.5), priority=7)
     # the position numbers at the crank pin (outward from the pivot), the joints named in position 0
-    for p in c.positions:
+    for p in drawn:
         a = np.array(f.p(*(_xy(c.kin.z[m.crank.joint][p.index]))))
         d = a - o
         d = d / (np.hypot(*d) or 1.0)
@@ -330,9 +350,9 @@ def _gost(label: str, lang: str) -> str:
 
 
 def _diagrams_field(sh: Sheet, s: Sheet1, lang: str, box):
-    m, c, sc = s.mechanism, s.cycle, s.scales
+    c, sc = s.cycle, s.scales
     cv = c.curve
-    f = sh.add_field("diagrams", box, tr(lang, "Kinematic diagrams of the output link {link}").format(link=m.output.link))
+    f = field(sh, "diagrams", box, _diagrams_heading(s, lang))
     x0b, y0b, x1b, y1b = f.inner
     length = sc.axis_mm
     x0 = x0b + DIAGRAM_LEFT - 1.0 + max(0.0, (x1b - x0b) - (DIAGRAM_LEFT + length + 9.0 + DIAGRAM_RIGHT)) / 2
@@ -350,7 +370,7 @@ def _diagrams_field(sh: Sheet, s: Sheet1, lang: str, box):
         down = max(float(-ys.min()), 0.0)
         y = y_axis - down - 3.0 - 4.0
     # the position numbers under the last diagram
-    position_numbers(sh, within, [(x0 + p.travel / sc.phi, p.label) for p in c.positions], y + 4.0)
+    position_numbers(sh, within, [(x0 + p.travel / sc.phi, p.label) for p in shown(c.positions)], y + 4.0)
     caption(sh, box, lines)
     return f
 
@@ -398,9 +418,7 @@ def _plan_field(sh: Sheet, s: Sheet1, plan: Plan, box, label: str, index: int, l
     velocity = plan.kind == "velocity"
     pts = _plan_points(plan)
     lo, hi = _plan_extent(plan)
-    heading = (tr(lang, "Velocity plan, position {label}").format(label=label) if velocity else
-               tr(lang, "Acceleration plan, position {label}").format(label=label))
-    f = sh.add_field(plan.kind + "_plan_" + label.replace("′", "'"), box, heading)
+    f = field(sh, plan.kind + "_plan_" + label.replace("′", "'"), box, _plan_heading(plan, label, lang))
     lines = wrap_items(sh, _plan_items(s, plan, index, lang), box[2] - box[0] - 4.0)
     x0, _, x1, y1 = f.inner
     room = (x0, box[1] + caption_height(len(lines)), x1, y1 - SCALE_H)
