@@ -460,10 +460,10 @@ def _series(s: Sheet2, lang: str):
            ("A", sc.A, jm, [(d.A_r / sc.A, "Основные", None, tr(lang, "A_{r}")),
                             (d.A_d / sc.A, "Основные", None, tr(lang, "A_{d}"))]),
            ("ΔT", sc.T, jm, [(d.dT / sc.T, "Основные", None, "ΔT")] + (
-               [((fw.mertsalov.dT_I - fw.mertsalov.dT_I[0]) / sc.T, "Тонкие", "DASHED", "ΔT_{I}")] if fw is not None
+               [((fw.mertsalov.dT_I - fw.mertsalov.dT_I[0]) / sc.T, "Штриховые", None, "ΔT_{I}")] if fw is not None
                else [])),
            ("J", sc.J, tr(lang, "kg·m²/mm"), [(d.J_r / sc.J, "Основные", None, tr(lang, "J_{r}")),
-                                                (np.full(d.travel.shape, d.J_first) / sc.J, "Тонкие", "DASHED", None)])]
+                                                (np.full(d.travel.shape, d.J_first) / sc.J, "Штриховые", None, None)])]
     return out
 
 

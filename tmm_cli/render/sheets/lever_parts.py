@@ -249,7 +249,7 @@ def diagram(sh: Sheet, within, x0: float, y_top: float, length: float, xs, curve
         if abs(h) > 1.5:
             sh.line((x, y0), (x, y0 + h), "Тонкие")
     for x in dashed:
-        sh.line((x, y0 - down), (x, y0 + up), "Тонкие", "DASHED")
+        sh.line((x, y0 - down), (x, y0 + up), "Штриховые")
     if label_curves:
         for (vals, layer, lt, lab), yy in zip(curves, ys):
             if not lab:

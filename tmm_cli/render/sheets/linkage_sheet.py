@@ -294,14 +294,14 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
         if n in m.frame:
             continue
         z = c.curve.kin.z[n] * MM
-        f.poly(thin_out(np.column_stack([z.real, z.imag]), 0.5 * unit), "Тонкие", None if n in joints else "DASHED")
+        f.poly(thin_out(np.column_stack([z.real, z.imag]), 0.5 * unit), "Тонкие" if n in joints else "Штриховые")
     ends = [p.index for p in c.positions if p.extreme == "end"]
     drawn = shown(c.positions)
     for p in drawn:
         if p.index == 0:
             continue
-        draw_links(f, link_segments(m, c.kin, p.index, unit=unit, reach=reach), "Тонкие",
-                   "DASHED" if p.index in ends else None, unit, 0.8)
+        draw_links(f, link_segments(m, c.kin, p.index, unit=unit, reach=reach),
+                   "Штриховые" if p.index in ends else "Тонкие", None, unit, 0.8)
     draw_links(f, link_segments(m, c.kin, 0, unit=unit, reach=reach), "Основные", None, unit, 1.0)
     for n in pins(m):
         q = f.p(*(_xy(c.kin.z[n][0])))
