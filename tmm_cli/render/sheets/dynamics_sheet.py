@@ -128,6 +128,63 @@ def fit_arrows(points, arrows, room, k: float, pad=(4.0, 4.0)) -> ArrowFit:
     return ArrowFit(fits, k, ((room[0] + room[2]) / 2 - mid[0], (room[1] + room[3]) / 2 - mid[1]))
 
 
+def _seg_dist(q: np.ndarray, segs: np.ndarray) -> np.ndarray:
+    """Distances [mm] from each point q (n, 2) to the nearest of the segments (m, 2, 2)."""
+    if len(segs) == 0:
+        return np.full(len(q), np.inf)
+    a, b = segs[:, 0], segs[:, 1]
+    d = b - a
+    L2 = np.maximum((d ** 2).sum(axis=1), 1e-12)
+    t = np.clip(((q[:, None, :] - a[None]) * d[None]).sum(axis=2) / L2[None], 0.0, 1.0)
+    near = a[None] + t[..., None] * d[None]
+    return np.sqrt(((q[:, None, :] - near) ** 2).sum(axis=2)).min(axis=1)
+
+
+def place_arrows(items, segs) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Where each force's arrow goes: items are (point, unit vector, length) [paper mm], `segs` the
+    drawing's lines ((m, 2, 2) [paper mm]). An arrow starts at its point (tail there) unless it would
+    run along a line or an earlier arrow; then it ends at its point (tip there, the same line of
+    action); only when both clash is it moved 2,5 or 5 mm aside, parallel. Returns (tail, tip)."""
+    occupied = [np.asarray(segs, float).reshape(-1, 2, 2)]
+    out = []
+    for p, u, length in items:
+        p, u = np.asarray(p, float), np.asarray(u, float)
+        n = np.array([-u[1], u[0]])
+        best = None
+        for off in (0.0, 2.5, -2.5, 5.0, -5.0):
+            base = p + n * off
+            for tail, tip in ((base, base + u * length), (base - u * length, base)):
+                q = tail + np.outer(np.linspace(0.15, 0.95, 9), tip - tail)
+                near = _seg_dist(q, np.concatenate(occupied))
+                if np.count_nonzero(near < 1.2) < 3:
+                    best = (tail, tip)
+                    break
+            if best is not None:
+                break
+        if best is None:
+            best = (p, p + u * length)
+        out.append(best)
+        occupied.append(np.array([[best[0], best[1]]]))
+    return out
+
+
+def _link_lines(m, kin, i: int, names, k: float) -> np.ndarray:
+    """The lines of the links of `names` at position i [paper mm from the real origin, scale k]."""
+    segs = []
+    for sg in link_segments(m, kin, i, names=names, unit=1.0 / k):
+        if sg[0] == "line":
+            segs.append([sg[1], sg[2]])
+        elif sg[0] == "poly":
+            segs += [[a, b] for a, b in zip(sg[1][:-1], sg[1][1:])]
+        else:
+            c, angle, w, h = sg[1], sg[2], sg[3], sg[4]
+            e = complex(math.cos(angle), math.sin(angle))
+            cs = [c + (sx * w / 2 + 1j * sy * h / 2) * e / k for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+            segs += [[cs[j], cs[(j + 1) % 4]] for j in range(4)]
+    z = np.array(segs, complex).reshape(-1, 2) * k
+    return np.stack([z.real, z.imag], axis=-1)
+
+
 # ----------------------------------------------------------------------------------------------
 # the groups and their polygons
 
@@ -188,17 +245,47 @@ def _couples_on(s: Sheet2, group: int, i: int, lang: str):
     return out
 
 
+def _group_arrows(s: Sheet2, group: int, i: int, k: float, lang: str = "en"):
+    """The group's force arrows at k paper mm per real mm: (tail, tip, point) [paper mm from the real
+    origin], label, kind — placed by :func:`place_arrows` among the group's links."""
+    m, kin = s.sheet1.mechanism, s.sheet1.cycle.kin
+    items = _forces_on(s, group, i, lang)
+    biggest = max((abs(v) for _, v, _, _ in items), default=1.0) or 1.0
+    items = [x for x in items if abs(x[1]) > 1e-9 * biggest]
+    pts = [np.array([z.real, z.imag]) * k for z, *_ in items]
+    us = [np.array([v.real, v.imag]) / abs(v) for _, v, _, _ in items]
+    lens = [_arrow_len(abs(v), biggest) for _, v, _, _ in items]
+    segs = _link_lines(m, kin, i, {ln.name for ln in _group_links(s, group)}, k)
+    placed = place_arrows(list(zip(pts, us, lens)), segs)
+    return [(tail, tip, p, label, kind) for (tail, tip), p, (_, _, label, kind) in zip(placed, pts, items)]
+
+
+def _draw_arrows(sh: Sheet, origin, arrows, within, priority=6) -> None:
+    """Draw placed arrows (tail, tip, point [mm from `origin`], label, kind) and name each at its
+    free end (the tip, or the tail when the tip is at the force's point)."""
+    origin = np.asarray(origin, float)
+    for tail, tip, point, label, kind in arrows:
+        a, b = origin + tail, origin + tip
+        _arrow(sh, a, b, "Тонкие" if kind == "reaction" else "Основные")
+        if np.hypot(*(tip - point)) < 1e-6:
+            _force_label(sh, b, a, label, within, priority)
+        else:
+            _force_label(sh, a, b, label, within, priority)
+
+
 def _group_drawing(s: Sheet2, group: int, i: int, k: float):
-    """The group's points [real mm] and its arrows (point [real mm], vector [paper mm]) at k paper
-    mm per real mm: the forces' arrows and, for the moments, a ring of the arc's size."""
+    """The group's points [real mm] and its arrows' far ends as (point [real mm], vector [paper mm])
+    at k paper mm per real mm (the forces' arrows as placed, and for the moments a ring of the arc's
+    size)."""
     m, kin = s.sheet1.mechanism, s.sheet1.cycle.kin
     pts = [complex(kin.z[n][i]) * MM for n in _group_names(s, group)]
     for sg in link_segments(m, kin, i, names={ln.name for ln in _group_links(s, group)}, unit=1.0 / k):
         if sg[0] == "line":
             pts += [sg[1], sg[2]]
-    items = _forces_on(s, group, i, "en")
-    biggest = max((abs(v) for _, v, _, _ in items), default=1.0) or 1.0
-    arrows = [(z, v / abs(v) * _arrow_len(abs(v), biggest)) for z, v, _, _ in items if abs(v) > 1e-9 * biggest]
+    arrows = []
+    for tail, tip, _, _, _ in _group_arrows(s, group, i, k):
+        for end in (tail, tip):
+            arrows.append((0j, complex(end[0], end[1])))
     for z, _, _ in _couples_on(s, group, i, "en"):
         arrows += [(z, 9.0 * complex(math.cos(a), math.sin(a))) for a in (0.0, math.pi / 2, math.pi, -math.pi / 2)]
     return pts, arrows
@@ -216,17 +303,8 @@ def _draw_group(sh: Sheet, f, s: Sheet2, group: int, i: int, lang: str, within) 
             ground(sh, q)
         else:
             sh.circle(q, 1.1, "Основные")
-    items = _forces_on(s, group, i, lang)
-    biggest = max((abs(v) for _, v, _, _ in items), default=1.0) or 1.0
     centre = np.mean(list(pts.values()), axis=0)
-    for z, v, label, kind in items:
-        if abs(v) <= 1e-9 * biggest:
-            continue
-        a = np.array(f.p(z.real, z.imag))
-        u = np.array([v.real, v.imag]) / abs(v)
-        b = a + u * _arrow_len(abs(v), biggest)
-        _arrow(sh, a, b, "Основные" if kind == "applied" else "Тонкие")
-        _force_label(sh, a, b, label, within)
+    _draw_arrows(sh, f.origin, _group_arrows(s, group, i, f.scale, lang), within)
     for z, mom, label in _couples_on(s, group, i, lang):
         c = np.array(f.p(z.real, z.imag))
         mid, out = rotation_arrow(sh, c, 6.5, 1 if mom > 0 else -1, 45.0, "Основные")
@@ -345,6 +423,23 @@ def _lever_extent(s: Sheet2):
     return np.array([z.real.min(), z.imag.min()]), np.array([z.real.max(), z.imag.max()])
 
 
+def _lever_placed(s: Sheet2, k: float, lang: str = "en"):
+    """The lever's force arrows at k drawing mm per plan mm: (tail, tip, point) [mm from the pole],
+    label, kind ('balancing' for F_ур) — placed among the plan's lines by :func:`place_arrows`."""
+    plan = s.sheet1.plans[0].velocity
+    pts = _lever_points(s)
+    items = _lever_forces(s, lang)
+    biggest = max((abs(v) for _, v, _, _ in items), default=1.0) or 1.0
+    items = [x for x in items if abs(x[1]) > 1e-9 * biggest]
+    segs = np.array([[[pts[v.start].real, pts[v.start].imag], [pts[v.end].real, pts[v.end].imag]]
+                     for v in plan.vectors], float).reshape(-1, 2, 2) * k
+    ps = [np.array([z.real, z.imag]) * k for z, *_ in items]
+    placed = place_arrows([(p, np.array([v.real, v.imag]) / abs(v), _arrow_len(abs(v), biggest))
+                           for p, (_, v, _, _) in zip(ps, items)], segs)
+    return [(tail, tip, p, lab, "balancing" if bal else "applied")
+            for (tail, tip), p, (_, _, lab, bal) in zip(placed, ps, items)]
+
+
 def _lever_items(s: Sheet2, lang: str) -> list[str]:
     i = s.force_position
     lv = s.lever
@@ -358,10 +453,9 @@ def _lever_items(s: Sheet2, lang: str) -> list[str]:
 LEVER_MM = 200.0  # the lever's drawing at most this large (a larger one only crowds its field)
 
 
-def _lever_arrows(s: Sheet2):
-    items = _lever_forces(s, "en")
-    biggest = max((abs(v) for _, v, _, _ in items), default=1.0) or 1.0
-    return [(z, v / abs(v) * _arrow_len(abs(v), biggest)) for z, v, _, _ in items if abs(v) > 1e-9 * biggest]
+def _lever_arrows(s: Sheet2, k: float = 1.0):
+    """The far ends of the lever's arrows as (0, end) [mm from the pole at k] for the fitting."""
+    return [(0j, complex(*end) / 1.0) for tail, tip, *_ in _lever_placed(s, k) for end in (tail, tip)]
 
 
 def _lever_scale(s: Sheet2, room):
@@ -372,7 +466,6 @@ def _lever_scale(s: Sheet2, room):
     lo, hi = _lever_extent(s)
     size = float(max(hi[0] - lo[0], hi[1] - lo[1], 1e-9))
     pts = list(_lever_points(s).values()) + [p for p, *_ in _lever_forces(s, "en")]
-    arrows = _lever_arrows(s)
     series = sorted(float(f"{c * 10.0 ** e:.6g}") for c in (1.0, 2.0, 2.5, 4.0, 5.0) for e in range(-9, 10))
     last = None
     for mu in series:
@@ -381,7 +474,7 @@ def _lever_scale(s: Sheet2, room):
         k = mu_v / mu
         if size * k > LEVER_MM and mu < mu_v * (1 - 1e-9):
             continue
-        last = mu, fit_arrows(pts, arrows, room, k)
+        last = mu, fit_arrows(pts, _lever_arrows(s, k), room, k)
         if last[1].fits:
             return last
     return last
@@ -414,16 +507,7 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
         if np.hypot(*(b - a)) > 0.3:
             sh.line(a, b, "Основные" if v.start == plan.pole else "Тонкие")
     sh.dot(at(0j), 0.8)
-    items = _lever_forces(s, lang)
-    biggest = max((abs(v) for _, v, _, _ in items), default=1.0) or 1.0
-    for z, v, lab, balancing in items:
-        if abs(v) <= 1e-9 * biggest:
-            continue
-        a = at(z)
-        u = np.array([v.real, v.imag]) / abs(v)
-        b = a + u * _arrow_len(abs(v), biggest)
-        _arrow(sh, a, b, "Основные")
-        _force_label(sh, a, b, lab, room, priority=7 if balancing else 6)
+    _draw_arrows(sh, origin, _lever_placed(s, k, lang), room)
     named = set()
     centre = np.mean([at(z) for z in pts.values()], axis=0)
     for n in sorted(pts, key=lambda q: (q != plan.pole, q)):
@@ -598,7 +682,7 @@ def _lever_need(sh: Sheet, s: Sheet2, lang: str, k: float, width: float | None =
     """(width, height) [mm] of the lever's field at k drawing mm per plan mm: the turned plan, the
     arrows, their names, the heading, the scale and the caption."""
     ends = [z * k for z in list(_lever_points(s).values()) + [p for p, *_ in _lever_forces(s, "en")]]
-    ends += [p * k + v for p, v in _lever_arrows(s)]
+    ends += [v for _, v in _lever_arrows(s, k)]
     w = max(z.real for z in ends) - min(z.real for z in ends) + 2 * LABEL_PAD[0] + 4.0
     w = max(w, 150.0)
     cap = caption_height(len(wrap_items(sh, _lever_items(s, lang), (width or w) - 4.0)))
