@@ -330,7 +330,7 @@ def test_dashes_render_in_ezdxfs_drawing_addon():
         drawn: dict = {}
 
         class Rec(Recorder):
-            def store(self, record, properties):
+            def store(self, record, properties, drawn=drawn):
                 if properties.layer in ("Осевые", "Штриховые") and hasattr(record, "lines"):
                     ln = np.asarray(record.lines.vertices() if hasattr(record.lines, "vertices") else record.lines)
                     ln = ln.reshape(-1, 2, 2) if ln.ndim == 2 else ln
