@@ -27,6 +27,7 @@ from ...i18n import tr
 from ...i18n.numbers import num
 from ...linkage.scales import drafting_scale
 from ...linkage.sheet2 import Sheet2
+from .arrows import LABEL_PAD, arrow, arrow_len, draw_arrows, fit_arrows, place_arrows
 from .cam_sheet import table
 from .layout import GOST_SCALES, fit_view
 from .lever_parts import (
@@ -53,11 +54,8 @@ from .lever_parts import (
 )
 from .paper import FRAME, H_LABEL, TB_BOX, Sheet
 
-ARROW_MM = 28.0  # the longest force arrow on a group's or the lever's drawing (not to scale)
-ARROW_MIN = 9.0  # the shortest (a force is never too small to be seen and named)
-POLY_PAD = (10.0, 8.0, 10.0, 8.0)
-SHORT_MM = 9.0
-TARGET_MM = 160.0  # the size a group's or the lever's drawing would like (the layout shares by it)  # a polygon's vector shorter than this is named in the caption, not on the drawing
+POLY_PAD = (10.0, 8.0, 10.0, 8.0)  # [mm] around a force polygon: its names
+SHORT_MM = 9.0  # a polygon's vector shorter than this is named in the caption, not on the drawing
 ROW_H = 9.0
 H_NOTE = 3.5
 
@@ -74,98 +72,6 @@ def symbol(sym: str, lang: str) -> str:
     if sym.startswith(("Rτ", "Rn")):
         return f"R^{{{sym[1]}}}_{{{sym[2:]}}}" + tick
     return f"{sym[0]}_{{{sym[1:]}}}" + tick if len(sym) > 1 else sym + tick
-
-
-def _arrow(sh: Sheet, a, b, layer="Основные"):
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    d = b - a
-    n = float(np.hypot(*d))
-    if n < 0.3:
-        return
-    head = min(3.5, 0.4 * n)
-    sh.line(a, b - d / n * 0.6 * head, layer)
-    sh.arrow(b, d, layer, head, 1.1)
-
-
-def _arrow_len(size: float, biggest: float) -> float:
-    """An arrow's length on a drawing of forces not to scale: growing with the force, never shorter
-    than ARROW_MIN (the square root keeps the small ones visible)."""
-    return ARROW_MIN + (ARROW_MM - ARROW_MIN) * math.sqrt(max(size, 0.0) / biggest)
-
-
-def _force_label(sh: Sheet, tail, tip, text: str, within, priority=6) -> None:
-    """A force's name beside its arrow's tip (a leader may start anywhere along the arrow)."""
-    tail, tip = np.asarray(tail, float), np.asarray(tip, float)
-    u = tip - tail
-    u = u / (np.hypot(*u) or 1.0)
-    sh.label(text, tuple(tip), H_LABEL, within=within, dirs=dirs_from(u, 6), dists=(0.8, 2.0, 3.5), priority=priority,
-             anchors=[tuple(tail + (tip - tail) * t) for t in (0.7, 0.45)])
-
-
-LABEL_PAD = (13.0, 9.0)  # [mm] beyond an arrow's tip: its name (sideways, up or down)
-
-
-@dataclass(frozen=True)
-class ArrowFit:
-    """A drawing of points with force arrows of fixed paper lengths, fitted to a field."""
-
-    fits: bool
-    k: float  # paper mm per drawing unit
-    origin: tuple[float, float]  # where the drawing's (0, 0) lands
-
-
-def fit_arrows(points, arrows, room, k: float, pad=(4.0, 4.0)) -> ArrowFit:
-    """Fit points [drawing units, complex] and arrows (point [units], vector [paper mm]) at the
-    scale k into `room`, the names of the arrows beside their tips, the whole centred."""
-    pts = np.asarray(list(points), complex) * k
-    tips = np.array([complex(p) * k + complex(v) for p, v in arrows], complex) if arrows else np.zeros(0, complex)
-    xs = np.concatenate([pts.real - pad[0], pts.real + pad[0], tips.real - LABEL_PAD[0], tips.real + LABEL_PAD[0]])
-    ys = np.concatenate([pts.imag - pad[1], pts.imag + pad[1], tips.imag - LABEL_PAD[1], tips.imag + LABEL_PAD[1]])
-    lo, hi = np.array([xs.min(), ys.min()]), np.array([xs.max(), ys.max()])
-    w, h = room[2] - room[0], room[3] - room[1]
-    fits = hi[0] - lo[0] <= w + 1e-9 and hi[1] - lo[1] <= h + 1e-9
-    mid = (lo + hi) / 2
-    return ArrowFit(fits, k, ((room[0] + room[2]) / 2 - mid[0], (room[1] + room[3]) / 2 - mid[1]))
-
-
-def _seg_dist(q: np.ndarray, segs: np.ndarray) -> np.ndarray:
-    """Distances [mm] from each point q (n, 2) to the nearest of the segments (m, 2, 2)."""
-    if len(segs) == 0:
-        return np.full(len(q), np.inf)
-    a, b = segs[:, 0], segs[:, 1]
-    d = b - a
-    L2 = np.maximum((d ** 2).sum(axis=1), 1e-12)
-    t = np.clip(((q[:, None, :] - a[None]) * d[None]).sum(axis=2) / L2[None], 0.0, 1.0)
-    near = a[None] + t[..., None] * d[None]
-    return np.sqrt(((q[:, None, :] - near) ** 2).sum(axis=2)).min(axis=1)
-
-
-def place_arrows(items, segs) -> list[tuple[np.ndarray, np.ndarray]]:
-    """Where each force's arrow goes: items are (point, unit vector, length) [paper mm], `segs` the
-    drawing's lines ((m, 2, 2) [paper mm]). An arrow starts at its point (tail there) unless it would
-    run along a line or an earlier arrow; then it ends at its point (tip there, the same line of
-    action); only when both clash is it moved 2,5 or 5 mm aside, parallel. Returns (tail, tip)."""
-    occupied = [np.asarray(segs, float).reshape(-1, 2, 2)]
-    out = []
-    for p, u, length in items:
-        p, u = np.asarray(p, float), np.asarray(u, float)
-        n = np.array([-u[1], u[0]])
-        best = None
-        for off in (0.0, 2.5, -2.5, 5.0, -5.0):
-            base = p + n * off
-            for tail, tip in ((base, base + u * length), (base - u * length, base)):
-                q = tail + np.outer(np.linspace(0.15, 0.95, 9), tip - tail)
-                near = _seg_dist(q, np.concatenate(occupied))
-                if np.count_nonzero(near < 1.2) < 3:
-                    best = (tail, tip)
-                    break
-            if best is not None:
-                break
-        if best is None:
-            best = (p, p + u * length)
-        out.append(best)
-        occupied.append(np.array([[best[0], best[1]]]))
-    return out
 
 
 def _link_lines(m, kin, i: int, names, k: float) -> np.ndarray:
@@ -254,23 +160,10 @@ def _group_arrows(s: Sheet2, group: int, i: int, k: float, lang: str = "en"):
     items = [x for x in items if abs(x[1]) > 1e-9 * biggest]
     pts = [np.array([z.real, z.imag]) * k for z, *_ in items]
     us = [np.array([v.real, v.imag]) / abs(v) for _, v, _, _ in items]
-    lens = [_arrow_len(abs(v), biggest) for _, v, _, _ in items]
+    lens = [arrow_len(abs(v), biggest) for _, v, _, _ in items]
     segs = _link_lines(m, kin, i, {ln.name for ln in _group_links(s, group)}, k)
     placed = place_arrows(list(zip(pts, us, lens)), segs)
     return [(tail, tip, p, label, kind) for (tail, tip), p, (_, _, label, kind) in zip(placed, pts, items)]
-
-
-def _draw_arrows(sh: Sheet, origin, arrows, within, priority=6) -> None:
-    """Draw placed arrows (tail, tip, point [mm from `origin`], label, kind) and name each at its
-    free end (the tip, or the tail when the tip is at the force's point)."""
-    origin = np.asarray(origin, float)
-    for tail, tip, point, label, kind in arrows:
-        a, b = origin + tail, origin + tip
-        _arrow(sh, a, b, "Тонкие" if kind == "reaction" else "Основные")
-        if np.hypot(*(tip - point)) < 1e-6:
-            _force_label(sh, b, a, label, within, priority)
-        else:
-            _force_label(sh, a, b, label, within, priority)
 
 
 def _group_drawing(s: Sheet2, group: int, i: int, k: float):
@@ -304,7 +197,7 @@ def _draw_group(sh: Sheet, f, s: Sheet2, group: int, i: int, lang: str, within) 
         else:
             sh.circle(q, 1.1, "Основные")
     centre = np.mean(list(pts.values()), axis=0)
-    _draw_arrows(sh, f.origin, _group_arrows(s, group, i, f.scale, lang), within)
+    draw_arrows(sh, f.origin, _group_arrows(s, group, i, f.scale, lang), within)
     for z, mom, label in _couples_on(s, group, i, lang):
         c = np.array(f.p(z.real, z.imag))
         mid, out = rotation_arrow(sh, c, 6.5, 1 if mom > 0 else -1, 45.0, "Основные")
@@ -386,7 +279,7 @@ def _polygon_field(sh: Sheet, s: Sheet2, pg, box, lang: str) -> None:
     tips = [origin + k * np.array([t.real, t.imag]) for t in _polygon_tips(pg)]
     sh.dot(tips[0], 0.7)
     for v, a, b in zip(pg.vectors, tips[:-1], tips[1:]):
-        _arrow(sh, a, b, "Тонкие" if v.kind == "unknown" else "Основные")
+        arrow(sh, a, b, "Тонкие" if v.kind == "unknown" else "Основные")
         d = b - a
         n = float(np.hypot(*d))
         if n >= SHORT_MM:
@@ -434,7 +327,7 @@ def _lever_placed(s: Sheet2, k: float, lang: str = "en"):
     segs = np.array([[[pts[v.start].real, pts[v.start].imag], [pts[v.end].real, pts[v.end].imag]]
                      for v in plan.vectors], float).reshape(-1, 2, 2) * k
     ps = [np.array([z.real, z.imag]) * k for z, *_ in items]
-    placed = place_arrows([(p, np.array([v.real, v.imag]) / abs(v), _arrow_len(abs(v), biggest))
+    placed = place_arrows([(p, np.array([v.real, v.imag]) / abs(v), arrow_len(abs(v), biggest))
                            for p, (_, v, _, _) in zip(ps, items)], segs)
     return [(tail, tip, p, lab, "balancing" if bal else "applied")
             for (tail, tip), p, (_, _, lab, bal) in zip(placed, ps, items)]
@@ -459,21 +352,14 @@ def _lever_arrows(s: Sheet2, k: float = 1.0):
 
 
 def _lever_scale(s: Sheet2, room):
-    """The lever's μ: the smallest round one from μ_v/4 up at which the turned plan with its
-    forces fits its field and is at most LEVER_MM across (the lever may be drawn at any scale: only
-    the arms' ratios count); (μ, the fit)."""
+    """The lever's μ and its fit in `room`: the largest drawing of :func:`_lever_ks` that fits, else
+    the first round μ beyond μ_v that does (the lever may be drawn at any scale: only the arms'
+    ratios count)."""
     mu_v = s.sheet1.plans[0].velocity.scale
-    lo, hi = _lever_extent(s)
-    size = float(max(hi[0] - lo[0], hi[1] - lo[1], 1e-9))
     pts = list(_lever_points(s).values()) + [p for p, *_ in _lever_forces(s, "en")]
-    series = sorted(float(f"{c * 10.0 ** e:.6g}") for c in (1.0, 2.0, 2.5, 4.0, 5.0) for e in range(-9, 10))
+    beyond = [(mu, mu_v / mu) for mu in _series_mu() if mu > mu_v * (1 + 1e-9)]
     last = None
-    for mu in series:
-        if mu < mu_v / 4.0 * (1 - 1e-9):
-            continue
-        k = mu_v / mu
-        if size * k > LEVER_MM and mu < mu_v * (1 - 1e-9):
-            continue
+    for mu, k in _lever_ks(s) + beyond:
         last = mu, fit_arrows(pts, _lever_arrows(s, k), room, k)
         if last[1].fits:
             return last
@@ -507,7 +393,7 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
         if np.hypot(*(b - a)) > 0.3:
             sh.line(a, b, "Основные" if v.start == plan.pole else "Тонкие")
     sh.dot(at(0j), 0.8)
-    _draw_arrows(sh, origin, _lever_placed(s, k, lang), room)
+    draw_arrows(sh, origin, _lever_placed(s, k, lang), room)
     named = set()
     centre = np.mean([at(z) for z in pts.values()], axis=0)
     for n in sorted(pts, key=lambda q: (q != plan.pole, q)):

@@ -34,11 +34,6 @@ def sub(name: str) -> str:
     return f"{head}_{{{tail}}}" if head and tail else name
 
 
-def plabel(label: str) -> str:
-    """A position's label as printed: the prime ('7′') stays; the sheet's font maps it to '."""
-    return label
-
-
 def field(sh: Sheet, name: str, box, heading: str):
     """A field whose heading keeps HEAD_PAD from its sides."""
     return sh.add_field(name, box, heading, heading_pad=HEAD_PAD)
@@ -212,7 +207,7 @@ def diagram_extent(curves) -> tuple[float, float]:
 
 DIAGRAM_TOP = 13.0  # above the highest ordinate: the arrow and the axis' name
 DIAGRAM_BOTTOM = 3.0  # below the lowest
-NUMBERS_H = 2.5 + 2 * (H_MIN_LABEL + 2.2) + H_MIN_LABEL  # two rows of position numbers
+NUMBERS_H = 2.5 + 2 * (H_MIN_LABEL + 2.2) + H_MIN_LABEL  # three rows of position numbers
 
 
 def diagram_height(curves) -> float:

@@ -59,16 +59,8 @@ SCHEME_PAD = (16.0, 16.0, 16.0, 12.0)  # [mm] around the scheme: pivots, sliders
 PLAN_PAD = (12.0, 10.0, 12.0, 8.0)  # around a plan: its labels
 DIAGRAM_LEFT = 22.0  # [mm] from the field's edge to the diagrams' ordinate axis
 DIAGRAM_RIGHT = 16.0  # beyond the abscissa's arrow
-TABLE_W = 250.0
+TABLE_W = 250.0  # the table beside the title block
 ROW_H = 9.0
-
-
-def _sub(name: str) -> str:  # kept for sheet 2
-    return sub(name)
-
-
-def _label(label: str) -> str:
-    return label
 
 
 # ----------------------------------------------------------------------------------------------
@@ -327,7 +319,7 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
     for n, q in pts.items():
         d = q - centre
         d = d / (np.hypot(*d) or 1.0)
-        sh.label(_sub(n), tuple(q), H_LABEL, within=within, dirs=dirs_from(d), dists=(1.4, 2.8, 4.5), priority=9)
+        sh.label(sub(n), tuple(q), H_LABEL, within=within, dirs=dirs_from(d), dists=(1.4, 2.8, 4.5), priority=9)
     reduced = ""
     if fit.reduced or not fit.fits:
         reduced = tr(lang, "drawn at {scale}: the scheme does not fit at μ_l = {mu} m/mm").format(
@@ -471,9 +463,9 @@ def _plan_field(sh: Sheet, s: Sheet1, plan: Plan, box, label: str, index: int, l
             group.insert(0, n)
         named.update(group)
         group.sort(key=lambda g: (g != plan.pole, g))
-        text = ", ".join(_sub(g) for g in group)
+        text = ", ".join(sub(g) for g in group)
         if plan.pole in group and plan.at_pole:
-            text += ", " + ", ".join(_sub(g) for g in plan.at_pole)
+            text += ", " + ", ".join(sub(g) for g in plan.at_pole)
         others = [at(g) for g in pts if g not in group]
         push = sum(((q - r) / max(np.hypot(*(q - r)), 1e-6) ** 2 for r in others), np.zeros(2))
         if np.hypot(*push) < 1e-9:
