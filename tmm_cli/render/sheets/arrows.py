@@ -58,14 +58,21 @@ class ArrowFit:
     origin: tuple[float, float]  # where the drawing's (0, 0) lands
 
 
-def fit_arrows(points, arrows, room, k: float, pad=(4.0, 4.0)) -> ArrowFit:
-    """Fit points [drawing units, complex] and arrows (point [units], vector [paper mm]) at the
-    scale k into `room`, the names of the arrows beside their tips, the whole centred."""
+def arrows_box(points, arrows, k: float, pad=(4.0, 4.0)):
+    """Lower-left and upper-right corners [paper mm from the drawing's origin] of points [drawing
+    units, complex] at the scale k with the arrows (point [units], vector [paper mm]) and the names
+    beside their ends."""
     pts = np.asarray(list(points), complex) * k
     tips = np.array([complex(p) * k + complex(v) for p, v in arrows], complex) if arrows else np.zeros(0, complex)
     xs = np.concatenate([pts.real - pad[0], pts.real + pad[0], tips.real - LABEL_PAD[0], tips.real + LABEL_PAD[0]])
     ys = np.concatenate([pts.imag - pad[1], pts.imag + pad[1], tips.imag - LABEL_PAD[1], tips.imag + LABEL_PAD[1]])
-    lo, hi = np.array([xs.min(), ys.min()]), np.array([xs.max(), ys.max()])
+    return np.array([xs.min(), ys.min()]), np.array([xs.max(), ys.max()])
+
+
+def fit_arrows(points, arrows, room, k: float, pad=(4.0, 4.0)) -> ArrowFit:
+    """Fit points [drawing units, complex] and arrows (point [units], vector [paper mm]) at the
+    scale k into `room`, the names of the arrows beside their tips, the whole centred."""
+    lo, hi = arrows_box(points, arrows, k, pad)
     w, h = room[2] - room[0], room[3] - room[1]
     fits = hi[0] - lo[0] <= w + 1e-9 and hi[1] - lo[1] <= h + 1e-9
     mid = (lo + hi) / 2

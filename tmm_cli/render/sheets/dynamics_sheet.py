@@ -27,7 +27,15 @@ from ...i18n import tr
 from ...i18n.numbers import num
 from ...linkage.scales import drafting_scale
 from ...linkage.sheet2 import Sheet2
-from .arrows import LABEL_PAD, arrow, arrow_len, draw_arrows, fit_arrows, place_arrows
+from .arrows import (
+    LABEL_PAD,
+    arrow,
+    arrow_len,
+    arrows_box,
+    draw_arrows,
+    fit_arrows,
+    place_arrows,
+)
 from .cam_sheet import table
 from .layout import GOST_SCALES, fit_view
 from .lever_parts import (
@@ -583,30 +591,32 @@ def _group_heading(s: Sheet2, g: int, lang: str) -> str:
     return tr(lang, "Group {g} ({kind})").format(g=g, kind=s.sheet1.mechanism.groups[g - 1].kind)
 
 
-def _group_scale(sh: Sheet, s: Sheet2, lang: str, widths, h_max: float):
-    """The largest ГОСТ 2.302 scale (at most 5:1) at which every group with its arrows fits a field
-    of widths[j] × h_max; (label, factor, the height it needs)."""
+GROUP_PAD = (8.0, 8.0)  # [mm] around a group's points (pins, blocks, names)
+
+
+def _group_scale(sh: Sheet, s: Sheet2, lang: str, poly_needs, width: float, h_max: float):
+    """The largest ГОСТ 2.302 scale (at most 5:1) at which the groups with their arrows, each over
+    its polygon (`poly_needs`: their widths), fit side by side in `width` and in `h_max` high;
+    (label, factor, the height the groups need, the columns' widths)."""
     i = s.force_position
+    n = len(s.polygons)
     for lab, fac in sorted(GOST_SCALES, key=lambda c: -c[1]):
         if fac > 5.0:
             continue
-        need_h, ok = 0.0, True
-        for pg, w in zip(s.polygons, widths):
-            pts, arrows = _group_drawing(s, pg.group, i, fac)
-            hd = head(sh, _group_heading(s, pg.group, lang), w)
-            room = (0.0, 0.0, w - 2.0, h_max - hd - SCALE_H - 2.0)
-            if not fit_arrows(pts, arrows, room, fac, pad=(8.0, 8.0)).fits:
-                ok = False
-                break
-            tips = [complex(p) * fac for p in pts] + [complex(p) * fac + complex(v) for p, v in arrows]
-            need_h = max(need_h, max(z.imag for z in tips) - min(z.imag for z in tips) + 2 * LABEL_PAD[1] + hd)
-        if ok:
-            return lab, fac, need_h + SCALE_H + 12.0
+        ws, hs = [], []
+        for pg, pw in zip(s.polygons, poly_needs):
+            lo, hi = arrows_box(*_group_drawing(s, pg.group, i, fac), fac, pad=GROUP_PAD)
+            w = max(hi[0] - lo[0] + 4.0, pw)
+            ws.append(w)
+            hs.append(hi[1] - lo[1] + head(sh, _group_heading(s, pg.group, lang), w) + SCALE_H + 4.0)
+        if sum(ws) + GAP * (n - 1) <= width and max(hs) <= h_max:
+            return lab, fac, min(h_max, max(hs) + 8.0), _columns(ws, width)
     lab, fac = min(GOST_SCALES, key=lambda c: c[1])
-    return lab, fac, h_max
+    return lab, fac, h_max, _columns(list(poly_needs), width)
 
 
 def _columns(needs, width: float) -> list[float]:
+    """Column widths: each its need and an equal share of what is spare (shrunk alike if short)."""
     n = len(needs)
     spare = width - sum(needs) - GAP * (n - 1)
     if spare >= 0:
@@ -632,18 +642,15 @@ def _left(sh: Sheet, s: Sheet2, lang: str, x0: float, x1: float, column: bool):
         else:
             return None
         lever = (x1 - lw, y0, x1, y1)
-        widths = _columns(needs, lever[0] - GAP - x0)
-        lab, fac, h_need = _group_scale(sh, s, lang, widths, (y1 - y0) - GAP - h_poly)
         h_groups = (y1 - y0) - GAP - h_poly
+        lab, fac, _, widths = _group_scale(sh, s, lang, needs, lever[0] - GAP - x0, h_groups)
     else:
-        widths = _columns(needs, x1 - x0)
         _, h_lever_min = _lever_need(sh, s, lang, ks[-1][1], x1 - x0)
         rest = (y1 - y0) - 2 * GAP - h_poly
         if rest - h_lever_min < 120.0:  # the polygons give way (drawn at a larger μ_F, said under them)
             h_poly = max(90.0, (y1 - y0) - 2 * GAP - 120.0 - h_lever_min)
             rest = (y1 - y0) - 2 * GAP - h_poly
-        lab, fac, h_need = _group_scale(sh, s, lang, widths, max(rest - h_lever_min, 120.0))
-        h_groups = min(max(rest - h_lever_min, 120.0), h_need)
+        lab, fac, h_groups, widths = _group_scale(sh, s, lang, needs, x1 - x0, max(rest - h_lever_min, 120.0))
         lever = (x0, y0, x1, y1 - h_groups - h_poly - 2 * GAP)
         k = next((k for _, k in ks if _lever_need(sh, s, lang, k, x1 - x0)[1] <= lever[3] - lever[1]
                   and _lever_need(sh, s, lang, k, x1 - x0)[0] <= x1 - x0), ks[-1][1])
@@ -693,7 +700,7 @@ def _group_fields(sh: Sheet, s: Sheet2, lang: str, lay: Layout2) -> None:
         x0, y0, x1, y1 = f.inner
         room = (x0, y0, x1, y1 - SCALE_H)
         pts, arrows = _group_drawing(s, g, i, fac)
-        fit = fit_arrows(pts, arrows, room, fac, pad=(8.0, 8.0))
+        fit = fit_arrows(pts, arrows, room, fac, pad=GROUP_PAD)
         sh.set_field_transform(f, fit.origin, fac, lab)
         scale_line(sh, f, tr(lang, "M") + " " + (lab if lang == "ru" else lab.replace(",", ".")) +
                    f"; μ_{{l}} = {mu} " + tr(lang, "m/mm"))
