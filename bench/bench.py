@@ -151,6 +151,45 @@ def sheet2_in_process(runs: int = 10) -> list[tuple[str, float, float]]:
     return out
 
 
+def drawings_in_process(runs: int = 5) -> list[tuple[str, str, float, float]]:
+    """The A1 drawings of sheets 1 and 2 of each example mechanism, built in memory (layout, label
+    placement, the ezdxf document; no DXF or PDF written): (name, sheet, median s, worst s)."""
+    import tomllib
+
+    from tmm_cli.inputs.titleblock import TitleFields
+    from tmm_cli.linkage.mechanism_file import parse_mechanism
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+    from tmm_cli.linkage.sheet2 import analyse_sheet2
+    from tmm_cli.linkage.sheet2_file import parse_sheet2
+    from tmm_cli.render.sheets.dynamics_sheet import sheet2
+    from tmm_cli.render.sheets.linkage_sheet import sheet1
+
+    title = TitleFields()
+    out = []
+    for path in sorted((Path(__file__).resolve().parents[1] / "docs" / "examples").glob("*.toml")):
+        try:
+            data = tomllib.loads(path.read_text(encoding="utf-8"))
+        except tomllib.TOMLDecodeError:
+            continue
+        if "crank" not in data:
+            continue
+        mech = parse_mechanism(data, path.name)
+        s1 = analyse_mechanism(mech)
+        inp = parse_sheet2(mech)
+        jobs = [("sheet 1", sheet1, s1)]
+        if inp.has_forces:
+            jobs.append(("sheet 2", sheet2, analyse_sheet2(s1, inp)))
+        for label, build, s in jobs:
+            build(s, "ru", title)  # warm-up (fonts)
+            times = []
+            for _ in range(runs):
+                t0 = time.perf_counter()
+                build(s, "ru", title)
+                times.append(time.perf_counter() - t0)
+            out.append((path.stem, label, statistics.median(times), max(times)))
+    return out
+
+
 def print_mechanisms() -> None:
     for name, median, worst in mechanism_in_process():
         print(f"sheet 1 of docs/examples/{name}.toml in process (12 positions, both plans, no figures): "
@@ -158,6 +197,9 @@ def print_mechanisms() -> None:
     for name, median, worst in sheet2_in_process():
         print(f"sheet 2 of docs/examples/{name}.toml in process (forces, lever, 0.5° dynamics, flywheels, no figures): "
               f"median {median * 1000:.1f} ms, worst {worst * 1000:.1f} ms")
+    for name, label, median, worst in drawings_in_process():
+        print(f"the A1 drawing of {label} of docs/examples/{name}.toml (layout, labels, DXF model; no file): "
+              f"median {median * 1000:.0f} ms, worst {worst * 1000:.0f} ms (target: ≲ 300 ms)")
 
 
 def note_time(variant: int = 17) -> tuple[float, float]:

@@ -123,7 +123,9 @@ def test_sheet2_layout_scales_and_texts(name, tmp_path):
     for pg in s.polygons:
         if len(s.polygons) <= 3:
             assert fl[f"polygon_{pg.group}"]["scale"] == pytest.approx(1.0 / pg.scale)
-    assert {"lever", "dynamics_diagrams", "wittenbauer", "inertia"} <= set(fl)
+    assert {"lever", "dynamics_diagrams", "wittenbauer"} <= set(fl)  # J_r(φ) is the fourth of the diagrams
+    mtexts = " ".join(e.text for e in doc.modelspace().query("MTEXT"))
+    assert "J\\S^ пр;" in mtexts
     for e in doc.modelspace().query("TEXT"):
         x, y = e.dxf.insert[0], e.dxf.insert[1]
         assert FRAME[0] <= x <= FRAME[2] and FRAME[1] <= y <= FRAME[3], e.dxf.text

@@ -1,39 +1,71 @@
-"""Sheet 2 «Силовой расчёт рычажного механизма и расчёт маховика» of a mechanism file (issue 25).
+"""Sheet 2 «Силовой расчёт рычажного механизма и расчёт маховика» of a mechanism file (issue 25;
+norm-control: issue 21).
 
 Fields: the groups of one position (the last first, the crank last) at a ГОСТ 2.302 scale with the
-forces on them (arrows not to scale, as the book draws them), under each its force polygon at μ_F;
-Zhukovsky's lever (the velocity plan of that position turned through 90°, at μ_v) with the forces;
-the diagrams M_r and M_d, A_r and A_d, ΔT (with Mertsalov's ΔT_I) at their scales; the energy–mass
-diagram (Wittenbauer) with its tangents and the segment kl; J_r(φ); the main results. Everything is
-read from :class:`~tmm_cli.linkage.sheet2.Sheet2` (the drawing only scales and places its numbers).
+forces and moments on them (arrows not to scale, as the book draws them; the outer reactions as
+their normal and tangential parts where the group analysis finds them so), under each its force
+polygon at the core's μ_F; Zhukovsky's lever (the velocity plan of that position turned through
+90°, at its μ_v) with the forces at their points; the diagrams M_r and M_d, A_r and A_d, ΔT (with
+Mertsalov's ΔT_I) and J_r at the core's scales; the energy–mass diagram (Wittenbauer) with its
+tangents and the segment kl; the main results.
+
+The fields are laid out from the measured size of each drawing (:func:`layout`): the diagrams, the
+energy–mass diagram and the table in the right column; the groups over their polygons, and the
+lever under them, on the left. Everything is read from :class:`~tmm_cli.linkage.sheet2.Sheet2`
+(the drawing scales and places its numbers; the scales of the groups' drawings and of the
+energy–mass diagram are drawing scales chosen to fit their fields and printed in them).
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from ...i18n import tr
 from ...i18n.numbers import num
-from ...linkage.polygons import force_polygons
 from ...linkage.scales import drafting_scale
 from ...linkage.sheet2 import Sheet2
+from .arrows import (
+    LABEL_PAD,
+    arrow,
+    arrow_len,
+    arrows_box,
+    draw_arrows,
+    fit_arrows,
+    place_arrows,
+)
 from .cam_sheet import table
-from .linkage_sheet import _label, _sub
-from .paper import Sheet, fit_scale
+from .layout import GOST_SCALES, fit_view
+from .lever_parts import (
+    GAP,
+    MM,
+    NUMBERS_H,
+    SCALE_H,
+    caption,
+    caption_height,
+    diagram,
+    diagram_height,
+    dirs_from,
+    draw_links,
+    field,
+    ground,
+    head,
+    link_segments,
+    position_numbers,
+    rotation_arrow,
+    scale_line,
+    shown,
+    sub,
+    wrap_items,
+)
+from .paper import FRAME, H_LABEL, TB_BOX, Sheet
 
-BOX_GROUPS = (22.0, 395.0, 420.0, 587.0)
-BOX_POLYGONS = (22.0, 232.0, 420.0, 393.0)
-BOX_DIAGRAMS = (22.0, 7.0, 420.0, 230.0)
-BOX_LEVER = (422.0, 300.0, 834.0, 587.0)
-BOX_WITT = (422.0, 62.0, 640.0, 298.0)
-BOX_INERTIA = (642.0, 62.0, 834.0, 298.0)
-BOX_TABLE = (422.0, 7.0, 649.0, 60.0)
-H = 3.5
-H_SMALL = 2.5
-MM = 1000.0
-ARROW_MM = 32.0  # the longest force arrow on a group's or the lever's drawing
+POLY_PAD = (10.0, 8.0, 10.0, 8.0)  # [mm] around a force polygon: its names
+SHORT_MM = 9.0  # a polygon's vector shorter than this is named in the caption, not on the drawing
+ROW_H = 9.0
+H_NOTE = 3.5
 
 
 def symbol(sym: str, lang: str) -> str:
@@ -50,19 +82,21 @@ def symbol(sym: str, lang: str) -> str:
     return f"{sym[0]}_{{{sym[1:]}}}" + tick if len(sym) > 1 else sym + tick
 
 
-def _arrow(sh: Sheet, a, b, layer="Основные", label: str | None = None, h: float = H_SMALL):
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    d = b - a
-    n = float(np.hypot(*d))
-    if n < 0.3:
-        return
-    sh.line(a, b, layer)
-    sh.arrow(b, d, layer, min(3.5, 0.4 * n), 1.0)
-    if label:
-        u = d / n
-        side = np.array([-u[1], u[0]])
-        q = b + 1.5 * u + 1.5 * side
-        sh.text(q[0], q[1], label, h, align="left" if u[0] >= -0.3 else "right", valign="middle")
+def _link_lines(m, kin, i: int, names, k: float) -> np.ndarray:
+    """The lines of the links of `names` at position i [paper mm from the real origin, scale k]."""
+    segs = []
+    for sg in link_segments(m, kin, i, names=names, unit=1.0 / k):
+        if sg[0] == "line":
+            segs.append([sg[1], sg[2]])
+        elif sg[0] == "poly":
+            segs += [[a, b] for a, b in zip(sg[1][:-1], sg[1][1:])]
+        else:
+            c, angle, w, h = sg[1], sg[2], sg[3], sg[4]
+            e = complex(math.cos(angle), math.sin(angle))
+            cs = [c + (sx * w / 2 + 1j * sy * h / 2) * e / k for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+            segs += [[cs[j], cs[(j + 1) % 4]] for j in range(4)]
+    z = np.array(segs, complex).reshape(-1, 2) * k
+    return np.stack([z.real, z.imag], axis=-1)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -73,317 +107,617 @@ def _group_links(s: Sheet2, group: int):
     return [ln for ln in s.sheet1.mechanism.links if ln.group == group]
 
 
-def _group_points(s: Sheet2, group: int, i: int) -> dict[str, complex]:
-    """Every point of the group's links at position i [real mm], and where its forces act."""
-    m, k = s.sheet1.mechanism, s.sheet1.cycle.kin
-    names = set()
+def _group_names(s: Sheet2, group: int) -> list[str]:
+    m = s.sheet1.mechanism
+    names = []
     for ln in _group_links(s, group):
-        names |= set(ln.axis or ()) | set(ln.pins) | {p.name for p in m.points if p.link == ln.name}
-    pts = {n: complex(k.z[n][i]) * MM for n in names}
-    return pts
+        for n in list(ln.axis or ()) + list(ln.pins) + [p.name for p in m.points if p.link == ln.name]:
+            if n not in names:
+                names.append(n)
+    return names
 
 
 def _forces_on(s: Sheet2, group: int, i: int, lang: str):
-    """(point [real mm], force [N], label) of every force on the group's links."""
+    """(point [real mm], force [N], label, kind) of every force on the group's links: the applied
+    ones, then the outer reactions (as their normal and tangential parts where the core splits them)."""
     numbers = {ln.number for ln in _group_links(s, group)}
     out = []
     for f in s.loading.forces:
         if f.number in numbers and abs(complex(f.f[i])) > 0:
-            out.append((complex(f.z[i]) * MM, complex(f.f[i]), symbol(f.symbol, lang)))
+            out.append((complex(f.z[i]) * MM, complex(f.f[i]), symbol(f.symbol, lang), "applied"))
     for r in s.forces.reactions:
         a, b = r.pair.links
+        at = complex(r.at[i]) * MM
         if a in numbers and b not in numbers:
-            out.append((complex(r.at[i]) * MM, -complex(r.force[i]), f"R_{{{b}{a}}}"))
+            out.append((at, -complex(r.force[i]), f"R_{{{b}{a}}}" if max(a, b) < 10 else f"R_{{{b},{a}}}", "reaction"))
         elif b in numbers and a not in numbers:
-            out.append((complex(r.at[i]) * MM, complex(r.force[i]), f"R_{{{r.label[1:]}}}"))
+            if r.normal is not None and r.tangential is not None:
+                out.append((at, complex(r.tangential[i]), symbol("Rτ" + r.label[1:], lang), "reaction"))
+                out.append((at, complex(r.normal[i]), symbol("Rn" + r.label[1:], lang), "reaction"))
+            else:
+                out.append((at, complex(r.force[i]), f"R_{{{r.label[1:]}}}", "reaction"))
     return out
 
 
-def _draw_group(sh: Sheet, f, s: Sheet2, group: int, i: int, lang: str) -> None:
+def _couples_on(s: Sheet2, group: int, i: int, lang: str):
+    """(centre [real mm], moment [N·m], label) of the moments on the group's links (and M_b on the crank)."""
     m, k = s.sheet1.mechanism, s.sheet1.cycle.kin
-    z = {n: complex(x[i]) * MM for n, x in k.z.items()}
-    unit = 1.0 / f.scale  # one paper millimetre in real millimetres
-    for ln in _group_links(s, group):
-        if ln.kind in ("crank", "bar"):
-            a, b = ln.axis
-            ends = [z[a], z[b]] + [z[p.name] for p in m.points if p.link == ln.name]
-            d = (z[b] - z[a]) / abs(z[b] - z[a])
-            t = [((e - z[a]) * d.conjugate()).real for e in ends]
-            p0, p1 = z[a] + min(t) * d, z[a] + max(t) * d
-            f.poly([[p0.real, p0.imag], [p1.real, p1.imag]], "Основные")
-        elif ln.kind == "slotted":
-            a, c = ln.axis
-            far = [z[p.name] for p in m.points if p.link == ln.name] + [z[a]]
-            reach = max(abs(e - z[c]) for e in far) + 4.0 * unit
-            d = (z[a] - z[c]) / abs(z[a] - z[c])
-            tip = z[c] + reach * d
-            f.poly([[z[c].real, z[c].imag], [tip.real, tip.imag]], "Основные")
-        else:
-            angle = float(k.angle[ln.name][i]) if ln.kind == "block" else m.groups[ln.group - 1].guide.angle
-            w, hh = (6.0, 3.5) if ln.kind == "block" else (9.0, 5.0)
-            e = complex(math.cos(angle), math.sin(angle))
-            corners = [z[ln.name] + unit * (sx * w / 2 + 1j * sy * hh / 2) * e for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-            f.poly([[q.real, q.imag] for q in corners], "Основные", closed=True)
-    pts = _group_points(s, group, i)
-    for n, q in pts.items():
-        p = f.p(q.real, q.imag)
-        sh.circle(p, 1.0, "Основные")
-        sh.text(p[0] - 2.0, p[1] + 2.0, _sub(n), H_SMALL, align="right", valign="bottom")
+    numbers = {ln.number: ln for ln in _group_links(s, group)}
+    out = []
+    for c in s.loading.couples:
+        if c.number not in numbers or float(c.m[i]) == 0.0:
+            continue
+        centre = next((complex(f.z[i]) * MM for f in s.loading.forces if f.number == c.number and f.kind == "inertia"),
+                      None)
+        if centre is None:
+            ln = numbers[c.number]
+            ends = [complex(k.z[n][i]) * MM for n in (ln.axis or (ln.name,))]
+            centre = sum(ends) / len(ends)
+        out.append((centre, float(c.m[i]), symbol(c.symbol, lang)))
+    if group == 0:
+        out.append((complex(m.frame[m.crank.pivot]) * MM, float(s.balancing[i]), tr(lang, "M_{b}")))
+    return out
+
+
+def _group_arrows(s: Sheet2, group: int, i: int, k: float, lang: str = "en"):
+    """The group's force arrows at k paper mm per real mm: (tail, tip, point) [paper mm from the real
+    origin], label, kind — placed by :func:`place_arrows` among the group's links."""
+    m, kin = s.sheet1.mechanism, s.sheet1.cycle.kin
     items = _forces_on(s, group, i, lang)
-    biggest = max((abs(v) for _, v, _ in items), default=1.0) or 1.0
-    for q, v, label in items:
-        a = np.array(f.p(q.real, q.imag))
-        d = v / biggest * ARROW_MM
-        _arrow(sh, a, a + np.array([d.real, d.imag]), "Тонкие", label)
+    biggest = max((abs(v) for _, v, _, _ in items), default=1.0) or 1.0
+    items = [x for x in items if abs(x[1]) > 1e-9 * biggest]
+    pts = [np.array([z.real, z.imag]) * k for z, *_ in items]
+    us = [np.array([v.real, v.imag]) / abs(v) for _, v, _, _ in items]
+    lens = [arrow_len(abs(v), biggest) for _, v, _, _ in items]
+    segs = _link_lines(m, kin, i, {ln.name for ln in _group_links(s, group)}, k)
+    placed = place_arrows(list(zip(pts, us, lens)), segs)
+    return [(tail, tip, p, label, kind) for (tail, tip), p, (_, _, label, kind) in zip(placed, pts, items)]
 
 
-def _group_fields(sh: Sheet, s: Sheet2, lang: str) -> None:
-    i = s.force_position
-    groups = [pg.group for pg in s.polygons]
-    n = len(groups)
-    x0, y0, x1, y1 = BOX_GROUPS
-    w = (x1 - x0) / n
-    extents = []
-    for g in groups:
-        pts = np.array(list(_group_points(s, g, i).values()))
-        extents.append((float(np.ptp(pts.real)), float(np.ptp(pts.imag))))
-    ext = (max(e[0] for e in extents) + 1.0, max(e[1] for e in extents) + 1.0)
-    label, factor = fit_scale(ext, (w - 2 * ARROW_MM - 8.0, y1 - y0 - 2 * ARROW_MM - 22.0))
-    mu = num(1.0 / (factor * MM), lang, sig=3)
-    for j, g in enumerate(groups):
-        box = (x0 + j * w + (1.0 if j else 0.0), y0, x0 + (j + 1) * w - 1.0, y1)
-        pts = np.array(list(_group_points(s, g, i).values()))
-        mid = complex((pts.real.min() + pts.real.max()) / 2, (pts.imag.min() + pts.imag.max()) / 2)
-        centre = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2 - 8.0])
-        origin = centre - factor * np.array([mid.real, mid.imag])
-        kind = "" if g == 0 else s.sheet1.mechanism.groups[g - 1].kind
-        heading = tr(lang, "The crank") if g == 0 else tr(lang, "Group {g} ({kind})").format(g=g, kind=kind)
-        f = sh.add_field(f"group_{g}", box, heading, origin=tuple(origin), scale=factor, scale_label=label,
-                         scale_text=tr(lang, "M") + f" {label}; μ_{{l}} = {mu} " + tr(lang, "m/mm"))
-        _draw_group(sh, f, s, g, i, lang)
-        if g == 0:  # the balancing moment the crank's field is about
-            mb = tr(lang, "M_{b}") + f" = {num(float(s.balancing[i]), lang, decimals=2)} " + tr(lang, "N·m")
-            sh.text(box[0] + 2.0, box[1] + 3.0, mb, H_SMALL)
+def _group_drawing(s: Sheet2, group: int, i: int, k: float):
+    """The group's points [real mm] and its arrows' far ends as (point [real mm], vector [paper mm])
+    at k paper mm per real mm (the forces' arrows as placed, and for the moments a ring of the arc's
+    size)."""
+    m, kin = s.sheet1.mechanism, s.sheet1.cycle.kin
+    pts = [complex(kin.z[n][i]) * MM for n in _group_names(s, group)]
+    for sg in link_segments(m, kin, i, names={ln.name for ln in _group_links(s, group)}, unit=1.0 / k):
+        if sg[0] == "line":
+            pts += [sg[1], sg[2]]
+    arrows = []
+    for tail, tip, _, _, _ in _group_arrows(s, group, i, k):
+        for end in (tail, tip):
+            arrows.append((0j, complex(end[0], end[1])))
+    for z, _, _ in _couples_on(s, group, i, "en"):
+        arrows += [(z, 9.0 * complex(math.cos(a), math.sin(a))) for a in (0.0, math.pi / 2, math.pi, -math.pi / 2)]
+    return pts, arrows
 
 
-def _polygon_fields(sh: Sheet, s: Sheet2, lang: str) -> None:
-    i = s.force_position
-    n = len(s.polygons)
-    x0, y0, x1, y1 = BOX_POLYGONS
-    w = (x1 - x0) / n
-    room = min(100.0, w - 24.0, y1 - y0 - 36.0)
-    polygons = s.polygons if room >= 100.0 else force_polygons(s.sheet1.mechanism, s.forces, i, room)
-    for j, pg in enumerate(polygons):
-        box = (x0 + j * w + (1.0 if j else 0.0), y0, x0 + (j + 1) * w - 1.0, y1)
-        tips = np.cumsum([0j] + [v.value / pg.scale for v in pg.vectors])
-        mid = complex((tips.real.min() + tips.real.max()) / 2, (tips.imag.min() + tips.imag.max()) / 2)
-        centre = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2 - 8.0])
-        origin = centre - np.array([mid.real, mid.imag])
-        heading = tr(lang, "Force polygon of the crank") if pg.group == 0 else tr(
-            lang, "Force polygon of group {group}").format(group=pg.group)
-        sh.add_field(f"polygon_{pg.group}", box, heading,
-                         origin=tuple(origin), scale=1.0 / pg.scale,
-                         scale_text=f"μ_{{F}} = {num(pg.scale, lang, sig=3)} " + tr(lang, "N/mm"))
-        span = max(float(np.ptp(tips.real)), float(np.ptp(tips.imag)), 1.0)
-        for v, a, b in zip(pg.vectors, tips[:-1], tips[1:]):
-            pa, pb = np.array([origin[0] + a.real, origin[1] + a.imag]), np.array([origin[0] + b.real, origin[1] + b.imag])
-            layer = "Тонкие" if v.kind == "unknown" else "Основные"
-            _arrow(sh, pa, pb, layer)
-            if abs(b - a) > 0.08 * span:
-                mid_v = (pa + pb) / 2
-                d = (pb - pa) / np.hypot(*(pb - pa))
-                q = mid_v + 2.5 * np.array([-d[1], d[0]])
-                sh.text(q[0], q[1], symbol(v.symbol, lang), H_SMALL, align="center", valign="middle")
-        short = [v for v, a, b in zip(pg.vectors, tips[:-1], tips[1:]) if abs(b - a) <= 0.08 * span]
-        if short:
-            text = tr(lang, "short: ") + "; ".join(
-                f"{symbol(v.symbol, lang)} = {num(abs(v.value), lang, decimals=1)}" for v in short)
-            sh.text(box[0] + 2.0, box[1] + 2.5, text, H_SMALL, width=box[2] - box[0] - 4.0, max_lines=2, valign="bottom")
+def _draw_group(sh: Sheet, f, s: Sheet2, group: int, i: int, lang: str, within) -> None:
+    m, k = s.sheet1.mechanism, s.sheet1.cycle.kin
+    unit = 1.0 / f.scale
+    links = {ln.name for ln in _group_links(s, group)}
+    draw_links(f, link_segments(m, k, i, names=links, unit=unit), "Основные", None, unit, 1.0)
+    names = _group_names(s, group)
+    pts = {n: np.array(f.p(k.z[n][i].real * MM, k.z[n][i].imag * MM)) for n in names}
+    for n, q in pts.items():
+        if n in m.frame and group == 0:
+            ground(sh, q)
+        else:
+            sh.circle(q, 1.1, "Основные")
+    centre = np.mean(list(pts.values()), axis=0)
+    draw_arrows(sh, f.origin, _group_arrows(s, group, i, f.scale, lang), within)
+    for z, mom, label in _couples_on(s, group, i, lang):
+        c = np.array(f.p(z.real, z.imag))
+        mid, out = rotation_arrow(sh, c, 6.5, 1 if mom > 0 else -1, 45.0, "Основные")
+        sh.label(label, tuple(mid), H_LABEL, within=within, dirs=dirs_from(out, 5), dists=(1.0, 2.5, 4.0), priority=6)
+    named = {n for n in pts}
+    for n, q in pts.items():
+        d = q - centre
+        d = d / (np.hypot(*d) or 1.0)
+        sh.label(sub(n), tuple(q), H_LABEL, within=within, dirs=dirs_from(-d if group else d), dists=(1.2, 2.5, 4.0),
+                 priority=8)
+    for f_ in s.loading.forces:
+        if f_.point in named or f_.number not in {ln.number for ln in _group_links(s, group)}:
+            continue
+        named.add(f_.point)
+        q = np.array(f.p(complex(f_.z[i]).real * MM, complex(f_.z[i]).imag * MM))
+        sh.dot(q, 0.6)
+        sh.label(sub(f_.point), tuple(q), H_LABEL, within=within, dirs=("sw", "se", "nw", "ne", "w", "e"),
+                 dists=(1.2, 2.5, 4.0), priority=7)
+
+
+def _polygon_tips(pg) -> np.ndarray:
+    return np.cumsum([0j] + [v.value / pg.scale for v in pg.vectors])
+
+
+def _polygon_extent(pg):
+    t = _polygon_tips(pg)
+    return np.array([t.real.min(), t.imag.min()]), np.array([t.real.max(), t.imag.max()])
+
+
+def _polygon_items(pg, lang: str) -> list[str]:
+    """The polygon's found reactions and its vectors too short to be named on it, with their values."""
+    unit = tr(lang, "N")
+    out = []
+    for v in pg.vectors:
+        length = abs(v.value) / pg.scale
+        if v.kind == "unknown" or length < SHORT_MM:
+            out.append(f"{symbol(v.symbol, lang)} = {num(abs(v.value), lang, decimals=1)}")
+    if out:
+        out[-1] += f" {unit}"
+    return out
+
+
+def _polygon_size(sh: Sheet, pg, lang: str, width: float | None = None) -> tuple[float, float]:
+    lo, hi = _polygon_extent(pg)
+    w = max(hi[0] - lo[0] + POLY_PAD[0] + POLY_PAD[2], 110.0)
+    n = len(wrap_items(sh, _polygon_items(pg, lang), (width or w) - 4.0))
+    return w, hi[1] - lo[1] + POLY_PAD[1] + POLY_PAD[3] + head(sh, _polygon_heading(pg, lang), w) + SCALE_H \
+        + caption_height(n)
+
+
+def _polygon_heading(pg, lang: str) -> str:
+    if pg.group == 0:
+        return tr(lang, "Force polygon of the crank")
+    return tr(lang, "Force polygon of group {group}").format(group=pg.group)
+
+
+def _polygon_field(sh: Sheet, s: Sheet2, pg, box, lang: str) -> None:
+    f = field(sh, f"polygon_{pg.group}", box, _polygon_heading(pg, lang))
+    lines = wrap_items(sh, _polygon_items(pg, lang), box[2] - box[0] - 4.0)
+    x0, _, x1, y1 = f.inner
+    room = (x0, box[1] + caption_height(len(lines)), x1, y1 - SCALE_H)
+    lo, hi = _polygon_extent(pg)
+    fit = fit_view(lo, hi, room, margin=POLY_PAD, choices=[("", 1.0)])
+    mu, k = pg.scale, 1.0
+    note = ""
+    if not fit.fits:  # the next round μ_F at which it fits (said under it)
+        for mu2 in sorted(float(f"{c * 10.0 ** e:.6g}") for c in (1.0, 2.0, 2.5, 4.0, 5.0) for e in range(-6, 9)):
+            if mu2 <= mu * (1 + 1e-9):
+                continue
+            fit = fit_view(lo, hi, room, margin=POLY_PAD, choices=[("", mu / mu2)])
+            if fit.fits:
+                note = tr(lang, "drawn at μ = {mu2}: the polygon's μ = {mu} does not fit").format(
+                    mu2=num(mu2, lang, sig=3), mu=num(mu, lang, sig=3))
+                mu, k = mu2, pg.scale / mu2
+                break
+    sh.set_field_transform(f, fit.origin, k / pg.scale, "")
+    scale_line(sh, f, f"μ_{{F}} = {num(mu, lang, sig=3)} " + tr(lang, "N/mm"))
+    origin = np.array(fit.origin)
+    tips = [origin + k * np.array([t.real, t.imag]) for t in _polygon_tips(pg)]
+    sh.dot(tips[0], 0.7)
+    for v, a, b in zip(pg.vectors, tips[:-1], tips[1:]):
+        arrow(sh, a, b, "Тонкие" if v.kind == "unknown" else "Основные")
+        d = b - a
+        n = float(np.hypot(*d))
+        if n >= SHORT_MM:
+            side = np.array([-d[1], d[0]]) / n
+            sh.label(symbol(v.symbol, lang), tuple((a + b) / 2), H_LABEL, within=room, dirs=dirs_from(side, 4) +
+                     dirs_from(-side, 4), dists=(0.8, 2.0, 3.5), priority=6)
+    if note:
+        lines = wrap_items(sh, _polygon_items(pg, lang) + [note], box[2] - box[0] - 4.0)
+    caption(sh, box, lines)
 
 
 # ----------------------------------------------------------------------------------------------
 # Zhukovsky's lever
 
 
-def _lever_field(sh: Sheet, s: Sheet2, lang: str) -> None:
+def _lever_points(s: Sheet2) -> dict[str, complex]:
+    """The velocity plan turned through 90° counter-clockwise [drawing mm from the pole]."""
+    plan = s.sheet1.plans[0].velocity
+    return {n: 1j * z / plan.scale for n, z in plan.points.items()}
+
+
+def _lever_forces(s: Sheet2, lang: str):
     i = s.force_position
     plan = s.sheet1.plans[0].velocity
-    mu = drafting_scale(max(abs(z) for z in plan.points.values()), 200.0)  # the lever drawn larger than the plan
-    turned = {n: 1j * z / mu for n, z in plan.points.items()}  # [paper mm] from the pole
-    zs = np.array(list(turned.values()))
-    x0, y0, x1, y1 = BOX_LEVER
-    mid = complex((zs.real.min() + zs.real.max()) / 2, (zs.imag.min() + zs.imag.max()) / 2)
-    centre = np.array([(x0 + x1) / 2 - 40.0, (y0 + y1) / 2 - 8.0])
-    origin = centre - np.array([mid.real, mid.imag])
-    label = _label(s.sheet1.cycle.positions[i].label)
-    sh.add_field("lever", BOX_LEVER, tr(lang, "Zhukovsky's lever, position {label}").format(label=label),
-                     origin=tuple(origin), scale=1.0 / mu,
-                     scale_text=f"μ_{{v}} = {num(mu, lang, sig=3)} " + tr(lang, "(m/s)/mm") +
-                     tr(lang, "; the plan turned 90° counter-clockwise"))
+    lv = s.lever
+    items = [(complex(x.lever[i]) / plan.scale, complex(x.force[i]), symbol(x.symbol, lang), False) for x in lv.forces]
+    a_pt = 1j * complex(s.sheet1.cycle.kin.v[s.sheet1.mechanism.crank.joint][i]) / plan.scale
+    items.append((a_pt, complex(lv.balancing_force[i]), tr(lang, "F_{b}"), True))
+    return items
+
+
+def _lever_extent(s: Sheet2):
+    z = np.array(list(_lever_points(s).values()) + [p for p, *_ in _lever_forces(s, "en")])
+    return np.array([z.real.min(), z.imag.min()]), np.array([z.real.max(), z.imag.max()])
+
+
+def _lever_placed(s: Sheet2, k: float, lang: str = "en"):
+    """The lever's force arrows at k drawing mm per plan mm: (tail, tip, point) [mm from the pole],
+    label, kind ('balancing' for F_ур) — placed among the plan's lines by :func:`place_arrows`."""
+    plan = s.sheet1.plans[0].velocity
+    pts = _lever_points(s)
+    items = _lever_forces(s, lang)
+    biggest = max((abs(v) for _, v, _, _ in items), default=1.0) or 1.0
+    items = [x for x in items if abs(x[1]) > 1e-9 * biggest]
+    segs = np.array([[[pts[v.start].real, pts[v.start].imag], [pts[v.end].real, pts[v.end].imag]]
+                     for v in plan.vectors], float).reshape(-1, 2, 2) * k
+    ps = [np.array([z.real, z.imag]) * k for z, *_ in items]
+    placed = place_arrows([(p, np.array([v.real, v.imag]) / abs(v), arrow_len(abs(v), biggest))
+                           for p, (_, v, _, _) in zip(ps, items)], segs)
+    return [(tail, tip, p, lab, "balancing" if bal else "applied")
+            for (tail, tip), p, (_, _, lab, bal) in zip(placed, ps, items)]
+
+
+def _lever_items(s: Sheet2, lang: str) -> list[str]:
+    i = s.force_position
+    lv = s.lever
+    nm = tr(lang, "N·m")
+    return [tr(lang, "Σ M_{p}(F) = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)} " + tr(lang, "W"),
+            tr(lang, "M_{b} = ΣM_{p}/ω_{1} = ") + f"{num(float(lv.balancing[i]), lang, decimals=3)} {nm}",
+            tr(lang, "force analysis: ") + f"{num(float(s.balancing[i]), lang, decimals=3)} {nm}",
+            f"Δ = {num(float(s.difference_pct()[i]), lang, decimals=4)} %"]
+
+
+LEVER_MM = 200.0  # the lever's drawing at most this large (a larger one only crowds its field)
+
+
+def _lever_arrows(s: Sheet2, k: float = 1.0):
+    """The far ends of the lever's arrows as (0, end) [mm from the pole at k] for the fitting."""
+    return [(0j, complex(*end) / 1.0) for tail, tip, *_ in _lever_placed(s, k) for end in (tail, tip)]
+
+
+def _lever_scale(s: Sheet2, room):
+    """The lever's μ and its fit in `room`: the largest drawing of :func:`_lever_ks` that fits, else
+    the first round μ beyond μ_v that does (the lever may be drawn at any scale: only the arms'
+    ratios count)."""
+    mu_v = s.sheet1.plans[0].velocity.scale
+    pts = list(_lever_points(s).values()) + [p for p, *_ in _lever_forces(s, "en")]
+    beyond = [(mu, mu_v / mu) for mu in _series_mu() if mu > mu_v * (1 + 1e-9)]
+    last = None
+    for mu, k in _lever_ks(s) + beyond:
+        last = mu, fit_arrows(pts, _lever_arrows(s, k), room, k)
+        if last[1].fits:
+            return last
+    return last
+
+
+def _lever_heading(s: Sheet2, lang: str) -> str:
+    label = s.sheet1.cycle.positions[s.force_position].label
+    return tr(lang, "Zhukovsky's lever, position {label}").format(label=label)
+
+
+def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
+    plan = s.sheet1.plans[0].velocity
+    f = field(sh, "lever", box, _lever_heading(s, lang))
+    lines = wrap_items(sh, _lever_items(s, lang), box[2] - box[0] - 4.0)
+    x0, _, x1, y1 = f.inner
+    room = (x0, box[1] + caption_height(len(lines)), x1, y1 - SCALE_H)
+    mu, fit = _lever_scale(s, room)
+    k = fit.k
+    sh.set_field_transform(f, fit.origin, k / plan.scale, "")
+    scale_line(sh, f, f"μ_{{v}} = {num(mu, lang, sig=3)} " + tr(lang, "(m/s)/mm") +
+               tr(lang, "; the plan turned 90° counter-clockwise"))
+    origin = np.array(fit.origin)
+    pts = _lever_points(s)
 
     def at(z):
-        return np.array([origin[0] + z.real, origin[1] + z.imag])
+        return origin + k * np.array([z.real, z.imag])
 
     for v in plan.vectors:
-        a, b = at(turned[v.start]), at(turned[v.end])
+        a, b = at(pts[v.start]), at(pts[v.end])
         if np.hypot(*(b - a)) > 0.3:
-            sh.line(a, b, "Тонкие")
-    placed = []
-    for n, z in turned.items():
-        q = at(z)
-        if any(np.hypot(*(q - r)) < 2.5 for r in placed):
+            sh.line(a, b, "Основные" if v.start == plan.pole else "Тонкие")
+    sh.dot(at(0j), 0.8)
+    draw_arrows(sh, origin, _lever_placed(s, k, lang), room)
+    named = set()
+    centre = np.mean([at(z) for z in pts.values()], axis=0)
+    for n in sorted(pts, key=lambda q: (q != plan.pole, q)):
+        if n in named:
             continue
-        placed.append(q)
-        sh.text(q[0] - 1.5, q[1] - 1.5, "p" if n == plan.pole else _sub(n), H_SMALL, align="right", valign="top")
-    lv = s.lever
-    items = [(complex(x.lever[i]) / mu, complex(x.force[i]), symbol(x.symbol, lang)) for x in lv.forces]
-    a_pt = 1j * complex(s.sheet1.cycle.kin.v[s.sheet1.mechanism.crank.joint][i]) / mu
-    items.append((a_pt, complex(lv.balancing_force[i]), tr(lang, "F_{b}")))
-    biggest = max((abs(v) for _, v, _ in items), default=1.0) or 1.0
-    for z, v, lab in items:
-        if abs(v) <= 1e-9 * biggest:
-            continue
-        a = at(z)
-        d = v / biggest * ARROW_MM
-        _arrow(sh, a, a + np.array([d.real, d.imag]), "Основные" if lab.startswith("F_{") else "Тонкие", lab)
-    nm = tr(lang, "N·m")
-    lines = [tr(lang, "Σ M_{p}(F) = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)} " +
-             tr(lang, "W"),
-             tr(lang, "M_{b} = ΣM_{p}/ω_{1} = ") +
-             f"{num(float(lv.balancing[i]), lang, decimals=3)} {nm}",
-             tr(lang, "force analysis: ") + f"{num(float(s.balancing[i]), lang, decimals=3)} {nm}",
-             f"Δ = {num(float(s.difference_pct()[i]), lang, decimals=4)} %"]
-    y = y1 - 30.0
-    for text in lines:
-        sh.text(x1 - 95.0, y, text, H_SMALL, width=92.0)
-        y -= 6.0
+        q = at(pts[n])
+        group = [g for g in sorted(pts) if g not in named and np.hypot(*(at(pts[g]) - q)) < 1.5]
+        if n not in group:
+            group.insert(0, n)
+        named.update(group)
+        group.sort(key=lambda g: (g != plan.pole, g))
+        text = ", ".join(sub(g) for g in group)
+        d = q - centre
+        sh.label(text, tuple(q), H_LABEL, within=room, dirs=dirs_from(d if np.hypot(*d) > 1e-9 else (0, 1)),
+                 dists=(1.2, 2.5, 4.0), priority=8)
+    caption(sh, box, lines)
 
 
 # ----------------------------------------------------------------------------------------------
-# the diagrams
+# the diagrams and the energy–mass diagram
 
 
-def _axes(sh: Sheet, x0: float, y0: float, length: float, up: float, down: float, name: str) -> None:
-    sh.line((x0, y0), (x0 + length + 4, y0), "Основные")
-    sh.arrow((x0 + length + 6, y0), (1, 0), "Основные", 3.5, 1.2)
-    sh.line((x0, y0 - down - 2), (x0, y0 + up + 4), "Основные")
-    sh.arrow((x0, y0 + up + 6), (0, 1), "Основные", 3.5, 1.2)
-    sh.text(x0 - 1.5, y0 + up + 6, name, H, align="right", valign="top")
-    sh.text(x0 + length + 3, y0 - 1.5, "φ", H, valign="top")
+DIAGRAM_LEFT = 22.0
+DIAGRAM_RIGHT = 16.0
 
 
-def _diagrams_field(sh: Sheet, s: Sheet2, lang: str) -> None:
+def _series(s: Sheet2, lang: str):
+    """(name, μ, unit, [(ordinates [mm], layer, linetype, label)]) of the four diagrams."""
     d, fw, sc = s.dynamics, s.flywheel, s.scales
+    jm = tr(lang, "J/mm")
+    out = [("M", sc.M, tr(lang, "N·m/mm"), [(d.M_r / sc.M, "Основные", None, tr(lang, "M_{r}")),
+                                                (np.full(d.travel.shape, d.M_d) / sc.M, "Основные", None,
+                                                 tr(lang, "M_{d}"))]),
+           ("A", sc.A, jm, [(d.A_r / sc.A, "Основные", None, tr(lang, "A_{r}")),
+                            (d.A_d / sc.A, "Основные", None, tr(lang, "A_{d}"))]),
+           ("ΔT", sc.T, jm, [(d.dT / sc.T, "Основные", None, "ΔT")] + (
+               [((fw.mertsalov.dT_I - fw.mertsalov.dT_I[0]) / sc.T, "Штриховые", None, "ΔT_{I}")] if fw is not None
+               else [])),
+           ("J", sc.J, tr(lang, "kg·m²/mm"), [(d.J_r / sc.J, "Основные", None, tr(lang, "J_{r}")),
+                                                (np.full(d.travel.shape, d.J_first) / sc.J, "Штриховые", None, None)])]
+    return out
+
+
+def _diagram_items(s: Sheet2, lang: str) -> list[str]:
+    items = [f"μ_{{{name}}} = {num(mu, lang, sig=3)} {unit}" for name, mu, unit, _ in _series(s, lang)]
+    items.append(f"μ_{{φ}} = {num(math.degrees(s.scales.phi), lang, sig=3)} °/" + tr(lang, "mm"))
+    items.append(tr(lang, "positions from position 0; moments and works in the crank's sense of rotation"))
+    items.append(tr(lang, "dashed: the crank and the rotor, ") + f"{num(s.dynamics.J_first, lang, sig=4)} " +
+                 tr(lang, "kg·m²"))
+    return items
+
+
+def _diagrams_size(sh: Sheet, s: Sheet2, lang: str) -> tuple[float, float]:
+    w = DIAGRAM_LEFT + s.scales.axis_mm + 9.0 + DIAGRAM_RIGHT
+    n = len(wrap_items(sh, _diagram_items(s, lang), w - 4.0))
+    h = head(sh, _diagrams_heading(lang), w) + sum(diagram_height([c[0] for c in curves]) + 4.0
+                                                   for *_, curves in _series(s, lang)) + NUMBERS_H \
+        + caption_height(n)
+    return w, h
+
+
+def _diagrams_heading(lang: str) -> str:
+    return tr(lang, "Diagrams of the reduced moments, works and energy")
+
+
+def _diagrams_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
+    d, sc = s.dynamics, s.scales
     c = s.sheet1.cycle
-    sh.add_field("dynamics_diagrams", BOX_DIAGRAMS, tr(lang, "Diagrams of the reduced moments, works and energy"))
-    x0 = BOX_DIAGRAMS[0] + 24.0
+    f = field(sh, "dynamics_diagrams", box, _diagrams_heading(lang))
+    x0b, y0b, x1b, y1b = f.inner
     length = sc.axis_mm
+    x0 = x0b + DIAGRAM_LEFT - 1.0 + max(0.0, (x1b - x0b) - (DIAGRAM_LEFT + length + 9.0 + DIAGRAM_RIGHT)) / 2
     xs = x0 + d.travel / sc.phi
-    keep = slice(None, None, 2)
-    y = BOX_DIAGRAMS[3] - 14.0
-    series = [("M", sc.M, tr(lang, "N·m/mm"), [(d.M_r, tr(lang, "M_{r}"), None),
-                                                          (np.full(d.travel.shape, d.M_d), tr(lang, "M_{d}"), None)]),
-              ("A", sc.A, tr(lang, "J/mm"), [(d.A_r, tr(lang, "A_{r}"), None),
-                                                       (d.A_d, tr(lang, "A_{d}"), None)]),
-              ("ΔT", sc.T, tr(lang, "J/mm"), [(d.dT, "ΔT", None)] + (
-                  [(fw.mertsalov.dT_I - fw.mertsalov.dT_I[0], "ΔT_{I}", "DASHED")] if fw is not None else []))]
-    evens = [p for p in c.positions if p.label.isdigit()]
-    for name, mu, unit, curves in series:
-        ys = [np.asarray(v) / mu for v, _, _ in curves]
-        up = max(max(float(v.max()) for v in ys), 0.0)
-        down = max(max(float(-v.min()) for v in ys), 0.0)
-        y0 = y - up - 6.0
-        _axes(sh, x0, y0, length, up, down, name)
-        for v, label in zip(ys, curves):
-            sh.poly(np.column_stack([xs[keep], (y0 + v)[keep]]), "Основные", label[2])
-            j = int(np.argmax(np.abs(v)))
-            above = v[j] >= 0
-            sh.text(xs[j] + 1.5, y0 + float(v[j]) + (1.5 if above else -1.5), label[1], H_SMALL,
-                    valign="bottom" if above else "top")
-        for p in evens:
-            xx = x0 + p.travel / sc.phi
-            sh.line((xx, y0 - 1.0), (xx, y0 + 1.0), "Тонкие")
-            if name == "ΔT":
-                sh.text(xx, y0 - down - 3.0, _label(p.label), H_SMALL, align="center", valign="top")
-        sh.text(x0 + length + 14.0, y0 + up * 0.5 + 3.0, f"μ_{{{name}}} = {num(mu, lang, sig=3)} {unit}", H_SMALL,
-                width=BOX_DIAGRAMS[2] - (x0 + length + 14) - 2, max_lines=2)
-        y = y0 - down - 9.0
-    mu_phi = num(math.degrees(sc.phi), lang, sig=3)
-    sh.text(x0, max(y, BOX_DIAGRAMS[1] + 3.0), f"μ_{{φ}} = {mu_phi} °/" + tr(lang, "mm") +
-            tr(lang, "; positions from position 0; moments and works in the crank's sense of rotation"), H_SMALL,
-            width=BOX_DIAGRAMS[2] - x0 - 2.0, max_lines=2)
+    marks = [x0 + p.travel / sc.phi for p in c.positions]
+    lines = wrap_items(sh, _diagram_items(s, lang), box[2] - box[0] - 4.0)
+    within = (x0b, y0b + caption_height(len(lines)), x1b, y1b)
+    y = y1b
+    y_axis = y
+    for name, mu, unit, curves in _series(s, lang):
+        y_axis = diagram(sh, within, x0, y, length, xs, curves, name, marks)
+        down = max(max(float(-np.min(cv[0])) for cv in curves), 0.0)
+        y = y_axis - down - 3.0 - 4.0
+    position_numbers(sh, within, [(x0 + p.travel / sc.phi, p.label) for p in shown(c.positions)], y + 4.0)
+    caption(sh, box, lines)
 
 
-def _wittenbauer_field(sh: Sheet, s: Sheet2, lang: str) -> None:
+def _witt_items(s: Sheet2, lang: str) -> list[str]:
+    wi = s.flywheel.wittenbauer
+    kgm = tr(lang, "kg·m²")
+    return [f"tg ψ_{{max}} = {num(wi.slope_max, lang, sig=5)}", f"tg ψ_{{min}} = {num(wi.slope_min, lang, sig=5)}",
+            tr(lang, "J_{fl} = kl·μ_{T}/(tg ψ_{max} − tg ψ_{min}) = ") + f"{num(max(wi.J_fl, 0.0), lang, sig=4)} {kgm}"]
+
+
+def _wittenbauer_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
     d, fw = s.dynamics, s.flywheel
     wi = fw.wittenbauer
-    x0, y0, x1, y1 = BOX_WITT
-    mu_j = drafting_scale(float(d.J_r.max()), x1 - x0 - 40.0)
-    lo, hi = min(float(d.dT.min()), wi.c_min), max(float(d.dT.max()), wi.c_max)
-    mu_t = drafting_scale(hi - lo, y1 - y0 - 50.0)
+    f = field(sh, "wittenbauer", box, tr(lang, "Energy–mass diagram (Wittenbauer)"))
+    lines = wrap_items(sh, _witt_items(s, lang), box[2] - box[0] - 4.0)
+    x0, _, x1, y1 = f.inner
+    room = (x0, box[1] + caption_height(len(lines)), x1, y1 - SCALE_H)
+    jmax = float(d.J_r.max()) * 1.1
+    lo_t, hi_t = min(float(d.dT.min()), wi.c_min, wi.c_min + wi.slope_min * jmax), \
+        max(float(d.dT.max()), wi.c_max, wi.c_max + wi.slope_max * jmax)
+    pad = (16.0, 8.0, 16.0, 12.0)
+    w, h = room[2] - room[0] - pad[0] - pad[2], room[3] - room[1] - pad[1] - pad[3]
+    mu_j = drafting_scale(jmax, w)
+    mu_t = drafting_scale(hi_t - lo_t, h)
     kg, j = tr(lang, "kg·m²/mm"), tr(lang, "J/mm")
-    sh.add_field("wittenbauer", BOX_WITT, tr(lang, "Energy–mass diagram (Wittenbauer)"),
-                 scale_text=f"μ_{{J}} = {num(mu_j, lang, sig=3)} {kg}; μ_{{T}} = {num(mu_t, lang, sig=3)} {j}")
-    ox = x0 + 14.0
-    oy = y0 + 22.0 + (-lo) / mu_t
+    scale_line(sh, f, f"μ_{{J}} = {num(mu_j, lang, sig=3)} {kg}; μ_{{T}} = {num(mu_t, lang, sig=3)} {j}")
+    ox = room[0] + pad[0] + max(0.0, w - jmax / mu_j) / 2
+    oy = room[1] + pad[1] + max(0.0, h - (hi_t - lo_t) / mu_t) / 2 - lo_t / mu_t
+    sh.set_field_transform(f, (ox, oy), 1.0, "")
 
     def p(jj, tt):
         return (ox + jj / mu_j, oy + tt / mu_t)
 
-    sh.line((ox, oy + lo / mu_t - 2), (ox, oy + hi / mu_t + 6), "Основные")
-    sh.arrow((ox, oy + hi / mu_t + 8), (0, 1), "Основные", 3.5, 1.2)
-    sh.text(ox + 2, oy + hi / mu_t + 8, "ΔT", H, valign="top")
-    right = ox + float(d.J_r.max()) / mu_j * 1.1 + 4
+    # axes: ΔT up from the lowest point, J_r right along ΔT = 0
+    top = oy + hi_t / mu_t
+    sh.line((ox, oy + lo_t / mu_t - 1.0), (ox, top + 4.0), "Основные")
+    sh.arrow((ox, top + 8.0), (0, 1), "Основные", 4.0, 1.2)
+    sh.label("ΔT", (ox, top + 8.0), H_LABEL, within=room, dirs=("w", "nw", "e", "ne"), dists=(1.2, 2.5), priority=8)
+    right = ox + jmax / mu_j + 3.0
     sh.line((ox, oy), (right, oy), "Основные")
-    sh.arrow((right + 2, oy), (1, 0), "Основные", 3.5, 1.2)
-    sh.text(right, oy - 2.0, tr(lang, "J_{r}"), H, align="right", valign="top")
+    sh.arrow((right + 4.0, oy), (1, 0), "Основные", 4.0, 1.2)
+    sh.label(tr(lang, "J_{r}"), (right + 4.0, oy), H_LABEL, within=room, dirs=("se", "ne", "s", "n"), dists=(0.8, 2.0),
+             priority=8)
     sh.poly(np.array([p(a, b) for a, b in zip(d.J_r[::2], d.dT[::2])]), "Основные")
-    jmax = float(d.J_r.max()) * 1.1
-    for slope, cc, name in ((wi.slope_max, wi.c_max, "ψ_{max}"), (wi.slope_min, wi.c_min, "ψ_{min}")):
-        sh.line(p(0.0, cc), p(jmax, cc + slope * jmax), "Тонкие")
-        q = p(jmax, cc + slope * jmax)
-        sh.text(q[0] + 1.0, q[1], name, H_SMALL, valign="middle")
+    for slope, cc, name, j_ in ((wi.slope_max, wi.c_max, "ψ_{max}", wi.i_max), (wi.slope_min, wi.c_min, "ψ_{min}",
+                                                                                wi.i_min)):
+        end = p(jmax, cc + slope * jmax)
+        sh.line(p(0.0, cc), end, "Тонкие")
+        sh.dot(p(float(d.J_r[j_]), float(d.dT[j_])), 0.7)
+        sh.label(name, end, H_LABEL, within=room, dirs=("ne", "e", "se", "n", "s", "nw"), dists=(1.0, 2.5, 4.0),
+                 priority=7)
     k_, l_ = p(0.0, wi.c_max), p(0.0, wi.c_min)
-    sh.line(k_, l_, "Основные")
-    sh.text(k_[0] - 1.5, k_[1], "k", H, align="right", valign="middle")
-    sh.text(l_[0] - 1.5, l_[1], "l", H, align="right", valign="middle")
-    kgm = tr(lang, "kg·m²")
-    sh.text(x0 + 3.0, y0 + 10.0, f"tg ψ_{{max}} = {num(wi.slope_max, lang, sig=5)}; tg ψ_{{min}} = "
-            f"{num(wi.slope_min, lang, sig=5)}", H_SMALL, width=x1 - x0 - 6.0)
-    sh.text(x0 + 3.0, y0 + 4.0, tr(lang, "J_{fl} = kl·μ_{T}/(tg ψ_{max} − tg ψ_{min}) = ") +
-            f"{num(max(wi.J_fl, 0.0), lang, sig=4)} {kgm}", H_SMALL, width=x1 - x0 - 6.0)
+    sh.poly(np.array([k_, l_]), "Основные", lineweight=100)
+    sh.label("k", k_, H_LABEL, within=room, dirs=("w", "nw", "sw", "e"), dists=(1.5, 3.0), priority=9)
+    sh.label("l", l_, H_LABEL, within=room, dirs=("w", "sw", "nw", "e"), dists=(1.5, 3.0), priority=9)
+    caption(sh, box, lines)
 
 
-def _inertia_field(sh: Sheet, s: Sheet2, lang: str) -> None:
-    d = s.dynamics
-    x0, y0, x1, y1 = BOX_INERTIA
-    length = x1 - x0 - 40.0
-    mu_phi = 2.0 * math.pi / length
-    mu_j = drafting_scale(float(d.J_r.max()), 80.0)
-    sh.add_field("inertia", BOX_INERTIA, tr(lang, "Reduced moment of inertia"),
-                 scale_text=f"μ_{{J}} = {num(mu_j, lang, sig=3)} " + tr(lang, "kg·m²/mm") +
-                 f"; μ_{{φ}} = {num(math.degrees(mu_phi), lang, sig=3)} °/" + tr(lang, "mm"))
-    ox, oy = x0 + 18.0, y0 + 40.0
-    up = float(d.J_r.max()) / mu_j
-    _axes(sh, ox, oy, length, up, 0.0, tr(lang, "J_{r}"))
-    xs = ox + d.travel / mu_phi
-    sh.poly(np.column_stack([xs[::2], (oy + d.J_r / mu_j)[::2]]), "Основные")
-    sh.line((ox, oy + d.J_first / mu_j), (ox + length, oy + d.J_first / mu_j), "Тонкие", "DASHED")
-    for p in s.sheet1.cycle.positions:
-        if p.label.isdigit():
-            xx = ox + p.travel / mu_phi
-            sh.line((xx, oy - 1.0), (xx, oy + 1.0), "Тонкие")
-            sh.text(xx, oy - 3.0, _label(p.label), H_SMALL, align="center", valign="top")
-    sh.text(x0 + 3.0, y0 + 10.0, tr(lang, "dashed: the crank and the rotor, ") +
-            f"{num(d.J_first, lang, sig=4)} " + tr(lang, "kg·m²"), H_SMALL, width=x1 - x0 - 6.0)
+# ----------------------------------------------------------------------------------------------
+# the layout
 
 
-def _results(sh: Sheet, s: Sheet2, lang: str) -> None:
+@dataclass(frozen=True)
+class Layout2:
+    groups: tuple  # a box per polygon's group, in the order of s.polygons
+    polygons: tuple
+    lever: tuple
+    diagrams: tuple
+    wittenbauer: tuple | None
+    table: tuple
+    group_scale: tuple  # (label, paper mm per real mm) of the groups' drawings
+
+
+def _series_mu() -> list[float]:
+    return sorted(float(f"{c * 10.0 ** e:.6g}") for c in (1.0, 2.0, 2.5, 4.0, 5.0) for e in range(-9, 10))
+
+
+def _lever_ks(s: Sheet2) -> list[tuple[float, float]]:
+    """(μ, drawing mm per plan mm) the lever may take, the largest drawing first: round μ from
+    μ_v/4 up to μ_v, at most LEVER_MM across (μ_v itself always)."""
+    mu_v = s.sheet1.plans[0].velocity.scale
+    lo, hi = _lever_extent(s)
+    size = float(max(hi[0] - lo[0], hi[1] - lo[1], 1e-9))
+    out = [(mu, mu_v / mu) for mu in _series_mu() if mu_v / 4.0 * (1 - 1e-9) <= mu <= mu_v * (1 + 1e-9)]
+    return [(mu, k) for mu, k in out if size * k <= LEVER_MM or k <= 1.0 + 1e-9]
+
+
+def _lever_need(sh: Sheet, s: Sheet2, lang: str, k: float, width: float | None = None) -> tuple[float, float]:
+    """(width, height) [mm] of the lever's field at k drawing mm per plan mm: the turned plan, the
+    arrows, their names, the heading, the scale and the caption."""
+    ends = [z * k for z in list(_lever_points(s).values()) + [p for p, *_ in _lever_forces(s, "en")]]
+    ends += [v for _, v in _lever_arrows(s, k)]
+    w = max(z.real for z in ends) - min(z.real for z in ends) + 2 * LABEL_PAD[0] + 4.0
+    w = max(w, 150.0)
+    cap = caption_height(len(wrap_items(sh, _lever_items(s, lang), (width or w) - 4.0)))
+    h = max(z.imag for z in ends) - min(z.imag for z in ends) + 2 * LABEL_PAD[1] + 4.0 + SCALE_H + cap \
+        + head(sh, _lever_heading(s, lang), width or w)
+    return w, h
+
+
+def _group_heading(s: Sheet2, g: int, lang: str) -> str:
+    if g == 0:
+        return tr(lang, "The crank")
+    return tr(lang, "Group {g} ({kind})").format(g=g, kind=s.sheet1.mechanism.groups[g - 1].kind)
+
+
+GROUP_PAD = (8.0, 8.0)  # [mm] around a group's points (pins, blocks, names)
+
+
+def _group_scale(sh: Sheet, s: Sheet2, lang: str, poly_needs, width: float, h_max: float):
+    """The largest ГОСТ 2.302 scale (at most 5:1) at which the groups with their arrows, each over
+    its polygon (`poly_needs`: their widths), fit side by side in `width` and in `h_max` high;
+    (label, factor, the height the groups need, the columns' widths)."""
+    i = s.force_position
+    n = len(s.polygons)
+    for lab, fac in sorted(GOST_SCALES, key=lambda c: -c[1]):
+        if fac > 5.0:
+            continue
+        ws, hs = [], []
+        for pg, pw in zip(s.polygons, poly_needs):
+            lo, hi = arrows_box(*_group_drawing(s, pg.group, i, fac), fac, pad=GROUP_PAD)
+            w = max(hi[0] - lo[0] + 4.0, pw)
+            ws.append(w)
+            hs.append(hi[1] - lo[1] + head(sh, _group_heading(s, pg.group, lang), w) + SCALE_H + 4.0)
+        if sum(ws) + GAP * (n - 1) <= width and max(hs) <= h_max:
+            return lab, fac, min(h_max, max(hs) + 8.0), _columns(ws, width)
+    lab, fac = min(GOST_SCALES, key=lambda c: c[1])
+    return lab, fac, h_max, _columns(list(poly_needs), width)
+
+
+def _columns(needs, width: float) -> list[float]:
+    """Column widths: each its need and an equal share of what is spare (shrunk alike if short)."""
+    n = len(needs)
+    spare = width - sum(needs) - GAP * (n - 1)
+    if spare >= 0:
+        return [w + spare / n for w in needs]
+    return [w * (width - GAP * (n - 1)) / sum(needs) for w in needs]
+
+
+def _left(sh: Sheet, s: Sheet2, lang: str, x0: float, x1: float, column: bool):
+    """The groups over their polygons and the lever in the left part x0…x1: the lever under them
+    across the width, or (`column`) in a column of the full height at the right; returns
+    (groups, polygons, lever box, group scale, lever's k) or None when the lever's column leaves
+    the groups no room."""
+    y0, y1 = FRAME[1] + GAP, FRAME[3] - GAP
+    sizes = [_polygon_size(sh, pg, lang) for pg in s.polygons]
+    needs = [max(w, 100.0) for w, _ in sizes]
+    h_poly = max(h for _, h in sizes)
+    ks = _lever_ks(s)
+    if column:
+        for mu, k in ks:
+            lw, lh = _lever_need(sh, s, lang, k)
+            if lh <= y1 - y0 and x1 - x0 - lw - GAP >= sum(needs) + GAP * (len(needs) - 1):
+                break
+        else:
+            return None
+        lever = (x1 - lw, y0, x1, y1)
+        h_groups = (y1 - y0) - GAP - h_poly
+        lab, fac, _, widths = _group_scale(sh, s, lang, needs, lever[0] - GAP - x0, h_groups)
+    else:
+        _, h_lever_min = _lever_need(sh, s, lang, ks[-1][1], x1 - x0)
+        rest = (y1 - y0) - 2 * GAP - h_poly
+        if rest - h_lever_min < 120.0:  # the polygons give way (drawn at a larger μ_F, said under them)
+            h_poly = max(90.0, (y1 - y0) - 2 * GAP - 120.0 - h_lever_min)
+            rest = (y1 - y0) - 2 * GAP - h_poly
+        lab, fac, h_groups, widths = _group_scale(sh, s, lang, needs, x1 - x0, max(rest - h_lever_min, 120.0))
+        lever = (x0, y0, x1, y1 - h_groups - h_poly - 2 * GAP)
+        k = next((k for _, k in ks if _lever_need(sh, s, lang, k, x1 - x0)[1] <= lever[3] - lever[1]
+                  and _lever_need(sh, s, lang, k, x1 - x0)[0] <= x1 - x0), ks[-1][1])
+    groups, polygons = [], []
+    x = x0
+    for w in widths:
+        groups.append((x, y1 - h_groups, x + w, y1))
+        polygons.append((x, y1 - h_groups - GAP - h_poly, x + w, y1 - h_groups - GAP))
+        x += w + GAP
+    return groups, polygons, lever, (lab, fac), k
+
+
+def layout(sh: Sheet, s: Sheet2, lang: str, rows: int) -> Layout2:
+    """The field boxes of sheet 2 from the measured drawings: the right column holds the diagrams
+    (their size at the core's scales), the energy–mass diagram (what is left) and the table over
+    the title block; the left part a column per group — the group's drawing over its polygon (the
+    polygons at the core's μ_F set the row's height) — and the lever under them or, when that
+    gives the drawings larger scales (a tall lever), in a column of its own at their right."""
+    X0, _, X1, Y1 = FRAME
+    dw, dh = _diagrams_size(sh, s, lang)
+    wr = max(dw, 215.0)
+    xr0, xr1 = X1 - GAP - wr, X1 - GAP
+    th = 12.0 + ROW_H * rows + 3.0
+    table_box = (xr0, TB_BOX[3] + GAP, xr1, TB_BOX[3] + GAP + th)
+    room_right = (Y1 - GAP) - (table_box[3] + GAP)
+    if s.flywheel is not None:
+        dh = min(dh, room_right - 110.0 - GAP)
+        diagrams = (xr0, Y1 - GAP - dh, xr1, Y1 - GAP)
+        witt = (xr0, table_box[3] + GAP, xr1, diagrams[1] - GAP)
+    else:
+        diagrams = (xr0, table_box[3] + GAP, xr1, Y1 - GAP)
+        witt = None
+    xl0, xl1 = X0 + GAP, xr0 - GAP
+    options = [o for o in (_left(sh, s, lang, xl0, xl1, False), _left(sh, s, lang, xl0, xl1, True)) if o is not None]
+    best = max(options, key=lambda o: 2.0 * math.log(o[3][1]) + math.log(o[4]) - 1e-6 * options.index(o))
+    groups, polygons, lever, scale, _ = best
+    return Layout2(tuple(groups), tuple(polygons), lever, diagrams, witt, table_box, scale)
+
+
+def _group_fields(sh: Sheet, s: Sheet2, lang: str, lay: Layout2) -> None:
+    i = s.force_position
+    lab, fac = lay.group_scale
+    mu = num(1.0 / (fac * MM), lang, sig=3)
+    for pg, box in zip(s.polygons, lay.groups):
+        g = pg.group
+        f = field(sh, f"group_{g}", box, _group_heading(s, g, lang))
+        x0, y0, x1, y1 = f.inner
+        room = (x0, y0, x1, y1 - SCALE_H)
+        pts, arrows = _group_drawing(s, g, i, fac)
+        fit = fit_arrows(pts, arrows, room, fac, pad=GROUP_PAD)
+        sh.set_field_transform(f, fit.origin, fac, lab)
+        scale_line(sh, f, tr(lang, "M") + " " + (lab if lang == "ru" else lab.replace(",", ".")) +
+                   f"; μ_{{l}} = {mu} " + tr(lang, "m/mm"))
+        f.clip = room
+        _draw_group(sh, f, s, g, i, lang, room)
+
+
+def _results(sh: Sheet, s: Sheet2, lang: str, box) -> None:
+    table(sh, box, tr(lang, "Main results"), _rows(s, lang), col1=0.5, h=H_NOTE)
+
+
+def _rows(s: Sheet2, lang: str) -> list[tuple[str, str]]:
     d, fw = s.dynamics, s.flywheel
     nm, kg = tr(lang, "N·m"), tr(lang, "kg·m²")
     i = s.force_position
     rows = [(tr(lang, "Driving moment M_{d}"), f"{num(d.M_d, lang, decimals=2)} {nm}"),
-            (tr(lang, "M_{{b}}, position {label}; Zhukovsky").format(label=_label(s.sheet1.cycle.positions[i].label)),
+            (tr(lang, "M_{{b}}, position {label}; Zhukovsky").format(label=s.sheet1.cycle.positions[i].label),
              f"{num(float(s.balancing[i]), lang, decimals=2)}; {num(float(s.lever.balancing[i]), lang, decimals=2)} {nm}")]
     if fw is not None:
         rows += [(tr(lang, "δ; ω_{max}, ω_{min}, rad/s"),
@@ -397,22 +731,24 @@ def _results(sh: Sheet, s: Sheet2, lang: str) -> None:
                 dims += f", h = {num(fw.size.h * MM, lang, decimals=0)}"
             rows.append((tr(lang, "Flywheel, mm; mass"),
                          f"{dims}; {num(fw.size.m, lang, decimals=1)} " + tr(lang, "kg")))
-    table(sh, BOX_TABLE, tr(lang, "Main results"), rows, col1=0.5, h=H_SMALL)
+    return rows
 
 
 def sheet2(s: Sheet2, lang: str, title) -> Sheet:
     """Build sheet 2 of a mechanism (no file written)."""
     sh = Sheet(lang)
     sh.frame()
-    _group_fields(sh, s, lang)
-    _polygon_fields(sh, s, lang)
-    _lever_field(sh, s, lang)
-    _diagrams_field(sh, s, lang)
-    if s.flywheel is not None:
-        _wittenbauer_field(sh, s, lang)
-    _inertia_field(sh, s, lang)
-    _results(sh, s, lang)
-    scale = next((f.scale_label for f in sh.fields if f.name.startswith("group_")), "")
+    rows = _rows(s, lang)
+    lay = layout(sh, s, lang, len(rows))
+    _group_fields(sh, s, lang, lay)
+    for pg, box in zip(s.polygons, lay.polygons):
+        _polygon_field(sh, s, pg, box, lang)
+    _lever_field(sh, s, lang, lay.lever)
+    _diagrams_field(sh, s, lang, lay.diagrams)
+    if lay.wittenbauer is not None:
+        _wittenbauer_field(sh, s, lang, lay.wittenbauer)
+    _results(sh, s, lang, lay.table)
     sh.title_block(title, name=tr(lang, "Force analysis of the lever mechanism and the flywheel"),
-                   designation=title.designation_for(2, 0), scale=scale)
+                   designation=title.designation_for(2, 0), scale=lay.group_scale[0])
+    sh.finish()
     return sh

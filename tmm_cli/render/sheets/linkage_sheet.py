@@ -1,223 +1,369 @@
-"""Sheet 1 «Кинематический анализ рычажного механизма» of a mechanism file (issue 24).
+"""Sheet 1 «Кинематический анализ рычажного механизма» of a mechanism file (issue 24; norm-control:
+issue 21).
 
-Fields: the scheme of the mechanism in all positions at a ГОСТ 2.302 scale (μ_l of the core) with
-the traced paths of the named points, the kinematic diagrams s, v, a of the output link at their
-scales, the velocity and the acceleration plans of two positions at μ_v, μ_a, and a table of the
-main results. Everything is read from :class:`~tmm_cli.linkage.sheet1.Sheet1`: nothing is computed
-a second time (the drawing only scales and places the core's arrays).
+Fields: the scheme of the mechanism in all positions with the traced paths of its points, at the
+ГОСТ 2.302 scale of the core's μ_l; the kinematic diagrams s, v, a of the output link at their
+scales; the velocity and the acceleration plans of two positions at μ_v, μ_a with their poles, the
+points named and the vectors' values; a table of the main results.
+
+The fields are laid out from the measured size of each drawing at the core's scales (:func:`layout`):
+the scheme over the diagrams in the left column, the plans in rows (a position a row) on the right,
+the table left of (or above) the title block. Everything is read from
+:class:`~tmm_cli.linkage.sheet1.Sheet1`: the drawing scales, shifts and places the core's arrays and
+prints the core's numbers; it computes nothing a second time.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from ...i18n import tr
 from ...i18n.numbers import num
+from ...linkage.scales import SERIES
 from ...linkage.sheet1 import Sheet1
 from ...linkage.vector_plans import Plan
 from .cam_sheet import table
-from .paper import Sheet, gost_label
+from .layout import fit_view
+from .lever_parts import (
+    GAP,
+    H_NOTE,
+    MM,
+    NUMBERS_H,
+    SCALE_H,
+    caption,
+    caption_height,
+    diagram,
+    diagram_height,
+    dirs_from,
+    draw_links,
+    field,
+    fixed,
+    ground,
+    hatched_guide,
+    head,
+    link_segments,
+    pins,
+    position_numbers,
+    rotation_arrow,
+    scale_line,
+    shown,
+    sub,
+    wrap_items,
+)
+from .paper import FRAME, H_LABEL, H_MIN_LABEL, TB_BOX, TB_H, Sheet, thin_out
 
-# field boxes (x0, y0, x1, y1) on the A1 sheet [mm]; the frame is 20…836 × 5…589, the title block
-# 651…836 × 5…60
-BOX_SCHEME = (22.0, 232.0, 372.0, 587.0)
-BOX_DIAGRAMS = (22.0, 7.0, 372.0, 230.0)
-BOX_PLANS = (((374.0, 300.0, 604.0, 587.0), (606.0, 300.0, 834.0, 587.0)),
-             ((374.0, 62.0, 604.0, 298.0), (606.0, 62.0, 834.0, 298.0)))
-BOX_TABLE = (374.0, 7.0, 649.0, 60.0)
-H = 3.5
-H_SMALL = 2.5
-MM = 1000.0  # real millimetres per metre
+SCHEME_PAD = (16.0, 16.0, 16.0, 12.0)  # [mm] around the scheme: pivots, sliders, labels
+PLAN_PAD = (12.0, 10.0, 12.0, 8.0)  # around a plan: its labels
+DIAGRAM_LEFT = 22.0  # [mm] from the field's edge to the diagrams' ordinate axis
+DIAGRAM_RIGHT = 16.0  # beyond the abscissa's arrow
+TABLE_W = 250.0  # the table beside the title block
+ROW_H = 9.0
 
 
-def _sub(name: str) -> str:
-    """A joint or plan label with its digits as a subscript: 'O41' → 'O_{41}', 'a3' → 'a_{3}'."""
-    head = name.rstrip("0123456789")
-    tail = name[len(head):]
-    return f"{head}_{{{tail}}}" if head and tail else name
+# ----------------------------------------------------------------------------------------------
+# measuring the drawings
 
 
-def _label(label: str) -> str:
-    """A position's label with an apostrophe for the prime ('7′' → "7'"): the drawing fonts have no ′."""
-    return label.replace("′", "'")
+def _scheme_extent(s: Sheet1):
+    """Lower-left and upper-right corners [real mm] of everything the scheme draws at real size: the
+    paths of every joint and point over the turn, the slotted links to their reach."""
+    m, c = s.mechanism, s.cycle
+    zs = [c.curve.kin.z[n] * MM for n in m.joint_names]
+    for p in c.positions:
+        for sg in link_segments(m, c.kin, p.index, unit=0.0, reach=_reach(s)):
+            if sg[0] == "line":
+                zs.append(np.array([sg[1], sg[2]]))
+    z = np.concatenate(zs)
+    return np.array([z.real.min(), z.imag.min()]), np.array([z.real.max(), z.imag.max()])
 
 
-def _deg(x: float) -> float:
-    return math.degrees(x) % 360.0
+def _reach(s: Sheet1) -> dict[str, float]:
+    """How far each slotted link is drawn from its pivot [real mm]: the block's farthest place."""
+    m = s.mechanism
+    out = {}
+    for ln in m.links:
+        if ln.kind == "slotted":
+            block = m.links[ln.number - 2].name
+            out[ln.name] = float(np.max(s.cycle.curve.kin.slide[block][0])) * MM
+    return out
+
+
+def _scheme_factor(s: Sheet1) -> float:
+    """Paper mm per real mm of the core's μ_l (μ_l [m/mm] → 1/(μ_l·1000))."""
+    return 1.0 / (s.scheme_scale * MM)
+
+
+def _plan_points(plan: Plan) -> dict[str, complex]:
+    return {n: plan.mm(n) for n in plan.points}
+
+
+def _plan_extent(plan: Plan):
+    z = np.array(list(_plan_points(plan).values()))
+    return np.array([z.real.min(), z.imag.min()]), np.array([z.real.max(), z.imag.max()])
+
+
+def _diagram_series(s: Sheet1):
+    """(name, unit, μ, ordinates [paper mm]) of the diagrams s, v, a (ψ, ω, ε for a rocker)."""
+    m, sc, cv = s.mechanism, s.scales, s.cycle.curve
+    if m.output.kind == "slider":
+        names = ("S", "V", "a")
+        units = ("m/mm", "(m/s)/mm", "(m/s²)/mm")
+    else:
+        names = ("ψ", "ω", "ε")
+        units = ("rad/mm", "(rad/s)/mm", "(rad/s²)/mm")
+    return [(n, u, mu, np.asarray(v) / mu) for n, u, (v, mu) in zip(names, units, ((cv.s, sc.s), (cv.v, sc.v),
+                                                                                      (cv.a, sc.a)))]
+
+
+def _diagrams_size(sh: Sheet, s: Sheet1, lang: str) -> tuple[float, float]:
+    w = DIAGRAM_LEFT + s.scales.axis_mm + 9.0 + DIAGRAM_RIGHT
+    n_cap = len(wrap_items(sh, _diagram_items(s, lang), w - 4.0))
+    h = head(sh, _diagrams_heading(s, lang), w) + sum(diagram_height([y]) + 4.0 for *_, y in _diagram_series(s)) \
+        + NUMBERS_H + caption_height(n_cap)
+    return w, h
+
+
+def _diagram_items(s: Sheet1, lang: str) -> list[str]:
+    units = {"m/mm": tr(lang, "m/mm"), "(m/s)/mm": tr(lang, "(m/s)/mm"), "(m/s²)/mm": tr(lang, "(m/s²)/mm"),
+             "rad/mm": tr(lang, "rad/mm"), "(rad/s)/mm": tr(lang, "(rad/s)/mm"),
+             "(rad/s²)/mm": tr(lang, "(rad/s²)/mm")}
+    items = [f"μ_{{{name}}} = {num(mu, lang, sig=3)} {units[unit]}" for name, unit, mu, _ in _diagram_series(s)]
+    mu_phi = num(math.degrees(s.scales.phi), lang, sig=3)
+    items.append(f"μ_{{φ}} = {mu_phi} °/" + tr(lang, "mm"))
+    items.append(tr(lang, "positions from position 0"))
+    return items
+
+
+# ----------------------------------------------------------------------------------------------
+# the layout
+
+
+@dataclass(frozen=True)
+class Layout1:
+    scheme: tuple
+    diagrams: tuple
+    plans: tuple  # ((velocity box, acceleration box), …) a position a row
+    table: tuple
+
+
+def layout(sh: Sheet, s: Sheet1, lang: str) -> Layout1:
+    """The field boxes of sheet 1, each sized to its drawing at the core's scales: the scheme over the
+    diagrams in the left column (the scheme takes what the column has spare), the plans in a row
+    per position on the right (the rows share what is spare), the table beside the title block (or
+    above it when the right part is narrow)."""
+    X0, Y0, X1, Y1 = FRAME
+    f = _scheme_factor(s)
+    lo, hi = _scheme_extent(s)
+    pl, pb, pr, pt = SCHEME_PAD
+    sw = (hi[0] - lo[0]) * f + pl + pr + 2.0
+    shh = (hi[1] - lo[1]) * f + pb + pt + head(sh, _scheme_heading(lang), sw) + SCALE_H \
+        + caption_height(_scheme_caption_lines(sh, s, lang, sw))
+    dw, dh = _diagrams_size(sh, s, lang)
+    wl = max(sw, dw, 240.0)
+    # the plans: each row's needs
+    rows = []
+    for pl_ in s.plans[:2]:
+        need = []
+        for plan in (pl_.velocity, pl_.acceleration):
+            plo, phi = _plan_extent(plan)
+            w = max(phi[0] - plo[0] + PLAN_PAD[0] + PLAN_PAD[2], 150.0)
+            cap = len(wrap_items(sh, _plan_items(s, plan, pl_.position.index, lang), w - 4.0))
+            h = phi[1] - plo[1] + PLAN_PAD[1] + PLAN_PAD[3] + head(sh, _plan_heading(plan, pl_.position.label, lang), w) \
+                + SCALE_H + caption_height(cap)
+            need.append((w, h))
+        rows.append(need)
+    wv = max(r[0][0] for r in rows)
+    wa = max(r[1][0] for r in rows)
+    wr_avail = X1 - X0 - 3 * GAP - wl
+    if wv + wa + GAP > wr_avail:  # the left column gives way (its drawings then shrink to fit)
+        wl = max(X1 - X0 - 3 * GAP - (wv + wa + GAP), 200.0)
+        wr_avail = X1 - X0 - 3 * GAP - wl
+    xl0, xl1 = X0 + GAP, X0 + GAP + wl
+    xr0, xr1 = xl1 + GAP, X1 - GAP
+    # left column: the diagrams at the bottom at their size, the scheme above with the rest
+    dh = min(dh, Y1 - Y0 - 3 * GAP - min(shh, 200.0))
+    diagrams = (xl0, Y0 + GAP, xl1, Y0 + GAP + dh)
+    scheme = (xl0, diagrams[3] + GAP, xl1, Y1 - GAP)
+    # right part: the table beside the title block when it fits there, else above it
+    th = 12.0 + ROW_H * _results_rows(s) + 3.0
+    beside = TB_BOX[0] - GAP - xr0 >= 200.0
+    if beside:
+        table_box = (xr0, Y0 + GAP, min(TB_BOX[0] - GAP, xr0 + TABLE_W + 60.0), Y0 + GAP + max(th, TB_H - GAP))
+        bottom = max(table_box[3], TB_BOX[3])
+    else:
+        table_box = (xr0, TB_BOX[3] + GAP, xr1, TB_BOX[3] + GAP + th)
+        bottom = table_box[3]
+    # the plan rows share the height, columns the width, in proportion to their needs
+    top_r, bot_r = Y1 - GAP, bottom + GAP
+    need_h = [max(r[0][1], r[1][1]) for r in rows]
+    spare_h = (top_r - bot_r) - sum(need_h) - GAP * (len(rows) - 1)
+    hs = [h + spare_h * h / sum(need_h) for h in need_h] if spare_h < 0 else [h + spare_h / len(rows) for h in need_h]
+    spare_w = (xr1 - xr0) - GAP - wv - wa
+    wv2 = wv + spare_w * (wv / (wv + wa))
+    boxes = []
+    y = top_r
+    for h in hs:
+        boxes.append(((xr0, y - h, xr0 + wv2, y), (xr0 + wv2 + GAP, y - h, xr1, y)))
+        y -= h + GAP
+    return Layout1(scheme, diagrams, tuple(boxes), table_box)
 
 
 # ----------------------------------------------------------------------------------------------
 # field 1: the scheme in all positions
 
 
-def _scheme_field(sh: Sheet, s: Sheet1, lang: str):
+def _scheme_caption_lines(sh: Sheet, s: Sheet1, lang: str, width: float) -> int:
+    return len(wrap_items(sh, _scheme_items(s, lang), width - 4.0))
+
+
+def _scheme_items(s: Sheet1, lang: str, reduced: str = "") -> list[str]:
+    c = s.cycle
+    ends = [p.label for p in c.positions if p.extreme == "end"]
+    items = [tr(lang, "position 0 — main lines")]
+    if ends:
+        items.append(tr(lang, "the other extreme position {label} — dashed").format(label=ends[0]))
+    items.append(tr(lang, "dashed curves: the paths of the points"))
+    if reduced:
+        items.append(reduced)
+    return items
+
+
+def _scheme_heading(lang: str) -> str:
+    return tr(lang, "Scheme of the mechanism in its positions")
+
+
+def _diagrams_heading(s: Sheet1, lang: str) -> str:
+    return tr(lang, "Kinematic diagrams of the output link {link}").format(link=s.mechanism.output.link)
+
+
+def _plan_heading(plan: Plan, label: str, lang: str) -> str:
+    if plan.kind == "velocity":
+        return tr(lang, "Velocity plan, position {label}").format(label=label)
+    return tr(lang, "Acceleration plan, position {label}").format(label=label)
+
+
+def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
     m, c = s.mechanism, s.cycle
-    curve = c.curve.kin
-    zs = np.concatenate([curve.z[n] for n in m.joint_names]) * MM
-    lo, hi = complex(zs.real.min(), zs.imag.min()), complex(zs.real.max(), zs.imag.max())
-    factor = 1.0 / (s.scheme_scale * MM)  # paper mm per real mm
-    try:
-        label = gost_label(factor)
-    except ValueError:
-        label = ""
-    x0, y0, x1, y1 = BOX_SCHEME
-    mid_box = np.array([(x0 + x1) / 2, (y0 + y1) / 2 - 6.0])
-    mid = (lo + hi) / 2
-    origin = mid_box - factor * np.array([mid.real, mid.imag])
-    mu = num(s.scheme_scale, lang, sig=3)
-    scale_text = (tr(lang, "M") + f" {label}; " if label else "") + f"μ_{{l}} = {mu} " + tr(lang, "m/mm")
-    f = sh.add_field("scheme", BOX_SCHEME, tr(lang, "Scheme of the mechanism in its positions"),
-                     origin=tuple(origin), scale=factor, scale_label=label, scale_text=scale_text)
+    lo, hi = _scheme_extent(s)
+    core = _scheme_factor(s)
+    f = field(sh, "scheme", box, _scheme_heading(lang))
+    # the scale line and the caption take their room first; the drawing is fitted to what is left
+    x0, _, x1, y1 = f.inner
+    room_top = y1 - SCALE_H
+    n_cap = _scheme_caption_lines(sh, s, lang, box[2] - box[0])
+    room = (x0, box[1] + caption_height(n_cap), x1, room_top)
+    fit = fit_view(lo, hi, room, margin=SCHEME_PAD, prefer=core)
+    factor = fit.scale
+    sh.set_field_transform(f, fit.origin, factor, fit.label)
+    mu = num(1.0 / (factor * MM), lang, sig=3)
+    scale_line(sh, f, tr(lang, "M") + " " + _gost(fit.label, lang) + f"; μ_{{l}} = {mu} " + tr(lang, "m/mm"))
+    f.clip = room
+    within = room
     unit = 1.0 / factor  # one paper millimetre in real millimetres
-
-    def xy(z):
-        z = np.asarray(z) * MM
-        return np.column_stack([np.real(z), np.imag(z)]) if np.ndim(z) else np.array([[z.real, z.imag]])
-
-    # the guides (axis lines across the field)
+    reach = _reach(s)
+    # the guides: their axes over the sliders' travel, the guide's surface hatched under it
     for g in m.groups:
         if g.guide is None:
             continue
-        p, e = g.guide.through * MM, g.guide.unit
-        span = max(hi.real - lo.real, hi.imag - lo.imag) * 0.6 + 20 * unit
-        centre = p + ((mid - p) * e.conjugate()).real * e
-        f.poly(np.array([[(centre - span * e).real, (centre - span * e).imag],
-                         [(centre + span * e).real, (centre + span * e).imag]]), "Осевые")
-    # the paths: of the joints thin, of the named points (centres of mass) dashed
-    hang = {j for g in m.groups for j in g.known}
+        slider = next(ln.name for ln in m.links if ln.group == g.index and ln.kind == "slider")
+        zs = c.curve.kin.z[slider] * MM
+        e = g.guide.unit
+        t = ((zs - zs[0]) * e.conjugate()).real
+        a = zs[0] + (t.min() - 8.0 * unit) * e
+        b = zs[0] + (t.max() + 8.0 * unit) * e
+        f.poly([[a.real, a.imag], [b.real, b.imag]], "Осевые")
+        n = 1j * e
+        off = (3.5 + 0.8) * unit
+        pa, pb = np.array(f.p((a - off * n).real, (a - off * n).imag)), np.array(f.p((b - off * n).real, (b - off * n).imag))
+        nn = np.array([-(n.real), -(n.imag)])
+        hatched_guide(sh, pa, pb, nn)
+    # the paths: of the joints thin, of the points that are not joints (centres of mass) dashed
+    joints = set(pins(m)) | {m.crank.joint}
     for n in m.joint_names:
         if n in m.frame:
             continue
-        mass = n not in hang and not any(n in g.new for g in m.groups) and n != m.crank.joint
-        f.poly(xy(curve.z[n]), "Тонкие", "DASHED" if mass else None)
+        z = c.curve.kin.z[n] * MM
+        f.poly(thin_out(np.column_stack([z.real, z.imag]), 0.5 * unit), "Тонкие" if n in joints else "Штриховые")
     ends = [p.index for p in c.positions if p.extreme == "end"]
-    for p in c.positions:
+    drawn = shown(c.positions)
+    for p in drawn:
         if p.index == 0:
             continue
-        _links(f, s, p.index, "Тонкие", "DASHED" if p.index in ends else None, unit, 0.7)
-    _links(f, s, 0, "Основные", None, unit, 1.0)
-    # fixed pivots, the position numbers at the crank pin, the joints' names in position 0
-    for name in m.frame:
-        if any(name in ln.pins for ln in m.links):
-            q = f.p(*(xy(m.frame[name])[0]))
-            sh.line((q[0], q[1] - 1.5), (q[0] - 2.5, q[1] - 5.0), "Основные")
-            sh.line((q[0], q[1] - 1.5), (q[0] + 2.5, q[1] - 5.0), "Основные")
-            sh.line((q[0] - 4.5, q[1] - 5.0), (q[0] + 4.5, q[1] - 5.0), "Основные")
-            for k in range(5):
-                xx = q[0] - 4.5 + 2.2 * k
-                sh.line((xx, q[1] - 5.0), (xx - 1.5, q[1] - 6.8), "Тонкие")
-    o = f.p(*(xy(m.frame[m.crank.pivot])[0]))
-    for p in c.positions:
-        a = f.p(*(xy(c.kin.z[m.crank.joint][p.index])[0]))
-        d = np.array(a) - np.array(o)
+        draw_links(f, link_segments(m, c.kin, p.index, unit=unit, reach=reach),
+                   "Штриховые" if p.index in ends else "Тонкие", None, unit, 0.8)
+    draw_links(f, link_segments(m, c.kin, 0, unit=unit, reach=reach), "Основные", None, unit, 1.0)
+    for n in pins(m):
+        q = f.p(*(_xy(c.kin.z[n][0])))
+        sh.circle(q, 1.2, "Основные")
+    # fixed pivots
+    for name, z in m.frame.items():
+        if any(name in ln.pins or (ln.axis and name in ln.axis) for ln in m.links):
+            ground(sh, f.p(z.real * MM, z.imag * MM))
+    # the sense of rotation ω1 about the crank's pivot
+    o = np.array(f.p(*(_xy(m.frame[m.crank.pivot]))))
+    r = max(0.4 * m.crank.length * MM * factor, 7.0)
+    mid, out = rotation_arrow(sh, o, r, m.crank.sense, 225.0)
+    sh.label("ω_{1}", mid, H_LABEL, within=within, dirs=dirs_from(out, 5), dists=(1.0, 2.5, 4.5), priority=7)
+    # the position numbers at the crank pin (outward from the pivot), the joints named in position 0
+    for p in drawn:
+        a = np.array(f.p(*(_xy(c.kin.z[m.crank.joint][p.index]))))
+        d = a - o
         d = d / (np.hypot(*d) or 1.0)
-        sh.text(a[0] + 4.5 * d[0], a[1] + 4.5 * d[1], _label(p.label), H_SMALL, align="center", valign="middle")
-    pts = {n: np.array(f.p(*(xy(c.kin.z[n][0])[0]))) for n in m.joint_names}
+        sh.label(p.label, tuple(a), H_MIN_LABEL, within=within, dirs=dirs_from(d, 5), dists=(1.0, 2.2, 3.8),
+                 priority=5)
+    pts = {n: np.array(f.p(*(_xy(c.kin.z[n][0])))) for n in m.joint_names}
     centre = np.mean(list(pts.values()), axis=0)
     for n, q in pts.items():
         d = q - centre
         d = d / (np.hypot(*d) or 1.0)
-        sh.text(q[0] + 5.0 * d[0], q[1] + 5.0 * d[1], _sub(n), H, align="center", valign="middle")
-    # the sense of rotation
-    r = 0.45 * m.crank.length * MM * factor
-    a0, a1 = (200.0, 250.0) if m.crank.sense > 0 else (250.0, 200.0)
-    sh.arc(o, r, min(a0, a1), max(a0, a1), "Тонкие")
-    tip = np.array(o) + r * np.array([math.cos(math.radians(a1)), math.sin(math.radians(a1))])
-    tangent = np.array([-math.sin(math.radians(a1)), math.cos(math.radians(a1))]) * m.crank.sense
-    sh.arrow(tip, tangent, "Тонкие", 3.0, 1.0)
-    q = np.array(o) + 1.5 * r * np.array([math.cos(math.radians(225)), math.sin(math.radians(225))])
-    sh.text(q[0], q[1], "ω_{1}", H, align="center", valign="middle")
+        sh.label(sub(n), tuple(q), H_LABEL, within=within, dirs=dirs_from(d), dists=(1.4, 2.8, 4.5), priority=9)
+    reduced = ""
+    if fit.reduced or not fit.fits:
+        reduced = tr(lang, "drawn at {scale}: the scheme does not fit at μ_l = {mu} m/mm").format(
+            scale=_gost(fit.label, lang), mu=num(s.scheme_scale, lang, sig=3))
+    caption(sh, box, wrap_items(sh, _scheme_items(s, lang, reduced), box[2] - box[0] - 4.0))
     return f
 
 
-def _links(f, s: Sheet1, i: int, layer: str, linetype, unit: float, size: float) -> None:
-    """The mechanism at position i: bars as lines, the slotted link to its farthest reach,
-    blocks and sliders as rectangles, pins as small circles [field units: real mm]."""
-    m, k = s.mechanism, s.cycle.kin
-    z = {n: complex(x[i]) * MM for n, x in k.z.items()}
-    hang = {j for g in m.groups for j in g.known}
-    on_link = {}
-    for p in m.points:
-        on_link.setdefault(p.link, []).append(p.name)
-    for ln in m.links:
-        if ln.kind in ("crank", "bar"):
-            a, b = ln.axis
-            ends = [z[a], z[b]] + [z[p] for p in on_link.get(ln.name, []) if p in hang]
-            d = (z[b] - z[a]) / abs(z[b] - z[a])
-            t = [((e - z[a]) * d.conjugate()).real for e in ends]
-            p0, p1 = z[a] + min(t) * d, z[a] + max(t) * d
-            f.poly([[p0.real, p0.imag], [p1.real, p1.imag]], layer, linetype)
-            for e in ends:
-                if abs(((e - z[a]) * d.conjugate()).imag) > 1e-6:
-                    f.poly([[z[a].real, z[a].imag], [e.real, e.imag], [z[b].real, z[b].imag]], layer, linetype)
-        elif ln.kind == "slotted":
-            a, cpin = ln.axis
-            block = m.links[ln.number - 2].name
-            reach = max(float(np.max(s.cycle.curve.kin.slide[block][0])) * MM,
-                        *(abs(z[p] - z[cpin]) for p in on_link.get(ln.name, []) if p in hang))
-            d = (z[a] - z[cpin]) / abs(z[a] - z[cpin])
-            tip = z[cpin] + (reach + 4.0 * unit) * d
-            f.poly([[z[cpin].real, z[cpin].imag], [tip.real, tip.imag]], layer, linetype)
-        elif ln.kind in ("block", "slider"):
-            angle = float(k.angle[ln.name][i]) if ln.kind == "block" else m.groups[ln.group - 1].guide.angle
-            w, h = (6.0, 3.5) if ln.kind == "block" else (9.0, 5.0)
-            e = complex(math.cos(angle), math.sin(angle))
-            corners = [z[ln.name] + unit * size * (sx * w / 2 + 1j * sy * h / 2) * e
-                       for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-            f.poly([[q.real, q.imag] for q in corners], layer, linetype, closed=True)
-    for n in m.joint_names:
-        if n in m.frame or n == m.crank.joint or any(n in g.new for g in m.groups) or n in hang:
-            f.circle((z[n].real, z[n].imag), 1.2 * size * unit, layer)
+def _xy(z) -> tuple[float, float]:
+    z = complex(z) * MM
+    return z.real, z.imag
+
+
+def _gost(label: str, lang: str) -> str:
+    return label if lang == "ru" else label.replace(",", ".")
 
 
 # ----------------------------------------------------------------------------------------------
 # field 2: the kinematic diagrams of the output link
 
 
-def _diagrams_field(sh: Sheet, s: Sheet1, lang: str):
-    m, c, sc = s.mechanism, s.cycle, s.scales
+def _diagrams_field(sh: Sheet, s: Sheet1, lang: str, box):
+    c, sc = s.cycle, s.scales
     cv = c.curve
-    slider = m.output.kind == "slider"
-    f = sh.add_field("diagrams", BOX_DIAGRAMS, tr(lang, "Kinematic diagrams of the output link {link}").format(link=m.output.link))
-    x0 = BOX_DIAGRAMS[0] + 22.0
+    f = field(sh, "diagrams", box, _diagrams_heading(s, lang))
+    x0b, y0b, x1b, y1b = f.inner
     length = sc.axis_mm
-    top = f.inner[3]
-    names = ("S", "V", "a") if slider else ("ψ", "ω", "ε")
-    units = (tr(lang, "m/mm"), tr(lang, "(m/s)/mm"), tr(lang, "(m/s²)/mm")) if slider \
-        else (tr(lang, "rad/mm"), tr(lang, "(rad/s)/mm"), tr(lang, "(rad/s²)/mm"))
-    series = ((cv.s, sc.s), (cv.v, sc.v), (cv.a, sc.a))
-    y = top
-    evens = [p for p in c.positions if p.label.isdigit()]
-    for name, unit, (vals, mu) in zip(names, units, series):
-        ys = np.asarray(vals) / mu
-        up, down = max(float(ys.max()), 0.0), max(float(-ys.min()), 0.0)
-        y0 = y - up - 8.0
-        sh.line((x0, y0), (x0 + length + 4, y0), "Основные")
-        sh.arrow((x0 + length + 6, y0), (1, 0), "Основные", 3.5, 1.2)
-        sh.line((x0, y0 - down - 2), (x0, y0 + up + 4), "Основные")
-        sh.arrow((x0, y0 + up + 6), (0, 1), "Основные", 3.5, 1.2)
-        sh.text(x0 - 1.5, y0 + up + 6, name, H, align="right", valign="top")
-        sh.text(x0 + length + 3, y0 - 1.5, "φ", H, valign="top")
-        xs = x0 + np.asarray(cv.travel) / sc.phi
-        keep = slice(None, None, 2)
-        sh.poly(np.column_stack([xs[keep], (y0 + ys)[keep]]), "Основные")
-        for p in evens:
-            xx = x0 + p.travel / sc.phi
-            sh.line((xx, y0 - 1.0), (xx, y0 + 1.0), "Тонкие")
-            if name == names[-1]:
-                sh.text(xx, y0 - down - 3.0, _label(p.label), H_SMALL, align="center", valign="top")
-        for p in c.positions:
-            if p.extreme == "end":
-                xx = x0 + p.travel / sc.phi
-                sh.line((xx, y0 - down), (xx, y0 + up), "Тонкие", "DASHED")
-        sh.text(x0 + length + 10, y0 + up * 0.5 + 3.0, f"μ_{{{name}}} = {num(mu, lang, sig=3)} {unit}", H_SMALL,
-                width=BOX_DIAGRAMS[2] - (x0 + length + 10) - 2, max_lines=2)
-        y = y0 - down - 10.0
-    mu_phi = num(math.degrees(sc.phi), lang, sig=3)
-    sh.text(x0, max(y, BOX_DIAGRAMS[1] + 3.0), f"μ_{{φ}} = {mu_phi} °/" + tr(lang, "mm") +
-            tr(lang, "; positions from position 0"), H_SMALL)
+    x0 = x0b + DIAGRAM_LEFT - 1.0 + max(0.0, (x1b - x0b) - (DIAGRAM_LEFT + length + 9.0 + DIAGRAM_RIGHT)) / 2
+    xs = x0 + np.asarray(cv.travel) / sc.phi
+    marks = [x0 + p.travel / sc.phi for p in c.positions]
+    ends = [x0 + p.travel / sc.phi for p in c.positions if p.extreme == "end"]
+    series = _diagram_series(s)
+    lines = wrap_items(sh, _diagram_items(s, lang), box[2] - box[0] - 4.0)
+    cap_h = caption_height(len(lines))
+    within = (x0b, y0b + cap_h, x1b, y1b)
+    y = y1b
+    y_axis = y
+    for name, unit, mu, ys in series:
+        y_axis = diagram(sh, within, x0, y, length, xs, [(ys, "Основные", None, None)], name, marks, ends)
+        down = max(float(-ys.min()), 0.0)
+        y = y_axis - down - 3.0 - 4.0
+    # the position numbers under the last diagram
+    position_numbers(sh, within, [(x0 + p.travel / sc.phi, p.label) for p in shown(c.positions)], y + 4.0)
+    caption(sh, box, lines)
     return f
 
 
@@ -225,56 +371,110 @@ def _diagrams_field(sh: Sheet, s: Sheet1, lang: str):
 # fields 3–6: the plans
 
 
-def _plan_field(sh: Sheet, plan: Plan, box, label: str, lang: str):
-    velocity = plan.kind == "velocity"
-    pts = {n: plan.mm(n) for n in plan.points}
-    zs = np.array(list(pts.values()))
-    lo, hi = complex(zs.real.min(), zs.imag.min()), complex(zs.real.max(), zs.imag.max())
-    x0, y0, x1, y1 = box
-    mid_box = np.array([(x0 + x1) / 2, (y0 + y1) / 2 - 8.0])
-    mid = (lo + hi) / 2
-    factor = 1.0 / plan.scale  # paper mm per (m/s) or (m/s²)
-    origin = mid_box - np.array([mid.real, mid.imag])
-    unit_text = tr(lang, "(m/s)/mm") if velocity else tr(lang, "(m/s²)/mm")
-    mu = f"μ_{{{'v' if velocity else 'a'}}} = {num(plan.scale, lang, sig=3)} {unit_text}"
-    heading = (tr(lang, "Velocity plan, position {label}").format(label=label) if velocity else
-               tr(lang, "Acceleration plan, position {label}").format(label=label))
-    f = sh.add_field(f"{plan.kind}_plan_{label}", box, heading, origin=tuple(origin), scale=factor, scale_text=mu)
+def _vec_symbol(sym: str) -> str:
+    """A plan vector's symbol in the sheet's markup: 'v_BA' → 'v_{BA}', 'a^τ_BA' → 'a^{τ}_{BA}'."""
+    head, _, tail = sym.partition("_")
+    sup = ""
+    if "^" in head:
+        head, sup = head.split("^", 1)
+        sup = f"^{{{sup}}}"
+    return f"{head}{sup}_{{{tail}}}" if tail else head + sup
 
-    def at(label_):
-        z = pts[label_]
-        return np.array([origin[0] + z.real, origin[1] + z.imag])
+
+def _plan_items(s: Sheet1, plan: Plan, i: int, lang: str) -> list[str]:
+    """The vectors' values of a plan (the core's magnitudes), then the links' ω (ε) at its position."""
+    velocity = plan.kind == "velocity"
+    seen, vals = set(), []
+    top = max((v.magnitude for v in plan.vectors), default=0.0)
+    for v in plan.vectors:
+        if v.symbol in seen:
+            continue
+        seen.add(v.symbol)
+        vals.append(f"{_vec_symbol(v.symbol)} = {fixed(v.magnitude, top, lang)}")
+    unit = tr(lang, "m/s") if velocity else tr(lang, "m/s²")
+    if vals:
+        vals[-1] += f" {unit}"
+    k = s.cycle.kin
+    rot = [ln for ln in s.mechanism.links if ln.kind in ("bar", "slotted")]
+    ang = []
+    arr = k.omega if velocity else k.epsilon
+    top = max([abs(float(arr[ln.name][i])) for ln in rot] + [abs(k.omega1) if velocity else 0.0])
+    for ln in rot:
+        ang.append(f"{'ω' if velocity else 'ε'}_{{{ln.number}}} = {fixed(float(arr[ln.name][i]), top, lang)}")
+    if ang:
+        ang[-1] += " " + (tr(lang, "rad/s") if velocity else tr(lang, "rad/s²"))
+    return vals + ang
+
+
+def _plan_field(sh: Sheet, s: Sheet1, plan: Plan, box, label: str, index: int, lang: str):
+    velocity = plan.kind == "velocity"
+    pts = _plan_points(plan)
+    lo, hi = _plan_extent(plan)
+    f = field(sh, plan.kind + "_plan_" + label.replace("′", "'"), box, _plan_heading(plan, label, lang))
+    lines = wrap_items(sh, _plan_items(s, plan, index, lang), box[2] - box[0] - 4.0)
+    x0, _, x1, y1 = f.inner
+    room = (x0, box[1] + caption_height(len(lines)), x1, y1 - SCALE_H)
+    mu = plan.scale
+    fit = fit_view(lo, hi, room, margin=PLAN_PAD, choices=[("", 1.0)])
+    note = ""
+    if not fit.fits:  # the next round μ at which it fits (said under the plan)
+        for mu2 in sorted(float(f"{m * 10.0 ** e:.6g}") for m in SERIES for e in range(-9, 10)):
+            if mu2 <= mu * (1 + 1e-9):
+                continue
+            fit = fit_view(lo, hi, room, margin=PLAN_PAD, choices=[("", mu / mu2)])
+            if fit.fits:
+                note = tr(lang, "drawn at μ = {mu2}: the plan's μ = {mu} does not fit").format(
+                    mu2=num(mu2, lang, sig=3), mu=num(mu, lang, sig=3))
+                mu = mu2
+                break
+    k = fit.scale
+    sh.set_field_transform(f, fit.origin, k / plan.scale, "")
+    unit_text = tr(lang, "(m/s)/mm") if velocity else tr(lang, "(m/s²)/mm")
+    scale_line(sh, f, f"μ_{{{'v' if velocity else 'a'}}} = {num(mu, lang, sig=3)} {unit_text}")
+    within = room
+    origin = np.array(fit.origin)
+
+    def at(name):
+        z = pts[name] * k
+        return origin + np.array([z.real, z.imag])
 
     drawn = set()
     for v in plan.vectors:
         a, b = at(v.start), at(v.end)
         d = b - a
-        if np.hypot(*d) < 0.3 or (v.start, v.end) in drawn:
+        n = float(np.hypot(*d))
+        if n < 0.5 or (v.start, v.end) in drawn:
             continue
         drawn.add((v.start, v.end))
         absolute = v.start == plan.pole
-        dashed = "^n" in v.symbol or "^τ" in v.symbol
-        sh.line(a, b, "Основные" if absolute else "Тонкие", "DASHED" if dashed else None)
-        sh.arrow(b, d, "Основные" if absolute else "Тонкие", min(3.5, 0.4 * np.hypot(*d)), 1.0)
-    placed, named = [], set()
-    for n in sorted(pts, key=lambda q: q != plan.pole):
-        q = at(n)
-        if n in named or any(np.hypot(*(q - r)) < 2.5 for r in placed):
+        layer = "Основные" if absolute else "Тонкие"
+        sh.line(a, b - d / n * min(2.0, 0.3 * n), layer)
+        sh.arrow(b, d, layer, min(3.5, 0.45 * n), 1.1 if absolute else 0.9)
+    sh.dot(at(plan.pole), 0.8)
+    # the points named, coincident ones together ("b, s_4"); the pole with the fixed joints
+    named = set()
+    centre = np.mean([at(n) for n in pts], axis=0)
+    for n in sorted(pts, key=lambda q: (q != plan.pole, q)):
+        if n in named:
             continue
-        group = [g for g in pts if g not in named and np.hypot(*(at(g) - q)) < 2.5]
+        q = at(n)
+        group = [g for g in sorted(pts) if g not in named and np.hypot(*(at(g) - q)) < 1.5]
+        if n not in group:
+            group.insert(0, n)
         named.update(group)
-        group.sort(key=lambda g: g != plan.pole)
-        text = ", ".join(_sub(g) for g in group)
+        group.sort(key=lambda g: (g != plan.pole, g))
+        text = ", ".join(sub(g) for g in group)
         if plan.pole in group and plan.at_pole:
-            text += ", " + ", ".join(_sub(g) for g in plan.at_pole)
+            text += ", " + ", ".join(sub(g) for g in plan.at_pole)
         others = [at(g) for g in pts if g not in group]
         push = sum(((q - r) / max(np.hypot(*(q - r)), 1e-6) ** 2 for r in others), np.zeros(2))
         if np.hypot(*push) < 1e-9:
-            push = np.array([0.0, 1.0])
-        d = push / np.hypot(*push)
-        sh.text(q[0] + 4.0 * d[0], q[1] + 4.0 * d[1], text, H, align="left" if d[0] > 0.5 else "right" if d[0] < -0.5
-                else "center", valign="bottom" if d[1] > 0.5 else "top" if d[1] < -0.5 else "middle")
-        placed.append(q)
+            push = q - centre if np.hypot(*(q - centre)) > 1e-9 else np.array([0.0, 1.0])
+        sh.label(text, tuple(q), H_LABEL, within=within, dirs=dirs_from(push), dists=(1.2, 2.5, 4.5),
+                 priority=8 if n == plan.pole else 7)
+    if note:
+        lines = wrap_items(sh, _plan_items(s, plan, index, lang) + [note], box[2] - box[0] - 4.0)
+    caption(sh, box, lines)
     return f
 
 
@@ -282,7 +482,11 @@ def _plan_field(sh: Sheet, plan: Plan, box, label: str, lang: str):
 # the results table and the sheet
 
 
-def _results(sh: Sheet, s: Sheet1, lang: str) -> None:
+def _results_rows(s: Sheet1) -> int:
+    return 5 if s.cycle.stroke is not None else 3
+
+
+def _results(sh: Sheet, s: Sheet1, lang: str, box) -> None:
     m, c, st = s.mechanism, s.cycle, s.structure
     rows = [(tr(lang, "Structural formula; W"), f"{st.formula}; W = {st.dof}"),
             (tr(lang, "Crank speed n_{1}"),
@@ -296,19 +500,21 @@ def _results(sh: Sheet, s: Sheet1, lang: str) -> None:
     worst = max(c.pressure, key=lambda p: p.worst)
     rows.append((tr(lang, "Largest pressure angle"),
                  f"{num(math.degrees(worst.worst), lang, decimals=1)}°"))
-    table(sh, BOX_TABLE, tr(lang, "Main results"), rows, col1=0.55, h=H_SMALL)
+    table(sh, box, tr(lang, "Main results"), rows, col1=0.55, h=H_NOTE)
 
 
 def sheet1(s: Sheet1, lang: str, title) -> Sheet:
     """Build sheet 1 of a mechanism (no file written)."""
     sh = Sheet(lang)
     sh.frame()
-    scheme = _scheme_field(sh, s, lang)
-    _diagrams_field(sh, s, lang)
-    for j, pl in enumerate(s.plans[:2]):
-        _plan_field(sh, pl.velocity, BOX_PLANS[j][0], _label(pl.position.label), lang)
-        _plan_field(sh, pl.acceleration, BOX_PLANS[j][1], _label(pl.position.label), lang)
-    _results(sh, s, lang)
+    lay = layout(sh, s, lang)
+    scheme = _scheme_field(sh, s, lang, lay.scheme)
+    _diagrams_field(sh, s, lang, lay.diagrams)
+    for boxes, pl in zip(lay.plans, s.plans[:2]):
+        _plan_field(sh, s, pl.velocity, boxes[0], pl.position.label, pl.position.index, lang)
+        _plan_field(sh, s, pl.acceleration, boxes[1], pl.position.label, pl.position.index, lang)
+    _results(sh, s, lang, lay.table)
     sh.title_block(title, name=tr(lang, "Kinematic analysis of the lever mechanism"),
                    designation=title.designation_for(1, 0), scale=scheme.scale_label)
+    sh.finish()
     return sh

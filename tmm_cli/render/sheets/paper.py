@@ -62,7 +62,7 @@ STYLE = "OpenGostTypeB-Regular"  # LibreCAD maps this name to its GOST type B fo
 FONT = "osifont.ttf"  # ships in tmm_cli/render/sheets/fonts (GPL with the font exception)
 FONT_DIR = Path(__file__).with_name("fonts")
 # characters osifont lacks, written with ones it has
-GLYPHS = str.maketrans({"′": "'", "−": "-", "…": "...", "\u2009": " ", "\u202f": " ", "\xa0": " "})
+GLYPHS = str.maketrans({"′": "'", "−": "-", "→": "–", "…": "...", "\u2009": " ", "\u202f": " ", "\xa0": " "})
 
 
 def gost_scale(label: str) -> float:
@@ -751,15 +751,17 @@ class Sheet:
 
     # ----------------------------------------------------------------------------- fields
     def add_field(self, name: str, box, heading: str, *, origin=(0.0, 0.0), scale: float = 1.0,
-                  scale_label: str = "", heading_h: float = H_TITLE, scale_text: str | None = None) -> Field:
+                  scale_label: str = "", heading_h: float = H_TITLE, scale_text: str | None = None,
+                  heading_pad: float = 2.0) -> Field:
         """A field with its heading centred at the top (upper case, as on the book's sheets).
 
         The heading carries XDATA: name, box, origin, scale, scale label (read by the tests).
-        `scale_text` is printed under the heading (e.g. "М 1:2").
+        `scale_text` is printed under the heading (e.g. "М 1:2"). The heading keeps `heading_pad`
+        from either side of the box (it wraps, then shrinks to 5 mm, rather than come closer).
         """
         x0, y0, x1, y1 = box
         head = self.text((x0 + x1) / 2, y1 - 2.0, heading.upper(), heading_h, align="center", valign="top",
-                         width=x1 - x0 - 4, max_lines=2, min_h=5.0)
+                         width=x1 - x0 - 2 * heading_pad, max_lines=2, min_h=5.0)
         low = min(e.dxf.insert[1] for e in head)
         top = low - DESCENTS * heading_h - 2.0
         if scale_text:  # on its own line under the heading (ГОСТ 2.316: «М 1:2»)
@@ -771,6 +773,11 @@ class Sheet:
         f = Field(self, name, tuple(box), tuple(origin), scale, scale_label, inner=(x0 + 1.0, y0 + 1.0, x1 - 1.0, top))
         self.fields.append(f)
         return f
+
+    def heading_height(self, heading: str, width: float, heading_h: float = H_TITLE, heading_pad: float = 2.0) -> float:
+        """How far below a field's top its inner box starts (the heading as :meth:`add_field` sets it)."""
+        h, _, lines = self._fit(heading.upper(), heading_h, width - 2 * heading_pad, 2, None, 0.5, 5.0, MIN_WIDTH_FACTOR)
+        return 2.0 + h + (len(lines) - 1) * h * (1.0 + 0.5 + 0.15) + DESCENTS * heading_h + 2.0
 
     def set_field_transform(self, f: Field, origin, scale: float, scale_label: str) -> None:
         """Fix a field's transform after its heading was written (the XDATA follows)."""
