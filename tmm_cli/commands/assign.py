@@ -7,7 +7,15 @@ from pathlib import Path
 import click
 
 from .emit import console_for, print_files
-from .options import CONTEXT, crank_option, lang_option, resolve_lang, title_block, torque_option, variants_file_option
+from .options import (
+    CONTEXT,
+    crank_option,
+    lang_option,
+    resolve_lang,
+    title_block,
+    torque_option,
+    variants_file_option,
+)
 
 
 @click.command("assign", context_settings=CONTEXT)
@@ -29,7 +37,13 @@ from .options import CONTEXT, crank_option, lang_option, resolve_lang, title_blo
 def assign_cmd(roster, out, due, issued, assign, seed, title_teacher, title_org, variants_file, crank_rpm, torque_nm, lang):
     """Teachers: the assignment of every student of a roster (A4 PDF each, and one merged to print)."""
     from ..errors import TmmError
-    from ..output.folder import ensure_writable_dir, read_manifest, refuse_foreign, staged_dir, write_owned
+    from ..output.folder import (
+        ensure_writable_dir,
+        read_manifest,
+        refuse_foreign,
+        staged_dir,
+        write_owned,
+    )
     from ..render.assignment import write_assignments
     from ..render.terminal.assign import print_assignments
     from ..teacher.assign import (

@@ -12,7 +12,15 @@ from pathlib import Path
 import click
 
 from .emit import emit
-from .options import CONTEXT, force_option, format_option, json_option, lang_option, no_plots_option, resolve_lang
+from .options import (
+    CONTEXT,
+    force_option,
+    format_option,
+    json_option,
+    lang_option,
+    no_plots_option,
+    resolve_lang,
+)
 
 FIGURES = ("carrier",)
 DATA_FILES = ("carrier.json",)

@@ -7,26 +7,20 @@ import click
 from .emit import emit, figure_names
 from .options import (
     CONTEXT,
-    aw_option,
     crank_option,
     force_option,
     format_option,
+    gear_design_options,
     json_option,
     lang_option,
     no_plots_option,
     out_option,
-    planets_option,
-    ratio_option,
     ratio_value,
     resolve_lang,
-    select_option,
     sheets_option,
-    shift_option,
     shift_value,
-    stiffness_option,
     title_block,
     title_options,
-    tolerance_option,
     torque_option,
     variant_folder,
     variant_option,
@@ -40,13 +34,7 @@ from .options import (
 @variants_file_option
 @crank_option
 @torque_option
-@ratio_option
-@tolerance_option
-@planets_option
-@shift_option
-@aw_option
-@select_option
-@stiffness_option
+@gear_design_options
 @out_option
 @format_option
 @no_plots_option

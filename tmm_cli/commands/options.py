@@ -94,6 +94,14 @@ select_option = click.option("--select", "select", type=click.Choice(["accurate"
                              help="Which reducer to carry: the most accurate ratio among sets at most one tooth larger than the smallest, or the smallest.")
 
 
+def gear_design_options(f):
+    """The options of sheet 4's design that `tmm gears` and `tmm project` share, in their --help order."""
+    for option in reversed((ratio_option, tolerance_option, planets_option, shift_option, aw_option, select_option,
+                            stiffness_option)):
+        f = option(f)
+    return f
+
+
 def cam_choice_options(f):
     """The student's say over the cam (issue 8): --r0, --offset, --l-oc, --swing, --roller."""
     for args, kw in reversed((

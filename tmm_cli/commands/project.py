@@ -8,29 +8,23 @@ from ..errors import TmmError
 from .emit import console_for, print_files, print_kept
 from .options import (
     CONTEXT,
-    aw_option,
     cam_choice,
     cam_choice_options,
     crank_option,
     force_option,
     format_option,
+    gear_design_options,
     json_option,
     lang_option,
     mechanism_option,
     no_plots_option,
     out_option,
-    planets_option,
-    ratio_option,
     ratio_value,
     resolve_lang,
-    select_option,
-    shift_option,
     shift_value,
     step_option,
-    stiffness_option,
     title_block,
     title_options,
-    tolerance_option,
     torque_option,
     variant_folder,
     variant_option,
@@ -45,13 +39,7 @@ from .options import (
 @crank_option
 @torque_option
 @mechanism_option
-@ratio_option
-@tolerance_option
-@planets_option
-@shift_option
-@aw_option
-@select_option
-@stiffness_option
+@gear_design_options
 @out_option
 @format_option
 @no_plots_option
