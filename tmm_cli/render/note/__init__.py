@@ -158,6 +158,60 @@ def write_note(folder: Path, result, lang: str, title, figures: dict, template: 
     return used
 
 
+def rewrite_docx(path: Path, lang: str, title=None) -> Path:
+    """`tmm note --to docx`: note.docx for the project in `path` (a folder, or a file in it), written
+    from its results.json (the run is repeated with the options it records, the note's figures drawn
+    afresh). The text is the one tmm writes: edits of note.typ do not reach it."""
+    import json
+    import os
+    import tempfile
+
+    from ...project import run_project
+    from ...variants import Variant
+    from ..figures.note import save_note_figure
+    from ..figures.note_scales import figure_size_cm
+
+    folder = Path(path)
+    folder = folder if folder.is_dir() else folder.parent
+    src = folder / "results.json"
+    if not src.is_file():
+        raise TmmError(f"no {src} here: the Word note is written from the project's results; run tmm project "
+                       "--report docx in its folder's parent, or keep results.json beside the note")
+    try:
+        data = json.loads(src.read_text(encoding="utf-8"))
+        row = data["input"]
+        v = Variant(int(data["variant"]), int(row["scheme"]), row["l_bc_m"], float(row["nu_max_deg"]),
+                    float(row["n_cam_rpm"]), float(row["stroke"]), int(row["law"]), float(row["phi_rise_deg"]),
+                    float(row["phi_far_dwell_deg"]), float(row["phi_return_deg"]))
+        o = data.get("options") or {}
+    except (OSError, ValueError, KeyError, TypeError):
+        raise TmmError(f"no {src} here: the Word note is written from the project's results; run tmm project "
+                       "--report docx in its folder's parent, or keep results.json beside the note") from None
+    from ...cam.design import CamChoice
+    from ...gears.design import parse_ratio
+
+    choice = CamChoice(**o["cam_choice"]) if o.get("cam_choice") else None
+    shift = o.get("shift")
+    result = run_project(v, crank_rpm=o.get("crank_rpm"), torque_nm=o.get("torque_nm"), step_deg=o.get("step_deg", 10.0),
+                         ratio=parse_ratio(o["ratio"]) if o.get("ratio") else None,
+                         tolerance_pct=o.get("tolerance_pct", 5.0), planets=o.get("planets"),
+                         shift=tuple(shift) if isinstance(shift, list) else shift, a_w_mm=o.get("a_w_mm"),
+                         select=o.get("select", "accurate"), cam_choice=choice)
+    with tempfile.TemporaryDirectory(prefix=".tmm-note-", dir=folder) as tmp:
+        tmp = Path(tmp)
+        figures = {}
+        for name in NOTE_FIGURES:
+            save_note_figure(tmp, result, lang, name, raster=True)
+            w, h = figure_size_cm(name, result.gears)
+            figures[name] = (note_figure_file(name, "svg"), note_figure_file(name, "png"), w, h)
+        write_note(tmp, result, lang, title, figures, docx=True, pdf=False)
+        try:
+            os.replace(tmp / DOCX_FILE, folder / DOCX_FILE)
+        except OSError as exc:
+            raise TmmError(f"cannot write the note for Word ({exc.strerror})") from None
+    return folder / DOCX_FILE
+
+
 def markdown_note(result, lang: str, figure_files: list[str]) -> str:
     """The note as Markdown (report.md), with the screen PNGs (figure_files) as its pictures."""
     from ...i18n.lang import pick

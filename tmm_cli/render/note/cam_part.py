@@ -210,8 +210,10 @@ def _motion_table(c: Ctx, r) -> None:
             rows.append([str(row.index), n(row.phi_deg), n(row.t_s * 1000, decimals=2), n(row.s * 1000, decimals=3),
                          n(row.v, decimals=3), n(row.a, decimals=1), n(bd, decimals=2), t(*_PHASE[row.phase])])
     align = ["center"] + ["right"] * (len(header) - 1 - (0 if rocker else 1)) + ([] if rocker else ["left"])
+    widths = [0.55, 0.7, 0.9, 0.9, 1.0, 1.0, 1.0, 1.0, 1.0, 0.9] if rocker else [0.5, 0.65, 0.85, 1.0, 0.9, 1.0, 0.9, 1.55]
     c.table("cam_motion", t("Displacement, velocity and acceleration of the follower in the positions of the cam",
-                            "Перемещение, скорость и ускорение толкателя в положениях кулачка"), header, rows, align=align)
+                            "Перемещение, скорость и ускорение толкателя в положениях кулачка"), header, rows, align=align,
+            widths=widths)
 
 
 # --------------------------------------------------------------------------------------------------

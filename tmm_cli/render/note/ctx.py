@@ -165,7 +165,7 @@ class Ctx:
                       else {"one": "сателлит", "few": "сателлита", "many": "сателлитов"})
 
 
-LINE_EM = 27.0  # the width of a display formula line (16,5 cm less the number), in em of 14 pt
+LINE_EM = 33.0  # the width of a display formula line (16,5 cm less the number) in :func:`width`'s em
 
 
 def fit_lines(pieces: list[str], limit: float = LINE_EM) -> str:

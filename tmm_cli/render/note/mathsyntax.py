@@ -20,6 +20,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 # named symbols (typst names) and what they print as
 WORDS = {
@@ -276,8 +277,9 @@ def _unwrap(node):
     return node
 
 
+@lru_cache(maxsize=8192)
 def parse(src: str) -> Seq:
-    """The tree of a formula (typst math source).
+    """The tree of a formula (typst math source); the same tree for the same text (do not change it).
 
     >>> t = parse('k_φ = φ_"р"/b = 210/240 = "0,875"')
     >>> [type(x).__name__ for x in t.items if not isinstance(x, Sym) or x.kind != "space"]
