@@ -104,8 +104,9 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
         from .figures.kit import SharedWork, can_fork
 
         parallel = figure_cache is None and can_fork() and (len(names) + len(note_figs) > 1 or (sheets and (names or typeset)))
-        draw = [_figure_task(tmp, result, lang, fmt, n, svg) for n in _largest_first(names, svg)]
-        draw += [_note_figure_task(tmp, result, lang, n, "docx" in reports) for n in note_figs]
+        # the note's figures first: the note is typeset while the screen figures are still drawn
+        draw = [_note_figure_task(tmp, result, lang, n, "docx" in reports) for n in note_figs]
+        draw += [_figure_task(tmp, result, lang, fmt, n, svg) for n in _largest_first(names, svg)]
         later = []
         if sheets:  # the A1 drawing sheets 3 and 4 (issue 10): DXF + PDF from one ezdxf model
             from .sheets import write_sheets
@@ -125,12 +126,19 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
                 write_text(tmp / "report.md", markdown_report(result, lang, files))
             if meanwhile is not None:
                 meanwhile()
+            # --- the note (issues 11, 20): built now, typeset once its own figures are drawn --------
+            note_error, note = None, None
+            if typeset:
+                note, note_error = _prepare_note(tmp, result, lang, title, note_template, reports, note_figs)
+                work.run_until(range(len(note_figs)))
+                if note is not None and "pdf" in reports:
+                    note_error = _finish_note(tmp, note, title, reports, pdf=True, docx=False)
             work.wait_shared()  # every figure is there
             finish_cached()  # and those another batch worker was drawing
-            # --- the typeset note (issue 11) embeds the figures' SVG copies --------------------------
-            note_error = None
+            if note is not None and note_error is None and "docx" in reports:
+                note_error = _finish_note(tmp, note, title, reports, pdf=False, docx=True)
             if typeset:
-                note_error = _write_note(tmp, result, lang, title, note_template, reports)
+                _tidy_note_figures(tmp, reports, note_error)
         # ----------------------------------------------------------------------------------------
         written = staged_names(tmp)
     if kept is not None:
@@ -164,6 +172,52 @@ def _write_linkage_sheets(tmp: Path, s2, lang: str, title) -> list[str]:
     return save_sheet(sheet1(s2.sheet1, lang, title), tmp, "sheet1") + save_sheet(sheet2(s2, lang, title), tmp, "sheet2")
 
 
+def _note_files(result, note_figs) -> dict:
+    from .figures.note_scales import figure_size_cm
+    from .note import note_figure_file
+
+    files = {}
+    for name in note_figs:
+        w, h = figure_size_cm(name, result.gears)
+        files[name] = (note_figure_file(name, "svg"), note_figure_file(name, "png"), w, h)
+    return files
+
+
+def _prepare_note(tmp: Path, result, lang: str, title, template: str | None, reports, note_figs):
+    """The note's document (and note.typ) before its figures are drawn: (document, None) or
+    (None, the TmmError of a failed note)."""
+    from ..errors import TmmError
+    from .note import prepare_note
+
+    try:
+        return prepare_note(tmp, result, lang, title, _note_files(result, note_figs), template,
+                            pdf="pdf" in reports), None
+    except TmmError as exc:
+        return None, exc
+
+
+def _finish_note(tmp: Path, doc, title, reports, pdf: bool, docx: bool):
+    """note.pdf (typst) or note.docx; the TmmError of a failed note (its files removed), else None."""
+    from ..errors import TmmError
+    from .note import finish_note
+
+    try:
+        finish_note(tmp, doc, title, pdf=pdf, docx=docx)
+    except TmmError as exc:
+        return exc
+    return None
+
+
+def _tidy_note_figures(tmp: Path, reports, note_error) -> None:
+    """The PNGs serve note.docx only, the SVGs note.typ only; a failed note takes its figures along."""
+    from .note import NOTE_FIGURES, note_figure_file
+
+    for name in NOTE_FIGURES:
+        (tmp / note_figure_file(name, "png")).unlink(missing_ok=True)
+        if note_error is not None or "pdf" not in reports:
+            (tmp / note_figure_file(name, "svg")).unlink(missing_ok=True)
+
+
 def _note_figure_task(tmp: Path, result, lang: str, name: str, raster: bool):
     def task():
         from .figures.note import save_note_figure
@@ -171,36 +225,3 @@ def _note_figure_task(tmp: Path, result, lang: str, name: str, raster: bool):
         save_note_figure(tmp, result, lang, name, raster=raster)
 
     return task
-
-
-def _write_note(tmp: Path, result, lang: str, title, template: str | None, reports):
-    """The note into the staging folder; returns the TmmError of a failed note (its files removed).
-
-    It embeds the note's own figures note_<name>.svg (note.typ) and note_<name>.png (note.docx,
-    removed once it is written); a figure not drawn (``--no-plots``) is left out.
-    """
-    from ..errors import TmmError
-    from .figures.note_scales import figure_size_cm
-    from .note import NOTE_FIGURES, note_figure_file, write_note
-
-    files = {}
-    for name in NOTE_FIGURES:
-        svg, png = note_figure_file(name, "svg"), note_figure_file(name, "png")
-        if (tmp / svg).exists():
-            w, h = figure_size_cm(name, result.gears)
-            files[name] = (svg, png if (tmp / png).exists() else None, w, h)
-    made = [tmp / f for spec in files.values() for f in spec[:2] if f]
-    try:
-        write_note(tmp, result, lang, title, files, template, docx="docx" in reports, pdf="pdf" in reports)
-    except TmmError as exc:
-        for path in made:
-            path.unlink(missing_ok=True)
-        return exc
-    finally:
-        for spec in files.values():  # the PNGs serve the DOCX only
-            if spec[1]:
-                (tmp / spec[1]).unlink(missing_ok=True)
-    if "pdf" not in reports:  # the SVGs serve note.typ only
-        for spec in files.values():
-            (tmp / spec[0]).unlink(missing_ok=True)
-    return None

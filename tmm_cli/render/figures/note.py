@@ -84,6 +84,28 @@ def _mus(mu: float, lang: str) -> str:
     return text.replace(".", ",") if lang == "ru" else text
 
 
+def _phases(ax, r, lang: str, mu_phi: float, labels: bool = True) -> None:
+    """The phase bands of the screen figures; a phase named only where its name fits its band."""
+    from .cam import C_DWELL as CD, C_RET as CR, C_RISE as CRI, _phase_marks
+
+    _phase_marks(ax, r, lang, labels=False)
+    if not labels:
+        return
+    v = r.variant
+    bounds = [0.0, v.phi_rise_deg, v.phi_rise_deg + v.phi_far_dwell_deg, v.phi_working_deg, 360.0]
+    names = [pick(lang, "rise", "удаление"), pick(lang, "far dwell", "дальнее стояние"),
+             pick(lang, "return", "возвращение"), pick(lang, "near dwell", "ближнее стояние")]
+    short = [pick(lang, "rise", "удал."), pick(lang, "dwell", "д. ст."), pick(lang, "return", "возвр."),
+             pick(lang, "dwell", "б. ст.")]
+    for i, col in enumerate((CRI, CD, CR, CD)):
+        width_mm = (bounds[i + 1] - bounds[i]) / mu_phi
+        for name in (names[i], short[i]):
+            if width_mm >= 2.0 * len(name) + 3:  # ≈ 2 mm a letter at 10 pt
+                ax.text((bounds[i] + bounds[i + 1]) / 2, 0.97, name, transform=ax.get_xaxis_transform(), ha="center",
+                        va="top", fontsize=MIN_PT, color=col)
+                break
+
+
 def legible(fig) -> None:
     """No text under 10 pt at print size (the figure is printed at its natural size)."""
     from matplotlib.text import Text
@@ -103,7 +125,6 @@ def _legend_below(fig, ax, handles, ncol: int = 2) -> None:
 
 
 def _motion(r, lang: str):
-    from .cam import _phase_marks
     from .kit import mt
 
     v, m = r.variant, r.motion
@@ -129,7 +150,7 @@ def _motion(r, lang: str):
         box = S.Box(left, bottom + (2 - k) * (ph + gap), width, ph)
         ax = _axes(fig, box, size)
         axes.append(ax)
-        _phase_marks(ax, r, lang, labels=(k == 0))
+        _phases(ax, r, lang, sc.phi.mu, labels=(k == 0))
         yy = np.array(y, dtype=float)
         xx = deg.copy()
         if k == 2:  # the acceleration as a step where it jumps
@@ -297,7 +318,6 @@ def _profile(r, lang: str):
 
 
 def _pressure(r, lang: str):
-    from .cam import _phase_marks
     from .kit import mt
 
     v, z, p = r.variant, r.sizing, r.profile
@@ -307,7 +327,7 @@ def _pressure(r, lang: str):
     xa, ya = S.pressure_scales(r)
     deg = np.degrees(p.phi)
     ph = r.motion.program.phase_index(p.phi)
-    _phase_marks(ax, r, lang, labels=True)
+    _phases(ax, r, lang, xa.mu)
     ax.plot(deg, np.where(ph == 0, p.nu_deg, np.nan), color=C_RISE, lw=1.5)
     ax.plot(deg, np.where(ph == 2, p.nu_deg, np.nan), color=C_RET, lw=1.5, ls="-" if z.closure == "form" else "--")
     ax.plot(deg, np.where((ph == 1) | (ph == 3), p.nu_deg, np.nan), color=C_DWELL, lw=0.9, ls=":")

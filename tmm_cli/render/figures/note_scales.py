@@ -83,7 +83,7 @@ def fit_plan(xlo: float, xhi: float, ylo: float, yhi: float, w_mm: float, h_mm: 
 # the figures
 
 MOTION = {"size": (TEXT_WIDTH_MM, 190.0), "x": (17.0, 144.0), "panel": 48.0, "gap": 7.0, "bottom": 13.0}
-PRESSURE = {"size": (TEXT_WIDTH_MM, 82.0), "box": Box(17.0, 13.0, 144.0, 56.0)}
+PRESSURE = {"size": (TEXT_WIDTH_MM, 74.0), "box": Box(17.0, 13.0, 144.0, 56.0)}
 PLAN = {"size": (TEXT_WIDTH_MM, 150.0), "box": Box(18.0, 33.0, 143.0, 113.0)}
 MESH = {"size": (TEXT_WIDTH_MM, 140.0), "box": Box(18.0, 33.0, 143.0, 103.0)}
 PLANETARY = {"size": (TEXT_WIDTH_MM, 178.0), "scheme": Box(4.0, 52.0, 78.0, 122.0), "velocity": Box(86.0, 52.0, 76.0, 122.0),

@@ -117,6 +117,54 @@ def recompile(path: Path) -> Path:
     return typeset_in_copy(src.parent, src.name, src.with_suffix(".pdf"))
 
 
+def prepare_note(folder: Path, result, lang: str, title, figures: dict, template: str | None = None,
+                 pdf: bool = True):
+    """Build the document and (for the PDF) write note.typ and note-style.typ; the figures need not
+    be drawn yet. Returns the document for :func:`finish_note`."""
+    from ...inputs.titleblock import TitleFields
+    from .front import title_meta
+    from .typst import note_source
+
+    folder = Path(folder)
+    title = title or TitleFields()
+    doc = build_note(result, lang, figures, title)
+    try:
+        if pdf:
+            from .ctx import Ctx
+
+            meta = title_meta(Ctx(result, lang), title)
+            (folder / STYLE_FILE).write_text(template if template is not None else default_template(), encoding="utf-8")
+            (folder / "note.typ").write_text(note_source(doc, meta, STYLE_FILE), encoding="utf-8")
+    except BaseException:
+        _remove_note(folder)
+        raise
+    return doc
+
+
+def finish_note(folder: Path, doc, title, pdf: bool = True, docx: bool = False) -> list[str]:
+    """Compile note.pdf and/or write note.docx (the figures are drawn by now); on any error the
+    note's files are removed and the error raised. Returns the names of the figures used."""
+    from ...inputs.titleblock import TitleFields
+
+    folder = Path(folder)
+    try:
+        if pdf:
+            compile_note(folder)
+        if docx:
+            from .docx import write_docx
+
+            write_docx(doc, folder / DOCX_FILE, folder, title or TitleFields())
+    except BaseException:
+        _remove_note(folder)
+        raise
+    return [b.name for b in doc.blocks if type(b).__name__ == "Figure"]
+
+
+def _remove_note(folder: Path) -> None:
+    for name in (*NOTE_FILES, DOCX_FILE):
+        (folder / name).unlink(missing_ok=True)
+
+
 def write_note(folder: Path, result, lang: str, title, figures: dict, template: str | None = None,
                docx: bool = False, pdf: bool = True) -> list[str]:
     """Write note.typ, note-style.typ and note.pdf (and note.docx) into `folder`; returns the names
@@ -126,36 +174,8 @@ def write_note(folder: Path, result, lang: str, title, figures: dict, template: 
     `folder`; `template` is the style's text (default: the package's). On a typst error the
     note's files are removed and TmmError raised.
     """
-    from ...inputs.titleblock import TitleFields
-    from .front import title_meta
-    from .typst import note_source
-
-    folder = Path(folder)
-    title = title or TitleFields()
-    doc = build_note(result, lang, figures, title)
-    used = [b.name for b in doc.blocks if type(b).__name__ == "Figure"]
-    written = []
-    try:
-        if pdf:
-            from .ctx import Ctx
-
-            meta = title_meta(Ctx(result, lang), title)
-            (folder / STYLE_FILE).write_text(template if template is not None else default_template(), encoding="utf-8")
-            written.append(STYLE_FILE)
-            (folder / "note.typ").write_text(note_source(doc, meta, STYLE_FILE), encoding="utf-8")
-            written.append("note.typ")
-            compile_note(folder)
-            written.append("note.pdf")
-        if docx:
-            from .docx import write_docx
-
-            write_docx(doc, folder / DOCX_FILE, folder, title)
-            written.append(DOCX_FILE)
-    except BaseException:
-        for name in (*NOTE_FILES, DOCX_FILE):
-            (folder / name).unlink(missing_ok=True)
-        raise
-    return used
+    doc = prepare_note(folder, result, lang, title, figures, template, pdf=pdf)
+    return finish_note(folder, doc, title, pdf=pdf, docx=docx)
 
 
 def rewrite_docx(path: Path, lang: str, title=None) -> Path:

@@ -303,6 +303,8 @@ def _sizing(c: Ctx, r) -> None:
           f"вершиной в точке $D_i$, биссектриса которого направлена против удаления. {closure} Область, общая для "
           "всех положений (через 0,2° угла поворота кулачка), — зона допустимого расположения центра; радиус "
           "основной окружности равен расстоянию от центра до начального положения $B_0$ центра ролика."))
+    if rocker:
+        _swing(c, r)
     student = r.source == "student"
     own = r.own
     r0 = z.r0_m * 1000
@@ -335,13 +337,11 @@ def _sizing(c: Ctx, r) -> None:
               f"ось, $r_0 = {c.q(r0, decimals=2)}$ мм."))
         c.doc.claim(kind="cam_centre_moved", r0_mm=r0, r0_min_mm=r0_min)
     else:
-        c.p(t(f"The cam centre is taken at the point of the zone nearest to $B_0$, which gives the smallest cam, "
-              f"$r_0 = {c.q(r0, decimals=2)}$ mm.",
-              f"Центр кулачка принимаем в ближайшей к $B_0$ точке зоны, что даёт наименьший кулачок: "
-              f"$r_0 = {c.q(r0, decimals=2)}$ мм."))
+        c.p(t(f"The cam centre is taken at the point of the zone nearest to $B_0$, which gives the smallest cam"
+              + (" for this swing" if rocker else "") + f": $r_0 = {c.q(r0, decimals=2)}$ mm.",
+              f"Центр кулачка принимаем в ближайшей к $B_0$ точке зоны, что даёт наименьший кулачок"
+              + (" при этом направлении качания" if rocker else "") + f": $r_0 = {c.q(r0, decimals=2)}$ мм."))
         c.doc.claim(kind="cam_centre_nearest", r0_mm=r0)
-    if rocker:
-        _swing(c, r)
     # the book's vertex beside the taken centre
     if not student:
         base = (z.r0_min_m or z.r0_m) * 1000

@@ -318,9 +318,10 @@ class DocxWriter:
         line(f["designation"], space=12)
         for _ in range(5):
             line("")
-        for label, name, extra in ((f["teacher-label"], f["teacher"], f["date-label"]),
+        date = ("«___» __________ 20__ " + f["date-label"]).strip()
+        for label, name, extra in ((f["teacher-label"], f["teacher"], date),
                                    (f["student-label"] + (", " + f["group-label"] + " " + f["group"] if f["group"] else ""),
-                                    f["student"], f["date-label"])):
+                                    f["student"], date)):
             line(f"{label}  ____________  {name or '____________'}", align=A.RIGHT)
             line(extra, align=A.RIGHT, space=8)
         line(f"{f['grade-label']} ____________", align=A.RIGHT)

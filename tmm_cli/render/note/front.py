@@ -49,7 +49,7 @@ def title_meta(c: Ctx, title) -> dict:
         "group-label": t("group", "студент группы"),
         "group": title.group,
         "sign-label": t("signature", "подпись"),
-        "date-label": t("«___» __________ 20__", "«___» __________ 20__ г."),
+        "date-label": t("", "г."),  # after «  » ______ 20__
         "grade-label": t("Defended with the mark", "Работа защищена с оценкой"),
         "city": getattr(title, "city", "") or "",
         "year": str(title.the_year),
@@ -89,7 +89,7 @@ def _task(c: Ctx, title) -> None:
     who = title.student or "_" * 24
     group = title.group or "_" * 10
     lines = [
-        t(f"Student: {who}, group {group}.", f"Студенту {who} группы {group}."),
+        t(f"Student: {who}, group {group}.", f"Студент: {who}, группа {group}."),
         t(f"Topic: synthesis of the cam mechanism and of the gear drive, variant {v.number}.",
           f"Тема проекта: синтез кулачкового механизма и зубчатых механизмов привода, вариант {v.number}."),
         t(f"Input data (Table 1.2 {{cite:book}}, variant {v.number}): scheme of the cam mechanism {v.scheme}; "

@@ -29,6 +29,9 @@ def _frt(f: Fraction) -> str:
     return f"{f.numerator}/{f.denominator}" if f.denominator != 1 else f"{f.numerator}"
 
 
+INEXACT_PCT = 1.0  # a carried ratio this far off, with closer sets larger, is explained
+
+
 def _teeth(design) -> str:
     return design_teeth_text(design)
 
@@ -146,7 +149,9 @@ def _book(c: Ctx) -> None:
     sec = {"1": "2.4", "2": "2.5", "1+1": "2.4"}[der.scheme]
     tol = n(g.tolerance_pct)
     first = der.stages[0]
-    if der.fraction_rule == "forced":
+    if der.scheme == "1+1":
+        _book_pair(c, der)
+    elif der.fraction_rule == "forced":
         f = der.ratio_fraction
         err = (float(f) / g.i_planetary - 1) * 100
         c.p(t(f"The ratio is given as the simple fraction $i = {_fr(f)} = {c.q(float(f), sig=5)}$ (deviation "
@@ -184,16 +189,6 @@ def _book(c: Ctx) -> None:
         c.p(intro + tail)
         c.doc.claim(kind="book_fraction", rule=der.fraction_rule, chosen=f, convergents=tuple(der.convergents),
                     target=g.i_planetary, tolerance=g.tolerance_pct)
-    else:  # two stages: pairs of simple fractions near √i
-        pair = " · ".join(f"${_fr(s.fraction)}$" for s in der.stages)
-        c.p(t(f"By §2.2 {{cite:book}} the ratio is split into two stages near $sqrt(i_\"пл\")$: each stage is a simple "
-              f"fraction (denominator up to 10) within ±{n(g.tolerance_pct / 2)} %, and their product within ±{tol} %. "
-              f"Of the {len(der.tried)} pairs tried, {pair} gives the smallest reducer; each stage follows §2.4 {{cite:book}}.",
-              f"По п. 2.2 {{cite:book}} передаточное отношение разбиваем на две ступени около $sqrt(i_\"пл\")$: "
-              f"каждая — простая дробь (знаменатель не более 10) с точностью ±{n(g.tolerance_pct / 2)} %, "
-              f"произведение — с точностью ±{tol} %. Из {len(der.tried)} рассмотренных пар наименьший редуктор даёт "
-              f"{pair}; каждая ступень рассчитывается по п. 2.4 {{cite:book}}."))
-        c.doc.claim(kind="book_pair", sizes=tuple(s for _, s in der.tried), chosen_size=der.size)
     for j, st in enumerate(der.stages, 1):
         if len(der.stages) > 1:
             c.p(t(f"Stage {j}, $i_{j} = {_fr(st.fraction)}$:", f"Ступень {j}, $i_{j} = {_fr(st.fraction)}$:"), indent=False)
@@ -216,6 +211,27 @@ def _book(c: Ctx) -> None:
                   f"Ответ, приведённый в п. {p.section} {{cite:book}} ({teeth}), не удовлетворяет условию соосности "
                   f"({p.coaxial_lhs} ≠ {p.coaxial_rhs}) и даёт $i = {c.q(p.ratio, sig=3)}$ вместо {_frt(p.fraction)}; "
                   "методика, доведённая до конца без ошибок, даёт числа, полученные выше."))
+
+
+def _book_pair(c: Ctx, der) -> None:
+    """Two stages (§2.2): the pairs of simple fractions near √i_pl, the one with the smallest reducer."""
+    g = c.r.gears
+    t, n = c.t, c.n
+    tol = n(g.tolerance_pct)
+    pair = " · ".join(f"${_fr(s.fraction)}$" for s in der.stages)
+    product = (t(f"whose product is $i_\"пл\" = {_fr(der.ratio_fraction)}$ exactly",
+                 f"произведение которых точно равно $i_\"пл\" = {_fr(der.ratio_fraction)}$")
+               if der.fraction_rule in ("exact", "forced") else
+               t(f"whose product is within ±{tol} %", f"произведение которых отличается от $i_\"пл\"$ не более чем на ±{tol} %"))
+    c.p(t(f"By §2.2 {{cite:book}} the ratio is split into two stages with ratios near $sqrt(i_\"пл\")$ = "
+          f"{n(math.sqrt(g.i_planetary), sig=4)}: simple fractions (denominator up to 10) within ±{n(g.tolerance_pct / 2)} % of it, "
+          f"{product}. Of the {len(der.tried)} pairs compared, {pair} gives the smallest reducer (size {der.size}); each stage "
+          f"follows §2.4 {{cite:book}}.",
+          f"По п. 2.2 {{cite:book}} передаточное отношение разбиваем на две ступени с передаточными отношениями около "
+          f"$sqrt(i_\"пл\")$ = {n(math.sqrt(g.i_planetary), sig=4)}: простые дроби (знаменатель не более 10), отличающиеся от "
+          f"него не более чем на ±{n(g.tolerance_pct / 2)} %, {product}. Из {len(der.tried)} сопоставленных пар наименьший "
+          f"редуктор (габарит {der.size}) даёт пара {pair}; каждая ступень рассчитывается по п. 2.4 {{cite:book}}."))
+    c.doc.claim(kind="book_pair", sizes=tuple(s for _, s in der.tried), chosen_size=der.size)
 
 
 def _book_scheme1(c: Ctx, st) -> None:
@@ -356,8 +372,9 @@ def _search(c: Ctx) -> None:
             note.append(t("exact", "точный"))
         rows.append(cells + [n(a.ratio, decimals=4), n(a.ratio_error_pct, decimals=2), str(a.size), str(a.planets),
                              ", ".join(note)])
+    teeth_w = [1.9, 1.9] if two else [0.75] * (4 if g.scheme == "2" else 3)
     c.table("search", t("Smallest tooth sets within the tolerance", "Наименьшие наборы чисел зубьев в пределах допуска"),
-            header, rows, align=["center"] * len(header))
+            header, rows, align=["center"] * len(header), widths=teeth_w + [1.05, 1.2, 1.1, 0.45, 1.45])
     _selection(c)
 
 
@@ -403,7 +420,7 @@ def _selection(c: Ctx) -> None:
                 search=s)
     # an inexact ratio although closer sets exist: why
     more, exact = s.more_accurate, s.exact
-    if abs(e_d) >= 0.005 and (more is not None or exact is not None):
+    if abs(e_d) >= INEXACT_PCT and (more is not None or exact is not None):
         parts = []
         for d in dict.fromkeys(x for x in (more, exact) if x is not None):
             grow = (d.size / design.size - 1) * 100
@@ -573,8 +590,20 @@ def _ratio_checks(c: Ctx) -> None:
                          V(s.ratio, decimals=4)), where=["φ_k", "φ_H"] if j == 1 else ())
     c.p(t("and on the plan of angular velocities by the segments cut by the rays of the sun gear and of the carrier:",
           "и по плану угловых скоростей — отношением отрезков, отсекаемых лучами центрального колеса и водила:"))
-    c.formula(c.calc("i = (o k)/(o h)", "{0}/{1}", [V(vp.ok, decimals=2), V(vp.oh, decimals=2)], V(vp.ratio, decimals=4)),
-              where=["o k", "o h"])
+    if c.has("gears_planetary"):  # the segments as drawn on the figure [mm]
+        from ..figures.note_scales import planetary_scales
+
+        sc = planetary_scales(g)
+        ok, oh = sc.ok_mm, sc.oh_mm
+        where = ["o k", "o h"]
+    else:  # in the units of the construction (radii in modules)
+        ok, oh = vp.ok, vp.oh
+        unit = t("in the units of the construction", "в единицах построения")
+        where = [("o k", t(f"the segment cut by the ray of the sun gear, {unit}",
+                           f"отрезок, отсекаемый лучом центрального колеса, {unit}")),
+                 ("o h", t(f"the segment cut by the ray of the carrier, {unit}", f"отрезок, отсекаемый лучом водила, {unit}"))]
+    c.formula(c.calc("i = (o k)/(o h)", "{0}/{1}", [V(ok, decimals=2), V(oh, decimals=2)], V(vp.ratio, decimals=4)),
+              where=where)
     c.fig("gears_planetary", t("Kinematic scheme of the planetary reducer, the picture of linear velocities and the plan "
                                "of angular velocities", "Кинематическая схема планетарного редуктора, картина линейных "
                                "скоростей и план угловых скоростей"))

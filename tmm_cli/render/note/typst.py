@@ -35,15 +35,15 @@ def escape(text: str, start: bool = True) -> str:
 
     >>> escape("a_b #1 *x* [y] <z> 2 - 3")
     'a\\\\_b \\\\#1 \\\\*x\\\\* \\\\[y\\\\] \\\\<z\\\\> 2 - 3'
-    >>> escape("- item"), escape("1. item")
-    ('\\\\- item', '1\\\\. item')
+    >>> escape("- item"), escape("1. item"), escape("48.86")
+    ('\\\\- item', '1\\\\. item', '48.86')
     """
     out = _SPECIAL.sub(r"\\\1", text)
     out = out.replace("//", "/\u200b/").replace("--", "-\u200b-")
     if not start:
         return out
-    m = re.match(r"(\s*)(\d+)\.", out)
-    if m:  # "1. " would start a numbered list
+    m = re.match(r"(\s*)(\d+)\.(?=\s|$)", out)
+    if m:  # "1. " would start a numbered list ("48.86" would not)
         out = out[:m.end() - 1] + "\\." + out[m.end():]
     elif re.match(r"\s*[-+=/]", out):  # a list, a heading or a term
         lead = len(out) - len(out.lstrip())
