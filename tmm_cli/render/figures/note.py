@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ...i18n.lang import pick
+from ...i18n import tr, trc
 from ...i18n.numbers import num
 from . import note_scales as S
 
@@ -93,10 +93,10 @@ def _phases(ax, r, lang: str, mu_phi: float, labels: bool = True) -> None:
         return
     v = r.variant
     bounds = [0.0, v.phi_rise_deg, v.phi_rise_deg + v.phi_far_dwell_deg, v.phi_working_deg, 360.0]
-    names = [pick(lang, "rise", "удаление"), pick(lang, "far dwell", "дальнее стояние"),
-             pick(lang, "return", "возвращение"), pick(lang, "near dwell", "ближнее стояние")]
-    short = [pick(lang, "rise", "удал."), pick(lang, "dwell", "д. ст."), pick(lang, "return", "возвр."),
-             pick(lang, "dwell", "б. ст.")]
+    names = [tr(lang, "rise"), tr(lang, "far dwell"),
+             tr(lang, "return"), tr(lang, "near dwell")]
+    short = [trc(lang, "phase, short", "rise"), trc(lang, "phase, short", "far dwell"),
+             trc(lang, "phase, short", "return"), trc(lang, "phase, short", "near dwell")]
     for i, col in enumerate((CRI, CD, CR, CD)):
         width_mm = (bounds[i + 1] - bounds[i]) / mu_phi
         for name in (names[i], short[i]):
@@ -135,15 +135,15 @@ def _motion(r, lang: str):
     ph, gap, bottom = S.MOTION["panel"], S.MOTION["gap"], S.MOTION["bottom"]
     deg = np.degrees(m.phi)
     rows = list(m.table)
-    mm = pick(lang, "mm", "мм")
+    mm = tr(lang, "mm")
     if v.is_rocker:
         series = [(np.degrees(m.s), "γ, °", [math.degrees(x.s) for x in rows], sc.s, "μ_γ", "°/" + mm),
-                  (m.v, pick(lang, "ω, rad/s", "ω, рад/с"), [x.v for x in rows], sc.v, "μ_ω", pick(lang, "(rad/s)/mm", "(рад/с)/мм")),
-                  (m.a, pick(lang, "ε, rad/s²", "ε, рад/с²"), [x.a for x in rows], sc.a, "μ_ε", pick(lang, "(rad/s²)/mm", "(рад/с²)/мм"))]
+                  (m.v, tr(lang, "ω, rad/s"), [x.v for x in rows], sc.v, "μ_ω", tr(lang, "(rad/s)/mm")),
+                  (m.a, tr(lang, "ε, rad/s²"), [x.a for x in rows], sc.a, "μ_ε", tr(lang, "(rad/s²)/mm"))]
     else:
         series = [(m.s * 1000, "S, " + mm, [x.s * 1000 for x in rows], sc.s, "μ_S", mm + "/" + mm),
-                  (m.v, pick(lang, "V, m/s", "V, м/с"), [x.v for x in rows], sc.v, "μ_V", pick(lang, "(m/s)/mm", "(м/с)/мм")),
-                  (m.a, pick(lang, "a, m/s²", "a, м/с²"), [x.a for x in rows], sc.a, "μ_a", pick(lang, "(m/s²)/mm", "(м/с²)/мм"))]
+                  (m.v, tr(lang, "V, m/s"), [x.v for x in rows], sc.v, "μ_V", tr(lang, "(m/s)/mm")),
+                  (m.a, tr(lang, "a, m/s²"), [x.a for x in rows], sc.a, "μ_a", tr(lang, "(m/s²)/mm"))]
     xs = [x.phi_deg for x in rows]
     axes = []
     for k, (y, ylabel, pts, axis, sym, unit) in enumerate(series):
@@ -168,12 +168,11 @@ def _motion(r, lang: str):
         if k < 2:
             ax.tick_params(labelbottom=False)
         _mu(ax, mt(f"{sym} = {_mus(axis.mu, lang)} {unit}"), "upper right" if k != 0 else "lower right")
-    axes[-1].set_xlabel(mt(pick(lang, f"cam angle φ, °   (μ_φ = {_mus(sc.phi.mu, lang)} °/mm)",
-                                f"угол поворота кулачка φ, °   (μ_φ = {_mus(sc.phi.mu, lang)} °/мм)")))
+    axes[-1].set_xlabel(mt(tr(lang, "cam angle φ, °   (μ_φ = {mu} °/mm)").format(mu=_mus(sc.phi.mu, lang))))
     w = m.omega
     top = axes[0].secondary_xaxis("top", functions=(lambda d: np.radians(d) / w * 1000.0,
                                                      lambda t: np.degrees(np.asarray(t) / 1000.0 * w)))
-    top.set_xlabel(pick(lang, "time t, ms", "время t, мс"))
+    top.set_xlabel(tr(lang, "time t, ms"))
     return fig
 
 
@@ -225,21 +224,19 @@ def _zone(r, lang: str):
     _limits(ax, xa, ya)
     ax.set_aspect("auto")
     ax.grid(alpha=0.25, lw=0.4)
-    mm = pick(lang, "mm", "мм")
+    mm = tr(lang, "mm")
     ax.set_xlabel("x, " + mm)
     ax.set_ylabel("y, " + mm)
-    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + pick(lang, "m/mm", "м/мм")))
+    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + tr(lang, "m/mm")))
     handles = [
-        Polygon([[0, 0]], facecolor=C_ZONE, alpha=0.3, edgecolor=C_ZONE, label=pick(lang, "zone of admissible centres", "зона допустимого положения центра")),
-        Line2D([], [], color="k", lw=1.0, label=pick(lang, "path of the roller centre B", "траектория центра ролика B")),
-        Line2D([], [], color=C_RISE, lw=1.3, label=pick(lang, "points D, rise", "точки D, удаление")),
+        Polygon([[0, 0]], facecolor=C_ZONE, alpha=0.3, edgecolor=C_ZONE, label=tr(lang, "zone of admissible centres")),
+        Line2D([], [], color="k", lw=1.0, label=tr(lang, "path of the roller centre B")),
+        Line2D([], [], color=C_RISE, lw=1.3, label=tr(lang, "points D, rise")),
         Line2D([], [], color=C_RET, lw=1.2, ls="-" if z.closure == "form" else "--",
-               label=pick(lang, "points D, return", "точки D, возвращение") + ("" if z.closure == "form" else pick(lang, " (free)", " (не огранич.)"))),
-        Line2D([], [], color=C_BOOK, lw=0.9, ls="-.", label=pick(lang, "bounding lines of the textbook", "ограничивающие прямые пособия")),
-        Line2D([], [], marker="*", ms=11, color=C_ZONE, mec="k", ls="none", label=mt(pick(lang, f"centre O taken, r_0 = {_n(z.r0_m * k, lang, decimals=2)} mm",
-                                                                                            f"принятый центр O, r_0 = {_n(z.r0_m * k, lang, decimals=2)} мм"))),
-        Line2D([], [], marker="X", ms=8, color=C_BOOK, mec="k", ls="none", label=mt(pick(lang, f"vertex of the textbook, r_0 = {_n(z.book_r0_m * k, lang, decimals=2)} mm",
-                                                                                           f"вершина по пособию, r_0 = {_n(z.book_r0_m * k, lang, decimals=2)} мм"))),
+               label=tr(lang, "points D, return") + ("" if z.closure == "form" else tr(lang, " (free)"))),
+        Line2D([], [], color=C_BOOK, lw=0.9, ls="-.", label=tr(lang, "bounding lines of the textbook")),
+        Line2D([], [], marker="*", ms=11, color=C_ZONE, mec="k", ls="none", label=mt(tr(lang, "centre O taken, r_0 = {r0} mm").format(r0=_n(z.r0_m * k, lang, decimals=2)))),
+        Line2D([], [], marker="X", ms=8, color=C_BOOK, mec="k", ls="none", label=mt(tr(lang, "vertex of the textbook, r_0 = {r0} mm").format(r0=_n(z.book_r0_m * k, lang, decimals=2)))),
     ]
     _legend_below(fig, ax, handles)
     return fig
@@ -300,18 +297,16 @@ def _profile(r, lang: str):
     ax.text(0.9 * R * math.cos(am), 0.9 * R * math.sin(am), mt("ω_k"), ha="center", va="center")
     _limits(ax, xa, ya)
     ax.grid(alpha=0.2, lw=0.4)
-    mm = pick(lang, "mm", "мм")
+    mm = tr(lang, "mm")
     ax.set_xlabel("x, " + mm)
     ax.set_ylabel("y, " + mm)
-    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + pick(lang, "m/mm", "м/мм")))
+    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + tr(lang, "m/mm")))
     handles = [
-        Line2D([], [], color="k", lw=1.6, label=mt(pick(lang, f"working profile (roller r_р = {_n(rp, lang, decimals=2)} mm)",
-                                                         f"действительный профиль (ролик r_р = {_n(rp, lang, decimals=2)} мм)"))),
-        Line2D([], [], color=C_RISE, lw=1.0, ls="-.", label=pick(lang, "pitch profile", "теоретический профиль")),
-        Line2D([], [], color="0.4", lw=0.7, ls="--", label=mt(pick(lang, f"base circle r_0 = {_n(r0, lang, decimals=2)} mm",
-                                                                    f"окружность r_0 = {_n(r0, lang, decimals=2)} мм"))),
-        Line2D([], [], color="tab:orange", lw=0.8, label=pick(lang, "roller in the positions of the table", "ролик в положениях таблицы")),
-        Line2D([], [], color="tab:brown", lw=0.9, label=pick(lang, "follower in the inverted motion", "толкатель в обращённом движении")),
+        Line2D([], [], color="k", lw=1.6, label=mt(tr(lang, "working profile (roller r_р = {r} mm)").format(r=_n(rp, lang, decimals=2)))),
+        Line2D([], [], color=C_RISE, lw=1.0, ls="-.", label=tr(lang, "pitch profile")),
+        Line2D([], [], color="0.4", lw=0.7, ls="--", label=mt(tr(lang, "base circle r_0 = {r0} mm").format(r0=_n(r0, lang, decimals=2)))),
+        Line2D([], [], color="tab:orange", lw=0.8, label=tr(lang, "roller in the positions of the table")),
+        Line2D([], [], color="tab:brown", lw=0.9, label=tr(lang, "follower in the inverted motion")),
     ]
     _legend_below(fig, ax, handles)
     return fig
@@ -336,10 +331,10 @@ def _pressure(r, lang: str):
                 ha="right", va="bottom", bbox=dict(boxstyle="square,pad=0.1", fc="white", ec="none", alpha=0.8))
     _limits(ax, xa, ya)
     ax.set_xticks(np.arange(0, 361, 30))
-    ax.set_xlabel(mt(pick(lang, f"cam angle φ, °   (μ_φ = {_mus(xa.mu, lang)} °/mm)", f"угол поворота кулачка φ, °   (μ_φ = {_mus(xa.mu, lang)} °/мм)")))
-    ax.set_ylabel(pick(lang, "pressure angle ν, °", "угол давления ν, °"))
+    ax.set_xlabel(mt(tr(lang, "cam angle φ, °   (μ_φ = {mu} °/mm)").format(mu=_mus(xa.mu, lang))))
+    ax.set_ylabel(tr(lang, "pressure angle ν, °"))
     ax.grid(alpha=0.3, lw=0.4)
-    _mu(ax, mt(f"μ_ν = {_mus(ya.mu, lang)} °/" + pick(lang, "mm", "мм")), "lower right")
+    _mu(ax, mt(f"μ_ν = {_mus(ya.mu, lang)} °/" + tr(lang, "mm")), "lower right")
     return fig
 
 
@@ -379,10 +374,10 @@ def _planetary(g, lang: str):
     for t in list(ax_a.texts):
         if "=" in t.get_text():
             t.remove()
-    m = pick(lang, "m", "m")
-    _mu(ax_s, mt(f"μ_l = {_mus(sc.mu_l_per_module, lang)}·{m} " + pick(lang, "mm/mm (radii)", "мм/мм (радиусы)")))
-    _mu(ax_v, mt(f"μ_V = {_n(sc.mu_v_per_module, lang, sig=3)}·{m} " + pick(lang, "(m/s)/mm", "(м/с)/мм")))
-    _mu(ax_a, mt(f"μ_ω = {_n(sc.mu_omega, lang, sig=3)} " + pick(lang, "(rad/s)/mm", "(рад/с)/мм")), "upper right")
+    m = "m"  # the module's symbol
+    _mu(ax_s, mt(f"μ_l = {_mus(sc.mu_l_per_module, lang)}·{m} " + tr(lang, "mm/mm (radii)")))
+    _mu(ax_v, mt(f"μ_V = {_n(sc.mu_v_per_module, lang, sig=3)}·{m} " + tr(lang, "(m/s)/mm")))
+    _mu(ax_a, mt(f"μ_ω = {_n(sc.mu_omega, lang, sig=3)} " + tr(lang, "(rad/s)/mm")), "upper right")
     return fig
 
 
@@ -400,12 +395,12 @@ def _assembly(g, lang: str):
     x0 = (size[0] - n * side - (n - 1) * 8) / 2
     for j, (st, ch) in enumerate(zip(d.stages, g.checks.stages)):
         ax = _axes(fig, S.Box(x0 + j * (side + 8), 2.0, side, side), size)
-        title = (pick(lang, f"Stage {j + 1}", f"Ступень {j + 1}") + ": " if n > 1 else "") + "/".join(map(str, st.teeth)) + f", k = {st.planets}"
+        title = (tr(lang, "Stage {j}").format(j=j + 1) + ": " if n > 1 else "") + "/".join(map(str, st.teeth)) + f", k = {st.planets}"
         _assembly_stage(ax, st, ch, lang, title)
         ax.set_title(title, y=1.0, pad=4)
         ax.set_xlim(-mu * side / 2, mu * side / 2)
         ax.set_ylim(-mu * side / 2, mu * side / 2)
-    _mu(fig.axes[0], mt(f"μ_l = {_mus(mu, lang)}·m " + pick(lang, "mm/mm", "мм/мм")), "lower left")
+    _mu(fig.axes[0], mt(f"μ_l = {_mus(mu, lang)}·m " + tr(lang, "mm/mm")), "lower left")
     return fig
 
 
@@ -424,19 +419,19 @@ def _mesh(g, lang: str):
     ax.set_aspect("auto")
     _limits(ax, xa, ya)
     ax.grid(alpha=0.15, lw=0.4)
-    mm = pick(lang, "mm", "мм")
+    mm = tr(lang, "mm")
     ax.set_xlabel("x, " + mm)
     ax.set_ylabel("y, " + mm)
-    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + pick(lang, "m/mm", "м/мм")))
+    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + tr(lang, "m/mm")))
     handles = [
-        Line2D([], [], color="0.3", ls="-", label=mt(pick(lang, "pitch circles d", "делительные окружности d"))),
-        Line2D([], [], color="0.3", ls="--", label=mt(pick(lang, "base circles d_b", "основные окружности d_b"))),
-        Line2D([], [], color="0.3", ls=":", label=mt(pick(lang, "tip circles d_a", "окружности вершин d_a"))),
-        Line2D([], [], color="0.3", ls="-.", label=mt(pick(lang, "root circles d_f", "окружности впадин d_f"))),
-        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=pick(lang, "two-pair zones P1U2, U1P2", "двухпарное зацепление P1U2, U1P2")),
-        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=pick(lang, "single-pair zone U2U1", "однопарное зацепление U2U1")),
-        Line2D([], [], color=C_SUN, lw=2.4, label=pick(lang, "active profiles, gear 1", "активные профили колеса 1")),
-        Line2D([], [], color=C_PLANET, lw=2.4, label=pick(lang, "active profiles, gear 2", "активные профили колеса 2")),
+        Line2D([], [], color="0.3", ls="-", label=mt(tr(lang, "pitch circles d"))),
+        Line2D([], [], color="0.3", ls="--", label=mt(tr(lang, "base circles d_b"))),
+        Line2D([], [], color="0.3", ls=":", label=mt(tr(lang, "tip circles d_a"))),
+        Line2D([], [], color="0.3", ls="-.", label=mt(tr(lang, "root circles d_f"))),
+        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=tr(lang, "two-pair zones P1U2, U1P2")),
+        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=tr(lang, "single-pair mesh U2U1")),
+        Line2D([], [], color=C_SUN, lw=2.4, label=tr(lang, "active profiles, gear 1")),
+        Line2D([], [], color=C_PLANET, lw=2.4, label=tr(lang, "active profiles, gear 2")),
     ]
     _legend_below(fig, ax, handles)
     return fig
