@@ -217,6 +217,13 @@ def test_docx_opens_clean_with_figures(table, tmp_path):
         assert Image.open(io.BytesIO(z.read(png))).info["dpi"][0] >= 299
 
 
+def test_note_of_a_shifted_spur_pair_compiles(table, tmp_path):
+    """--shift 0.3,-0.3 (beyond the book): the pair's geometry as a table, its formulas typeset."""
+    r = run_project(table[17], shift=(0.3, -0.3))
+    write_note(tmp_path, r, "ru", TitleFields(), {})
+    assert "Геометрия простой передачи со смещением" in _text(tmp_path / "note.pdf")
+
+
 @pytest.mark.parametrize("number,crank", [(2, 60.0), (8, 40.0)])
 def test_docx_of_other_reducers(table, tmp_path, number, crank):
     r = run_project(table[number], crank_rpm=crank)

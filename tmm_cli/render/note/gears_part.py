@@ -754,11 +754,11 @@ def _spur_shifted(c: Ctx) -> None:
     t, n = c.t, c.n
     c.p(t(f"The spur pair is cut with profile shifts $x_1 = {c.q(sp.x1, decimals=4)}$, $x_2 = {c.q(sp.x2, decimals=4)}$ "
           f"(beyond the textbook, which takes zero gears): $z_1 = {sp.z1}$, $z_2 = {sp.z2}$, $m = {c.q(sp.m_mm)}$ mm. The "
-          f"working pressure angle follows from $inv α_w = inv α + 2 (x_1 + x_2) tg α/(z_1 + z_2)$; its geometry is "
+          f"working pressure angle follows from $\"inv\" α_w = \"inv\" α + 2 (x_1 + x_2) \"tg\" α/(z_1 + z_2)$; its geometry is "
           f"given in Table {{tab:spur_shifted}}.",
           f"Простая передача нарезана со смещением исходного контура $x_1 = {c.q(sp.x1, decimals=4)}$, "
           f"$x_2 = {c.q(sp.x2, decimals=4)}$ (пособие рассматривает нулевые колёса): $z_1 = {sp.z1}$, $z_2 = {sp.z2}$, "
-          f"$m = {c.q(sp.m_mm)}$ мм. Угол зацепления находится из уравнения $inv α_w = inv α + 2 (x_1 + x_2) tg α/(z_1 + z_2)$; "
+          f"$m = {c.q(sp.m_mm)}$ мм. Угол зацепления находится из уравнения $\"inv\" α_w = \"inv\" α + 2 (x_1 + x_2) \"tg\" α/(z_1 + z_2)$; "
           f"геометрия передачи приведена в таблице {{tab:spur_shifted}}."))
     mm = t("mm", "мм")
     rows = [

@@ -32,6 +32,7 @@ WORDS = {
 # upright operators (typst's built-in math operators; "tg" is written as a string, "tg")
 FUNCTIONS = {"sin", "cos", "tan", "tg", "ctg", "arctg", "max", "min", "ln", "log", "exp", "gcd", "lim", "mod",
              "inv"}
+WRITTEN_AS_STRINGS = {"tg", "ctg", "arctg", "inv"}  # typst has no such operators: write "tg" φ
 SYMBOL_OPS = {"<=": "≤", ">=": "≥", "=>": "⇒", "!=": "≠", "->": "→", "-": "−", "*": "∗"}
 RELATIONS = {"=", "≈", "<", ">", "≤", "≥", "≠", "⇒"}
 
@@ -252,7 +253,7 @@ class _Parser:
                 return Func(text, body)
             if text in WORDS:
                 return Sym(WORDS[text], "space" if text in ("quad", "thin", "med", "thick", "space") else "op")
-            if text in FUNCTIONS:
+            if text in FUNCTIONS and text not in WRITTEN_AS_STRINGS:
                 return Sym(text, "fn")
             self.error(f"unknown name {text!r}")
         if kind == "op":
