@@ -24,6 +24,7 @@ from fractions import Fraction
 import pytest
 
 from reference_gears import max_planets, neighbours_fit, planet_fits, willis
+from tmm_cli.cam.design import CamChoice
 from tmm_cli.project import run_project
 from tmm_cli.render.note import build_note
 from tmm_cli.render.note.markdown import markdown
@@ -37,8 +38,11 @@ CASES = [(n, {}) for n in sorted(TABLE)] + [
     (4, {"crank_rpm": 60.0, "torque_nm": 100.0}), (8, {"crank_rpm": 40.0}), (3, {"crank_rpm": 95.0}),
     (17, {"crank_rpm": 140.0, "torque_nm": 80.0}), (17, {"ratio": (13, 4)}), (2, {"select": "smallest"}),
     (11, {"crank_rpm": 67.0}), (20, {"crank_rpm": 300.0}), (17, {"shift": (0.3, -0.3)}), (5, {"planets": 3}),
+    (17, {"cam_choice": CamChoice(r0_mm=60, offset_mm=-10)}), (3, {"cam_choice": CamChoice(swing="same")}),
+    (7, {"cam_choice": CamChoice(roller_mm=5)}),
 ]
 IDS = [f"v{n}" + "".join(f"-{k}{v}" for k, v in kw.items()) for n, kw in CASES]
+IDS = [re.sub(r"CamChoice\((.*?)\)", lambda m: re.sub(r"\w+=None,? ?", "", m.group(1)), i) for i in IDS]
 _CACHE: dict = {}
 
 
@@ -240,8 +244,9 @@ def check_claim(claim, r):
     elif kind == "conclusion_gears":
         assert claim["met"][0] == g.checks.ratio_ok
         assert all(claim["met"][1:1 + len(g.checks.stages)]) == all(s.ok for s in g.checks.stages)
-    elif kind in ("cam_student",):
-        pass
+    elif kind == "cam_student":
+        assert abs(claim["r0_mm"] - cam.sizing.r0_m * 1000) < 1e-9 and cam.own is not None
+        assert abs(claim["own_r0_mm"] - cam.own.r0_m * 1000) < 1e-9
     else:
         raise AssertionError(f"a claim nobody checks: {kind}")
 

@@ -305,8 +305,9 @@ def _sizing(c: Ctx, r) -> None:
           "основной окружности равен расстоянию от центра до начального положения $B_0$ центра ролика."))
     if rocker:
         _swing(c, r)
-    student = r.source == "student"
     own = r.own
+    geometry_given = r.choice is not None and any(x is not None for x in (r.choice.r0_mm, r.choice.offset_mm, r.choice.l_oc_mm))
+    student = r.source == "student" and geometry_given and own is not None
     r0 = z.r0_m * 1000
     book_r0 = z.book_r0_m * 1000
     if student:
@@ -318,13 +319,11 @@ def _sizing(c: Ctx, r) -> None:
             given.append("$e$")
         if ch.l_oc_mm is not None:
             given.append("$l_(O C)$")
-        if ch.swing is not None:
-            given.append(t("the sense of the rocker's swing", "направление качания коромысла"))
         own_geo = (t(f", $l_(O C) = {c.q(own.l_oc_m * 1000, decimals=2)}$ mm", f", $l_(O C) = {c.q(own.l_oc_m * 1000, decimals=2)}$ мм")
                    if rocker else t(f", $e = {c.q(own.e_m * 1000, decimals=2)}$ mm", f", $e = {c.q(own.e_m * 1000, decimals=2)}$ мм"))
-        c.p(t(f"The designer takes {', '.join(given)} of his own; the dimensions below follow from them. The point "
-              f"of the zone nearest to $B_0$ would give $r_0 = {c.q(own.r0_m * 1000, decimals=2)}$ mm{own_geo}.",
-              f"Конструктор задаёт {', '.join(given)} сам; размеры ниже получены из этих значений. Ближайшая к $B_0$ "
+        c.p(t(f"The designer sets {' and '.join(given)}; the other dimensions follow from them. The point of the zone "
+              f"nearest to $B_0$ would give $r_0 = {c.q(own.r0_m * 1000, decimals=2)}$ mm{own_geo}.",
+              f"Конструктором заданы {' и '.join(given)}; остальные размеры получены из них. Ближайшая к $B_0$ "
               f"точка зоны дала бы $r_0 = {c.q(own.r0_m * 1000, decimals=2)}$ мм{own_geo}."))
         c.doc.claim(kind="cam_student", r0_mm=r0, own_r0_mm=own.r0_m * 1000)
     elif r.pivot_move == "centre":

@@ -561,7 +561,7 @@ def check_line(src: str) -> list[Check]:
     [True, True, True]
     >>> [c.ok for c in check_line('sin π/4 = "0,7071" > (24 + 2)/62 = "0,4194"')]
     [True, True, True]
-    >>> [c.ok for c in check_line('x = "0,425" dot 115 \\ = "48,86"')]
+    >>> [c.ok for c in check_line('x = "0,425" dot 115 ' + chr(92) + ' = "48,86"')]
     [False]
     """
     out: list[Check] = []
