@@ -15,7 +15,10 @@ from pathlib import Path
 
 from ...errors import TmmError
 from ...limits import NOTE_TEMPLATE_BYTES
+from .sources import SOURCES
 from .typeset import FONT_FAMILIES, FONTS_DIR  # noqa: F401  (the note's fonts, shipped with tmm)
+
+TEXTBOOK = SOURCES["book"]  # the textbook's entry by language (the assignment sheets cite it too)
 
 STYLE_FILE = "note-style.typ"
 NOTE_FILES = ("note.typ", STYLE_FILE, "note.pdf")
