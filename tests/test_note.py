@@ -68,13 +68,36 @@ def _check_pdf(folder: Path, r, lang: str = "ru") -> str:
     assert abs(float(box.width) - 210 * MM) < 1 and abs(float(box.height) - 297 * MM) < 1
     assert not re.search(r"^\s*1\s*$", reader.pages[0].extract_text(), flags=re.M)
     assert reader.pages[1].extract_text().strip().endswith("2")
-    # the fonts tmm ships, embedded: Liberation Serif for the text, STIX Math for the formulas
-    fonts = set()
-    for page in reader.pages[:6]:
-        for f in (page.get("/Resources", {}).get("/Font", {}) or {}).values():
-            fonts.add(str(f.get_object().get("/BaseFont")))
+    # the fonts tmm ships, embedded: Liberation Serif for the text, STIX Math for the formulas, and
+    # nothing else (typst takes a glyph the fonts lack silently from a font of its own, e.g. "⁻")
+    fonts = pdf_fonts(reader)
     assert any("LiberationSerif" in f for f in fonts) and any("STIX" in f for f in fonts), fonts
+    assert all(re.search(r"LiberationSerif|STIXMath", f) for f in fonts), fonts
     return text
+
+
+def pdf_fonts(reader) -> set[str]:
+    """Every font of the PDF by name (subset prefix dropped), those of the figures' forms included."""
+    fonts, seen = set(), set()
+
+    def visit(resources):
+        resources = resources.get_object() if resources is not None else None
+        if not resources:
+            return
+        for f in (resources.get("/Font") or {}).values():
+            fonts.add(str(f.get_object().get("/BaseFont")).split("+")[-1])
+        for x in (resources.get("/XObject") or {}).values():
+            ref = getattr(x, "idnum", None)
+            if ref in seen:
+                continue
+            seen.add(ref)
+            x = x.get_object()
+            if x.get("/Subtype") == "/Form":
+                visit(x.get("/Resources"))
+
+    for page in reader.pages:
+        visit(page.get("/Resources"))
+    return fonts
 
 
 @pytest.mark.parametrize("number,crank", CI_CASES)
@@ -92,6 +115,8 @@ def test_note_in_english(table, tmp_path):
     assert "CONCLUSION" in text and not re.search(r"[^\W_]_[^\W_]", text) and "--" not in text
     assert num(r.cam.sizing.r0_m * 1000, "en", decimals=2) in text
     assert not re.search(r"[А-Яа-я]{4,}", text.replace("Пожбелко", "")), "Russian words in the English note"
+    fonts = pdf_fonts(pypdf.PdfReader(tmp_path / "note.pdf"))
+    assert all(re.search(r"LiberationSerif|STIXMath", f) for f in fonts), fonts
 
 
 def test_the_page_is_gost(table, tmp_path):

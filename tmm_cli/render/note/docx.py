@@ -17,6 +17,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from .model import (
+    SCI_EXPONENT,
+    SUPER_DIGITS,
     Abstract,
     Contents,
     Document,
@@ -224,10 +226,17 @@ class DocxWriter:
             if is_math:
                 paragraph._p.append(omath(piece))
             elif piece:
-                run = paragraph.add_run(piece)
-                run.bold = bold or None
-                if size:
-                    run.font.size = Pt(size)
+                # a power of ten, "1,458·10⁻⁴", as a superscript run
+                parts = SCI_EXPONENT.split(piece)
+                for k, part in enumerate(parts):
+                    if not part:
+                        continue
+                    run = paragraph.add_run(part.translate(SUPER_DIGITS) if k % 2 else part)
+                    run.bold = bold or None
+                    if k % 2:
+                        run.font.superscript = True
+                    if size:
+                        run.font.size = Pt(size)
 
     STYLE_IDS = {"Structural": "Structural", "Structural Plain": "StructuralPlain", "Caption": "Caption",
                  "Table Text": "TableText", "Heading 1": "Heading1", "Heading 2": "Heading2"}

@@ -266,6 +266,13 @@ def _texts(block) -> list[str]:
     return []
 
 
+# A number's power of ten as tmm_cli.i18n.numbers writes it, "1,458·10⁻⁴": the writers set the
+# exponent as a true superscript (not every font has the superscript characters: the bundled serif
+# lacks "⁻" and "⁰", STIX Math the digits, and typst would take them silently from a font of its own)
+SCI_EXPONENT = re.compile(r"(?<=·10)([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)")
+SUPER_DIGITS = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "−0123456789")
+
+
 def split_math(text: str) -> list[tuple[bool, str]]:
     """[(is_math, piece)] of an inline markup text.
 

@@ -10,7 +10,10 @@ The elements are built as lxml elements in the ``m:`` namespace (python-docx's l
 
 from __future__ import annotations
 
+import re
+
 from .mathsyntax import Attach, Break, Frac, Func, Group, Seq, Sym, parse
+from .model import SUPER_DIGITS
 
 M = "http://schemas.openxmlformats.org/officeDocument/2006/math"
 W = "http://schemas.openxmlformats.org/wordprocessingml/2006/main"
@@ -44,6 +47,10 @@ def _el(tag: str, *children, **attrs):
     return e
 
 
+# a number's power of ten, "1,458·10⁻⁴" (model.SCI_EXPONENT), as a true superscript
+SCI = re.compile(r"(.*?)·10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)(.*)")
+
+
 def _run(text: str, upright: bool = False, bold: bool = False):
     rpr = []
     if upright or bold:
@@ -74,6 +81,11 @@ def _elements(node) -> list:
         if node.kind == "op":
             text = {"−": "−", "·": "·"}.get(node.text, node.text)
             return [_run(text, upright=True)]
+        m = SCI.fullmatch(node.text)
+        if m:  # "1,458·10⁻⁴": the power of ten as a true superscript
+            return [_run(m[1] + "·", upright=True),
+                    _el("m:sSup", _el("m:e", _run("10", upright=True)),
+                        _el("m:sup", _run(m[2].translate(SUPER_DIGITS), upright=True))), _run(m[3], upright=True) if m[3] else None]
         return [_run(node.text, upright=True)]  # numbers and upright text
     if isinstance(node, Frac):
         return [_el("m:f", _el("m:num", *_elements(node.num)), _el("m:den", *_elements(node.den)))]

@@ -11,6 +11,8 @@ from __future__ import annotations
 import re
 
 from .model import (
+    SCI_EXPONENT,
+    SUPER_DIGITS,
     Abstract,
     Contents,
     Document,
@@ -29,6 +31,30 @@ from .model import (
 
 _SPECIAL = re.compile(r"([\\#*_`$@<>\[\]~])")
 
+# "1,458·10⁻⁴" (model.SCI_EXPONENT): a superscript scaled from the font's own digits and minus
+_SCI_MATH = re.compile(r'"([^"\\]*·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+[^"\\]*)"')
+
+
+def sci_text(markup: str) -> str:
+    """A power of ten in text markup as a superscript.
+
+    >>> sci_text("1,458·10⁻⁴ с/мм")
+    '1,458·10#super(typographic: false)[−4] с/мм'
+    """
+    return SCI_EXPONENT.sub(lambda m: f"#super(typographic: false)[{m[1].translate(SUPER_DIGITS)}]", markup)
+
+
+def sci_math(math: str) -> str:
+    """A power of ten inside a math string as one piece of text with a superscript (one piece, so
+    that a fraction takes the whole number).
+
+    >>> sci_math('k = "1,458·10⁻⁴"/30')
+    'k = #[1,458·10#super(typographic: false)[−4]]/30'
+    """
+    def sub(m):
+        return "#[" + sci_text(_SPECIAL.sub(r"\\\1", m[1])) + "]"
+    return _SCI_MATH.sub(sub, math)
+
 
 def escape(text: str, start: bool = True) -> str:
     """Plain text for typst markup: special characters escaped, no accidental list or heading.
@@ -39,7 +65,7 @@ def escape(text: str, start: bool = True) -> str:
     ('\\\\- item', '1\\\\. item', '48.86')
     """
     out = _SPECIAL.sub(r"\\\1", text)
-    out = out.replace("//", "/\u200b/").replace("--", "-\u200b-")
+    out = sci_text(out.replace("//", "/\u200b/").replace("--", "-\u200b-"))
     if not start:
         return out
     m = re.match(r"(\s*)(\d+)\.(?=\s|$)", out)
@@ -62,6 +88,7 @@ def inline_math(math: str) -> str:
     >>> print(inline_math('a/b + "°/мм"'))
     a\\/b + "°/мм"
     """
+    math = sci_math(math)
     out, quoted = [], False
     for i, ch in enumerate(math):
         if ch == '"' and (i == 0 or math[i - 1] != "\\"):
@@ -156,7 +183,7 @@ class TypstWriter:
         return [f"#heading(level: {b.level})[{self.inline(b.text)}]{lab}", ""]
 
     def formula(self, b: Formula) -> list[str]:
-        body = b.math
+        body = sci_math(b.math)
         if b.numbered:
             lab = f" <{label('eq', b.label)}>" if b.label else ""
             lines = [f"$ {body} $" + lab]
