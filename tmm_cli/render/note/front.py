@@ -242,13 +242,17 @@ def conclusion(c: Ctx) -> None:
           f"$r_0$ = {c.qty(z.r0_m * 1000, mm, decimals=2)}, {geo}, радиус ролика $r_\"р\"$ = "
           f"{c.qty(p.roller_m * 1000, mm, decimals=2)}; профиль вычерчен в масштабе {cam.drawing.scale}."))
     reqs = []
-    nu_txt = t(f"the pressure angle on the rise {n(ch.nu_rise_deg, decimals=2)}° ≤ $ν_max$ = {n(v.nu_max_deg)}°",
-               f"угол давления на удалении {n(ch.nu_rise_deg, decimals=2)}° ≤ $ν_max$ = {n(v.nu_max_deg)}°")
-    if not ch.nu_rise_ok:
-        nu_txt = nu_txt.replace("≤", ">")
+    ok = ch.nu_rise_ok and ch.nu_return_ok
+    where_en = f"on the rise {n(ch.nu_rise_deg, decimals=2)}°"
+    where_ru = f"на удалении {n(ch.nu_rise_deg, decimals=2)}°"
     if ch.return_limited:
-        nu_txt += t(f", on the return {n(ch.nu_return_deg, decimals=2)}°", f", на возвращении {n(ch.nu_return_deg, decimals=2)}°")
-    reqs.append((nu_txt, ch.nu_rise_ok and ch.nu_return_ok))
+        where_en += f", on the return {n(ch.nu_return_deg, decimals=2)}°"
+        where_ru += f", на возвращении {n(ch.nu_return_deg, decimals=2)}°"
+    nu_txt = t(f"the largest pressure angle ({where_en}) {'does not exceed' if ok else 'exceeds'} the allowed "
+               f"$ν_max$ = {n(v.nu_max_deg)}°",
+               f"наибольший угол давления ({where_ru}) {'не превышает' if ok else 'превышает'} допускаемый "
+               f"$ν_max$ = {n(v.nu_max_deg)}°")
+    reqs.append((nu_txt, ok))
     reqs.append((t(f"no undercut of the profile: $r_\"р\"$ = {n(ch.roller_m * 1000, decimals=2)} mm < $ρ_min$ = "
                    f"{n(ch.rho_limit_m * 1000, decimals=2)} mm",
                    f"отсутствие подреза профиля: $r_\"р\"$ = {c.qty(ch.roller_m * 1000, 'мм', decimals=2)} < $ρ_min$ = "

@@ -276,8 +276,11 @@ SUPER_DIGITS = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "−0123456789")
 def split_math(text: str) -> list[tuple[bool, str]]:
     """[(is_math, piece)] of an inline markup text.
 
+    A relation after a symbol stays on its line with its value (``$m$ = 20 мм`` never breaks at the
+    "="): the spaces around it are no-break spaces.
+
     >>> split_math("угол $ν_max$ = 25°")
-    [(False, 'угол '), (True, 'ν_max'), (False, ' = 25°')]
+    [(False, 'угол '), (True, 'ν_max'), (False, '\xa0=\xa025°')]
     """
     out = []
     for part in MATH.split(text):
@@ -286,6 +289,8 @@ def split_math(text: str) -> list[tuple[bool, str]]:
         if len(part) >= 2 and part.startswith("$") and part.endswith("$"):
             out.append((True, part[1:-1]))
         else:
+            if out and out[-1][0]:
+                part = re.sub(r"^ ([=≤≥<>≈≠]) ", "\u00a0\\1\u00a0", part)
             out.append((False, part))
     return out
 
