@@ -133,3 +133,15 @@ def test_bad_step_is_a_tmm_error(bad):
     v = Variant(1, 1, None, 25.0, 800.0, 0.05, 1, 100.0, 20.0, 100.0)
     with pytest.raises(TmmError, match="step"):
         design_cam(v, step_deg=bad)
+
+
+def test_reported_maxima_keep_1_7_for_all_68_variants():
+    """The maxima the project reports (and the note prints with (1.7)) are each phase's own: with no
+    far dwell (variant 59: law 2, φ_дс = 0) the point where the rise ends belongs to the rise, and
+    its −a_max is not the return's largest acceleration (it was: the note printed 1 = 0,25)."""
+    from tmm_cli.cam.motion import follower_motion
+    from tmm_cli.variants import load_table
+
+    for number, v in load_table().items():
+        mx = follower_motion(v, 10.0).maxima
+        assert mx.accel_ratio == pytest.approx(mx.accel_ratio_book, rel=1e-6), number

@@ -31,6 +31,20 @@ def test_known_offenders_move():
         codes = [x.code for x in cam.notes]
         assert "cam_pivot_moved_swing" in codes, n
         assert cam.sizing.r0_other_swing_m < cam.sizing.r0_m  # the smaller cam was rejected
+        # the decision, as data for the note (issue 20): the rejected cam, and why
+        c = cam.pivot_conflict
+        assert c is not None and c.swing != cam.sizing.swing, n
+        assert c.r0_m == pytest.approx(cam.sizing.r0_other_swing_m, rel=1e-12)
+        assert c.l_oc_m <= c.body_m  # its body reaches the pivot
+        assert cam.checks.l_oc_m > cam.checks.body_m  # the carried one clears it
+
+
+def test_no_conflict_when_the_smaller_cam_is_carried():
+    for n in ROCKERS:
+        cam = design_cam(load_table()[n])
+        if cam.pivot_move is None:
+            assert cam.pivot_conflict is None
+            assert cam.sizing.r0_m <= cam.sizing.r0_other_swing_m * (1 + 1e-12), n
 
 
 def test_student_swing_over_the_pivot_is_reported():

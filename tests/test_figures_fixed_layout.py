@@ -87,14 +87,14 @@ def test_json_path_lays_out_no_table_and_imports_no_matplotlib(tmp_path):
     out a rich table, whether the report is Markdown or the typeset note (typst)."""
     assert _json_run(tmp_path / "md", "--report", "md", "--no-sheets") == "[]"
     report = (tmp_path / "md" / "variant-17" / "report.md").read_text(encoding="utf-8")
-    assert "| Quantity | Value |" in report or "| Величина | Значение |" in report  # Markdown tables
+    assert "| Quantity | Symbol, unit | Value |" in report or "| Величина | Обозначение, единица | Значение |" in report  # Markdown tables
     assert _json_run(tmp_path / "note", "--no-sheets") == "[]"
     assert (tmp_path / "note" / "variant-17" / "note.pdf").is_file()
 
 
 def test_project_folder_has_every_figure_once(tmp_path):
-    """The default project: each figure once as PNG; the note embeds SVG copies of exactly its figures,
-    each once; the only hidden file is tmm's manifest of the files it wrote."""
+    """The default project: each figure once as PNG; the note embeds its own figures (drawn for the
+    page, note_<name>.svg), each once; the only hidden file is tmm's manifest of the files it wrote."""
     from click.testing import CliRunner
 
     from tmm_cli.cli import cli
@@ -107,8 +107,8 @@ def test_project_folder_has_every_figure_once(tmp_path):
     pngs = [n for n in names if n.endswith(".png")]
     assert len(pngs) == 8 and [n for n in names if n.startswith(".")] == [".tmm-files.json"]
     svgs = [n for n in names if n.endswith(".svg")]
-    assert sorted(svgs) == sorted(f"{n}.svg" for n in NOTE_FIGURES)
-    assert all(f"{n[:-4]}.png" in pngs for n in svgs)
+    assert sorted(svgs) == sorted(f"note_{n}.svg" for n in NOTE_FIGURES)
+    assert all(f"{n[5:-4]}.png" in pngs for n in svgs)
     note = (folder / "note.typ").read_text(encoding="utf-8")
     assert all(note.count(f'image("{n}"') == 1 for n in svgs)
     assert ".png" not in note

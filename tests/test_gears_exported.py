@@ -4,6 +4,7 @@ the independent checker of tests/reference_gears.py — nothing of tmm_cli.gears
 producing the JSON. The cam does not depend on the crank speed (Table 1.2 gives n_k); its checks
 from the exported curve are in test_cam_exported.py (all 68 variants)."""
 
+from fractions import Fraction
 
 import pytest
 from hypothesis import given, settings
@@ -90,8 +91,10 @@ def test_book_procedure_starts_from_the_exact_fraction():
     r = design_gears(-1000, 60)  # i = 12: §2.5 from 12/1, not 35/3
     assert r.derivation.fraction_rule == "exact"
     assert r.derivation.ratio_fraction == 12
-    r = design_gears(-1000, 220)  # 720/220 = 36/11: no denominator ≤ 10, the simple fractions
-    assert r.derivation.fraction_rule == "simple"
+    r = design_gears(-1000, 220)  # 720/220 = 36/11: no denominator ≤ 10; its last convergent, 13/4 (§2.4)
+    assert r.derivation.fraction_rule == "convergent"
+    assert r.derivation.ratio_fraction == Fraction(13, 4)
+    assert r.derivation.stages[0].chosen.teeth == (40, 25, 90)  # the book's own answer of §2.4
 
 
 def test_two_stages_at_40_rpm_inside_3_to_8():

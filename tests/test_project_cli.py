@@ -35,7 +35,7 @@ def test_project_writes_the_whole_folder(project17):
     # the note embeds the vector copies of the figures
     note = (folder / "note.typ").read_text()
     for f in FIGURES:
-        assert f'image("{f}.svg"' in note
+        assert f'image("note_{f}.svg"' in note
     # the terminal report follows the explanatory note: sheet 4 before sheet 3
     assert res.output.index("Sheet 4") < res.output.index("Sheet 3")
 

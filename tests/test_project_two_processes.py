@@ -218,7 +218,7 @@ def test_batch_cache_draws_a_shared_spur_mesh_once(tmp_path, monkeypatch):
     report.write_project_folder(a, tmp_path / "a", "ru", report="pdf", figure_cache=cache)
     report.write_project_folder(b, tmp_path / "b", "ru", report="pdf", figure_cache=cache)
     assert sorted(drawn) == ["gears_assembly", "gears_mesh", "gears_planetary"]
-    for n in ("gears_mesh.png", "gears_mesh.svg", "gears_planetary.png"):
+    for n in ("gears_mesh.png", "note_gears_mesh.svg", "gears_planetary.png"):
         assert (tmp_path / "a" / n).read_bytes() == (tmp_path / "b" / n).read_bytes()
     assert (tmp_path / "b" / "note.pdf").is_file()
     # a different spur pair is drawn anew, the reducer still comes from the cache

@@ -93,7 +93,7 @@ def test_cam_into_a_project_folder_takes_nothing_of_the_project_and_the_note_sti
         res = run("cam", "--variant", 17, "--out", tmp_path, *extra)
         assert res.exit_code == 0, res.stderr
     after = {p.name for p in folder.iterdir()}
-    assert set(before) <= after and {"sheet3.dxf", "sheet3.pdf", "cam_motion.svg"} <= after
+    assert set(before) <= after and {"sheet3.dxf", "sheet3.pdf", "note_cam_motion.svg"} <= after
     assert run("note", folder).exit_code == 0  # the note's figures are all there
 
 

@@ -126,6 +126,18 @@ class BookRollerFix:
     cells: int
 
 
+@record
+class PivotConflict:
+    """The program's first cam, not carried: its body reaches the rocker pivot C (l_OC ≤ the radius
+    the body sweeps), so the other swing or a centre farther out was carried (``CamResult.pivot_move``)
+    [m]."""
+
+    swing: str  # "same" | "opposite"
+    r0_m: float
+    l_oc_m: float
+    body_m: float
+
+
 @record(eq=False)
 class CamResult:
     """Everything sheet 3 needs, in SI (m, rad, s); mm/deg only in names that say so."""
@@ -142,6 +154,7 @@ class CamResult:
     own: Sizing | None = None  # the program's own sizing, when the student's choice replaced it
     pivot_move: str | None = None  # "swing" | "centre": moved off the rocker pivot (program design)
     book_roller_fix: BookRollerFix | None = None  # the smallest cam keeping the book's 0.2·r0 roller
+    pivot_conflict: PivotConflict | None = None  # the smaller cam not carried because it reaches the pivot
 
 
     @property
@@ -467,7 +480,7 @@ def design_cam(variant: Variant, step_deg: float = 10.0, choice: CamChoice | Non
         ccw=variant.ccw,
         sigma=_sigma(choice.swing if choice else None),
     )
-    own, own_roller, move, pivot_move = None, None, None, None
+    own, own_roller, move, pivot_move, conflict = None, None, None, None, None
     if choice is None:
         profile = cam_profile(program, sizing, rocker=rocker, l_bc_m=variant.l_bc_m)
         if rocker:
@@ -476,6 +489,7 @@ def design_cam(variant: Variant, step_deg: float = 10.0, choice: CamChoice | Non
                 before = sizing
                 sizing, profile, pivot_move, ch_before = moved
                 move = (pivot_move, ch_before, before)
+                conflict = PivotConflict(before.swing, before.r0_m, ch_before.l_oc_m, ch_before.body_m)
     else:
         own = sizing
         own_roller = cam_profile(program, sizing, rocker=rocker, l_bc_m=variant.l_bc_m).roller_m
@@ -513,7 +527,7 @@ def design_cam(variant: Variant, step_deg: float = 10.0, choice: CamChoice | Non
             notes.append(Note.make(f"cam_step_halved_{phase}", "assumption", step_deg=st))
     return CamResult(variant=variant, step_deg=step, motion=motion, sizing=sizing, profile=profile, notes=tuple(notes),
                      drawing=drawing, checks=checks, choice=choice, own=own, pivot_move=pivot_move,
-                     book_roller_fix=fix)
+                     book_roller_fix=fix, pivot_conflict=conflict)
 
 
 def _mm_up(x: float) -> float:

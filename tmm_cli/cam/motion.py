@@ -291,8 +291,11 @@ def follower_motion(variant: Variant, step_deg: float = 10.0) -> Motion:
     v, a, j = w * d1, w**2 * d2, w**3 * d3
 
     # extremes from a finer, phase-local grid (exact law maxima sit inside the phases)
-    tr = np.linspace(0.0, prog.phi_rise, 2001)
-    tb = np.linspace(prog.return_start, prog.phi_working, 2001)
+    # (each grid kept a hair inside its phase: with no far dwell the return starts where the rise
+    # ends, and the shared point belongs to the rise — law 2's −a_max there is not the return's)
+    eps = 1e-9
+    tr = np.linspace(eps, prog.phi_rise - eps, 2001)
+    tb = np.linspace(prog.return_start + eps, prog.phi_working - eps, 2001)
     _, r1, r2, _ = prog.at(tr)
     _, b1, b2, _ = prog.at(tb)
     # law 1's acceleration jumps at mid-phase; take both one-sided values

@@ -34,7 +34,8 @@ from .options import (
 @format_option
 @click.option("--jobs", "-j", type=int, default=None, metavar="N", help="Parallel worker processes (default: number of cores).")
 @no_plots_option
-@click.option("--report", "report", type=click.Choice(["md", "pdf", "none"]), default="md", show_default=True, help="Per-variant report format.")
+@click.option("--report", "report", default="md", show_default=True, metavar="md|pdf|docx[,…]|none",
+              help="Per-variant report format.")
 @click.option("--csv-locale", type=click.Choice(["ru", "en"]), default=None, help="summary.csv for a Russian (';', decimal comma) or English spreadsheet (default: from --lang).")
 @sheets_option
 @click.option("--teacher", "title_teacher", default=None, metavar="TEXT", help="Teacher's name (or in tmm.toml).")
@@ -51,6 +52,9 @@ def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, f
 
     lang = resolve_lang(lang)
     title = title_block({"title_teacher": title_teacher, "title_org": title_org})  # tmm.toml, then the options
+    from ..render.project import report_formats
+
+    report = None if report == "none" else ",".join(sorted(report_formats(report)))
     if (variants_spec is None) == (roster is None):
         raise TmmError("give exactly one of --variants (e.g. 1-68) or --roster FILE")
     out_dir = ensure_writable_dir(Path(out) if out else Path("tmm-out"))
@@ -66,7 +70,7 @@ def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, f
 
     summary = run_batch(
         rows, bad, out_dir, variants_file=variants_file, lang=lang, fmt=fmt,
-        plots=not no_plots, report=None if report == "none" else report, jobs_n=jobs, progress=True,
+        plots=not no_plots, report=report, jobs_n=jobs, progress=True,
         csv_locale=csv_locale, sheets=sheets, title=title, force=force,
         say=lambda text: console.print("[cyan]ℹ[/] " + escape(text)),
     )

@@ -45,8 +45,9 @@ from .options import (
 @no_plots_option
 @json_option
 @force_option
-@click.option("--report", "report", type=click.Choice(["md", "pdf"]), default="pdf", show_default=True,
-              help="pdf: the explanatory note (note.pdf and its source note.typ); md: report.md.")
+@click.option("--report", "report", default="pdf", show_default=True, metavar="md|pdf|docx[,…]",
+              help="pdf: the explanatory note (note.pdf and its source note.typ); docx: the note for Word (note.docx); "
+                   "md: report.md; several with commas, e.g. pdf,docx.")
 @click.option("--note-template", "note_template", type=click.Path(dir_okay=False), default=None, metavar="FILE",
               help="A typst style file replacing the note's (see docs/note.md).")
 @step_option
@@ -56,6 +57,9 @@ from .options import (
 @lang_option
 def project_cmd(variant, variants_file, crank_rpm, torque_nm, mechanism_file, ratio, tolerance_pct, planets, stiffness, shift, a_w_mm, select, out, fmt, no_plots, as_json, force, report, note_template, step_deg, no_sheets, lang, **title_kw):
     """The whole project for one variant: sheet 4 then sheet 3, figures, results.json, the note and the drawing sheets."""
+    from ..render.project import report_formats
+
+    report = report_formats(report)
     choice = cam_choice(title_kw)
     title = title_block(title_kw)
     template = None

@@ -283,7 +283,9 @@ def _run(jobs, bad, out_dir, variants_file, lang, fmt, plots, report, jobs_n, pr
     if plots:
         from ..render.figures.pipeline import prepare_figures
 
-        prepare_figures(svg=report == "pdf")
+        from ..render.project import report_formats
+
+        prepare_figures(set(), note=bool(report_formats(report) & {"pdf", "docx"}))
     bar = None
     if progress:
         from rich.progress import (

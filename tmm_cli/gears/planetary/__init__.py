@@ -27,6 +27,7 @@ from .book import (
     book_scheme2,
     check_printed,
     exact_fraction,
+    convergents,
     simple_fractions,
 )
 from .conditions import (
@@ -84,7 +85,7 @@ __all__ = [
     "scheme2_table", "search_designs",
     # book
     "BOOK_PRINTED", "BookDerivation", "BookRow", "BookStage", "PrintedCheck", "book_derivation", "book_scheme1",
-    "book_scheme2", "check_printed", "exact_fraction", "simple_fractions",
+    "book_scheme2", "check_printed", "convergents", "exact_fraction", "simple_fractions",
     # velocity
     "DesignChecks", "VelocityPicture", "VelocityStage", "check_design", "ratio_21", "velocity_picture",
 ]

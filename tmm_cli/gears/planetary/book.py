@@ -181,17 +181,23 @@ def _book_planets(scheme: str, fraction: Fraction, red: Fraction, r1, r2, rows, 
 class BookDerivation:
     """The book's procedure, for the fraction(s) it starts from.
 
-    ``fraction_rule``: "forced" (the user's fraction), "exact" (i_pl itself is a fraction with a
-    denominator ≤ 10, e.g. 36/7 or 12/1: the book starts from it), "simple" (of the simple
-    fractions with a denominator ≤ 10 within tolerance, the one whose procedure gives the smallest
-    reducer).
-    ``tried``: (fraction as text, size) for every simple fraction tried ("f1·f2" for two stages).
+    ``fraction_rule`` (one stage): "forced" (the user's fraction), "exact" (i_pl itself is a
+    fraction with a denominator ≤ 10, e.g. 36/7 or 12/1: the book starts from it), "convergent"
+    (the last convergent of i_pl's continued fraction with a denominator ≤ 10 — the book's "simple
+    fraction" of §2.4: 720/220 = 36/11 → 3, 10/3, 13/4 → 13/4), "nearest" (that convergent is
+    outside the tolerance or its procedure fails: the nearest simple fraction within tolerance
+    whose procedure succeeds). Two stages: "simple" (of the pairs of simple fractions near √i_pl,
+    the one whose procedure gives the smallest reducer), or "exact"/"forced" for the product.
+    ``tried``: (fraction as text, size) for every fraction whose procedure was carried through,
+    in the order tried ("f1·f2" for two stages); ``convergents``: i_pl's convergents with a
+    denominator ≤ 10 (one stage), the last one first tried.
     """
 
     scheme: str
     fraction_rule: str
     stages: tuple[BookStage, ...]
     tried: tuple[tuple[str, int], ...]
+    convergents: tuple[Fraction, ...] = ()
 
     @property
     def design_stages(self) -> tuple[Stage, ...]:
@@ -235,28 +241,27 @@ def book_derivation(scheme: str, target: float, tol_pct: float, forced: Fraction
     >>> d = book_derivation("1", 720 / 220, 5.0, Fraction(13, 4))
     >>> d.stages[0].chosen.teeth, d.fraction_rule
     ((40, 25, 90), 'forced')
+    >>> d = book_derivation("1", 720 / 220, 5.0, None)  # §2.4's own example: 720/220 → 13/4
+    >>> str(d.stages[0].fraction), d.fraction_rule, d.stages[0].chosen.teeth
+    ('13/4', 'convergent', (40, 25, 90))
     """
     exact = exact_fraction(target)
     if scheme in ("1", "2"):
         if forced is not None:
             st = _book_one(scheme, forced)
             return BookDerivation(scheme, "forced", (st,), ((str(forced), st.chosen.size),)) if st else None
-        if exact is not None:  # i itself is a simple fraction (36/7, 12/1): the book starts from it
-            st = _book_one(scheme, exact)
-            if st is not None:
-                return BookDerivation(scheme, "exact", (st,), ((str(exact), st.chosen.size),))
-        tried, best = [], None
-        for f in simple_fractions(target, tol_pct):
+        conv = tuple(convergents(target))
+        first = conv[-1] if conv and abs(float(conv[-1]) / target - 1) <= tol_pct / 100 + REL_EPS else None
+        order = ([first] if first is not None else []) + [f for f in simple_fractions(target, tol_pct) if f != first]
+        tried = []
+        for f in order:
             st = _book_one(scheme, f)
             if st is None:
                 continue
             tried.append((str(f), st.chosen.size))
-            key = (st.chosen.size, abs(float(f) / target - 1))
-            if best is None or key < best[0]:
-                best = (key, st)
-        if best is None:
-            return None
-        return BookDerivation(scheme, "simple", (best[1],), tuple(tried))
+            rule = "exact" if f == exact else ("convergent" if f == first else "nearest")
+            return BookDerivation(scheme, rule, (st,), tuple(tried), conv)
+        return None
     # two stages
     total = forced if forced is not None else exact
     if total is not None and forced is None:
@@ -275,6 +280,30 @@ def exact_fraction(target: float, max_den: int = 10) -> Fraction | None:
     """
     f = Fraction(target).limit_denominator(max_den)
     return f if abs(float(f) - target) <= 1e-12 * target else None
+
+
+def convergents(target: float, max_den: int = 10) -> list[Fraction]:
+    """The convergents of target's continued fraction with a denominator ≤ max_den, in order: the
+    best approximations by simple fractions (each closer than any fraction with a smaller
+    denominator). §2.4 turns 720/220 = 36/11 into 13/4, its last convergent below 11.
+
+    >>> [str(f) for f in convergents(720 / 220)]
+    ['3', '10/3', '13/4']
+    >>> [str(f) for f in convergents(720 / 140)], [str(f) for f in convergents(720 / 67)]
+    (['5', '36/7'], ['10', '11', '32/3', '43/4'])
+    """
+    x = Fraction(target).limit_denominator(10 ** 6)  # the float's ratio of two speeds
+    out: list[Fraction] = []
+    h0, h1, k0, k1 = 0, 1, 1, 0  # h_{-2}, h_{-1}, k_{-2}, k_{-1}
+    while True:
+        a = math.floor(x)
+        h0, h1, k0, k1 = h1, a * h1 + h0, k1, a * k1 + k0
+        if k1 > max_den:
+            return out
+        out.append(Fraction(h1, k1))
+        if x == a:
+            return out
+        x = 1 / (x - a)
 
 
 def _book_two(target: float, tol_pct: float, total: Fraction | None):

@@ -62,7 +62,8 @@ def _book(d) -> dict | None:
             "k_max_book_form": s.k_max, "k_max_exact": s.k_max_exact,
         })
     return {"scheme": d.scheme, "fraction_rule": d.fraction_rule, "stages": stages, "size": d.size,
-            "tried": [{"fraction": f, "size": n} for f, n in d.tried]}
+            "tried": [{"fraction": f, "size": n} for f, n in d.tried],
+            "convergents": [_frac(f) for f in d.convergents]}
 
 
 def _pair(t, scale: float = 1.0, nd: int = 6) -> list[float]:

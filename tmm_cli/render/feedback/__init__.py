@@ -95,7 +95,7 @@ def student_markdown(report, lang: str) -> str:
 _TYPST_HEAD = """// Feedback written by `tmm check`.
 #set document(title: {title})
 #set page(paper: "a4", margin: (left: 20mm, right: 15mm, top: 15mm, bottom: 15mm))
-#set text(font: ("Times New Roman", "Liberation Serif", "Libertinus Serif"), size: 11pt, lang: "{lang}")
+#set text(font: "Liberation Serif", size: 11pt, lang: "{lang}")
 #set par(justify: false, spacing: 0.8em)
 #set table(stroke: 0.4pt, inset: 3pt)
 #show table: set text(size: 8.5pt)

@@ -565,6 +565,36 @@ class SharedWork:
             self.tasks[i]()
             self.done.add(i)
 
+    def run_until(self, needed) -> None:
+        """Take shared tasks here until every task of `needed` is done (by either process): what
+        waits for some tasks only (the note's figures) can start while the rest are drawn."""
+        needed = set(needed)
+        if self._q is None:
+            for i in sorted(needed - self.done):
+                self.tasks[i]()
+                self.done.add(i)
+            return
+        import select
+
+        while not needed <= self.done:
+            while self._r is not None and select.select([self._r], [], [], 0)[0]:
+                data = os.read(self._r, 64)
+                if not data:
+                    self._reap()
+                    break
+                self.done.update(data)
+            if needed <= self.done or self._q is None:
+                break
+            got = os.read(self._q, 1)
+            if not got:  # the queue is empty: the rest is the child's, wait for it
+                self._read_until(needed)
+                break
+            self.tasks[got[0]]()
+            self.done.add(got[0])
+        for i in sorted(needed - self.done):  # the child left without them: run them here
+            self.tasks[i]()
+            self.done.add(i)
+
     def wait_shared(self) -> None:
         """Every shared task done (this process takes what is left in the queue first)."""
         self._finish(set(range(self.n_shared)))

@@ -48,17 +48,22 @@ def _figure_task(tmp: Path, result, lang: str, fmt: str, name: str, svg):
     return lambda: _draw_and_save(tmp, result, lang, fmt, [name], svg)
 
 
-def prepare_figures(svg) -> None:
+def prepare_figures(svg, note: bool = False) -> None:
     """What every process that draws needs, built once before a fork: the figure modules, mathtext
-    and the fonts, the SVG backend if the note wants SVG copies (`svg` true)."""
+    and the fonts, the SVG backend if SVG files are wanted (`svg` true, or the note's figures:
+    `note`, with the note's font)."""
     from . import cam, gears  # noqa: F401  (loaded before the fork)
     from .kit import _warm_up
 
     _warm_up()
-    if svg:
+    if svg or note:
         from .kit import share_svg_text
 
         share_svg_text()
+    if note:
+        from .note import _fonts
+
+        _fonts()
     calm_collector()
 
 

@@ -1,11 +1,11 @@
-"""The explanatory note (пояснительная записка): typst source, its PDF, and the Markdown report.
+"""The explanatory note (пояснительная записка): one document, three writers.
 
-:func:`build_note` turns a ProjectResult into a :class:`~tmm_cli.render.note.doc.Doc` (section 1
-the cam, section 2 the gears, the conclusion and the references, in the order of the textbook);
-:func:`write_note` writes ``note.typ`` (the text, which a student may edit), ``note-style.typ``
-(the style: this package's ``note-style.typ`` or the department's ``--note-template``) and compiles
-``note.pdf`` with the typst compiler (imported here, lazily). :func:`markdown_note` writes the
-same document as Markdown. Nothing is computed here: every number is read from the result.
+:func:`build_note` turns a ProjectResult into a :class:`~.model.Document` — front matter (title
+page, task, abstract, contents, introduction), the chapters in the order of the course, the
+assumptions, the conclusion, the list of sources and the appendix. The writers walk it:
+:mod:`.typst` (note.typ, compiled here to note.pdf with the typst compiler and the fonts shipped in
+``fonts/``), :mod:`.docx` (note.docx) and :mod:`.markdown` (report.md). Nothing is computed here:
+every number is read from the result.
 """
 
 from __future__ import annotations
@@ -15,22 +15,22 @@ from pathlib import Path
 
 from ...errors import TmmError
 from ...limits import NOTE_TEMPLATE_BYTES
+from .sources import SOURCES
+from .typeset import FONT_FAMILIES, FONTS_DIR  # noqa: F401  (the note's fonts, shipped with tmm)
+
+TEXTBOOK = SOURCES["book"]  # the textbook's entry by language (the assignment sheets cite it too)
 
 STYLE_FILE = "note-style.typ"
 NOTE_FILES = ("note.typ", STYLE_FILE, "note.pdf")
-# the figures of the note, in its order (cam_profile_scaled is a drawing at scale, not a figure)
+DOCX_FILE = "note.docx"
+# the note's own figures (drawn at the note's size, render/figures/note.py), in their order
 NOTE_FIGURES = ("cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle",
                 "gears_planetary", "gears_assembly", "gears_mesh")
 MAX_TEMPLATE_BYTES = NOTE_TEMPLATE_BYTES
 
-TEXTBOOK = {
-    "ru": "Пожбелко, В. И. Курсовое проектирование по теории механизмов и машин : учебное пособие. Ч. 2 / "
-          "В. И. Пожбелко, П. Г. Веницкий, Н. И. Ахметшин ; под ред. В. И. Пожбелко. – Челябинск : "
-          "Изд-во ЮУрГУ, 2003. – 52 с.",
-    "en": "Pozhbelko, V. I., Venitsky, P. G., Akhmetshin, N. I. Course design in the theory of mechanisms and "
-          "machines: a textbook. Part 2 / ed. by V. I. Pozhbelko. Chelyabinsk: South Ural State University, "
-          "2003. 52 p. (in Russian)",
-}
+
+def note_figure_file(name: str, ext: str = "svg") -> str:
+    return f"note_{name}.{ext}"
 
 
 def default_template() -> str:
@@ -52,155 +52,52 @@ def read_template(path) -> str:
         raise TmmError(f"note template {p} is not UTF-8 text; save it as UTF-8") from None
 
 
-def note_meta(result, lang: str, title) -> dict:
-    """The title page's fields and words, as the style's `note` function reads them."""
-    from ...i18n.lang import pick
+# --- the document -----------------------------------------------------------------------------------
 
-    v = result.variant
-    org = [s.strip() for s in (title.org or "").split(",") if s.strip()]
-    return {
-        "lang": lang,
-        "doc-title": pick(lang, f"Explanatory note, TMM course project, variant {v.number}",
-                          f"Пояснительная записка к курсовому проекту по ТММ, вариант {v.number}"),
-        "org-lines": org,
-        "title-lines": [pick(lang, "Explanatory note", "Пояснительная записка"),
-                        pick(lang, "to the course project in the theory of mechanisms and machines",
-                             "к курсовому проекту по теории механизмов и машин")],
-        "topic": pick(lang, "«Synthesis of the cam and gear mechanisms»",
-                      "«Синтез кулачкового и зубчатых механизмов»"),
-        "variant-line": pick(lang, f"Variant {v.number}", f"Вариант {v.number}"),
-        "designation": title.designation_for(0, v.number) + pick(lang, "", " ПЗ"),
-        "teacher-label": pick(lang, "Supervisor", "Руководитель"),
-        "teacher": title.teacher,
-        "date-label": pick(lang, "date", "дата"),
-        "student-label": pick(lang, "Student", "Автор работы"),
-        "student": title.student,
-        "group-label": pick(lang, "Group", "Группа"),
-        "group": title.group,
-        "city": getattr(title, "city", "") or "",
-        "year": str(title.the_year),
-        "contents-title": pick(lang, "Contents", "Содержание"),
-        "figure-word": pick(lang, "Figure", "Рисунок"),
-        "table-word": pick(lang, "Table", "Таблица"),
-    }
+# The chapters in the order of the course project. Sheets 1 and 2 (the linkage: structure and
+# kinematics, force analysis and the flywheel) come first when a ProjectResult carries them —
+# their builders go here, before the cam (issues 24, 25); each builder is (ctx) -> None and
+# decides from the result whether it has anything to say.
+def _chapters():
+    from .cam_part import cam_chapter
+    from .gears_part import gears_chapter
+
+    return (
+        # linkage_structure_chapter,   sheet 1 (issue 24)
+        # linkage_forces_chapter,      sheet 2 (issue 25)
+        cam_chapter,
+        gears_chapter,
+    )
 
 
-MAX_FIGURE_HEIGHT_CM = 14.5
-TEXT_WIDTH_CM = 16.5
-
-
-def figure_width(path: Path) -> str | None:
-    """The width to embed an SVG with, so that it is at most MAX_FIGURE_HEIGHT_CM tall."""
-    import re
-
-    try:
-        head = Path(path).read_text(encoding="utf-8", errors="replace")[:2000]
-    except OSError:
-        return None
-    m = re.search(r'<svg[^>]*\swidth="([\d.]+)(?:pt)?"[^>]*\sheight="([\d.]+)(?:pt)?"', head)
-    if not m or float(m.group(2)) <= 0:
-        return None
-    width = min(TEXT_WIDTH_CM, MAX_FIGURE_HEIGHT_CM * float(m.group(1)) / float(m.group(2)))
-    return f"{width:.1f}cm"
-
-
-def build_note(result, lang: str, figures: dict[str, str], widths: dict[str, str] | None = None):
-    """The note as a Doc: cam, gears, conclusion, references. `figures` maps names to files,
-    `widths` names to the widths to embed them with (default: the text width)."""
-    from .cam_part import cam_section
+def build_note(result, lang: str, figures: dict | None = None, title=None):
+    """The note as a Document. `figures` maps a figure name to (svg file, png file or None,
+    width cm, height cm) of the note's own figures; a figure not given is left out with the
+    words that refer to it."""
+    from ...inputs.titleblock import TitleFields
     from .ctx import Ctx
-    from .gears_part import gears_section
-    from .sentences import note_sentence
+    from .front import appendix_profile, assumptions, conclusion, front_matter, references
+    from .glossary import GLOSSARY
 
-    c = Ctx(result, lang, {k: v for k, v in figures.items() if k in NOTE_FIGURES}, widths=dict(widths or {}))
-    t = c.t
-    doc = c.doc
-    cam_section(c)
-    gears_section(c)
-
-    # conclusion
-    cam, g = result.cam, result.gears
-    z, p, v = cam.sizing, cam.profile, cam.variant
-    doc.h(1, t("Conclusion", "Заключение"), numbered=False)
-    size = (t(f"$l_(O C) = {c.q(z.l_oc_m * 1000, decimals=2)}$ mm", f"$l_(O C) = {c.q(z.l_oc_m * 1000, decimals=2)}$ мм")
-            if v.is_rocker else t(f"offset $e = {c.q(z.e_m * 1000, decimals=2)}$ mm", f"эксцентриситет $e = {c.q(z.e_m * 1000, decimals=2)}$ мм"))
-    doc.p(t(f"A cam mechanism of scheme {v.scheme} was designed for variant {v.number}: the base radius of the pitch "
-            f"profile $r_0 = {c.q(z.r0_m * 1000, decimals=2)}$ mm, {size}, the roller radius "
-            f"$r_\"р\" = {c.q(p.roller_m * 1000, decimals=2)}$ mm; the pressure angle does not exceed "
-            f"{c.n(max(z.nu_rise_max_deg, z.nu_return_max_deg if z.closure == 'form' else 0), decimals=2)}° "
-            f"(allowed {c.n(v.nu_max_deg)}°)" + (t("; the profile is not undercut.", "; подреза профиля нет.") if not p.undercut
-                                                  else t("; the roller undercuts the profile (see the warnings).",
-                                                         "; ролик подрезает профиль (см. предупреждения).")),
-            f"Для варианта {v.number} спроектирован кулачковый механизм по схеме {v.scheme}: радиус теоретического "
-            f"профиля $r_0 = {c.q(z.r0_m * 1000, decimals=2)}$ мм, {size}, радиус ролика "
-            f"$r_\"р\" = {c.q(p.roller_m * 1000, decimals=2)}$ мм; угол давления не превышает "
-            f"{c.n(max(z.nu_rise_max_deg, z.nu_return_max_deg if z.closure == 'form' else 0), decimals=2)}° "
-            f"(допускается {c.n(v.nu_max_deg)}°)" + ("; подреза профиля нет." if not p.undercut
-                                                      else "; ролик подрезает профиль (см. предупреждения).")))
-    from .gears_part import _teeth
-
-    sp = g.spur
-    scheme_words = {"1": t("a single-row planetary reducer", "однорядный планетарный редуктор"),
-                    "2": t("a double-row planetary reducer", "двухрядный планетарный редуктор"),
-                    "1+1": t("two single-row planetary stages in series", "две последовательные однорядные планетарные ступени")}[g.scheme]
-    doc.p(t(f"The drive: a motor of {g.motor_rpm} rpm, {scheme_words} with tooth numbers {_teeth(g.planetary)} and "
-            f"{g.planetary.planets} planets ($i = {c.q(g.planetary.ratio, decimals=4)}$, deviation "
-            f"{c.n(g.planetary.ratio_error_pct, decimals=2)} %), and the spur pair $z_1 = {sp.z1}$, $z_2 = {sp.z2}$, "
-            f"$m = {c.q(sp.m_mm)}$ mm with the contact ratio $ε_α = {c.q(sp.eps_alpha, decimals=3)}$.",
-            f"Привод: двигатель с частотой вращения {g.motor_rpm} об/мин, {scheme_words} с числами зубьев "
-            f"{_teeth(g.planetary)} и {g.planetary.planets} сателлитами ($i = {c.q(g.planetary.ratio, decimals=4)}$, "
-            f"отклонение {c.n(g.planetary.ratio_error_pct, decimals=2)} %) и простая передача $z_1 = {sp.z1}$, "
-            f"$z_2 = {sp.z2}$, $m = {c.q(sp.m_mm)}$ мм с коэффициентом перекрытия $ε_α = {c.q(sp.eps_alpha, decimals=3)}$."))
-    notes = []  # the cam's first, as in the note (ProjectResult.notes puts the gears' first)
-    for n in tuple(cam.notes) + tuple(g.notes):
-        if n not in notes:
-            notes.append(n)
-    assumptions = [note_sentence(n, lang) for n in notes if n.level == "assumption"]
-    warnings = [note_sentence(n, lang) for n in notes if n.level == "warning"]
-    if assumptions:
-        doc.p(t("Assumptions made in the calculation:", "Допущения, принятые в расчёте:"))
-        doc.items(assumptions)
-    if warnings:
-        doc.p(t("Warnings:", "Предупреждения:"))
-        doc.items(warnings)
-    else:
-        doc.p(t("The calculation gave no warnings.", "Предупреждений расчёт не выдал."))
-
-    # references
-    doc.h(1, t("References", "Список литературы"), numbered=False)
-    doc.raw("#set par(first-line-indent: 0pt)\n#enum(numbering: \"1.\", indent: 0pt, [" + _typst_markup(TEXTBOOK[lang]) + "])",
-            "1. " + TEXTBOOK[lang])
-    return doc, c.used_figures
+    c = Ctx(result, lang, dict(figures or {}), glossary=GLOSSARY)
+    front_matter(c, title or TitleFields())
+    for chapter in _chapters():
+        chapter(c)
+    assumptions(c)
+    conclusion(c)
+    references(c)
+    appendix_profile(c)
+    c.doc.off = list(c.off)
+    return c.doc
 
 
-def _typst_markup(text: str) -> str:
-    from .doc import typst_escape
-
-    return typst_escape(text, start=False)
-
-
-def note_source(doc, meta: dict) -> str:
-    """The text of note.typ: import of the style, the title page fields, the body."""
-    from .doc import typst_string
-
-    def value(x):
-        if isinstance(x, list):
-            return "(" + "".join(typst_string(s) + ", " for s in x) + ")"
-        return typst_string(str(x))
-
-    fields = ",\n".join(f"  {k}: {value(v)}" for k, v in meta.items())
-    head = (f"// The explanatory note written by tmm. Edit the text freely and recompile in this folder:\n"
-            f"//   tmm note        (or the standalone typst: typst compile note.typ)\n"
-            f"// The style (page, fonts, title page) is in {STYLE_FILE}.\n"
-            f"#import \"{STYLE_FILE}\": *\n"
-            f"#let meta = (\n{fields},\n)\n"
-            f"#show: note.with(meta)\n")
-    return doc.to_typst(head)
+# --- typst ----------------------------------------------------------------------------------------
 
 
 def compile_note(folder: Path, source: str = "note.typ", output: str = "note.pdf") -> Path:
     """Compile folder/source to folder/output (a folder holding only what tmm wrote: the staging
-    folder) in a child process (render/note/typeset.py); TmmError (one line) on any failure."""
+    folder) in a child process (render/note/typeset.py) with the fonts tmm ships; TmmError (one
+    line) on any failure, a font it does not ship included (no silent fallback)."""
     from .typeset import typeset
 
     return typeset(Path(folder), source, output)
@@ -223,36 +120,130 @@ def recompile(path: Path) -> Path:
     return typeset_in_copy(src.parent, src.name, src.with_suffix(".pdf"))
 
 
-def write_note(folder: Path, result, lang: str, title, figures: dict[str, str], template: str | None = None) -> list[str]:
-    """Write note.typ, note-style.typ and note.pdf into `folder`; returns the figure names used.
+def prepare_note(folder: Path, result, lang: str, title, figures: dict, template: str | None = None,
+                 pdf: bool = True):
+    """Build the document and (for the PDF) write note.typ and note-style.typ; the figures need not
+    be drawn yet. Returns the document for :func:`finish_note`."""
+    from ...inputs.titleblock import TitleFields
+    from .front import title_meta
+    from .typst import note_source
 
-    `figures` maps figure names to files already in `folder`; `template` is the style's text
-    (default: the package's). On a typst error the three files are removed and TmmError raised.
-    """
+    folder = Path(folder)
+    title = title or TitleFields()
+    doc = build_note(result, lang, figures, title)
+    try:
+        if pdf:
+            from .ctx import Ctx
+
+            meta = title_meta(Ctx(result, lang), title)
+            (folder / STYLE_FILE).write_text(template if template is not None else default_template(), encoding="utf-8")
+            (folder / "note.typ").write_text(note_source(doc, meta, STYLE_FILE), encoding="utf-8")
+    except BaseException:
+        _remove_note(folder)
+        raise
+    return doc
+
+
+def finish_note(folder: Path, doc, title, pdf: bool = True, docx: bool = False) -> list[str]:
+    """Compile note.pdf and/or write note.docx (the figures are drawn by now); on any error the
+    note's files are removed and the error raised. Returns the names of the figures used."""
     from ...inputs.titleblock import TitleFields
 
     folder = Path(folder)
-    widths = {name: w for name, file in figures.items() if (w := figure_width(folder / file))}
-    doc, used = build_note(result, lang, figures, widths)
-    meta = note_meta(result, lang, title or TitleFields())
     try:
-        (folder / STYLE_FILE).write_text(template if template is not None else default_template(), encoding="utf-8")
-        (folder / "note.typ").write_text(note_source(doc, meta), encoding="utf-8")
-        compile_note(folder)
+        if pdf:
+            compile_note(folder)
+        if docx:
+            from .docx import write_docx
+
+            write_docx(doc, folder / DOCX_FILE, folder, title or TitleFields())
     except BaseException:
-        for name in NOTE_FILES:
-            (folder / name).unlink(missing_ok=True)
+        _remove_note(folder)
         raise
-    return used
+    return [b.name for b in doc.blocks if type(b).__name__ == "Figure"]
+
+
+def _remove_note(folder: Path) -> None:
+    for name in (*NOTE_FILES, DOCX_FILE):
+        (folder / name).unlink(missing_ok=True)
+
+
+def write_note(folder: Path, result, lang: str, title, figures: dict, template: str | None = None,
+               docx: bool = False, pdf: bool = True) -> list[str]:
+    """Write note.typ, note-style.typ and note.pdf (and note.docx) into `folder`; returns the names
+    of the figures used.
+
+    `figures` maps figure names to (svg, png or None, width cm, height cm), files already in
+    `folder`; `template` is the style's text (default: the package's). On a typst error the
+    note's files are removed and TmmError raised.
+    """
+    doc = prepare_note(folder, result, lang, title, figures, template, pdf=pdf)
+    return finish_note(folder, doc, title, pdf=pdf, docx=docx)
+
+
+def rewrite_docx(path: Path, lang: str, title=None) -> Path:
+    """`tmm note --to docx`: note.docx for the project in `path` (a folder, or a file in it), written
+    from its results.json (the run is repeated with the options it records, the note's figures drawn
+    afresh). The text is the one tmm writes: edits of note.typ do not reach it."""
+    import json
+    import os
+    import tempfile
+
+    from ...project import run_project
+    from ...variants import Variant
+    from ..figures.note import save_note_figure
+    from ..figures.note_scales import figure_size_cm
+
+    folder = Path(path)
+    folder = folder if folder.is_dir() else folder.parent
+    src = folder / "results.json"
+    if not src.is_file():
+        raise TmmError(f"no {src} here: the Word note is written from the project's results; run tmm project "
+                       "--report docx in its folder's parent, or keep results.json beside the note")
+    try:
+        data = json.loads(src.read_text(encoding="utf-8"))
+        row = data["input"]
+        v = Variant(int(data["variant"]), int(row["scheme"]), row["l_bc_m"], float(row["nu_max_deg"]),
+                    float(row["n_cam_rpm"]), float(row["stroke"]), int(row["law"]), float(row["phi_rise_deg"]),
+                    float(row["phi_far_dwell_deg"]), float(row["phi_return_deg"]))
+        o = data.get("options") or {}
+    except (OSError, ValueError, KeyError, TypeError):
+        raise TmmError(f"no {src} here: the Word note is written from the project's results; run tmm project "
+                       "--report docx in its folder's parent, or keep results.json beside the note") from None
+    from ...cam.design import CamChoice
+    from ...gears.design import parse_ratio
+
+    choice = CamChoice(**o["cam_choice"]) if o.get("cam_choice") else None
+    shift = o.get("shift")
+    result = run_project(v, crank_rpm=o.get("crank_rpm"), torque_nm=o.get("torque_nm"), step_deg=o.get("step_deg", 10.0),
+                         ratio=parse_ratio(o["ratio"]) if o.get("ratio") else None,
+                         tolerance_pct=o.get("tolerance_pct", 5.0), planets=o.get("planets"),
+                         shift=tuple(shift) if isinstance(shift, list) else shift, a_w_mm=o.get("a_w_mm"),
+                         select=o.get("select", "accurate"), cam_choice=choice)
+    with tempfile.TemporaryDirectory(prefix=".tmm-note-", dir=folder) as tmp:
+        tmp = Path(tmp)
+        figures = {}
+        for name in NOTE_FIGURES:
+            save_note_figure(tmp, result, lang, name, raster=True)
+            w, h = figure_size_cm(name, result.gears)
+            figures[name] = (note_figure_file(name, "svg"), note_figure_file(name, "png"), w, h)
+        write_note(tmp, result, lang, title, figures, docx=True, pdf=False)
+        try:
+            os.replace(tmp / DOCX_FILE, folder / DOCX_FILE)
+        except OSError as exc:
+            raise TmmError(f"cannot write the note for Word ({exc.strerror})") from None
+    return folder / DOCX_FILE
 
 
 def markdown_note(result, lang: str, figure_files: list[str]) -> str:
-    """The note as Markdown (headings, tables, figures with captions) for report.md."""
+    """The note as Markdown (report.md), with the screen PNGs (figure_files) as its pictures."""
     from ...i18n.lang import pick
+    from .markdown import markdown
 
     by_name = {Path(f).stem: f for f in figure_files}
-    doc, _ = build_note(result, lang, by_name)
+    figures = {name: (by_name[name], None, 16.5, 10.0) for name in NOTE_FIGURES if name in by_name}
+    doc = build_note(result, lang, figures)
     v = result.variant
     title = pick(lang, f"TMM course project, variant {v.number}: explanatory note",
                  f"Курсовой проект по ТММ, вариант {v.number}: пояснительная записка")
-    return doc.to_markdown(title)
+    return markdown(doc, title)

@@ -1,59 +1,227 @@
-"""What every part of the note needs: the result, the language, number formats and the figures."""
+"""What every chapter builder needs: the result, the language, numbers as the note prints them,
+formulas whose substitutions reproduce their results, the «где» of each new symbol, figures.
+
+Numbers: decimal comma under ru, the typographic minus, a no-break space between a number and its
+unit, a narrow no-break space between thousands. Inside typst math a number with a comma is a
+string (``"0,875"``), so that typst sets no space after the comma.
+"""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
 from ...i18n.numbers import num
-from .doc import Doc
+from .mathsyntax import check_line, parse, top_level_splits, width
+from .model import Document, Figure, Formula, Paragraph, Table, WhereItem
+
+NBSP = "\u00a0"
+NNBSP = "\u202f"  # narrow no-break space: thousands (12 345)
+
+
+@dataclass
+class V:
+    """A number to print in a substitution: the exact value and its format (``sig`` significant
+    digits or ``decimals``); ``exact`` numbers (counts, given data) print as they are; ``deg``
+    appends °. :meth:`Ctx.calc` adds digits to the leaves until the substitution reproduces the
+    printed result."""
+
+    x: float
+    sig: int | None = None
+    decimals: int | None = None
+    exact: bool = False
+    deg: bool = False
 
 
 @dataclass
 class Ctx:
     r: object  # ProjectResult
     lang: str
-    figures: dict[str, str]  # figure name -> file the note embeds (empty without plots)
-    doc: Doc = None  # type: ignore[assignment]
-    used_figures: list[str] = field(default_factory=list)
-    widths: dict[str, str] = field(default_factory=dict)
+    figures: dict = field(default_factory=dict)  # name -> (svg file, png file or None, width cm, height cm)
+    doc: Document = None  # type: ignore[assignment]
+    explained: set = field(default_factory=set)  # symbols already explained in a «где»
+    glossary: dict = field(default_factory=dict)  # symbol -> (meaning en, meaning ru)
+    off: list = field(default_factory=list)  # substitutions that could not be made to reproduce
 
     def __post_init__(self):
         if self.doc is None:
-            self.doc = Doc(self.lang)
+            self.doc = Document(self.lang)
 
+    # -- words -------------------------------------------------------------------------------------
     def t(self, en: str, ru: str) -> str:
         return ru if self.lang == "ru" else en
 
+    @property
+    def ru(self) -> bool:
+        return self.lang == "ru"
+
+    # -- numbers -----------------------------------------------------------------------------------
     def n(self, x, **kw) -> str:
-        """A number for the text: decimal comma under ru, the typographic minus."""
-        return num(x, self.lang, minus="−", **kw)
+        """A number for the text: decimal comma (ru), typographic minus, narrow space in thousands."""
+        text = num(x, self.lang, minus="−", **kw)
+        return group_thousands(text, self.lang)
 
     def q(self, x, **kw) -> str:
-        """A number inside typst math (a string, so that the decimal comma gets no space)."""
-        return '"' + self.n(x, **kw) + '"'
+        """A number inside typst math (a string when it holds more than digits)."""
+        return mq(self.n(x, **kw))
 
     def qd(self, x, **kw) -> str:
         """An angle in degrees inside typst math."""
         return '"' + self.n(x, **kw) + '°"'
 
-    def planets(self, k: int) -> str:
-        """"4 сателлита" / "4 planets"."""
-        from ...i18n.numbers import plural
+    def qty(self, x, unit: str, **kw) -> str:
+        """"48,86 мм" with a no-break space (text)."""
+        return self.n(x, **kw) + NBSP + unit
 
-        return plural(k, self.lang, {"one": "planet", "other": "planets"} if self.lang != "ru"
-                      else {"one": "сателлит", "few": "сателлита", "many": "сателлитов"})
+    def pct(self, x, decimals: int = 2, sign: bool = False) -> str:
+        text = self.n(x, decimals=decimals)
+        if sign and x > 0 and text.strip("0,.") != "":
+            text = "+" + text
+        return text + NBSP + "%"
 
     @staticmethod
     def u(unit: str) -> str:
         """A unit after a value inside typst math."""
         return 'thin "' + unit + '"'
 
-    def fig(self, name: str, caption: str) -> None:
-        """Embed a figure if it was drawn (`--no-plots` draws none)."""
-        file = self.figures.get(name)
-        if file:
-            self.doc.figure(name, file, caption, self.widths.get(name, "100%"))
-            self.used_figures.append(name)
+    def leaf(self, v: V, extra: int = 0) -> str:
+        if isinstance(v, (int, str)):
+            return mq(str(v)) if isinstance(v, str) else mq(self.n(v))
+        if v.exact:
+            text = self.n(v.x) if v.sig is None and v.decimals is None else self.n(v.x, sig=v.sig or 4, decimals=v.decimals)
+        elif v.decimals is not None:
+            text = self.n(v.x, decimals=v.decimals + extra)
+        else:
+            text = self.n(v.x, sig=(v.sig or 4) + extra)
+        if v.deg:
+            text += "°"
+        return mq(text)
+
+    # -- formulas ----------------------------------------------------------------------------------
+    def calc(self, lhs: str, sub: str | None, vals=(), result: V | None = None, unit: str | None = None) -> str:
+        """``lhs = sub = result unit`` as typst math, the leaves of `sub` ({0}, {1}, …) printed with
+        as many digits as it takes for the substitution to give the printed result (to its last
+        digit). `lhs` may hold ``=`` itself (symbol = formula)."""
+        res = self.leaf(result) if result is not None else None
+        tail = (" = " + res if res is not None else "") + (" " + self.u(unit) if unit else "")
+        if sub is None:
+            return lhs + tail
+        line = ""
+        for extra in range(0, 5):
+            line = lhs + " = " + sub.format(*(self.leaf(v, extra) for v in vals)) + tail
+            if all(c.ok for c in check_line(line)):
+                return line
+        self.off.append(line)
+        return line
+
+    def formula(self, *pieces: str, label: str | None = None, numbered: bool = True, where=()) -> Formula:
+        """A display formula of one or more pieces (joined by ``; quad``), with the «где» of the
+        symbols in `where` not yet explained in the note."""
+        math = fit_lines(list(pieces))
+        parse(math)  # a formula the writers cannot read never reaches the document
+        items = []
+        for sym in where:
+            if isinstance(sym, tuple):
+                sym, meaning = sym
+            else:
+                meaning = self.glossary_text(sym)
+            if sym in self.explained:
+                continue
+            self.explained.add(sym)
+            items.append(WhereItem(sym, meaning))
+        return self.doc.add(Formula(math, label=label, numbered=numbered, where=items))
+
+    def glossary_text(self, sym: str) -> str:
+        en, ru = self.glossary[sym]
+        return ru if self.ru else en
+
+    def p(self, text: str, indent: bool = True) -> Paragraph:
+        return self.doc.add(Paragraph(text, indent))
+
+    def table(self, name: str, caption: str, header: list[str], rows: list[list[str]], align=None, widths=None) -> Table:
+        return self.doc.add(Table(name, caption, header, rows, align, widths))
+
+    # -- figures ---------------------------------------------------------------------------------
+    def fig(self, name: str, caption: str) -> bool:
+        """Embed the note's figure `name` if it was drawn (``--no-plots`` draws none)."""
+        spec = self.figures.get(name)
+        if not spec:
+            return False
+        svg, png, w, h = spec
+        self.doc.add(Figure(name, svg, caption, w, h, png))
+        return True
 
     def has(self, name: str) -> bool:
         return name in self.figures
+
+    def if_fig(self, name: str, text: str) -> str:
+        """`text` (which refers to figure `name`) if the figure is drawn, else nothing."""
+        return text if name in self.figures else ""
+
+    def planets(self, k: int) -> str:
+        """"4 сателлита" / "4 planets"."""
+        from ...i18n.numbers import plural
+
+        return plural(k, self.lang, {"one": "planet", "other": "planets"} if not self.ru
+                      else {"one": "сателлит", "few": "сателлита", "many": "сателлитов"})
+
+
+LINE_EM = 33.0  # the width of a display formula line (16,5 cm less the number) in :func:`width`'s em
+
+
+def fit_lines(pieces: list[str], limit: float = LINE_EM) -> str:
+    """Pieces joined by "; quad" on one line while they fit, else on lines of their own (typst
+    ``\\``); a piece too wide by itself breaks before an "=" of its own.
+
+    >>> fit_lines(["a = b", "c = d"])
+    'a = b; quad c = d'
+    """
+    def w(src: str) -> float:
+        return width(parse(src))
+
+    out: list[str] = []
+    for piece in pieces:
+        for part in _split_piece(piece, limit, w):
+            if out and w(out[-1] + "; quad " + part) <= limit:
+                out[-1] = out[-1] + "; quad " + part
+            else:
+                out.append(part)
+    return " \\ ".join(out)
+
+
+def _split_piece(piece: str, limit: float, w) -> list[str]:
+    if w(piece) <= limit:
+        return [piece]
+    cuts = top_level_splits(piece)
+    lines, start = [], 0
+    for k, pos in enumerate(cuts):
+        nxt = cuts[k + 1] if k + 1 < len(cuts) else len(piece)
+        if w(piece[start:nxt]) > limit and pos > start:
+            lines.append(piece[start:pos])
+            start = pos + 1  # the next line starts with "= …"
+    lines.append(piece[start:])
+    return lines
+
+
+def mq(text: str) -> str:
+    """A printed number inside typst math: bare digits stay, anything else is a string."""
+    return text if text.isdigit() else '"' + text + '"'
+
+
+def group_thousands(text: str, lang: str) -> str:
+    """12345,7 → 12 345,7 (narrow no-break space, ГОСТ) for numbers of five digits and more.
+
+    >>> group_thousands("12345,7", "ru"), group_thousands("1234,5", "ru"), group_thousands("−400000", "ru")
+    ('12\\u202f345,7', '1234,5', '−400\\u202f000')
+    """
+    if lang != "ru":
+        return text
+    sign = text[0] if text[:1] in "−-+" else ""
+    body = text[len(sign):]
+    whole, sep, frac = body.partition(",")
+    if not whole.isdigit() or len(whole) < 5:
+        return text
+    groups = []
+    while whole:
+        groups.insert(0, whole[-3:])
+        whole = whole[:-3]
+    return sign + NNBSP.join(groups) + sep + frac

@@ -1,4 +1,8 @@
-"""A small document model of the note and its two writers: typst source and Markdown.
+"""A small document model and its two writers, typst source and Markdown — kept for the teacher's
+feedback and assignment sheets (render/feedback, render/assignment), which are written with it.
+The explanatory note itself is the richer model of :mod:`.model` (three writers); moving these two
+small documents onto it is left for later.
+
 
 Text is written in a mini markup: plain text with inline typst math between ``$…$`` and
 references ``{fig:name}`` / ``{tab:name}`` to figures and tables added anywhere in the document.

@@ -1,4 +1,10 @@
-"""Section 2 of the note: the gear drive (sheet 4, book section 2), from a GearsResult."""
+"""The chapter on the gear drive (sheet 4, book section 2), from a GearsResult.
+
+Every choice is told from the decision the core took — the motor speed, the scheme, the simple
+fraction of the book's procedure, the row of its tables, the tooth set carried by the search rule,
+the number of planets, the rated power — with what was compared and by how much, and recorded as
+a claim (:meth:`~.model.Document.claim`) that the tests check against the numbers.
+"""
 
 from __future__ import annotations
 
@@ -6,7 +12,11 @@ import math
 import re
 from fractions import Fraction
 
-from .ctx import Ctx
+from ...gears.design import design_teeth_text
+from ...gears.drive import RATED_POWER_KW
+from ...gears.planetary.search import SELECT_SLACK, STAGE_RANGE_1
+from .ctx import Ctx, V
+from .model import Heading
 
 
 def _fr(f: Fraction) -> str:
@@ -14,321 +24,534 @@ def _fr(f: Fraction) -> str:
     return f"{f.numerator}/{f.denominator}" if f.denominator != 1 else f"{f.numerator}"
 
 
+def _frt(f: Fraction) -> str:
+    """A fraction in the text."""
+    return f"{f.numerator}/{f.denominator}" if f.denominator != 1 else f"{f.numerator}"
+
+
+INEXACT_PCT = 1.0  # a carried ratio this far off, with closer sets larger, is explained
+
+
 def _teeth(design) -> str:
-    return " + ".join("/".join(map(str, s.teeth)) for s in design.stages)
+    return design_teeth_text(design)
 
 
-def gears_section(c: Ctx) -> None:
-    g = c.r.gears
-    doc, t, n, q = c.doc, c.t, c.n, c.q
-    kr, dd, pl = t("cr", "кр"), t("d", "д"), t("pl", "пл")
-    rpm = t("rpm", "об/мин")
-    doc.h(1, t("Synthesis of the gear mechanisms", "Синтез зубчатых механизмов"))
-
-    # 2.1 motor and ratios ----------------------------------------------------------------------
-    doc.h(2, t("Motor speed and gear ratios", "Выбор двигателя и передаточных отношений"))
-    if g.crank_rpm_assumed:
-        doc.p(t(f"The crank speed of the linkage is not part of Table 1.2; it is taken as $n_\"{kr}\" = {q(g.crank_rpm)}$ "
-                "rpm, the textbook's own example (§2.2, §2.4 of [1]), and should be replaced by the speed of sheet 1.",
-                f"Частота вращения кривошипа рычажного механизма в таблице 1.2 не задана; она принята "
-                f"$n_\"{kr}\" = {q(g.crank_rpm)}$ об/мин, как в примере пособия (п. 2.2, 2.4 [1]); её следует "
-                "заменить частотой по 1-му листу проекта."))
-    else:
-        doc.p(t(f"The crank of the linkage turns at $n_\"{kr}\" = {q(g.crank_rpm)}$ rpm (sheet 1).",
-                f"Кривошип рычажного механизма вращается с частотой $n_\"{kr}\" = {q(g.crank_rpm)}$ об/мин (1-й лист)."))
-    cands = ", ".join(str(x) for x in g.motor_candidates)
-    doc.p(t(f"The motor speed is the smallest standard speed ({cands} rpm) that is at least three times the crank "
-            "speed (§2.2 of [1]):",
-            f"Частота вращения двигателя — наименьшая из стандартных ({cands} об/мин), не меньшая утроенной "
-            "частоты вращения кривошипа (п. 2.2 [1]):"))
-    doc.formula(f'n_"{dd}" >= 3 n_"{kr}" = 3 dot {q(g.crank_rpm)} = {q(3 * g.crank_rpm)} {c.u(rpm)}; quad '
-                f'n_"{dd}" = {g.motor_rpm} {c.u(rpm)}', None)
-    doc.p(t("The required ratios of the spur pair (motor to cam) and of the planetary reducer (motor to crank):",
-            "Требуемые передаточные отношения простой передачи (двигатель — кулачок) и планетарного редуктора "
-            "(двигатель — кривошип):"))
-    doc.formula(f'i_"{dd}" = n_"{dd}"/(|n_k|) = {g.motor_rpm}/{q(abs(g.cam_rpm))} = {q(g.i_spur, sig=4)}; quad '
-                f'i_"{pl}" = n_"{dd}"/n_"{kr}" = {g.motor_rpm}/{q(g.crank_rpm)} = {q(g.i_planetary, sig=4)}', None)
-    rot = {"cw": t("clockwise", "по часовой стрелке"), "ccw": t("counter-clockwise", "против часовой стрелки")}
-    d = g.directions
-    doc.p(t(f"The cam turns {rot[d.cam]}; the spur pair is an external mesh, so the motor turns {rot[d.motor]}; "
-            f"the planetary reducer keeps the sense, and the crank turns {rot[d.crank]}.",
-            f"Кулачок вращается {rot[d.cam]}; простая передача — внешнее зацепление, поэтому двигатель вращается "
-            f"{rot[d.motor]}; планетарный редуктор направления не меняет, кривошип вращается {rot[d.crank]}."))
-
-    # 2.2 scheme ------------------------------------------------------------------------------------
-    doc.h(2, t("Scheme of the planetary reducer", "Выбор схемы планетарного редуктора"))
-    rows = []
-    for s in g.schemes:
-        chosen = s.key == g.scheme
-        rows.append([str(s.number), f"{n(s.i_min)} … {n(s.i_max)}", f"{n(s.eta_max)} … {n(s.eta_min)}",
-                     "$" + _formula_math(s.formula) + "$", t("chosen", "принята") if chosen else ""])
-    doc.table("schemes", t("Schemes of planetary reducers (Fig. 2.4 of [1])", "Схемы планетарных редукторов (рис. 2.4 [1])"),
-              ["№", t("Ratio range", "Диапазон $i$"), t("Efficiency", "КПД"), t("Ratio", "Передаточное отношение"), ""],
-              rows, align="center, center, center, left, left", widths=["auto", "auto", "auto", "1fr", "auto"])
-    i = n(g.i_planetary, sig=4)
-    why = {
-        "le8": t(f"Since $i_\"{pl}\" = {i} <= 8$, the single-row scheme 1 is taken: it has the highest efficiency and "
-                 "the simplest design.",
-                 f"Так как $i_\"{pl}\" = {i} <= 8$, принят однорядный редуктор по схеме 1: он имеет наибольший КПД и "
-                 "наиболее прост."),
-        "8to16": t(f"Since $8 < i_\"{pl}\" = {i} <= 16$, the double-row scheme 2 is taken: a single row cannot give "
-                   "this ratio with reasonable sizes, schemes 4 and 5 have a low efficiency.",
-                   f"Так как $8 < i_\"{pl}\" = {i} <= 16$, принят двухрядный редуктор по схеме 2: однорядный не даёт "
-                   "такого передаточного отношения при приемлемых габаритах, а схемы 4 и 5 имеют низкий КПД."),
-        "gt16": t(f"Since $i_\"{pl}\" = {i} > 16$, two single-row stages in series are taken (scheme 3 of Fig. 2.4), "
-                  f"each with a ratio near $sqrt(i_\"{pl}\") = {q(math.sqrt(g.i_planetary), sig=3)}$ (§2.2 of [1]); "
-                  "schemes 4 and 5 would give the ratio with a low efficiency.",
-                  f"Так как $i_\"{pl}\" = {i} > 16$, приняты две последовательные однорядные ступени (схема 3 "
-                  f"рис. 2.4) с передаточными отношениями около $sqrt(i_\"{pl}\") = {q(math.sqrt(g.i_planetary), sig=3)}$ "
-                  "(п. 2.2 [1]); схемы 4 и 5 дали бы нужное отношение лишь при низком КПД."),
-    }[g.scheme_reason]
-    doc.p(why + " " + t(f"The schemes are compared in Table {{tab:schemes}}.",
-                        f"Схемы сопоставлены в таблице {{tab:schemes}}."))
-
-    # 2.3 the book's procedure --------------------------------------------------------------------
-    doc.h(2, t("Tooth numbers by the textbook's procedure", "Подбор чисел зубьев по методике пособия"))
-    der = g.derivation
-    if der is None:
-        doc.p(t("The textbook's hand procedure gives no tooth set from a simple fraction within the tolerance; the tooth "
-                "numbers are found by the search below.",
-                "Ручная методика пособия не даёт чисел зубьев ни для одной простой дроби в пределах допуска; числа "
-                "зубьев найдены перебором (см. ниже)."))
-    else:
-        sec = {"1": "§2.4", "2": "§2.5", "1+1": "§2.2, §2.4"}[der.scheme]
-        if der.fraction_rule == "forced":
-            doc.p(t(f"The ratio is fixed as a simple fraction; the procedure of {sec} of [1] follows.",
-                    f"Передаточное отношение задано простой дробью; далее — методика {sec.replace('§', 'п. ')} [1]."))
-        else:
-            tried = ", ".join(f"{f.replace('·', ' · ')} ({s})" for f, s in sorted(der.tried, key=lambda x: x[1])[:8])
-            doc.p(t(f"The required ratio is replaced by a simple fraction within ±{n(g.tolerance_pct)} % "
-                    f"(denominator up to 10); of the fractions tried (reducer size in brackets: {tried}) the one "
-                    f"giving the smallest reducer is taken, and the procedure of {sec} of [1] follows.",
-                    f"Требуемое передаточное отношение заменяется простой дробью с точностью ±{n(g.tolerance_pct)} % "
-                    f"(знаменатель не более 10); из рассмотренных дробей (в скобках — габарит редуктора: {tried}) "
-                    f"принята дающая наименьший редуктор; далее — методика {sec.replace('§', 'п. ')} [1]."))
-        for j, st in enumerate(der.stages, 1):
-            if len(der.stages) > 1:
-                doc.p(t(f"Stage {j}:", f"Ступень {j}:"))
-            if st.scheme == "1":
-                _book_scheme1(c, st)
-            else:
-                _book_scheme2(c, st)
-            _book_planets(c, st)
-        if g.printed is not None:
-            p = g.printed
-            ok = p.coaxial_ok and p.ratio_ok
-            teeth = "/".join(map(str, p.stage.teeth))
-            if ok:
-                doc.p(t(f"The answer printed in §{p.section} of [1] ({teeth}) is reproduced.",
-                        f"Ответ, приведённый в п. {p.section} [1] ({teeth}), воспроизводится."))
-            else:
-                doc.p(t(f"The answer printed in §{p.section} of [1], {teeth}, does not satisfy coaxiality "
-                        f"({p.coaxial_lhs} ≠ {p.coaxial_rhs}) and gives $i = {q(p.ratio, sig=3)}$ instead of "
-                        f"{_fr(p.fraction)}; the procedure carried through correctly gives the numbers above.",
-                        f"Ответ, приведённый в п. {p.section} [1] ({teeth}), не удовлетворяет условию соосности "
-                        f"({p.coaxial_lhs} ≠ {p.coaxial_rhs}) и даёт $i = {q(p.ratio, sig=3)}$ вместо "
-                        f"{_fr(p.fraction)}; методика, доведённая правильно, даёт числа, полученные выше."))
-
-    # 2.4 the search ------------------------------------------------------------------------------
-    s = g.search
-    doc.h(2, t("Smallest reducer by exhaustive search", "Наименьший редуктор по результатам перебора"))
-    doc.p(t(f"Beside the hand procedure, every tooth set of the scheme with at most {s.z_max} teeth per wheel was "
-            f"checked: {s.n_sets} sets are within ±{n(g.tolerance_pct)} % of the ratio and satisfy coaxiality and "
-            "Table 2.2. The size of a reducer is $max(Γ_1, Γ_2) = max(z_k + 2 z_c, z_n)$ teeth (§2.5 of [1]). The "
-            f"smallest sets are listed in Table {{tab:search}}.",
-            f"Кроме ручной методики, перебраны все наборы чисел зубьев схемы с числом зубьев каждого колеса не более "
-            f"{s.z_max}: {s.n_sets} наборов дают передаточное отношение с точностью ±{n(g.tolerance_pct)} % и "
-            "удовлетворяют условиям соосности и табл. 2.2. Габарит редуктора оценивается числом "
-            "$max(Γ_1, Γ_2) = max(z_k + 2 z_c, z_n)$ (п. 2.5 [1]). Наименьшие наборы приведены в таблице "
-            "{tab:search}."))
-    double = g.scheme == "2"
-    if g.scheme == "1+1":
-        header = [t("Stage 1: $z_k$/$z_c$/$z_n$", "Ступень 1: $z_k$/$z_c$/$z_n$"),
-                  t("Stage 2: $z_k$/$z_c$/$z_n$", "Ступень 2: $z_k$/$z_c$/$z_n$")]
-    else:
-        header = ["$z_k$", "$z_c$", "$z'_c$", "$z_n$"] if double else ["$z_k$", "$z_c$", "$z_n$"]
-    header += ["$i$", t("Error, %", "Отклонение, %"), t("Size", "Габарит"), "$k$", ""]
-    rows = []
-    for a in s.alternatives:
-        if g.scheme == "1+1":
-            cells = ["/".join(map(str, st.teeth)) for st in a.stages]
-        else:
-            cells = [str(x) for x in a.stages[0].teeth]
-        rows.append(cells + [n(a.ratio, decimals=4), n(a.ratio_error_pct, decimals=2), str(a.size), str(a.planets),
-                             t("taken", "принят") if a == g.planetary else ""])
-    doc.table("search", t("Smallest tooth sets found by the search", "Наименьшие наборы чисел зубьев по перебору"),
-              header, rows, align=", ".join(["center"] * len(header)))
-    rule = {"smallest_3plus": t("the smallest reducer taking at least three planets",
-                                "наименьший редуктор, допускающий не менее трёх сателлитов"),
-            "smallest_no3": t("the smallest reducer (no set within the tolerance takes three planets)",
-                              "наименьший редуктор (ни один набор в пределах допуска не допускает трёх сателлитов)"),
-            "forced_planets": t(f"the smallest reducer taking {s.forced_planets} planets",
-                                f"наименьший редуктор, допускающий {c.planets(s.forced_planets or 0)}")}[s.rule]
-    design = g.planetary
-    book_size = der.size if der is not None else None
-    cmp = ""
-    if book_size is not None:
-        if book_size == design.size:
-            cmp = t(" The textbook's procedure gives a reducer of the same size.",
-                    " Методика пособия даёт редуктор того же габарита.")
-        elif design.size < book_size:
-            cmp = t(f" It is smaller than the one of the textbook's procedure (size {book_size}).",
-                    f" Он меньше полученного по методике пособия (габарит {book_size}).")
-        else:
-            cmp = t(f" The textbook's procedure gives a smaller size ({book_size}) but fewer planets.",
-                    f" Методика пособия даёт меньший габарит ({book_size}), но с меньшим числом сателлитов.")
-    doc.p(t(f"Taken: {_teeth(design)} with $k = {design.planets}$ planets, size {design.size} — {rule}.",
-            f"Принят набор {_teeth(design)} с числом сателлитов $k = {design.planets}$, габарит {design.size} — "
-            f"{rule}.") + cmp)
-
-    # 2.5 the five conditions ----------------------------------------------------------------------
+def gears_chapter(c: Ctx) -> None:
+    t = c.t
+    c.doc.add(Heading(1, t("Synthesis of the gear mechanisms", "Синтез зубчатых механизмов"), "chapter", "gears"))
+    _motor(c)
+    _scheme(c)
+    _book(c)
+    _search(c)
     _conditions(c)
-    # 2.6 ratio checks -----------------------------------------------------------------------------
     _ratio_checks(c)
-    # 2.7 spur pair --------------------------------------------------------------------------------
     _spur(c)
-    # 2.8 power ------------------------------------------------------------------------------------
     _power(c)
 
 
-def _formula_math(text: str) -> str:
-    """The ASCII-ish formulas of drive.SCHEMES ("i = 1 + z_n/z_k") as typst math."""
+# --------------------------------------------------------------------------------------------------
+def _motor(c: Ctx) -> None:
+    g = c.r.gears
+    t, n, q = c.t, c.n, c.q
+    rpm = t("rpm", "об/мин")
+    c.doc.add(Heading(2, t("Motor speed and gear ratios", "Выбор двигателя и передаточных отношений")))
+    if g.crank_rpm_assumed:
+        c.p(t(f"The crank speed of the linkage is not part of Table 1.2; it is taken as in the example of §2.4 "
+              f"{{cite:book}}, $n_\"кр\" = {q(g.crank_rpm)}$ rpm (see the assumptions).",
+              f"Частота вращения кривошипа рычажного механизма в таблице 1.2 не задана; она принята, как в примере "
+              f"п. 2.4 {{cite:book}}, $n_\"кр\" = {q(g.crank_rpm)}$ об/мин (см. принятые допущения)."))
+    else:
+        c.p(t(f"The crank of the linkage turns at $n_\"кр\" = {q(g.crank_rpm)}$ rpm.",
+              f"Кривошип рычажного механизма вращается с частотой $n_\"кр\" = {q(g.crank_rpm)}$ об/мин."))
+    cands = ", ".join(str(x) for x in g.motor_candidates)
+    low = [x for x in g.motor_candidates if x < 3 * g.crank_rpm]
+    rejected = ""
+    if low:
+        rejected = t(f" ({', '.join(map(str, low))} rpm {'is' if len(low) == 1 else 'are'} below this)",
+                     f" ({', '.join(map(str, low))} об/мин — меньше)")
+    c.p(t(f"The motor speed is the smallest of the standard speeds ({cands} rpm) that is at least three times the "
+          f"crank speed (§2.2 {{cite:book}}), so that the planetary reducer has a ratio of at least 3{rejected}:",
+          f"Частоту вращения двигателя выбираем из стандартного ряда ({cands} об/мин) как наименьшую, не меньшую "
+          f"утроенной частоты вращения кривошипа (п. 2.2 {{cite:book}}), чтобы передаточное отношение планетарного "
+          f"редуктора было не меньше 3{rejected}:"))
+    c.formula(c.calc('n_"д" >= 3 n_"кр"', "3 dot {0}", [V(g.crank_rpm, exact=True)], V(3 * g.crank_rpm, exact=True), rpm)
+              + f'; quad n_"д" = {g.motor_rpm} {c.u(rpm)}', where=['n_"д"', 'n_"кр"'])
+    c.doc.claim(kind="motor_speed", chosen=g.motor_rpm, candidates=tuple(g.motor_candidates), crank=g.crank_rpm)
+    c.p(t("The required ratios of the spur pair (motor to cam) and of the planetary reducer (motor to crank):",
+          "Требуемые передаточные отношения простой зубчатой передачи (двигатель — кулачок) и планетарного "
+          "редуктора (двигатель — кривошип):"))
+    c.formula(c.calc('i_"д" = n_"д"/(|n_k|)', "{0}/{1}", [V(g.motor_rpm, exact=True), V(abs(g.cam_rpm), exact=True)],
+                     V(g.i_spur, sig=4)),
+              c.calc('i_"пл" = n_"д"/n_"кр"', "{0}/{1}", [V(g.motor_rpm, exact=True), V(g.crank_rpm, exact=True)],
+                     V(g.i_planetary, sig=5)), where=['i_"д"', 'i_"пл"'])
+    rot = {"cw": t("clockwise", "по часовой стрелке"), "ccw": t("counter-clockwise", "против часовой стрелки")}
+    d = g.directions
+    c.p(t(f"The cam turns {rot[d.cam]}; the spur pair is an external mesh and reverses the sense, so the motor turns "
+          f"{rot[d.motor]}; the planetary reducer keeps the sense, and the crank turns {rot[d.crank]}.",
+          f"Кулачок вращается {rot[d.cam]}; простая передача — внешнее зацепление — меняет направление вращения, "
+          f"поэтому двигатель вращается {rot[d.motor]}; планетарный редуктор направление сохраняет, и кривошип "
+          f"вращается {rot[d.crank]}."))
+
+
+# --------------------------------------------------------------------------------------------------
+def _scheme_math(text: str) -> str:
+    """The formulas of drive.SCHEMES ("i = 1 + z_n/z_k") as typst math."""
     out = text.replace("·", " dot ").replace("′", "'")
     out = out.replace("z_c'", "z'_c").replace("z_k'", "z'_k")
     return re.sub(r"z_([a-z])(\d)", r"z_(\1 \2)", out)
 
 
+def _scheme(c: Ctx) -> None:
+    g = c.r.gears
+    t, n = c.t, c.n
+    c.doc.add(Heading(2, t("Scheme of the planetary reducer", "Выбор схемы планетарного редуктора")))
+    rows = []
+    for s in g.schemes:
+        rows.append([str(s.number), f"{n(s.i_min)} … {n(s.i_max)}", f"{n(s.eta_max)} … {n(s.eta_min)}",
+                     "$" + _scheme_math(s.formula) + "$"])
+    i = c.q(g.i_planetary, sig=4)
+    why = {
+        "le8": t(f"Since $i_\"пл\" = {i} <= 8$, the single-row reducer of scheme 1 is taken: of the schemes that give "
+                 "this ratio it has the highest efficiency and the simplest design.",
+                 f"Так как $i_\"пл\" = {i} <= 8$, принимаем однорядный редуктор по схеме 1: из схем, дающих такое "
+                 "передаточное отношение, он имеет наибольший КПД и наиболее прост."),
+        "8to16": t(f"Since $8 < i_\"пл\" = {i} <= 16$, the double-row reducer of scheme 2 is taken: a single row gives "
+                   "at most 8, schemes 4 and 5 have a low efficiency.",
+                   f"Так как $8 < i_\"пл\" = {i} <= 16$, принимаем двухрядный редуктор по схеме 2: однорядный даёт "
+                   "передаточное отношение не более 8, а схемы 4 и 5 имеют низкий КПД."),
+        "gt16": t(f"Since $i_\"пл\" = {i} > 16$, two single-row stages in series are taken (scheme 3), each with a "
+                  f"ratio near $sqrt(i_\"пл\") = {c.q(math.sqrt(g.i_planetary), sig=3)}$ (§2.2 {{cite:book}}); "
+                  "schemes 4 and 5 would give the ratio only with a low efficiency.",
+                  f"Так как $i_\"пл\" = {i} > 16$, принимаем две последовательные однорядные ступени (схема 3) с "
+                  f"передаточными отношениями около $sqrt(i_\"пл\") = {c.q(math.sqrt(g.i_planetary), sig=3)}$ "
+                  f"(п. 2.2 {{cite:book}}); схемы 4 и 5 дали бы нужное отношение лишь при низком КПД."),
+    }[g.scheme_reason]
+    c.p(t(f"The schemes of planetary reducers of Figure 2.4 {{cite:book}} are compared in Table {{tab:schemes}}. ",
+          f"Схемы планетарных редукторов по рисунку 2.4 {{cite:book}} сопоставлены в таблице {{tab:schemes}}. ") + why)
+    c.table("schemes", t("Schemes of planetary reducers", "Схемы планетарных редукторов"),
+            ["№", t("Range of $i$", "Диапазон $i$"), t("Efficiency", "КПД"), t("Ratio", "Передаточное отношение")],
+            rows, align=["center", "center", "center", "left"], widths=[0.5, 1.2, 1.2, 4])
+    c.doc.claim(kind="scheme", chosen=g.scheme, i_pl=g.i_planetary)
+
+
+# --------------------------------------------------------------------------------------------------
+def _book(c: Ctx) -> None:
+    g = c.r.gears
+    t, n = c.t, c.n
+    c.doc.add(Heading(2, t("Tooth numbers by the textbook's procedure", "Подбор чисел зубьев по методике пособия")))
+    der = g.derivation
+    if der is None:
+        c.p(t("The textbook's procedure gives no tooth numbers for any simple fraction within the tolerance; the tooth "
+              "numbers are found by the search below.",
+              "Методика пособия не даёт чисел зубьев ни для одной простой дроби в пределах допуска; числа зубьев "
+              "найдены перебором (см. ниже)."))
+        return
+    sec = {"1": "2.4", "2": "2.5", "1+1": "2.4"}[der.scheme]
+    tol = n(g.tolerance_pct)
+    first = der.stages[0]
+    if der.scheme == "1+1":
+        _book_pair(c, der)
+    elif der.fraction_rule == "forced":
+        f = der.ratio_fraction
+        err = (float(f) / g.i_planetary - 1) * 100
+        c.p(t(f"The ratio is given as the simple fraction $i = {_fr(f)} = {c.q(float(f), sig=5)}$ (deviation "
+              f"{c.pct(err, sign=True)}); the procedure of §{sec} {{cite:book}} follows.",
+              f"Передаточное отношение задано простой дробью $i = {_fr(f)} = {c.q(float(f), sig=5)}$ (отклонение "
+              f"{c.pct(err, sign=True)}); далее — методика п. {sec} {{cite:book}}."))
+    elif der.fraction_rule == "exact":
+        f = der.ratio_fraction
+        c.p(t(f"The required ratio is itself a simple fraction, $i_\"пл\" = {g.motor_rpm}/{n(g.crank_rpm)} = {_fr(f)}$; "
+              f"the procedure of §{sec} {{cite:book}} starts from it.",
+              f"Требуемое передаточное отношение само является простой дробью: $i_\"пл\" = {g.motor_rpm}/"
+              f"{n(g.crank_rpm)} = {_fr(f)}$; методика п. {sec} {{cite:book}} начинается с неё."))
+    elif der.fraction_rule in ("convergent", "nearest"):
+        f = first.fraction
+        err = (float(f) / g.i_planetary - 1) * 100
+        conv = "; ".join(f"${_fr(x)}$" for x in der.convergents)
+        last = der.convergents[-1] if der.convergents else None
+        intro = t(f"By §{sec} {{cite:book}} the required ratio is replaced by a simple fraction within ±{tol} %. The best "
+                  f"approximations of $i_\"пл\" = {c.q(g.i_planetary, sig=5)}$ by simple fractions are the convergents of "
+                  f"its continued fraction with a denominator up to 10: {conv}. ",
+                  f"По методике п. {sec} {{cite:book}} требуемое передаточное отношение заменяем простой дробью с "
+                  f"точностью ±{tol} %. Наилучшие приближения $i_\"пл\" = {c.q(g.i_planetary, sig=5)}$ простыми "
+                  f"дробями — подходящие дроби его разложения в непрерывную дробь со знаменателем не более 10: {conv}. ")
+        if der.fraction_rule == "convergent":
+            tail = t(f"The last of them is taken, $i = {_fr(f)} = {c.q(float(f), sig=5)}$ (deviation {c.pct(err, sign=True)}).",
+                     f"Принимаем последнюю из них: $i = {_fr(f)} = {c.q(float(f), sig=5)}$ (отклонение {c.pct(err, sign=True)}).")
+        else:
+            why = (t(f"the last of them, ${_fr(last)}$, is outside the tolerance or gives no tooth numbers",
+                     f"последняя из них, ${_fr(last)}$, выходит за допуск или не даёт чисел зубьев") if last is not None
+                   else t("none of them is within the tolerance", "ни одна из них не попадает в допуск"))
+            tail = t(f"Since {why}, the nearest simple fraction that gives tooth numbers is taken: $i = {_fr(f)} = "
+                     f"{c.q(float(f), sig=5)}$ (deviation {c.pct(err, sign=True)}).",
+                     f"Так как {why}, принимаем ближайшую простую дробь, дающую числа зубьев: $i = {_fr(f)} = "
+                     f"{c.q(float(f), sig=5)}$ (отклонение {c.pct(err, sign=True)}).")
+        c.p(intro + tail)
+        c.doc.claim(kind="book_fraction", rule=der.fraction_rule, chosen=f, convergents=tuple(der.convergents),
+                    target=g.i_planetary, tolerance=g.tolerance_pct)
+    for j, st in enumerate(der.stages, 1):
+        if len(der.stages) > 1:
+            c.p(t(f"Stage {j}, $i_{j} = {_fr(st.fraction)}$:", f"Ступень {j}, $i_{j} = {_fr(st.fraction)}$:"), indent=False)
+        if st.scheme == "1":
+            _book_scheme1(c, st)
+        else:
+            _book_scheme2(c, st)
+        _book_planets(c, st)
+    if g.printed is not None:
+        p = g.printed
+        teeth = "/".join(map(str, p.stage.teeth))
+        if p.coaxial_ok and p.ratio_ok:
+            c.p(t(f"The answer of §{p.section} {{cite:book}} ({teeth}, $k = {p.stage.planets}$) is reproduced.",
+                  f"Ответ, приведённый в п. {p.section} {{cite:book}} ({teeth}, $k = {p.stage.planets}$), "
+                  "воспроизводится."))
+        else:
+            c.p(t(f"The answer printed in §{p.section} {{cite:book}}, {teeth}, does not satisfy coaxiality "
+                  f"({p.coaxial_lhs} ≠ {p.coaxial_rhs}) and gives $i = {c.q(p.ratio, sig=3)}$ instead of "
+                  f"{_frt(p.fraction)}; the procedure carried through correctly gives the numbers above.",
+                  f"Ответ, приведённый в п. {p.section} {{cite:book}} ({teeth}), не удовлетворяет условию соосности "
+                  f"({p.coaxial_lhs} ≠ {p.coaxial_rhs}) и даёт $i = {c.q(p.ratio, sig=3)}$ вместо {_frt(p.fraction)}; "
+                  "методика, доведённая до конца без ошибок, даёт числа, полученные выше."))
+
+
+def _book_pair(c: Ctx, der) -> None:
+    """Two stages (§2.2): the pairs of simple fractions near √i_pl, the one with the smallest reducer."""
+    g = c.r.gears
+    t, n = c.t, c.n
+    tol = n(g.tolerance_pct)
+    pair = " · ".join(f"${_fr(s.fraction)}$" for s in der.stages)
+    product = (t(f"whose product is $i_\"пл\" = {_fr(der.ratio_fraction)}$ exactly",
+                 f"произведение которых точно равно $i_\"пл\" = {_fr(der.ratio_fraction)}$")
+               if der.fraction_rule in ("exact", "forced") else
+               t(f"whose product is within ±{tol} %", f"произведение которых отличается от $i_\"пл\"$ не более чем на ±{tol} %"))
+    c.p(t(f"By §2.2 {{cite:book}} the ratio is split into two stages with ratios near $sqrt(i_\"пл\")$ = "
+          f"{n(math.sqrt(g.i_planetary), sig=4)}: simple fractions (denominator up to 10) within ±{n(g.tolerance_pct / 2)} % of it, "
+          f"{product}. Of the {len(der.tried)} pairs compared, {pair} gives the smallest reducer (size {der.size}); each stage "
+          f"follows §2.4 {{cite:book}}.",
+          f"По п. 2.2 {{cite:book}} передаточное отношение разбиваем на две ступени с передаточными отношениями около "
+          f"$sqrt(i_\"пл\")$ = {n(math.sqrt(g.i_planetary), sig=4)}: простые дроби (знаменатель не более 10), отличающиеся от "
+          f"него не более чем на ±{n(g.tolerance_pct / 2)} %, {product}. Из {len(der.tried)} сопоставленных пар наименьший "
+          f"редуктор (габарит {der.size}) даёт пара {pair}; каждая ступень рассчитывается по п. 2.4 {{cite:book}}."))
+    c.doc.claim(kind="book_pair", sizes=tuple(s for _, s in der.tried), chosen_size=der.size)
+
+
 def _book_scheme1(c: Ctx, st) -> None:
-    doc, t = c.doc, c.t
+    t = c.t
     row = st.chosen
     a_, d_ = row.a, row.d
     half = Fraction(d_ - a_, 2)
-    doc.p(t("1) From the ratio, $z_n$ and $z_k$ through the factors D and A:",
-            "1) Из условия обеспечения передаточного отношения числа зубьев $z_n$ и $z_k$ выражаются через "
-            "множители D и A:"))
-    doc.formula(f"i^n_(k H) = 1 + z_n/z_k = {_fr(st.fraction)}; quad z_n/z_k = {_fr(st.fraction)} - 1 = "
-                f"{_fr(st.reduced)} = D/A; quad D = {d_}, A = {a_}", None)
-    doc.p(t("2) From coaxiality, the planet:", "2) Из условия соосности — число зубьев сателлита:"))
-    doc.formula(f"z_k + z_c = z_n - z_c; quad z_c = (z_n - z_k)/2 = (D - A)/2 y = ({d_} - {a_})/2 y = {_fr(half)} y", None)
-    doc.p(t("3)–4) With the multiplier y and Table 2.2 (no interference):",
-            "3)–4) Через коэффициент пропорциональности y и условия отсутствия интерференции (табл. 2.2):"))
+    c.p(t("1) From the ratio, $z_n$ and $z_k$ are expressed through the factors D and A:",
+          "1) Из условия обеспечения передаточного отношения выражаем числа зубьев $z_n$ и $z_k$ через множители "
+          "D и A:"))
+    c.formula(f"i = 1 + z_n/z_k = {_fr(st.fraction)}", f"z_n/z_k = {_fr(st.fraction)} - 1 = {_fr(st.reduced)} = D/A",
+              f"D = {d_}, A = {a_}", where=["z_k", "z_n"])
+    c.p(t("2) From coaxiality, the planet:", "2) Из условия соосности — число зубьев сателлита:"))
+    c.formula(f"z_k + z_c = z_n - z_c", f"z_c = (z_n - z_k)/2 = (D - A)/2 y = ({d_} - {a_})/2 y = {_fr(half)} y",
+              where=["z_c", "y"])
+    c.p(t("3) With the coefficient y and Table 2.2 {cite:book} (no interference):",
+          "3) Через коэффициент пропорциональности y и условия отсутствия интерференции (таблица 2.2 {cite:book}):"))
     b = row.base
-    doc.formula(f"z_k = {_fr(b[0])} y >= 17; quad z_c = {_fr(b[1])} y >= 20; quad z_n = {_fr(b[2])} y >= 85 "
-                f"quad => quad y_min = {_fr(row.y_min)}", None)
+    c.formula(f"z_k = {_fr(b[0])} y >= 17", f"z_c = {_fr(b[1])} y >= 20", f"z_n = {_fr(b[2])} y >= 85",
+              f"y_min = {_fr(row.y_min)}")
     z = row.teeth
-    doc.formula(f"z_k = {z[0]}; quad z_c = {z[1]}; quad z_n = {z[2]}", None)
+    c.formula(f"z_k = {z[0]}; quad z_c = {z[1]}; quad z_n = {z[2]}", numbered=False)
 
 
 def _book_scheme2(c: Ctx, st) -> None:
-    doc, t = c.doc, c.t
+    t = c.t
     red = st.reduced
-    doc.p(t("1) The ratio through the factors A, B, D, E:", "1) Передаточное отношение через множители A, B, D, E:"))
-    doc.formula(f"(z_c z_n)/(z_k z'_c) = i - 1 = {_fr(st.fraction)} - 1 = {_fr(red)} = (B D)/(A E)", None)
-    doc.p(t("2) The factors are split by the ranges 1 < B/A ≤ 5, 2 < D/E ≤ 5 (§2.5 of [1]):",
-            "2) Множители разделяются с учётом ограничений 1 < B/A ≤ 5, 2 < D/E ≤ 5 (п. 2.5 [1]):"))
+    c.p(t("1) The ratio through the factors A, B, D, E:", "1) Передаточное отношение через множители A, B, D, E:"))
+    c.formula(f"(z_c z_n)/(z_k z'_c) = i - 1 = {_fr(st.fraction)} - 1 = {_fr(red)} = (B D)/(A E)",
+              where=["z_k", "z_c", "z'_c", "z_n"])
+    c.p(t("2) The factors are split within 1 < B/A ≤ 5, 2 < D/E ≤ 5 (§2.5 {cite:book}) by the cross factors:",
+          "2) Множители разделяются с учётом ограничений 1 < B/A ≤ 5, 2 < D/E ≤ 5 (п. 2.5 {cite:book}) через "
+          "перекрёстные коэффициенты:"))
     if st.x1_range:
-        doc.formula(f"B/A = x_1/{red.denominator}, quad D/E = {red.numerator}/x_1 quad => quad "
-                    f"{st.x1_range[0]} <= x_1 <= {st.x1_range[1]}", None)
+        c.formula(f"B/A = x_1/{red.denominator}, quad D/E = {red.numerator}/x_1 quad => quad "
+                  f"{st.x1_range[0]} <= x_1 <= {st.x1_range[1]}")
     if st.x2_range:
-        doc.formula(f"B/A = {red.numerator}/x_2, quad D/E = x_2/{red.denominator} quad => quad "
-                    f"{st.x2_range[0]} <= x_2 <= {st.x2_range[1]}", None)
-    doc.p(t("3) From coaxiality $z_k + z_c = z_n - z'_c$ the tooth numbers through the multiplier y:",
-            "3) Из условия соосности $z_k + z_c = z_n - z'_c$ числа зубьев через коэффициент y:"))
-    doc.formula("z_k = A(D - E) y; quad z_c = B(D - E) y; quad z'_c = E(A + B) y; quad z_n = D(A + B) y", None)
-    doc.p(t("4) The smallest y by Table 2.2 ($z_k >= 17$, $z_c >= 17$, $z'_c >= 20$, $z_n >= 85$) and the sizes "
-            f"$Γ_1 = z_k + 2 z_c$, $Γ_2 = z_n$ for each split are in Tables {{tab:book_x1}} and {{tab:book_x2}}.",
-            "4) Наименьшее y по табл. 2.2 ($z_k >= 17$, $z_c >= 17$, $z'_c >= 20$, $z_n >= 85$) и габариты "
-            f"$Γ_1 = z_k + 2 z_c$, $Γ_2 = z_n$ для каждого разбиения приведены в таблицах {{tab:book_x1}} и "
-            "{tab:book_x2}."))
+        c.formula(f"B/A = {red.numerator}/x_2, quad D/E = x_2/{red.denominator} quad => quad "
+                  f"{st.x2_range[0]} <= x_2 <= {st.x2_range[1]}")
+    c.p(t("3) From coaxiality $z_k + z_c = z_n - z'_c$, the tooth numbers through the coefficient y:",
+          "3) Из условия соосности $z_k + z_c = z_n - z'_c$ — числа зубьев через коэффициент пропорциональности y:"))
+    c.formula("z_k = A(D - E) y; quad z_c = B(D - E) y; quad z'_c = E(A + B) y; quad z_n = D(A + B) y", where=["y"])
+    c.p(t("4) The smallest y by Table 2.2 ($z_k >= 17$, $z_c >= 17$, $z'_c >= 20$, $z_n >= 85$) and the sizes "
+          "$Γ_1 = z_k + 2 z_c$, $Γ_2 = z_n$ of the two rows for every split are given in Tables {tab:book_x1} and "
+          "{tab:book_x2}.",
+          "4) Наименьшее y по таблице 2.2 ($z_k >= 17$, $z_c >= 17$, $z'_c >= 20$, $z_n >= 85$) и габариты рядов "
+          "$Γ_1 = z_k + 2 z_c$, $Γ_2 = z_n$ для каждого разбиения приведены в таблицах {tab:book_x1} и {tab:book_x2}."))
     for tab, xname, name in (("2.3", "x_1", "book_x1"), ("2.4x2", "x_2", "book_x2")):
         rows = [rw for rw in st.rows if rw.table == tab]
-        cap = t(f"Tooth numbers by the split ${xname}$ (Table {tab[:3]} of [1])",
-                f"Числа зубьев по разбиению ${xname}$ (табл. {tab[:3]} [1])")
+        cap = t(f"Tooth numbers by the split ${xname}$ (Table {tab[:3]} {{cite:book}})",
+                f"Числа зубьев при разбиении по ${xname}$ (таблица {tab[:3]} {{cite:book}})")
         if not rows:
-            rows_cells = [["—"] * 9]
+            cells = [["—"] * 9]
         else:
-            rows_cells = [[str(rw.x), f"$({rw.b}/{rw.a}) dot ({rw.d}/{rw.e})$", f"${_fr(rw.y_min)}$",
-                           *(str(zz) for zz in rw.teeth), str(rw.gamma1),
-                           str(rw.gamma2) + (" *" if rw is st.chosen else "")] for rw in rows]
-        doc.table(name, cap, [f"${xname}$", "$(B/A) dot (D/E)$", "$y_min$", "$z_k$", "$z_c$", "$z'_c$", "$z_n$",
-                              "$Γ_1$", "$Γ_2$"], rows_cells, align=", ".join(["center"] * 9))
+            cells = [[str(rw.x), f"$({rw.b}/{rw.a}) dot ({rw.d}/{rw.e})$", f"${_fr(rw.y_min)}$",
+                      *(str(zz) for zz in rw.teeth), str(rw.gamma1),
+                      str(rw.gamma2) + (" *" if rw is st.chosen else "")] for rw in rows]
+        c.table(name, cap, [f"${xname}$", "$(B/A) dot (D/E)$", "$y_min$", "$z_k$", "$z_c$", "$z'_c$", "$z_n$",
+                            "$Γ_1$", "$Γ_2$"], cells, align=["center"] * 9)
     ch = st.chosen
     xn = "x_1" if ch.table == "2.3" else "x_2"
-    doc.p(t(f"5) The smallest $max(Γ_1, Γ_2) = {ch.size}$ is given by ${xn} = {ch.x}$ (marked *):",
-            f"5) Наименьший габарит $max(Γ_1, Γ_2) = {ch.size}$ даёт ${xn} = {ch.x}$ (отмечено *):"))
+    sizes = sorted(rw.size for rw in st.rows)
+    nxt = next((s for s in sizes if s > ch.size), None)
+    more = (t(f" (the next is {nxt})", f" (следующий — {nxt})") if nxt is not None else "")
+    c.p(t(f"5) The smallest size $max(Γ_1, Γ_2) = {ch.size}${more} is given by ${xn} = {ch.x}$ (marked *):",
+          f"5) Наименьший габарит $max(Γ_1, Γ_2) = {ch.size}${more} даёт ${xn} = {ch.x}$ (отмечено *):"))
+    c.doc.claim(kind="book_row", chosen=ch.size, sizes=tuple(sizes))
     z = ch.teeth
-    doc.formula(f"z_k = {z[0]}; quad z_c = {z[1]}; quad z'_c = {z[2]}; quad z_n = {z[3]}", None)
+    c.formula(f"z_k = {z[0]}; quad z_c = {z[1]}; quad z'_c = {z[2]}; quad z_n = {z[3]}", numbered=False)
 
 
 def _book_planets(c: Ctx, st) -> None:
-    doc, t, q = c.doc, c.t, c.q
+    t, q = c.t, c.q
     zk = st.chosen.teeth[0]
     ks = ", ".join(str(k) for k in st.assembly_ks[:6]) + (" …" if len(st.assembly_ks) > 6 else "")
-    doc.p(t("The possible numbers of planets by the assembly condition (2.4):",
-            "Теоретически возможные числа сателлитов по условию сборки (2.4):"))
+    c.p(t("The numbers of planets the assembly condition allows {cite:book:formula (2.4)}:",
+          "Теоретически возможные числа сателлитов по условию сборки {cite:book:формула (2.4)}:"))
     den = "k" if st.assembly_c == 1 else f"{st.assembly_c} k"
-    doc.formula(f"(z_k i^n_(k H))/k c = ({zk} dot {_fr(st.fraction)})/k c = {st.assembly_n}/({den}) c; "
-                f"quad k = {ks}", "2.4")
-    doc.p(t("The limit by the neighbouring condition (2.5), computed exactly:",
-            "Граничное число сателлитов по условию соседства (2.5), вычисленное точно:"))
+    c.formula(f"(z_k i)/k c = ({zk} dot {_fr(st.fraction)})/k c = {st.assembly_n}/({den}) c", f"k = {ks}",
+              where=["k", "c"])
+    c.p(t("The limit by the neighbouring condition {cite:book:formula (2.5)}, computed exactly instead of being read "
+          "from Table 2.1:",
+          "Граничное число сателлитов по условию соседства {cite:book:формула (2.5)}, вычисленное точно, а не по "
+          "таблице 2.1:"))
     big = max(st.chosen.teeth[1], st.chosen.teeth[2] if st.scheme == "2" else 0)
-    doc.formula(f"sin π/k > (z_c + 2 h^*_a)/(z_k + z_c) = ({big} + 2)/({zk} + {st.chosen.teeth[1]}) = "
-                f"{q(st.neighbour_q, decimals=3)}; quad k <= {st.neighbour_limit}", "2.5")
+    c.formula(c.calc("sin π/k > (z_c + 2 h^*_a)/(z_k + z_c)", "({0} + 2)/({1} + {2})",
+                     [V(big, exact=True), V(zk, exact=True), V(st.chosen.teeth[1], exact=True)],
+                     V(st.neighbour_q, decimals=4)) + f"; quad k <= {st.neighbour_limit}", where=["h^*_a"])
     extra = ""
     if st.k_max_exact != st.k_max:
-        extra = t(f" (by the exact assembly condition {st.k_max_exact})", f" (по точному условию сборки {st.k_max_exact})")
-    doc.p(t(f"The largest number of planets satisfying both: $k_\"max\" = {st.k_max}${extra}.",
-            f"Наибольшее число сателлитов, удовлетворяющее обоим условиям: $k_\"наиб\" = {st.k_max}${extra}."))
+        extra = t(f" (by the exact assembly condition, {st.k_max_exact})", f" (по точному условию сборки — {st.k_max_exact})")
+    c.p(t(f"The largest number of planets allowed by both is $k = {st.k_max}${extra}.",
+          f"Наибольшее число сателлитов, удовлетворяющее обоим условиям, $k = {st.k_max}${extra}."))
+    c.doc.claim(kind="book_planets", chosen=st.k_max, allowed=tuple(st.assembly_ks), limit=st.neighbour_limit)
 
 
+# --------------------------------------------------------------------------------------------------
+def _search(c: Ctx) -> None:
+    g = c.r.gears
+    t, n = c.t, c.n
+    s = g.search
+    design = g.planetary
+    tol = n(g.tolerance_pct)
+    c.doc.add(Heading(2, t("Tooth numbers by a complete search", "Выбор чисел зубьев полным перебором")))
+    two = g.scheme == "1+1"
+    what = (t("pairs of single-row stages", "пар однорядных ступеней") if two else
+            t("tooth sets of the scheme", "наборов чисел зубьев схемы"))
+    c.p(t(f"The procedure of the textbook follows one simple fraction; another tooth set may give a smaller reducer or "
+          f"a more accurate ratio. Therefore all {what} with at most {s.z_max} teeth per wheel that satisfy "
+          f"coaxiality and Table 2.2 {{cite:book}} were compared: {s.n_sets} of them give the ratio within ±{tol} %. "
+          "The size of a reducer is taken as $max(Γ_1, Γ_2) = max(z_k + 2 z_c, z_n)$ teeth (§2.5 {cite:book}); "
+          f"the smallest sets are listed in Table {{tab:search}}.",
+          f"Методика пособия следует одной простой дроби; другой набор чисел зубьев может дать меньший редуктор или "
+          f"более точное передаточное отношение. Поэтому сопоставлены все {'пары однорядных ступеней' if two else 'наборы чисел зубьев схемы'} "
+          f"с числом зубьев каждого колеса не более {s.z_max}, удовлетворяющие условию соосности и таблице 2.2 "
+          f"{{cite:book}}: {s.n_sets} из них дают передаточное отношение с точностью ±{tol} %. Габарит редуктора "
+          "оценивается числом $max(Γ_1, Γ_2) = max(z_k + 2 z_c, z_n)$ (п. 2.5 {cite:book}); наименьшие наборы "
+          "приведены в таблице {tab:search}."))
+    if two:
+        header = [t("Stage 1: $z_k$/$z_c$/$z_n$", "Ступень 1: $z_k$/$z_c$/$z_n$"),
+                  t("Stage 2: $z_k$/$z_c$/$z_n$", "Ступень 2: $z_k$/$z_c$/$z_n$")]
+    else:
+        header = ["$z_k$", "$z_c$", "$z'_c$", "$z_n$"] if g.scheme == "2" else ["$z_k$", "$z_c$", "$z_n$"]
+    header += ["$i$", t("Deviation, %", "Отклонение, %"), t("Size", "Габарит"), "$k$", t("Note", "Примечание")]
+    rows = []
+    shown = list(s.alternatives)
+    for extra in (s.more_accurate, s.exact):
+        if extra is not None and extra not in shown:
+            shown.append(extra)
+    for a in shown:
+        cells = ["/".join(map(str, st.teeth)) for st in a.stages] if two else [str(x) for x in a.stages[0].teeth]
+        note = []
+        if a == design:
+            note.append(t("taken", "принят"))
+        if s.smallest is not None and a == s.smallest and a != design:
+            note.append(t("smallest", "наименьший"))
+        if a == s.exact and a != design:
+            note.append(t("exact", "точный"))
+        rows.append(cells + [n(a.ratio, decimals=4), n(a.ratio_error_pct, decimals=2), str(a.size), str(a.planets),
+                             ", ".join(note)])
+    teeth_w = [1.9, 1.9] if two else [0.75] * (4 if g.scheme == "2" else 3)
+    c.table("search", t("Smallest tooth sets within the tolerance", "Наименьшие наборы чисел зубьев в пределах допуска"),
+            header, rows, align=["center"] * len(header), widths=teeth_w + [1.05, 1.2, 1.1, 0.45, 1.45])
+    _selection(c)
+
+
+def _selection(c: Ctx) -> None:
+    g = c.r.gears
+    t = c.t
+    s = g.search
+    design = g.planetary
+    smallest = s.smallest or design
+    pool = {"smallest_3plus": t("Only the sets that take at least three planets are compared (fewer planets load the "
+                                "bearings of the central gears unevenly).",
+                                "Сравниваются только наборы, допускающие не менее трёх сателлитов (при меньшем числе "
+                                "сателлитов опоры центральных колёс нагружены неуравновешенными силами)."),
+            "smallest_no3": t("No set within the tolerance takes three planets; all sets are compared.",
+                              "Ни один набор в пределах допуска не допускает трёх сателлитов; сравниваются все наборы."),
+            "forced_planets": t(f"The number of planets is set to {s.forced_planets}; the sets that take it are compared.",
+                                f"Число сателлитов задано равным {s.forced_planets}; сравниваются наборы, допускающие "
+                                "его.")}[s.rule]
+    e_d = design.ratio_error_pct
+    if s.select == "accurate":
+        if smallest == design:
+            sel = t(f"The smallest of them, {_teeth(design)} (size {design.size}, deviation {c.pct(e_d, sign=True)}), is "
+                    f"also the most accurate of the sets at most {SELECT_SLACK} tooth larger; it is taken.",
+                    f"Наименьший из них, {_teeth(design)} (габарит {design.size}, отклонение {c.pct(e_d, sign=True)}), "
+                    f"одновременно и наиболее точный среди наборов, больших не более чем на {SELECT_SLACK} зуб; он и "
+                    "принят.")
+        else:
+            sel = t(f"The smallest of them is {_teeth(smallest)} (size {smallest.size}, deviation "
+                    f"{c.pct(smallest.ratio_error_pct, sign=True)}). Of the sets at most {SELECT_SLACK} tooth larger, the "
+                    f"most accurate is taken: {_teeth(design)} (size {design.size}, deviation {c.pct(e_d, sign=True)}); "
+                    f"one tooth of size reduces the deviation from {c.pct(abs(smallest.ratio_error_pct))} to "
+                    f"{c.pct(abs(e_d))}.",
+                    f"Наименьший из них — {_teeth(smallest)} (габарит {smallest.size}, отклонение "
+                    f"{c.pct(smallest.ratio_error_pct, sign=True)}). Из наборов, больших не более чем на {SELECT_SLACK} "
+                    f"зуб, принимаем наиболее точный: {_teeth(design)} (габарит {design.size}, отклонение "
+                    f"{c.pct(e_d, sign=True)}); увеличение габарита на один зуб уменьшает отклонение с "
+                    f"{c.pct(abs(smallest.ratio_error_pct))} до {c.pct(abs(e_d))}.")
+    else:
+        sel = t(f"The smallest of them is taken: {_teeth(design)} (size {design.size}, deviation {c.pct(e_d, sign=True)}).",
+                f"Принимаем наименьший из них: {_teeth(design)} (габарит {design.size}, отклонение {c.pct(e_d, sign=True)}).")
+    c.p(pool + " " + sel)
+    c.doc.claim(kind="selection", select=s.select, rule=s.rule, carried=design, smallest=smallest, slack=SELECT_SLACK,
+                search=s)
+    # an inexact ratio although closer sets exist: why
+    more, exact = s.more_accurate, s.exact
+    if abs(e_d) >= INEXACT_PCT and (more is not None or exact is not None):
+        parts = []
+        for d in dict.fromkeys(x for x in (more, exact) if x is not None):
+            grow = (d.size / design.size - 1) * 100
+            parts.append(t(f"{_teeth(d)} (size {d.size}, {c.pct(grow, decimals=0)} larger, deviation "
+                           f"{c.pct(d.ratio_error_pct, sign=True)})",
+                           f"{_teeth(d)} (габарит {d.size}, больше на {c.pct(grow, decimals=0)}, отклонение "
+                           f"{c.pct(d.ratio_error_pct, sign=True)})"))
+        c.p(t(f"More accurate sets exist but are larger: {'; '.join(parts)}. The deviation of the set taken, "
+              f"{c.pct(e_d, sign=True)}, is within the allowed ±{c.n(g.tolerance_pct)} %, and a larger reducer for a "
+              "more exact crank speed is not justified.",
+              f"Более точные наборы существуют, но они больше: {'; '.join(parts)}. Отклонение принятого набора "
+              f"{c.pct(e_d, sign=True)} находится в пределах допускаемых ±{c.n(g.tolerance_pct)} %, и увеличение "
+              "габарита редуктора ради более точной частоты вращения кривошипа не оправдано."))
+        c.doc.claim(kind="inexact_accepted", carried=design, more=more, exact=exact, tolerance=g.tolerance_pct)
+    der = g.derivation
+    if der is not None:
+        bs = der.size
+        book = " + ".join("/".join(map(str, st.chosen.teeth)) for st in der.stages)
+        if bs == design.size:
+            cmp = t(f"The textbook's procedure gives {book}, a reducer of the same size.",
+                    f"Методика пособия даёт набор {book} того же габарита.")
+        elif design.size < bs:
+            cmp = t(f"The textbook's procedure gives {book} (size {bs}): the set taken is {bs - design.size} teeth smaller.",
+                    f"Методика пособия даёт набор {book} (габарит {bs}): принятый набор меньше на {bs - design.size} "
+                    f"зуб{_teeth_word(bs - design.size)}.")
+        else:
+            cmp = t(f"The textbook's procedure gives {book} (size {bs}), {design.size - bs} teeth smaller than the set "
+                    "taken, which is preferred by the rule above.",
+                    f"Методика пособия даёт набор {book} (габарит {bs}) — на {design.size - bs} "
+                    f"зуб{_teeth_word(design.size - bs)} меньше принятого, который предпочтён по указанному правилу.")
+        c.p(cmp)
+        c.doc.claim(kind="book_vs_carried", book_size=bs, carried_size=design.size)
+    if g.scheme == "1+1":
+        r1, r2 = (st.ratio for st in design.stages)
+        lo, hi = STAGE_RANGE_1
+        inside = s.stage_range_ok
+        c.p(t(f"The stage with the larger ratio is put on the motor side (its gears carry the smaller torque): "
+              f"$i_1 = {c.q(r1, decimals=3)}$, $i_2 = {c.q(r2, decimals=3)}$"
+              + (f", both within the range {c.n(lo)} … {c.n(hi)} of a single-row stage." if inside else
+                 f"; no pair keeps both within {c.n(lo)} … {c.n(hi)}."),
+              f"Ступень с большим передаточным отношением ставится со стороны двигателя (её колёса нагружены меньшим "
+              f"моментом): $i_1 = {c.q(r1, decimals=3)}$, $i_2 = {c.q(r2, decimals=3)}$"
+              + (f", обе в диапазоне {c.n(lo)} … {c.n(hi)} однорядной ступени." if inside else
+                 f"; ни одна пара не укладывается в диапазон {c.n(lo)} … {c.n(hi)}.")))
+
+
+def _teeth_word(k: int) -> str:
+    """зуб, зуба, зубов (after 'на K')."""
+    k = abs(k)
+    if k % 10 == 1 and k % 100 != 11:
+        return ""
+    if k % 10 in (2, 3, 4) and k % 100 not in (12, 13, 14):
+        return "а"
+    return "ов"
+
+
+# --------------------------------------------------------------------------------------------------
 def _conditions(c: Ctx) -> None:
     g = c.r.gears
-    doc, t, q = c.doc, c.t, c.q
+    t, q = c.t, c.q
     ch = g.checks
-    pl = t("pl", "пл")
-    doc.h(2, t("Conditions of synthesis for the reducer taken", "Проверка условий синтеза принятого редуктора"))
-    doc.p(t("1. The ratio (within the textbook's ±5 % unless another tolerance was set):",
-            "1. Условие обеспечения передаточного отношения (с точностью, принятой в пособии, ±5 %):"))
-    doc.formula(f'i = {_fr(ch.ratio_fraction)} = {q(ch.ratio, decimals=4)}', None)
-    doc.formula(f'δ = (i/i_"{pl}" - 1) dot 100 % = '
-                f'({q(ch.ratio, decimals=4)}/{q(ch.target, decimals=4)} - 1) dot 100 % = {q(ch.ratio_error_pct, decimals=2)} % ',
-                None)
+    c.doc.add(Heading(2, t("Conditions of synthesis for the reducer taken",
+                           "Проверка условий синтеза принятого редуктора")))
+    c.p(t(f"1. The ratio (the textbook allows ±{c.n(g.tolerance_pct)} %):",
+          f"1. Условие обеспечения передаточного отношения (допускаемое отклонение ±{c.n(g.tolerance_pct)} %):"),
+        indent=False)
+    c.formula(f"i = {_fr(ch.ratio_fraction)} = {q(ch.ratio, decimals=4)}",
+              c.calc('δ = (i/i_"пл" - 1) dot 100', "({0}/{1} - 1) dot 100",
+                     [V(ch.ratio, decimals=4), V(ch.target, decimals=4)], V(ch.ratio_error_pct, decimals=2), "%"),
+              where=["i", "δ"])
+    c.doc.claim(kind="ratio_within", error=ch.ratio_error_pct, tolerance=g.tolerance_pct, ok=ch.ratio_ok)
     multi = len(ch.stages) > 1
     for j, sc in enumerate(ch.stages, 1):
         st = sc.stage
         if multi:
-            doc.p(t(f"Stage {j} ($i_{j} = {q(st.ratio, decimals=4)}$):", f"Ступень {j} ($i_{j} = {q(st.ratio, decimals=4)}$):"))
+            c.p(t(f"Stage {j} ($i_{j} = {q(st.ratio, decimals=4)}$):", f"Ступень {j} ($i_{j} = {q(st.ratio, decimals=4)}$):"),
+                indent=False)
         zc2 = "z'_c" if st.z_planet2 is not None else "z_c"
-        doc.p(t("2. Coaxiality:", "2. Условие соосности:"))
-        doc.formula(f"z_k + z_c = {st.z_sun} + {st.z_planet} = {sc.coaxial_lhs}; quad z_n - {zc2} = {st.z_ring} - {st.zc2} = "
-                    f"{sc.coaxial_rhs}", None)
+        c.p(t("2. Coaxiality:", "2. Условие соосности:"), indent=False)
+        c.formula(c.calc("z_k + z_c", "{0} + {1}", [V(st.z_sun, exact=True), V(st.z_planet, exact=True)],
+                         V(sc.coaxial_lhs, exact=True)),
+                  c.calc(f"z_n - {zc2}", "{0} - {1}", [V(st.z_ring, exact=True), V(st.zc2, exact=True)],
+                         V(sc.coaxial_rhs, exact=True)))
         k = st.planets
-        doc.p(t(f"3. Assembly (2.4) for $k = {k}$ planets:", f"3. Условие сборки (2.4) при $k = {k}$:"))
+        c.p(t(f"3. Assembly {{cite:book:formula (2.4)}} for $k = {k}$:",
+              f"3. Условие сборки {{cite:book:формула (2.4)}} при $k = {k}$:"), indent=False)
         if st.z_planet2 is None:
-            doc.formula(f"(z_k + z_n)/k = ({st.z_sun} + {st.z_ring})/{k} = {q((st.z_sun + st.z_ring) / k, sig=4)}", "2.4")
+            c.formula(c.calc("(z_k + z_n)/k", "({0} + {1})/{2}", [V(st.z_sun, exact=True), V(st.z_ring, exact=True),
+                                                                   V(k, exact=True)],
+                             V((st.z_sun + st.z_ring) / k, sig=6)))
+            c.p(t("— a whole number, the condition holds." if (st.z_sun + st.z_ring) % k == 0 else
+                  "— not a whole number, the condition fails.",
+                  "— целое число, условие выполняется." if (st.z_sun + st.z_ring) % k == 0 else
+                  "— не целое число, условие не выполняется."), indent=False)
         else:
-            doc.formula(f"(z_k i^n_(k H))/k = {sc.assembly_book_n}/({sc.assembly_book_d} dot {k}) c; quad "
-                        f"(z_k z'_c + z_c z_n)/(k gcd(z_c, z'_c)) = {sc.assembly_t}/({k} dot {sc.assembly_g}) = "
-                        f"{q(sc.assembly_t / (k * sc.assembly_g), sig=4)}", "2.4")
+            c.formula(c.calc("(z_k z'_c + z_c z_n)/(k thin \"НОД\"(z_c, z'_c))", "{0}/({1} dot {2})",
+                             [V(sc.assembly_t, exact=True), V(k, exact=True), V(sc.assembly_g, exact=True)],
+                             V(sc.assembly_t / (k * sc.assembly_g), sig=6)))
+            c.p(t("— a whole number: the double planets can be fitted (turned by whole teeth), the condition holds."
+                  if sc.assembly_exact_ok else "— not a whole number, the condition fails.",
+                  "— целое число: двойные сателлиты устанавливаются (с поворотом на целое число зубьев), условие "
+                  "выполняется." if sc.assembly_exact_ok else "— не целое число, условие не выполняется."), indent=False)
             if sc.k_max != sc.k_max_book:
-                doc.p(t(f"The exact condition (a double planet may be fitted turned by whole teeth) admits up to "
-                        f"$k = {sc.k_max}$, the textbook's form up to $k = {sc.k_max_book}$.",
-                        f"Точное условие (двойной сателлит можно установить с поворотом на целое число зубьев) "
-                        f"допускает до $k = {sc.k_max}$, форма пособия — до $k = {sc.k_max_book}$."))
+                c.p(t(f"The form of the textbook (z_k·i/k whole) admits at most $k = {sc.k_max_book}$; the exact "
+                      f"condition above admits $k = {sc.k_max}$.",
+                      f"Форма условия в пособии ($z_k i/k$ — целое) допускает не более $k = {sc.k_max_book}$; точное "
+                      f"условие выше — $k = {sc.k_max}$."))
         zbig = max(st.z_planet, st.zc2)
-        doc.p(t("4. Neighbouring (2.5):", "4. Условие соседства (2.5):"))
-        doc.formula(f"sin π/{k} = {q(sc.neighbour_sin, decimals=4)} > (z_c + 2 h^*_a)/(z_k + z_c) = "
-                    f"({zbig} + 2)/{st.z_sun + st.z_planet} = {q(sc.neighbour_q, decimals=4)}", "2.5")
-        doc.p(t("5. No interference (Table 2.2 of [1]):", "5. Условие отсутствия интерференции (табл. 2.2 [1]):"))
+        c.p(t(f"4. Neighbouring {{cite:book:formula (2.5)}} (the larger planet, {zbig} teeth):",
+              f"4. Условие соседства {{cite:book:формула (2.5)}} (по большему венцу сателлита, {zbig} зуб"
+              f"{_teeth_word(zbig)}):"), indent=False)
+        c.formula(c.calc(f"sin π/k", "sin π/{0}", [V(k, exact=True)], V(sc.neighbour_sin, decimals=4))
+                  + " > " + c.calc("(z_c + 2 h^*_a)/(z_k + z_c)", "({0} + 2)/{1}",
+                                   [V(zbig, exact=True), V(st.z_sun + st.z_planet, exact=True)],
+                                   V(sc.neighbour_q, decimals=4)))
+        c.p(t("5. No interference (Table 2.2 {cite:book}):", "5. Условие отсутствия интерференции (таблица 2.2 {cite:book}):"),
+            indent=False)
         items = "; quad ".join(f"{_sym(i.symbol)} = {i.value} >= {i.limit}" for i in sc.interference)
-        doc.formula(items, None)
+        c.formula(items, numbered=False)
+        ks = ", ".join(map(str, sc.assembly_ks_exact[:6])) + (" …" if len(sc.assembly_ks_exact) > 6 else "")
         ok = sc.ok
-        doc.p(t(f"All conditions hold{'' if ok else ' except those marked in the warnings'}; the assembly admits "
-                f"$k = {', '.join(map(str, sc.assembly_ks_exact[:6]))}$ …, with the neighbouring condition "
-                f"$k <= {sc.neighbour_limit}$, so {c.planets(k)} are taken.",
-                f"Все условия {'выполняются' if ok else 'выполняются, кроме отмеченных в предупреждениях'}; условие "
-                f"сборки допускает $k = {', '.join(map(str, sc.assembly_ks_exact[:6]))}$ …, условие соседства — "
-                f"$k <= {sc.neighbour_limit}$; принято {c.planets(k)}."))
+        if g.forced_planets is not None:
+            choice = t(f"the number of planets is set to {k}", f"число сателлитов задано: {k}")
+        else:
+            choice = t(f"the largest of them, {c.planets(k)}, is taken", f"принимаем наибольшее — {c.planets(k)}")
+        c.p(t(f"All conditions {'hold' if ok else 'hold except those noted'}. The assembly condition admits $k = {ks}$, "
+              f"the neighbouring condition $k <= {sc.neighbour_limit}$; {choice}.",
+              f"Все условия {'выполняются' if ok else 'выполняются, кроме отмеченных'}. Условие сборки допускает "
+              f"$k = {ks}$, условие соседства — $k <= {sc.neighbour_limit}$; {choice}."))
+        c.doc.claim(kind="planets", chosen=k, allowed=tuple(sc.assembly_ks_exact), limit=sc.neighbour_limit,
+                    forced=g.forced_planets, ok=ok)
 
 
 def _sym(symbol: str) -> str:
@@ -336,145 +559,269 @@ def _sym(symbol: str) -> str:
     return symbol.replace("z_c′", "z'_c").replace("−", "-")
 
 
+# --------------------------------------------------------------------------------------------------
 def _ratio_checks(c: Ctx) -> None:
     g = c.r.gears
-    doc, t, q = c.doc, c.t, c.q
+    t, q = c.t, c.q
     ch = g.checks
-    doc.h(2, t("Checking the ratio", "Проверка передаточного отношения"))
-    doc.p(t("Analytically by (2.1), where $a = 1$ is the number of external meshes (for a single row $z'_c = z_c$):",
-            "Аналитически по формуле (2.1), где $a = 1$ — число внешних зацеплений (для однорядного механизма "
-            "$z'_c = z_c$):"))
-    for j, (st, val) in enumerate(zip(g.planetary.stages, ch.ratio_formula_21), 1):
-        zc2 = st.zc2
-        idx = f"_{j}" if len(g.planetary.stages) > 1 else ""
-        doc.formula(f"i{idx} = 1 - (-1)^a (z_c z_n)/(z_k z'_c) = 1 + ({st.z_planet} dot {st.z_ring})/({st.z_sun} dot {zc2}) = "
-                    f"{q(val, decimals=4)}", "2.1")
+    c.doc.add(Heading(2, t("Checking the ratio", "Проверка передаточного отношения")))
+    c.p(t("Analytically {cite:book:formula (2.1)}, $a$ being the number of external meshes (for a single row $z'_c = z_c$):",
+          "Аналитически {cite:book:формула (2.1)}, где $a$ — число внешних зацеплений (для однорядного механизма "
+          "$z'_c = z_c$):"))
+    stages = g.planetary.stages
+    for j, (st, val) in enumerate(zip(stages, ch.ratio_formula_21), 1):
+        idx = f"_{j}" if len(stages) > 1 else ""
+        c.formula(c.calc(f"i{idx} = 1 - (-1)^a (z_c z_n)/(z_k z'_c)", "1 + ({0} dot {1})/({2} dot {3})",
+                         [V(st.z_planet, exact=True), V(st.z_ring, exact=True), V(st.z_sun, exact=True),
+                          V(st.zc2, exact=True)], V(val, decimals=4)), where=["a"] if j == 1 else ())
     if len(ch.ratio_formula_21) > 1:
-        doc.formula(f"i = i_1 i_2 = " + " dot ".join(q(x, decimals=4) for x in ch.ratio_formula_21)
-                    + f" = {q(ch.ratio_formula_21_total, decimals=4)}", None)
-    v = ch.velocity
-    doc.p(t("Graphically by the velocity pictures (2.3): the ratio is the ratio of the tangents of the angles of the "
-            f"sun's and the carrier's lines (Figure {{fig:gears_planetary}}):",
-            "Графоаналитически по картинам скоростей (2.3): передаточное отношение равно отношению тангенсов углов "
-            f"наклона линий распределения скоростей центрального колеса и водила (рисунок {{fig:gears_planetary}}):"))
-    for j, s in enumerate(v.stages, 1):
-        doc.formula(f'i = ("tg" φ_k)/("tg" φ_H) = ("tg" {c.qd(s.phi_k_deg, decimals=2)})/("tg" {c.qd(s.phi_h_deg, decimals=2)}) = '
-                    f"{q(s.ratio, decimals=4)}", "2.3")
-    doc.p(t("and on the angular-velocity picture by the segments cut by the rays of the sun and of the carrier:",
-            "и по плану угловых скоростей — отношением отрезков, отсекаемых лучами центрального колеса и водила:"))
-    doc.formula(f"i = (o k)/(o h) = {q(v.ok, decimals=2)}/{q(v.oh, decimals=2)} = {q(v.ratio, decimals=4)}", "2.3")
-    c.fig("gears_planetary", t("Kinematic scheme of the planetary reducer and its velocity pictures",
-                               "Кинематическая схема планетарного редуктора и картины скоростей"))
+        c.formula(c.calc("i = i_1 i_2", " dot ".join("{%d}" % k for k in range(len(ch.ratio_formula_21))),
+                         [V(x, decimals=4) for x in ch.ratio_formula_21], V(ch.ratio_formula_21_total, decimals=4)))
+    vp = ch.velocity
+    fig = c.if_fig("gears_planetary", t(" (Figure {fig:gears_planetary})", " (рисунок {fig:gears_planetary})"))
+    c.p(t(f"Graphically by the velocity pictures {{cite:book:formula (2.3)}}{fig}: the ratio is the ratio of the "
+          "tangents of the angles that the lines of velocities of the sun gear and of the carrier make with the "
+          "vertical,",
+          f"Графоаналитически по картинам скоростей {{cite:book:формула (2.3)}}{fig}: передаточное отношение равно "
+          "отношению тангенсов углов наклона линий распределения скоростей центрального колеса и водила,"))
+    for j, s in enumerate(vp.stages, 1):
+        c.formula(c.calc('i = ("tg" φ_k)/("tg" φ_H)', '("tg" {0})/("tg" {1})',
+                         [V(s.phi_k_deg, decimals=2, deg=True), V(s.phi_h_deg, decimals=2, deg=True)],
+                         V(s.ratio, decimals=4)), where=["φ_k", "φ_H"] if j == 1 else ())
+    c.p(t("and on the plan of angular velocities by the segments cut by the rays of the sun gear and of the carrier:",
+          "и по плану угловых скоростей — отношением отрезков, отсекаемых лучами центрального колеса и водила:"))
+    if c.has("gears_planetary"):  # the segments as drawn on the figure [mm]
+        from ..figures.note_scales import planetary_scales
+
+        sc = planetary_scales(g)
+        ok, oh = sc.ok_mm, sc.oh_mm
+        where = ["o k", "o h"]
+    else:  # in the units of the construction (radii in modules)
+        ok, oh = vp.ok, vp.oh
+        unit = t("in the units of the construction", "в единицах построения")
+        where = [("o k", t(f"the segment cut by the ray of the sun gear, {unit}",
+                           f"отрезок, отсекаемый лучом центрального колеса, {unit}")),
+                 ("o h", t(f"the segment cut by the ray of the carrier, {unit}", f"отрезок, отсекаемый лучом водила, {unit}"))]
+    c.formula(c.calc("i = (o k)/(o h)", "{0}/{1}", [V(ok, decimals=2), V(oh, decimals=2)], V(vp.ratio, decimals=4)),
+              where=where)
+    c.fig("gears_planetary", t("Kinematic scheme of the planetary reducer, the picture of linear velocities and the plan "
+                               "of angular velocities", "Кинематическая схема планетарного редуктора, картина линейных "
+                               "скоростей и план угловых скоростей"))
     k = g.planetary.planets
-    doc.p(t(f"The assembly of the {k} planets is shown in Figure {{fig:gears_assembly}} (the angle between the planets "
-            f"is $2β = 360°\\/k = {q(360 / k, sig=4)}°$).",
-            f"Схема сборки редуктора с {k} сателлитами показана на рисунке {{fig:gears_assembly}} (угол между "
-            f"сателлитами $2β = 360°\\/k = {q(360 / k, sig=4)}°$)."))
+    c.p(t(f"The {c.planets(k)} stand at the angle $2β = 360°/k = {c.q(360 / k, sig=4)}°$",
+          f"Сателлиты расположены через угол $2β = 360°/k = {c.q(360 / k, sig=4)}°$")
+        + c.if_fig("gears_assembly", t("; the assembly is shown in Figure {fig:gears_assembly}",
+                                       "; схема сборки редуктора показана на рисунке {fig:gears_assembly}")) + ".")
     c.fig("gears_assembly", t("Assembly of the planetary reducer", "Схема сборки планетарного редуктора"))
 
 
+# --------------------------------------------------------------------------------------------------
 def _spur(c: Ctx) -> None:
     g = c.r.gears
     sp = g.spur
-    doc, t, n, q = c.doc, c.t, c.n, c.q
+    t, n, q = c.t, c.n, c.q
     mm = t("mm", "мм")
-    dd = t("d", "д")
-    doc.h(2, t("The spur pair", "Расчёт простой зубчатой передачи"))
-    doc.p(t(f"Zero gears (§2.3 of [1]): module $m = {q(sp.m_mm)}$ mm, pressure angle $α = {q(sp.alpha_deg)}°$, "
-            f"$h^*_a = {q(sp.ha_star)}$, $c^* = {q(sp.c_star)}$, $x_1 = x_2 = 0$.",
-            f"Передача из нулевых колёс (п. 2.3 [1]): модуль $m = {q(sp.m_mm)}$ мм, угол профиля "
-            f"$α = {q(sp.alpha_deg)}°$, $h^*_a = {q(sp.ha_star)}$, $c^* = {q(sp.c_star)}$, $x_1 = x_2 = 0$."))
-    doc.p(t("1–2. The ratio and the tooth numbers (the smaller gear has 17 teeth):",
-            "1–2. Передаточное отношение и числа зубьев (меньшее колесо имеет 17 зубьев):"))
+    c.doc.add(Heading(2, t("The spur pair", "Расчёт простой зубчатой передачи")))
+    if sp.shifted:
+        _spur_shifted(c)
+        return
+    c.p(t(f"The spur pair is made of zero gears (§2.3 {{cite:book}}): module $m = {q(sp.m_mm)}$ mm, profile angle "
+          f"$α = {q(sp.alpha_deg)}°$, $h^*_a = {q(sp.ha_star)}$, $c^* = {q(sp.c_star)}$, shifts $x_1 = x_2 = 0$.",
+          f"Простая передача составлена из нулевых колёс (п. 2.3 {{cite:book}}): модуль $m = {q(sp.m_mm)}$ мм, угол "
+          f"профиля $α = {q(sp.alpha_deg)}°$, $h^*_a = {q(sp.ha_star)}$, $c^* = {q(sp.c_star)}$, смещения "
+          "$x_1 = x_2 = 0$."))
+    c.p(t("1–2. The ratio and the tooth numbers: the smaller gear has 17 teeth, the textbook's smallest; the other "
+          "is the nearest whole number to the required ratio:",
+          "1–2. Передаточное отношение и числа зубьев: меньшее колесо имеет 17 зубьев (наименьшее число по "
+          "рекомендации пособия), число зубьев другого — ближайшее целое по требуемому передаточному отношению:"))
     if not sp.multiplier:
-        doc.formula(f'i_"{dd}" = {q(sp.i_d, sig=4)}; quad z_1 = 17; quad z_2 = z_1 i_"{dd}" = 17 dot {q(sp.i_d, sig=4)} = '
-                    f"{q(17 * sp.i_d, sig=4)} approx {sp.z2}; quad i = z_2/z_1 = {sp.z2}/{sp.z1} = {q(sp.i_actual, sig=4)}", None)
+        c.formula(c.calc('z_2 = z_1 i_"д"', "17 dot {0}", [V(sp.i_d, sig=4)], V(17 * sp.i_d, decimals=2))
+                  + f" approx {sp.z2}",
+                  c.calc("i = z_2/z_1", "{0}/{1}", [V(sp.z2, exact=True), V(sp.z1, exact=True)], V(sp.i_actual, sig=4)),
+                  where=["z_1", "z_2"])
     else:
-        doc.formula(f'i_"{dd}" = {q(sp.i_d, sig=4)} < 1; quad z_2 = 17; quad z_1 = z_2/i_"{dd}" = 17/{q(sp.i_d, sig=4)} = '
-                    f"{q(17 / sp.i_d, sig=4)} approx {sp.z1}; quad i = z_2/z_1 = {sp.z2}/{sp.z1} = {q(sp.i_actual, sig=4)}", None)
+        c.formula(c.calc('z_1 = z_2/i_"д"', "17/{0}", [V(sp.i_d, sig=4)], V(17 / sp.i_d, decimals=2)) + f" approx {sp.z1}",
+                  c.calc("i = z_2/z_1", "{0}/{1}", [V(sp.z2, exact=True), V(sp.z1, exact=True)], V(sp.i_actual, sig=4)),
+                  where=["z_1", "z_2"])
+    dev = (sp.i_actual / sp.i_d - 1) * 100
+    cam_rpm = g.cam_rpm_actual
+    c.p(t(f"The cam turns at {c.qty(cam_rpm, 'rpm', decimals=1)} instead of {c.qty(abs(g.cam_rpm), 'rpm')} "
+          f"(ratio deviation {c.pct(dev, sign=True)}).",
+          f"Кулачок вращается с частотой {c.qty(cam_rpm, 'об/мин', decimals=1)} вместо {c.qty(abs(g.cam_rpm), 'об/мин')} "
+          f"(отклонение передаточного отношения {c.pct(dev, sign=True)})."))
+    c.doc.claim(kind="spur_teeth", z1=sp.z1, z2=sp.z2, i_d=sp.i_d, multiplier=sp.multiplier)
     ca = math.cos(math.radians(sp.alpha_deg))
-    m_ = q(sp.m_mm)
-    mmu = c.u(mm)
-    doc.p(t("3. Diameters of the pitch, base, tip and root circles:", "3. Диаметры делительных, основных, вершин и впадин:"))
-    for i, z, dv, db, da, df in ((1, sp.z1, sp.d1_mm, sp.db1_mm, sp.da1_mm, sp.df1_mm), (2, sp.z2, sp.d2_mm, sp.db2_mm, sp.da2_mm, sp.df2_mm)):
-        doc.formula(f"d_{i} = m z_{i} = {m_} dot {z} = {q(dv, decimals=2)} {mmu}; quad "
-                    f"d_(b {i}) = d_{i} cos α = {q(dv, decimals=2)} dot {q(ca, decimals=4)} = {q(db, decimals=2)} {mmu}", None)
-        doc.formula(f"d_(a {i}) = d_{i} + 2 h^*_a m = {q(dv, decimals=2)} + 2 dot {q(sp.ha_star)} dot {m_} = {q(da, decimals=2)} {mmu}; quad "
-                    f"d_(f {i}) = d_{i} - 2(h^*_a + c^*) m = {q(df, decimals=2)} {mmu}", None)
-    doc.p(t("4–10. Centre distance, pitches, tooth sizes:", "4–10. Межосевое расстояние, шаги и размеры зубьев:"))
-    doc.formula(f"a = m(z_1 + z_2)/2 = {m_} dot ({sp.z1} + {sp.z2})/2 = {q(sp.a_mm, decimals=2)} {mmu}", None)
-    doc.formula(f"p = π m = {q(sp.p_mm, decimals=3)} {mmu}; quad p_b = p cos α = {q(sp.pb_mm, decimals=3)} {mmu}; quad "
-                f"s = e = (π m)/2 = {q(sp.s_mm, decimals=3)} {mmu}", None)
-    doc.formula(f'τ_1 = (360 degree)/z_1 = "360°"/{sp.z1} = {c.qd(sp.tau1_deg, decimals=3)}; quad '
-                f'τ_2 = "360°"/{sp.z2} = {c.qd(sp.tau2_deg, decimals=3)}', None)
-    doc.formula(f"h = (2 h^*_a + c^*) m = {q(sp.h_mm, decimals=2)} {mmu}; quad h_d = 2 h^*_a m = {q(sp.hd_mm, decimals=2)} {mmu}; "
-                f"quad C = c^* m = {q(sp.c_mm, decimals=2)} {mmu}", None)
-    doc.p(t("11. Check:", "11. Проверка:"))
-    doc.formula(f"a = d_(a 1)/2 + d_(f 2)/2 + C = {q(sp.da1_mm / 2, decimals=2)} + {q(sp.df2_mm / 2, decimals=2)} + "
-                f"{q(sp.c_mm, decimals=2)} = {q(sp.check_a_12_mm, decimals=2)} {mmu}; quad "
-                f"d_(a 1) - d_(f 1) = {q(sp.check_2h_1_mm, decimals=2)} = 2h", None)
-    ok = t("the check holds", "проверка выполняется") if sp.check_ok else t("the check fails", "проверка не выполняется")
-    doc.p(t(f"The centre distance and the tooth heights agree: {ok}.", f"Межосевое расстояние и высоты зубьев согласованы: {ok}."))
+    m_ = V(sp.m_mm, exact=True)
+    c.p(t("3. The diameters of the pitch, base, tip and root circles:",
+          "3. Диаметры делительных, основных окружностей, окружностей вершин и впадин:"), indent=False)
+    for i, z, dv, db, da, df in ((1, sp.z1, sp.d1_mm, sp.db1_mm, sp.da1_mm, sp.df1_mm),
+                                 (2, sp.z2, sp.d2_mm, sp.db2_mm, sp.da2_mm, sp.df2_mm)):
+        c.formula(c.calc(f"d_{i} = m z_{i}", "{0} dot {1}", [m_, V(z, exact=True)], V(dv, decimals=2), mm),
+                  c.calc(f"d_(b {i}) = d_{i} cos α", "{0} dot {1}", [V(dv, decimals=2), V(ca, decimals=4)], V(db, decimals=2), mm),
+                  where=["m"] if i == 1 else ())
+        c.formula(c.calc(f"d_(a {i}) = d_{i} + 2 h^*_a m", "{0} + 2 dot {1} dot {2}",
+                         [V(dv, decimals=2), V(sp.ha_star, exact=True), m_], V(da, decimals=2), mm),
+                  c.calc(f"d_(f {i}) = d_{i} - 2(h^*_a + c^*) m", "{0} - 2({1} + {2}) dot {3}",
+                         [V(dv, decimals=2), V(sp.ha_star, exact=True), V(sp.c_star, exact=True), m_], V(df, decimals=2), mm),
+                  where=["c^*"] if i == 1 else ())
+    c.p(t("4–10. The centre distance, the pitches and the sizes of the teeth:",
+          "4–10. Межосевое расстояние, шаги и размеры зубьев:"), indent=False)
+    c.formula(c.calc("a = m (z_1 + z_2)/2", "{0} dot ({1} + {2})/2", [m_, V(sp.z1, exact=True), V(sp.z2, exact=True)],
+                     V(sp.a_mm, decimals=2), mm))
+    c.formula(c.calc("p = π m", "π dot {0}", [m_], V(sp.p_mm, decimals=3), mm),
+              c.calc("p_b = p cos α", "{0} dot {1}", [V(sp.p_mm, decimals=3), V(ca, decimals=4)], V(sp.pb_mm, decimals=3), mm),
+              c.calc("s = e = (π m)/2", "(π dot {0})/2", [m_], V(sp.s_mm, decimals=3), mm), where=["p_b"])
+    c.formula(c.calc("τ_1 = (360 degree)/z_1", "{0}/{1}", [V(360, exact=True, deg=True), V(sp.z1, exact=True)],
+                     V(sp.tau1_deg, decimals=3, deg=True)),
+              c.calc("τ_2 = (360 degree)/z_2", "{0}/{1}", [V(360, exact=True, deg=True), V(sp.z2, exact=True)],
+                     V(sp.tau2_deg, decimals=3, deg=True)), where=["τ_1"])
+    c.formula(c.calc("h = (2 h^*_a + c^*) m", "(2 dot {0} + {1}) dot {2}", [V(sp.ha_star, exact=True), V(sp.c_star, exact=True), m_],
+                     V(sp.h_mm, decimals=2), mm),
+              c.calc('h_"з" = 2 h^*_a m', "2 dot {0} dot {1}", [V(sp.ha_star, exact=True), m_], V(sp.hd_mm, decimals=2), mm),
+              c.calc("C = c^* m", "{0} dot {1}", [V(sp.c_star, exact=True), m_], V(sp.c_mm, decimals=2), mm))
+    c.p(t("11. Check of the centre distance and of the tooth height:", "11. Проверка межосевого расстояния и высоты зуба:"),
+        indent=False)
+    c.formula(c.calc("a = d_(a 1)/2 + d_(f 2)/2 + C", "{0}/2 + {1}/2 + {2}",
+                     [V(sp.da1_mm, decimals=2), V(sp.df2_mm, decimals=2), V(sp.c_mm, decimals=2)], V(sp.check_a_12_mm, decimals=2), mm),
+              c.calc("2 h = d_(a 1) - d_(f 1)", "{0} - {1}", [V(sp.da1_mm, decimals=2), V(sp.df1_mm, decimals=2)],
+                     V(sp.check_2h_1_mm, decimals=2), mm))
+    ok = sp.check_ok
+    c.p(t(f"The centre distance equals $a$ and the tooth height $h$: {'the check holds' if ok else 'the check fails'}.",
+          f"Межосевое расстояние совпадает с $a$, высота зуба — с $h$: "
+          f"{'проверка выполняется' if ok else 'проверка не выполняется'}."))
     if min(sp.z1, sp.z2) < sp.z_min_undercut:
-        doc.p(t(f"With $α = 20°$ and $h^*_a = 1$ the undercut limit of a zero gear is $z_min = 2 h^*_a \\/ sin^2 α = "
-                f"{q(sp.z_min_undercut, decimals=2)}$: the 17-tooth gear has a slight undercut of the root, which the "
-                "textbook's rule $z >= 17$ accepts.",
-                f"При $α = 20°$ и $h^*_a = 1$ предел подрезания нулевого колеса $z_min = 2 h^*_a \\/ sin^2 α = "
-                f"{q(sp.z_min_undercut, decimals=2)}$: колесо с 17 зубьями имеет незначительный подрез ножки, "
-                "допустимый по правилу пособия $z >= 17$."))
-    doc.p(t("The transverse contact ratio is computed from the geometry (the active part $P_1 P_2$ of the line of "
-            "action over the base pitch) instead of being measured on the drawing:",
-            "Коэффициент торцевого перекрытия вычисляется по геометрии (активная линия зацепления $P_1 P_2$, "
-            "отнесённая к основному шагу), а не измеряется на чертеже:"))
-    doc.formula(f"g_α = sqrt(r_(a 1)^2 - r_(b 1)^2) + sqrt(r_(a 2)^2 - r_(b 2)^2) - a sin α = {q(sp.g_alpha_mm, decimals=2)} {mmu}; "
-                f"quad ε_α = g_α/p_b = {q(sp.g_alpha_mm, decimals=2)}/{q(sp.pb_mm, decimals=3)} = {q(sp.eps_alpha, decimals=3)}", None)
-    doc.formula(f"φ_(α 1) = ε_α τ_1 = {c.qd(sp.phi_alpha1_deg, decimals=2)}; quad φ_(α 2) = ε_α τ_2 = "
-                f"{c.qd(sp.phi_alpha2_deg, decimals=2)}", None)
+        c.p(t(f"With $α = 20°$ and $h^*_a = 1$ the undercut limit of a zero gear is $z_min = 2 h^*_a/sin^2 α = "
+              f"{q(sp.z_min_undercut, decimals=2)}$: the 17-tooth gear has an insignificant undercut of the root, which "
+              "the textbook's rule $z >= 17$ accepts.",
+              f"При $α = 20°$ и $h^*_a = 1$ наименьшее число зубьев нулевого колеса без подреза $z_min = 2 h^*_a/sin^2 α = "
+              f"{q(sp.z_min_undercut, decimals=2)}$; у колеса с 17 зубьями подрез ножки незначителен и допускается "
+              "рекомендацией пособия $z >= 17$."))
+    _contact_ratio(c)
+
+
+def _contact_ratio(c: Ctx) -> None:
+    g = c.r.gears
+    sp = g.spur
+    t, q = c.t, c.q
+    mm = t("mm", "мм")
+    c.p(t("The transverse contact ratio is computed from the geometry — the active length of the line of action "
+          "$P_1 P_2$ over the base pitch — instead of being measured on the drawing (note to §2.3 {cite:book}):",
+          "Коэффициент торцевого перекрытия вычисляется по геометрии — как отношение длины активной линии "
+          "зацепления $P_1 P_2$ к основному шагу, — а не измеряется на чертеже (примечание к п. 2.3 {cite:book}):"))
+    ra1, rb1, ra2, rb2 = sp.da1_mm / 2, sp.db1_mm / 2, sp.da2_mm / 2, sp.db2_mm / 2
+    c.formula(c.calc("g_α = sqrt(r_(a 1)^2 - r_(b 1)^2) + sqrt(r_(a 2)^2 - r_(b 2)^2) - a sin α",
+                     "sqrt({0}^2 - {1}^2) + sqrt({2}^2 - {3}^2) - {4} dot sin {5}",
+                     [V(ra1, decimals=3), V(rb1, decimals=3), V(ra2, decimals=3), V(rb2, decimals=3),
+                      V(sp.a_mm, decimals=2), V(sp.alpha_deg, exact=True, deg=True)], V(sp.g_alpha_mm, decimals=2), mm),
+              where=["g_α"])
+    c.formula(c.calc("ε_α = g_α/p_b", "{0}/{1}", [V(sp.g_alpha_mm, decimals=2), V(sp.pb_mm, decimals=3)],
+                     V(sp.eps_alpha, decimals=3)), where=["ε_α"])
+    c.formula(c.calc("φ_(α 1) = ε_α τ_1", "{0} dot {1}", [V(sp.eps_alpha, decimals=3), V(sp.tau1_deg, decimals=3, deg=True)],
+                     V(sp.phi_alpha1_deg, decimals=2, deg=True)),
+              c.calc("φ_(α 2) = ε_α τ_2", "{0} dot {1}", [V(sp.eps_alpha, decimals=3), V(sp.tau2_deg, decimals=3, deg=True)],
+                     V(sp.phi_alpha2_deg, decimals=2, deg=True)))
     eps = sp.eps_alpha
-    share = (eps - 1) * 100
-    doc.p(t(f"On the line of action the two double-pair zones $P_1 U_2 = U_1 P_2 = {q(sp.double_zone_mm, decimals=2)}$ mm "
-            f"enclose the single-pair zone $U_2 U_1 = {q(sp.single_zone_mm, decimals=2)}$ mm. With $ε_α = "
-            f"{q(eps, decimals=3)}$ two pairs of teeth are in mesh during {n(share, decimals=0)} % of the time of "
-            "engagement of a tooth and one pair during the rest; "
-            + ("since $ε_α >= 1,2$ the pair runs smoothly and quietly." if eps >= 1.2
-               else "since $ε_α < 1,2$ the smoothness of the pair is reduced."),
-            f"На линии зацепления зоны двухпарного зацепления $P_1 U_2 = U_1 P_2 = {q(sp.double_zone_mm, decimals=2)}$ мм "
-            f"ограничивают зону однопарного зацепления $U_2 U_1 = {q(sp.single_zone_mm, decimals=2)}$ мм. При "
-            f"$ε_α = {q(eps, decimals=3)}$ две пары зубьев находятся в зацеплении {n(share, decimals=0)} % времени "
-            "зацепления одного зуба, остальное время — одна пара; "
-            + ("так как $ε_α >= \"1,2\"$, передача работает плавно и бесшумно." if eps >= 1.2
-               else "так как $ε_α < \"1,2\"$, плавность работы передачи снижена.")))
-    c.fig("gears_mesh", t("Involute mesh of the spur pair", "Эвольвентное зацепление простой передачи"))
+    two = (eps - 1) * 100
+    ok = eps >= 1.2
+    c.p(t(f"On the line of action the zones of two-pair mesh $P_1 U_2 = U_1 P_2 = {q(sp.double_zone_mm, decimals=2)}$ mm "
+          f"enclose the zone of single-pair mesh $U_2 U_1 = {q(sp.single_zone_mm, decimals=2)}$ mm. With "
+          f"$ε_α = {q(eps, decimals=3)}$ two pairs of teeth are in mesh during $ε_α - 1$ = {c.pct(two, decimals=1)} "
+          f"of the running time and one pair during the remaining {c.pct(100 - two, decimals=1)}. "
+          + (f"Since $ε_α >= \"1.2\"$, the recommended least value for spur gears, the pair runs smoothly."
+             if ok else "Since $ε_α < \"1.2\"$, the recommended least value for spur gears, the smoothness of the pair "
+             "is insufficient."),
+          f"На линии зацепления зоны двухпарного зацепления $P_1 U_2 = U_1 P_2 = {q(sp.double_zone_mm, decimals=2)}$ мм "
+          f"ограничивают зону однопарного зацепления $U_2 U_1 = {q(sp.single_zone_mm, decimals=2)}$ мм. При "
+          f"$ε_α = {q(eps, decimals=3)}$ две пары зубьев находятся в зацеплении в течение $ε_α - 1$ = "
+          f"{c.pct(two, decimals=1)} времени работы передачи, одна пара — в течение остальных "
+          f"{c.pct(100 - two, decimals=1)}. "
+          + ("Так как $ε_α >= \"1,2\"$ (рекомендуемое наименьшее значение для прямозубых передач), передача "
+             "работает плавно." if ok else "Так как $ε_α < \"1,2\"$ (рекомендуемое наименьшее значение для "
+             "прямозубых передач), плавность работы передачи недостаточна.")))
+    c.doc.claim(kind="contact_ratio", eps=eps, two_pair_pct=two, ok=ok, double=sp.double_zone_mm,
+                single=sp.single_zone_mm, pb=sp.pb_mm)
     if c.has("gears_mesh"):
-        doc.p(t("The mesh with the line of action and the zones is shown in Figure {fig:gears_mesh}.",
-                "Зацепление с линией зацепления и зонами показано на рисунке {fig:gears_mesh}."))
+        c.p(t("The mesh with the line of action and its zones is shown in Figure {fig:gears_mesh}.",
+              "Картина зацепления с линией зацепления и её зонами показана на рисунке {fig:gears_mesh}."))
+        c.fig("gears_mesh", t("Involute mesh of the spur pair", "Картина эвольвентного зацепления простой передачи"))
 
 
+def _spur_shifted(c: Ctx) -> None:
+    """A shifted pair (beyond the textbook): its geometry as a table."""
+    g = c.r.gears
+    sp = g.spur
+    pr = sp.pair
+    t, n = c.t, c.n
+    c.p(t(f"The spur pair is cut with profile shifts $x_1 = {c.q(sp.x1, decimals=4)}$, $x_2 = {c.q(sp.x2, decimals=4)}$ "
+          f"(beyond the textbook, which takes zero gears): $z_1 = {sp.z1}$, $z_2 = {sp.z2}$, $m = {c.q(sp.m_mm)}$ mm. The "
+          f"working pressure angle follows from $\"inv\" α_w = \"inv\" α + 2 (x_1 + x_2) \"tg\" α/(z_1 + z_2)$; its geometry is "
+          f"given in Table {{tab:spur_shifted}}.",
+          f"Простая передача нарезана со смещением исходного контура $x_1 = {c.q(sp.x1, decimals=4)}$, "
+          f"$x_2 = {c.q(sp.x2, decimals=4)}$ (пособие рассматривает нулевые колёса): $z_1 = {sp.z1}$, $z_2 = {sp.z2}$, "
+          f"$m = {c.q(sp.m_mm)}$ мм. Угол зацепления находится из уравнения $\"inv\" α_w = \"inv\" α + 2 (x_1 + x_2) \"tg\" α/(z_1 + z_2)$; "
+          f"геометрия передачи приведена в таблице {{tab:spur_shifted}}."))
+    mm = t("mm", "мм")
+    rows = [
+        [t("Working pressure angle $α_w$, °", "Угол зацепления $α_w$, °"), n(pr.alpha_w_deg, decimals=3), ""],
+        [t("Centre distance $a_w$, ", "Межосевое расстояние $a_w$, ") + mm, n(pr.a_w_mm, decimals=3), ""],
+        [t("Pitch diameters $d$, ", "Делительные диаметры $d$, ") + mm, n(pr.d_mm[0], decimals=2), n(pr.d_mm[1], decimals=2)],
+        [t("Base diameters $d_b$, ", "Основные диаметры $d_b$, ") + mm, n(pr.db_mm[0], decimals=2), n(pr.db_mm[1], decimals=2)],
+        [t("Tip diameters $d_a$, ", "Диаметры вершин $d_a$, ") + mm, n(pr.da_mm[0], decimals=2), n(pr.da_mm[1], decimals=2)],
+        [t("Root diameters $d_f$, ", "Диаметры впадин $d_f$, ") + mm, n(pr.df_mm[0], decimals=2), n(pr.df_mm[1], decimals=2)],
+        [t("Tooth thickness at the tip $s_a$, ", "Толщина зуба по вершине $s_a$, ") + mm, n(pr.sa_mm[0], decimals=2),
+         n(pr.sa_mm[1], decimals=2)],
+        [t("Transverse contact ratio $ε_α$", "Коэффициент торцевого перекрытия $ε_α$"), n(pr.eps_alpha, decimals=3), ""],
+    ]
+    c.table("spur_shifted", t("Geometry of the shifted spur pair", "Геометрия простой передачи со смещением"),
+            [t("Quantity", "Величина"), t("Gear 1", "Колесо 1"), t("Gear 2", "Колесо 2")], rows,
+            align=["left", "center", "center"], widths=[3, 1, 1])
+    c.doc.claim(kind="spur_teeth", z1=sp.z1, z2=sp.z2, i_d=sp.i_d, multiplier=sp.multiplier)
+    smooth = sp.eps_alpha >= 1.2
+    c.p(t(f"The transverse contact ratio $ε_α = {c.q(sp.eps_alpha, decimals=3)}$ is "
+          + ("not below 1.2, the recommended least value: the pair runs smoothly." if smooth else
+             "below 1.2, the recommended least value: the smoothness is insufficient."),
+          f"Коэффициент торцевого перекрытия $ε_α = {c.q(sp.eps_alpha, decimals=3)}$ "
+          + ("не меньше рекомендуемого значения 1,2: передача работает плавно." if smooth else
+             "меньше рекомендуемого значения 1,2: плавность работы недостаточна.")))
+    if c.has("gears_mesh"):
+        c.p(t("The mesh is shown in Figure {fig:gears_mesh}.", "Картина зацепления показана на рисунке {fig:gears_mesh}."))
+        c.fig("gears_mesh", t("Involute mesh of the spur pair", "Картина эвольвентного зацепления простой передачи"))
+
+
+# --------------------------------------------------------------------------------------------------
 def _power(c: Ctx) -> None:
     g = c.r.gears
-    doc, t, q = c.doc, c.t, c.q
-    kr, dd = t("cr", "кр"), t("d", "д")
-    doc.h(2, t("Power of the motor", "Потребная мощность двигателя"))
+    t, q = c.t, c.q
+    c.doc.add(Heading(2, t("Power of the motor", "Потребная мощность двигателя")))
     if g.power is None:
-        doc.p(t(f"The power of the motor (§2.6 of [1]) is $N_\"{dd}\" = M ω_\"{kr}\"\\/(η_1 η_2) dot 10^(-3)$ kW with "
-                f"$η_1 = {q(g.eta1, sig=4)}$, $η_2 = {q(g.eta2)}$; the mean reduced moment M comes from sheet 2 and was not "
-                "given, so the power is not computed here.",
-                f"Потребная мощность двигателя (п. 2.6 [1]) $N_\"{dd}\" = M ω_\"{kr}\"\\/(η_1 η_2) dot 10^(-3)$ кВт при "
-                f"$η_1 = {q(g.eta1, sig=4)}$, $η_2 = {q(g.eta2)}$; средний приведённый момент M определяется на 2-м "
-                "листе проекта и в расчёт не передан, поэтому мощность здесь не вычислена."))
+        c.p(t(f"The required power of the motor (§2.6 {{cite:book}}) is $N_\"д\" = M ω_\"кр\"/(η_1 η_2) dot 10^(-3)$ kW "
+              f"with $η_1 = {q(g.eta1, sig=4)}$ and $η_2 = {q(g.eta2)}$; the mean reduced moment M is found on sheet 2 of "
+              "the project, which is not part of this note, so the power is not computed here.",
+              f"Потребная мощность двигателя (п. 2.6 {{cite:book}}) $N_\"д\" = M ω_\"кр\"/(η_1 η_2) dot 10^(-3)$ кВт при "
+              f"$η_1 = {q(g.eta1, sig=4)}$, $η_2 = {q(g.eta2)}$; средний приведённый момент M определяется на 2-м "
+              "листе проекта, не входящем в эту записку, поэтому мощность здесь не вычисляется."))
         return
     p = g.power
-    doc.p(t("The power is the mean reduced moment of sheet 2 times the crank's angular speed, divided by the "
-            "efficiencies of the reducer and the linkage (§2.6 of [1]):",
-            "Потребная мощность — произведение среднего приведённого момента (2-й лист) на угловую скорость "
-            "кривошипа с учётом КПД редуктора и рычажного механизма (п. 2.6 [1]):"))
-    doc.formula(f'ω_"{kr}" = (π n_"{kr}")/30 = (π dot {q(g.crank_rpm)})/30 = {q(p.omega_cr_rad_s, decimals=3)} '
-                f'{c.u(t("rad/s", "рад/с"))}', None)
-    doc.formula(f'N_"{dd}" = (M ω_"{kr}")/(η_1 η_2) dot 10^(-3) = ({q(p.torque_nm, sig=5)} dot {q(p.omega_cr_rad_s, decimals=3)})/'
-                f'({q(p.eta1, sig=4)} dot {q(p.eta2)}) dot 10^(-3) = {q(p.power_kw, decimals=3)} {c.u(t("kW", "кВт"))}', None)
+    c.p(t("The required power is the mean reduced moment times the crank's angular speed, divided by the efficiencies of "
+          "the reducer and of the linkage (§2.6 {cite:book}):",
+          "Потребная мощность двигателя равна произведению среднего приведённого момента на угловую скорость "
+          "кривошипа, делённому на КПД редуктора и рычажного механизма (п. 2.6 {cite:book}):"))
+    c.formula(c.calc('ω_"кр" = (π n_"кр")/30', "(π dot {0})/30", [V(g.crank_rpm, exact=True)], V(p.omega_cr_rad_s, decimals=3),
+                     t("rad/s", "рад/с")), where=['ω_"кр"'])
+    c.formula(c.calc('N_"д" = (M ω_"кр")/(η_1 η_2) dot 10^(-3)', "({0} dot {1})/({2} dot {3}) dot 10^(-3)",
+                     [V(p.torque_nm, sig=5), V(p.omega_cr_rad_s, decimals=3), V(p.eta1, sig=4), V(p.eta2, exact=True)],
+                     V(p.power_kw, decimals=3), t("kW", "кВт")), where=['N_"д"', "M", "η_1", "η_2"])
     if p.rated_kw is not None:
-        doc.p(t(f"A motor of the rated power {c.n(p.rated_kw)} kW at {g.motor_rpm} rpm is taken.",
-                f"Принимается двигатель номинальной мощностью {c.n(p.rated_kw)} кВт с частотой вращения {g.motor_rpm} об/мин."))
+        below = [x for x in RATED_POWER_KW if x < p.rated_kw]
+        prev = (t(f" (the next lower, {c.n(below[-1])} kW, is less than required)",
+                  f" (ближайшая меньшая, {c.n(below[-1])} кВт, недостаточна)") if below else "")
+        c.p(t(f"A motor of the standard series is taken with the nearest rated power not below the required one, "
+              f"$N_\"ном\" = {q(p.rated_kw)}$ kW ≥ $N_\"д\"$ = {c.n(p.power_kw, decimals=3)} kW{prev}; no overload of the "
+              f"motor is allowed. Its speed is {g.motor_rpm} rpm.",
+              f"Принимаем двигатель стандартного ряда с ближайшей номинальной мощностью, не меньшей потребной: "
+              f"$N_\"ном\" = {q(p.rated_kw)}$ кВт ≥ $N_\"д\"$ = {c.n(p.power_kw, decimals=3)} кВт{prev}; перегрузка "
+              f"двигателя не допускается. Частота вращения двигателя {g.motor_rpm} об/мин."))
+        c.doc.claim(kind="motor_power", rated=p.rated_kw, power=p.power_kw, series=RATED_POWER_KW)
     else:
-        doc.p(t("The required power is above the largest motor of the standard series.",
-                "Потребная мощность больше наибольшей в стандартном ряду."))
+        c.p(t(f"The required power is above the largest motor of the standard series ({c.n(RATED_POWER_KW[-1])} kW).",
+              f"Потребная мощность больше наибольшей в стандартном ряду ({c.n(RATED_POWER_KW[-1])} кВт)."))

@@ -24,6 +24,11 @@ from ... import limits
 from ...errors import TmmError
 
 _CHILD = "import sys; from tmm_cli.render.note.typeset import _child_main; _child_main(sys.argv[1:])"
+# The fonts the note is set in, shipped with tmm (SIL OFL 1.1, see fonts/LICENSE-*.txt): the system's
+# fonts are not consulted, so the pages break alike everywhere, and a font tmm does not ship is an
+# error, not a silent fallback.
+FONTS_DIR = Path(__file__).with_name("fonts")
+FONT_FAMILIES = ("Liberation Serif", "STIX Math")
 RECYCLE_AFTER = 32  # compiles one child serves (typst's caches grow): then a fresh one
 
 
@@ -219,13 +224,20 @@ def _child_main(argv: list[str]) -> None:
             continue
         base = Path(request["root"])
         try:
-            typst.compile(str(base / request["source"]), output=str(base / request["output"]), root=str(base))
+            _, warnings = typst.compile_with_warnings(str(base / request["source"]), output=str(base / request["output"]),
+                                                      root=str(base), font_paths=[str(FONTS_DIR)],
+                                                      ignore_system_fonts=True)
         except MemoryError:
             answer({"message": f"typst needed more memory than the limit of {int(memory) >> 20} MiB"})
         except Exception as exc:  # typst.TypstError and its relatives
             answer({"message": _typst_error(exc)})
         else:
-            answer({"ok": True})
+            fonts = [str(getattr(w, "message", w)) for w in warnings if "unknown font family" in str(getattr(w, "message", w))]
+            if fonts:
+                (base / request["output"]).unlink(missing_ok=True)
+                answer({"message": f"{fonts[0]}; tmm ships {' and '.join(FONT_FAMILIES)} only"})
+            else:
+                answer({"ok": True})
 
 
 # a typst root holding only regular files ----------------------------------------------------------

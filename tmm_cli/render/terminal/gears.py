@@ -172,8 +172,13 @@ def _print_book(console, r, lang):
     if d is None:
         return
     sec = {"1": "§2.4", "2": "§2.5", "1+1": "§2.2, §2.4"}[d.scheme]
-    rule = tr(lang, "the fraction given by the user") if d.fraction_rule == "forced" else \
-        tr(lang, "of the simple fractions (denominator ≤ 10) within tolerance, the one giving the smallest reducer")
+    rule = {
+        "forced": tr(lang, "the fraction given by the user"),
+        "convergent": tr(lang, "the last convergent of i_pl's continued fraction with a denominator ≤ 10"),
+        "nearest": tr(lang, "the nearest simple fraction (denominator ≤ 10) within tolerance whose procedure succeeds"),
+    }.get(d.fraction_rule, tr(lang, "of the simple fractions (denominator ≤ 10) within tolerance, the one giving the smallest reducer"))
+    if d.convergents:
+        rule += tr(lang, " (convergents: {list})").format(list=", ".join(str(f) for f in d.convergents))
     if d.fraction_rule == "exact":
         rule = tr(lang, "i_pl is itself a simple fraction, so the procedure starts from it (exact ratio)")
     heading = tr(lang, "The book’s hand procedure")

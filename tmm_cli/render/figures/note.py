@@ -1,0 +1,473 @@
+"""The note's own figures: drawn for the page, not the screen PNGs shrunk.
+
+16,5 cm wide (the text width) and printed at their natural size, so every text is ≥ 10 pt on paper
+(:func:`legible` enforces it); Liberation Serif, the note's font, also in the formulas; each plan
+and diagram at a round scale μ (:mod:`.note_scales`), written on it. Saved as SVG with the text
+kept as text (the typst note embeds them as vectors, and their words stay searchable), and for the
+DOCX also as a 300 dpi PNG.
+
+The screen figures of render/figures/cam.py and gears.py stay as they are; the gear pictures
+reuse their drawing helpers on the note's axes.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from ...i18n import tr, trc
+from ...i18n.numbers import num
+from . import note_scales as S
+
+MM = 1 / 25.4
+MIN_PT = 10.0
+DPI_RASTER = 300
+FONT_DIR = Path(__file__).resolve().parents[1] / "note" / "fonts"
+C_RISE, C_RET, C_DWELL, C_ZONE, C_BOOK = "#1f77b4", "#d62728", "#7f7f7f", "#2ca02c", "#9467bd"
+
+RC = {
+    "font.family": ["Liberation Serif"], "font.size": MIN_PT, "axes.labelsize": MIN_PT, "xtick.labelsize": MIN_PT,
+    "ytick.labelsize": MIN_PT, "legend.fontsize": MIN_PT, "axes.titlesize": MIN_PT,
+    "mathtext.fontset": "custom", "mathtext.rm": "Liberation Serif", "mathtext.it": "Liberation Serif:italic",
+    "mathtext.bf": "Liberation Serif:bold", "mathtext.sf": "Liberation Serif", "mathtext.cal": "Liberation Serif:italic",
+    "mathtext.tt": "Liberation Serif", "mathtext.bfit": "Liberation Serif:bold:italic", "mathtext.default": "it",
+    "svg.fonttype": "none", "svg.hashsalt": "tmm-note", "axes.unicode_minus": True, "axes.linewidth": 0.6,
+    "xtick.major.width": 0.6, "ytick.major.width": 0.6, "lines.linewidth": 1.0, "legend.frameon": False,
+    "legend.handlelength": 2.2, "axes.formatter.use_locale": False,
+}
+_FONTS_ADDED = []
+
+
+def _fonts() -> None:
+    if _FONTS_ADDED:
+        return
+    from matplotlib import font_manager
+
+    for f in sorted(FONT_DIR.glob("LiberationSerif-*.ttf")):
+        font_manager.fontManager.addfont(str(f))
+    _FONTS_ADDED.append(True)
+
+
+def _new(size_mm: tuple[float, float]):
+    from .kit import new_figure
+
+    return new_figure(size_mm[0] * MM, size_mm[1] * MM)  # the kit's figure: copied ticks, cheap PNG
+
+
+def _axes(fig, box: S.Box, size_mm):
+    W, H = size_mm
+    return fig.add_axes((box.left / W, box.bottom / H, box.width / W, box.height / H))
+
+
+def _limits(ax, x: S.Axis, y: S.Axis) -> None:
+    ax.set_xlim(x.lo, x.hi)
+    ax.set_ylim(y.lo, y.hi)
+
+
+def _mu(ax, text: str, where: str = "upper left") -> None:
+    """The scale written on the plan or diagram, in a white box."""
+    x, ha = (0.01, "left") if "left" in where else (0.99, "right")
+    y, va = (0.985, "top") if "upper" in where else (0.015, "bottom")
+    ax.text(x, y, text, transform=ax.transAxes, ha=ha, va=va, fontsize=MIN_PT, zorder=20,
+            bbox=dict(boxstyle="square,pad=0.25", fc="white", ec="0.6", lw=0.5))
+
+
+def _n(x, lang, **kw) -> str:
+    return num(x, lang, minus="−", **kw)
+
+
+def _mus(mu: float, lang: str) -> str:
+    """A scale value as printed: 0,0005 rather than 5·10⁻⁴."""
+    text = f"{mu:.6f}".rstrip("0").rstrip(".")
+    return text.replace(".", ",") if lang == "ru" else text
+
+
+def _phases(ax, r, lang: str, mu_phi: float, labels: bool = True) -> None:
+    """The phase bands of the screen figures; a phase named only where its name fits its band."""
+    from .cam import C_DWELL as CD, C_RET as CR, C_RISE as CRI, _phase_marks
+
+    _phase_marks(ax, r, lang, labels=False)
+    if not labels:
+        return
+    v = r.variant
+    bounds = [0.0, v.phi_rise_deg, v.phi_rise_deg + v.phi_far_dwell_deg, v.phi_working_deg, 360.0]
+    names = [tr(lang, "rise"), tr(lang, "far dwell"),
+             tr(lang, "return"), tr(lang, "near dwell")]
+    short = [trc(lang, "phase, short", "rise"), trc(lang, "phase, short", "far dwell"),
+             trc(lang, "phase, short", "return"), trc(lang, "phase, short", "near dwell")]
+    for i, col in enumerate((CRI, CD, CR, CD)):
+        width_mm = (bounds[i + 1] - bounds[i]) / mu_phi
+        for name in (names[i], short[i]):
+            if width_mm >= 2.0 * len(name) + 3:  # ≈ 2 mm a letter at 10 pt
+                ax.text((bounds[i] + bounds[i + 1]) / 2, 0.97, name, transform=ax.get_xaxis_transform(), ha="center",
+                        va="top", fontsize=MIN_PT, color=col)
+                break
+
+
+def legible(fig) -> None:
+    """No text under 10 pt at print size (the figure is printed at its natural size)."""
+    from matplotlib.text import Text
+
+    for t in fig.findobj(Text):
+        if t.get_text() and t.get_fontsize() < MIN_PT:
+            t.set_fontsize(MIN_PT)
+
+
+def _legend_below(fig, ax, handles, ncol: int = 2) -> None:
+    fig.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 0.0), ncol=ncol, fontsize=MIN_PT,
+               frameon=False, columnspacing=1.4, handletextpad=0.5, borderaxespad=0.3)
+
+
+# ------------------------------------------------------------------------------------------------
+# the cam
+
+
+def _motion(r, lang: str):
+    from .kit import mt
+
+    v, m = r.variant, r.motion
+    sc = S.motion_scales(r)
+    size = S.MOTION["size"]
+    fig = _new(size)
+    left, width = S.MOTION["x"]
+    ph, gap, bottom = S.MOTION["panel"], S.MOTION["gap"], S.MOTION["bottom"]
+    deg = np.degrees(m.phi)
+    rows = list(m.table)
+    mm = tr(lang, "mm")
+    if v.is_rocker:
+        series = [(np.degrees(m.s), "γ, °", [math.degrees(x.s) for x in rows], sc.s, "μ_γ", "°/" + mm),
+                  (m.v, tr(lang, "ω, rad/s"), [x.v for x in rows], sc.v, "μ_ω", tr(lang, "(rad/s)/mm")),
+                  (m.a, tr(lang, "ε, rad/s²"), [x.a for x in rows], sc.a, "μ_ε", tr(lang, "(rad/s²)/mm"))]
+    else:
+        series = [(m.s * 1000, "S, " + mm, [x.s * 1000 for x in rows], sc.s, "μ_S", mm + "/" + mm),
+                  (m.v, tr(lang, "V, m/s"), [x.v for x in rows], sc.v, "μ_V", tr(lang, "(m/s)/mm")),
+                  (m.a, tr(lang, "a, m/s²"), [x.a for x in rows], sc.a, "μ_a", tr(lang, "(m/s²)/mm"))]
+    xs = [x.phi_deg for x in rows]
+    axes = []
+    for k, (y, ylabel, pts, axis, sym, unit) in enumerate(series):
+        box = S.Box(left, bottom + (2 - k) * (ph + gap), width, ph)
+        ax = _axes(fig, box, size)
+        axes.append(ax)
+        _phases(ax, r, lang, sc.phi.mu, labels=(k == 0))
+        yy = np.array(y, dtype=float)
+        xx = deg.copy()
+        if k == 2:  # the acceleration as a step where it jumps
+            jump = np.abs(np.diff(yy)) > 0.2 * (np.abs(yy).max() + 1e-30)
+            ins = np.nonzero(jump)[0] + 1
+            xx, yy = np.insert(xx, ins, np.nan), np.insert(yy, ins, np.nan)
+        ax.plot(xx, yy, color="k", lw=1.2)
+        ax.plot(xs, pts, "o", ms=2.6, color="tab:orange")
+        ax.axhline(0, color="k", lw=0.5)
+        ax.set_xlim(sc.phi.lo, sc.phi.hi)
+        ax.set_ylim(axis.lo, axis.hi)
+        ax.set_xticks(np.arange(0, 361, 30))
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3, lw=0.4)
+        if k < 2:
+            ax.tick_params(labelbottom=False)
+        _mu(ax, mt(f"{sym} = {_mus(axis.mu, lang)} {unit}"), "upper right" if k != 0 else "lower right")
+    axes[-1].set_xlabel(mt(tr(lang, "cam angle φ, °   (μ_φ = {mu} °/mm)").format(mu=_mus(sc.phi.mu, lang))))
+    w = m.omega
+    top = axes[0].secondary_xaxis("top", functions=(lambda d: np.radians(d) / w * 1000.0,
+                                                     lambda t: np.degrees(np.asarray(t) / 1000.0 * w)))
+    top.set_xlabel(tr(lang, "time t, ms"))
+    return fig
+
+
+def _zone(r, lang: str):
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Polygon
+
+    from .cam import _segments
+    from .kit import mt
+
+    v, z = r.variant, r.sizing
+    zn = z.zone
+    size = S.PLAN["size"]
+    fig = _new(size)
+    ax = _axes(fig, S.PLAN["box"], size)
+    xa, ya = S.zone_scales(r)
+    k = 1000.0
+    b, d = zn.b * k, zn.d * k
+    rise, ret = zn.phase == 0, zn.phase == 2
+    o = np.array(z.centre) * k
+    bv = np.array(z.book_centre) * k
+    ax.add_patch(Polygon(zn.polygon * k, closed=True, facecolor=C_ZONE, alpha=0.15, edgecolor=C_ZONE, lw=0.8))
+    ax.plot(b[rise, 0], b[rise, 1], color="k", lw=1.0)
+    ax.plot(d[rise, 0], d[rise, 1], color=C_RISE, lw=1.3)
+    ax.plot(d[ret, 0], d[ret, 1], color=C_RET, lw=1.2, ls="-" if z.closure == "form" else "--")
+    seg = np.concatenate([idx[:: max(1, len(idx) // 8)] for idx in (np.nonzero(rise)[0], np.nonzero(ret)[0])])
+    ax.add_collection(_segments(np.stack([b[seg], d[seg]], axis=1), color="0.5", lw=0.5), autolim=False)
+    span = max(xa.hi - xa.lo, ya.hi - ya.lo)
+    for L in zn.lines:
+        p0 = np.array(L.point) * k
+        dd = np.array(L.direction)
+        t = np.linspace(-3 * span, 3 * span, 2)
+        ax.plot(p0[0] + t * dd[0], p0[1] + t * dd[1], color=C_BOOK, lw=0.9, ls="-.")
+    ax.plot([0, o[0]], [0, o[1]], color="k", lw=0.9, ls="--")
+    ax.plot(*o, marker="*", ms=11, color=C_ZONE, mec="k", ls="none", zorder=5)
+    ax.plot(*bv, marker="X", ms=8, color=C_BOOK, mec="k", ls="none", zorder=5)
+    ax.plot(0, 0, "o", color="k", ms=4)
+    ax.annotate(mt("B_0"), (0, 0), textcoords="offset points", xytext=(6, 4))
+    ax.annotate("O", o, textcoords="offset points", xytext=(8, -12))
+    if z.pivot is not None:
+        c = np.array(z.pivot) * k
+        ax.plot(*c, "s", color="k", ms=5)
+        ax.annotate("C", c, textcoords="offset points", xytext=(6, 6))
+        ax.plot([o[0], c[0]], [o[1], c[1]], color="tab:brown", lw=1.1)
+        ax.plot([c[0], 0], [c[1], 0], color="k", lw=1.8, alpha=0.6)
+    else:
+        ax.axvline(0, color="k", lw=0.7, ls=":")
+        ax.plot([o[0], 0], [o[1], o[1]], color="tab:brown", lw=1.2)
+    _limits(ax, xa, ya)
+    ax.set_aspect("auto")
+    ax.grid(alpha=0.25, lw=0.4)
+    mm = tr(lang, "mm")
+    ax.set_xlabel("x, " + mm)
+    ax.set_ylabel("y, " + mm)
+    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + tr(lang, "m/mm")))
+    handles = [
+        Polygon([[0, 0]], facecolor=C_ZONE, alpha=0.3, edgecolor=C_ZONE, label=tr(lang, "zone of admissible centres")),
+        Line2D([], [], color="k", lw=1.0, label=tr(lang, "path of the roller centre B")),
+        Line2D([], [], color=C_RISE, lw=1.3, label=tr(lang, "points D, rise")),
+        Line2D([], [], color=C_RET, lw=1.2, ls="-" if z.closure == "form" else "--",
+               label=tr(lang, "points D, return") + ("" if z.closure == "form" else tr(lang, " (free)"))),
+        Line2D([], [], color=C_BOOK, lw=0.9, ls="-.", label=tr(lang, "bounding lines of the textbook")),
+        Line2D([], [], marker="*", ms=11, color=C_ZONE, mec="k", ls="none", label=mt(tr(lang, "centre O taken, r_0 = {r0} mm").format(r0=_n(z.r0_m * k, lang, decimals=2)))),
+        Line2D([], [], marker="X", ms=8, color=C_BOOK, mec="k", ls="none", label=mt(tr(lang, "vertex of the textbook, r_0 = {r0} mm").format(r0=_n(z.book_r0_m * k, lang, decimals=2)))),
+    ]
+    _legend_below(fig, ax, handles)
+    return fig
+
+
+def _profile(r, lang: str):
+    from matplotlib.collections import PatchCollection
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Circle, FancyArrowPatch
+
+    from .cam import _segments
+    from .kit import mt
+
+    v, z, p = r.variant, r.sizing, r.profile
+    k = 1000.0
+    size = S.PLAN["size"]
+    fig = _new(size)
+    ax = _axes(fig, S.PLAN["box"], size)
+    xa, ya = S.profile_scales(r)
+    P = p.pitch * k
+    th = np.linspace(0, 2 * math.pi, 361)
+    r0, rp = z.r0_m * k, p.roller_m * k
+    ax.plot(r0 * np.cos(th), r0 * np.sin(th), color="0.4", lw=0.7, ls="--")
+    ax.plot(P[:, 0], P[:, 1], color=C_RISE, lw=1.0, ls="-.")
+    ax.plot(p.inner[:, 0] * k, p.inner[:, 1] * k, color="k", lw=1.6)
+    if p.outer is not None:
+        ax.plot(p.outer[:, 0] * k, p.outer[:, 1] * k, color="k", lw=1.6, alpha=0.7)
+    n = len(p.phi) - 1
+    idxs = [int(round(math.radians(row.phi_deg) / (2 * math.pi) * n)) % n for row in r.motion.table]
+    idxs = idxs[:: max(1, len(idxs) // 8)]
+    ax.add_collection(PatchCollection([Circle(P[i], rp) for i in idxs], facecolors="none", edgecolors="tab:orange",
+                                      linewidths=0.8), autolim=False)
+    stem = 0.45 * r0
+    c = P[idxs]
+    if p.pivot_path is not None:
+        piv = p.pivot_path[idxs] * k
+        ax.add_collection(_segments(np.stack([piv, c], axis=1), color="tab:brown", lw=0.9, alpha=0.8), autolim=False)
+        ax.plot(piv[:, 0], piv[:, 1], "s", color="tab:brown", ms=2.5)
+        pp = p.pivot_path * k
+        ax.plot(pp[:, 0], pp[:, 1], color="tab:brown", lw=0.5, ls=":")
+    else:
+        far = c + stem * np.asarray(p.axis_dir)[idxs]
+        ax.add_collection(_segments(np.stack([c, far], axis=1), color="tab:brown", lw=0.9, alpha=0.8), autolim=False)
+        e = abs(z.e_m) * k
+        if e > 1e-6:
+            ax.plot(e * np.cos(th), e * np.sin(th), color="tab:brown", lw=0.5, ls=":")
+    ax.plot([0], [0], "+", color="k", ms=10, mew=1.2)
+    ax.annotate("O", (0, 0), textcoords="offset points", xytext=(-11, -13))
+    b0 = P[0]
+    ax.plot([0, b0[0]], [0, b0[1]], color="0.2", lw=0.8)
+    ax.annotate(mt("B_0"), b0, textcoords="offset points", xytext=(6, -12))
+    R = 0.98 * min(xa.hi, ya.hi)
+    a0, a1 = (math.radians(200), math.radians(250)) if v.ccw else (math.radians(250), math.radians(200))
+    ax.add_patch(FancyArrowPatch((R * math.cos(a0), R * math.sin(a0)), (R * math.cos(a1), R * math.sin(a1)),
+                                 connectionstyle=f"arc3,rad={0.2 if v.ccw else -0.2}", arrowstyle="-|>",
+                                 mutation_scale=14, lw=1.2, color="k"))
+    am = math.radians(225)
+    ax.text(0.9 * R * math.cos(am), 0.9 * R * math.sin(am), mt("ω_k"), ha="center", va="center")
+    _limits(ax, xa, ya)
+    ax.grid(alpha=0.2, lw=0.4)
+    mm = tr(lang, "mm")
+    ax.set_xlabel("x, " + mm)
+    ax.set_ylabel("y, " + mm)
+    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + tr(lang, "m/mm")))
+    handles = [
+        Line2D([], [], color="k", lw=1.6, label=mt(tr(lang, "working profile (roller r_р = {r} mm)").format(r=_n(rp, lang, decimals=2)))),
+        Line2D([], [], color=C_RISE, lw=1.0, ls="-.", label=tr(lang, "pitch profile")),
+        Line2D([], [], color="0.4", lw=0.7, ls="--", label=mt(tr(lang, "base circle r_0 = {r0} mm").format(r0=_n(r0, lang, decimals=2)))),
+        Line2D([], [], color="tab:orange", lw=0.8, label=tr(lang, "roller in the positions of the table")),
+        Line2D([], [], color="tab:brown", lw=0.9, label=tr(lang, "follower in the inverted motion")),
+    ]
+    _legend_below(fig, ax, handles)
+    return fig
+
+
+def _pressure(r, lang: str):
+    from .kit import mt
+
+    v, z, p = r.variant, r.sizing, r.profile
+    size = S.PRESSURE["size"]
+    fig = _new(size)
+    ax = _axes(fig, S.PRESSURE["box"], size)
+    xa, ya = S.pressure_scales(r)
+    deg = np.degrees(p.phi)
+    ph = r.motion.program.phase_index(p.phi)
+    _phases(ax, r, lang, xa.mu)
+    ax.plot(deg, np.where(ph == 0, p.nu_deg, np.nan), color=C_RISE, lw=1.5)
+    ax.plot(deg, np.where(ph == 2, p.nu_deg, np.nan), color=C_RET, lw=1.5, ls="-" if z.closure == "form" else "--")
+    ax.plot(deg, np.where((ph == 1) | (ph == 3), p.nu_deg, np.nan), color=C_DWELL, lw=0.9, ls=":")
+    ax.axhline(v.nu_max_deg, color="k", lw=1.0, ls="-.")
+    ax.annotate(mt(f"ν_max = {_n(v.nu_max_deg, lang)}°"), (345, v.nu_max_deg), xytext=(0, 3), textcoords="offset points",
+                ha="right", va="bottom", bbox=dict(boxstyle="square,pad=0.1", fc="white", ec="none", alpha=0.8))
+    _limits(ax, xa, ya)
+    ax.set_xticks(np.arange(0, 361, 30))
+    ax.set_xlabel(mt(tr(lang, "cam angle φ, °   (μ_φ = {mu} °/mm)").format(mu=_mus(xa.mu, lang))))
+    ax.set_ylabel(tr(lang, "pressure angle ν, °"))
+    ax.grid(alpha=0.3, lw=0.4)
+    _mu(ax, mt(f"μ_ν = {_mus(ya.mu, lang)} °/" + tr(lang, "mm")), "lower right")
+    return fig
+
+
+# ------------------------------------------------------------------------------------------------
+# the gears
+
+
+def _planetary(g, lang: str):
+    from .gears import _angular, _scheme, _velocity
+    from .kit import mt
+
+    sc = S.planetary_scales(g)
+    size = S.PLANETARY["size"]
+    fig = _new(size)
+    ax_s = _axes(fig, S.PLANETARY["scheme"], size)
+    ax_v = _axes(fig, S.PLANETARY["velocity"], size)
+    ax_a = _axes(fig, S.PLANETARY["angular"], size)
+    _scheme(ax_s, g, lang)
+    _velocity(ax_v, g, lang, (sc.y.lo, sc.y.hi))
+    _angular(ax_a, g, lang, y0=0.0)
+    for ax in (ax_s, ax_v, ax_a):
+        ax.set_title("")
+        ax.set_aspect("auto")
+    ax_s.set_ylabel("")
+    ax_s.tick_params(labelleft=False, left=False)
+    ax_v.set_xlabel("")
+    ax_s.set_ylim(sc.y.lo, sc.y.hi)  # radii to scale; the axial lengths of a kinematic scheme are not
+    _limits(ax_v, sc.x_velocity, sc.y)
+    _limits(ax_a, sc.x_angular, sc.y_angular)
+    for ax in (ax_v, ax_a):
+        ax.set_xticks([])
+        ax.set_yticks([])
+    for st in g.checks.velocity.stages:
+        for ry in (st.r_a, st.r_c, st.r_b):
+            ax_s.axhline(ry, color="0.75", lw=0.5, ls=":", zorder=0)
+    # drop the helpers' long captions: the note's text quotes the ratios
+    for t in list(ax_a.texts):
+        if "=" in t.get_text():
+            t.remove()
+    m = "m"  # the module's symbol
+    _mu(ax_s, mt(f"μ_l = {_mus(sc.mu_l_per_module, lang)}·{m} " + tr(lang, "mm/mm (radii)")))
+    _mu(ax_v, mt(f"μ_V = {_n(sc.mu_v_per_module, lang, sig=3)}·{m} " + tr(lang, "(m/s)/mm")))
+    _mu(ax_a, mt(f"μ_ω = {_n(sc.mu_omega, lang, sig=3)} " + tr(lang, "(rad/s)/mm")), "upper right")
+    return fig
+
+
+def _assembly(g, lang: str):
+    from .gears import _assembly_stage
+    from .kit import mt
+
+    d = g.planetary
+    n = len(d.stages)
+    mu = S.assembly_scale(g)
+    w_cm, h_cm = S.figure_size_cm("gears_assembly", g)
+    size = (w_cm * 10, h_cm * 10)
+    fig = _new(size)
+    side = S.assembly_side(g)
+    x0 = (size[0] - n * side - (n - 1) * 8) / 2
+    for j, (st, ch) in enumerate(zip(d.stages, g.checks.stages)):
+        ax = _axes(fig, S.Box(x0 + j * (side + 8), 2.0, side, side), size)
+        title = (tr(lang, "Stage {j}").format(j=j + 1) + ": " if n > 1 else "") + "/".join(map(str, st.teeth)) + f", k = {st.planets}"
+        _assembly_stage(ax, st, ch, lang, title)
+        ax.set_title(title, y=1.0, pad=4)
+        ax.set_xlim(-mu * side / 2, mu * side / 2)
+        ax.set_ylim(-mu * side / 2, mu * side / 2)
+    _mu(fig.axes[0], mt(f"μ_l = {_mus(mu, lang)}·m " + tr(lang, "mm/mm")), "lower left")
+    return fig
+
+
+def _mesh(g, lang: str):
+    from matplotlib.lines import Line2D
+
+    from .gears import C_PLANET, C_SUN, _draw_mesh
+    from .kit import mt
+
+    sp = g.spur
+    size = S.MESH["size"]
+    fig = _new(size)
+    ax = _axes(fig, S.MESH["box"], size)
+    xa, ya = S.mesh_scales(g)
+    _draw_mesh(ax, sp, lang, zoom=True, motor_sense=g.directions.motor)
+    ax.set_aspect("auto")
+    _limits(ax, xa, ya)
+    ax.grid(alpha=0.15, lw=0.4)
+    mm = tr(lang, "mm")
+    ax.set_xlabel("x, " + mm)
+    ax.set_ylabel("y, " + mm)
+    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + tr(lang, "m/mm")))
+    handles = [
+        Line2D([], [], color="0.3", ls="-", label=mt(tr(lang, "pitch circles d"))),
+        Line2D([], [], color="0.3", ls="--", label=mt(tr(lang, "base circles d_b"))),
+        Line2D([], [], color="0.3", ls=":", label=mt(tr(lang, "tip circles d_a"))),
+        Line2D([], [], color="0.3", ls="-.", label=mt(tr(lang, "root circles d_f"))),
+        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=tr(lang, "two-pair zones P1U2, U1P2")),
+        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=tr(lang, "single-pair mesh U2U1")),
+        Line2D([], [], color=C_SUN, lw=2.4, label=tr(lang, "active profiles, gear 1")),
+        Line2D([], [], color=C_PLANET, lw=2.4, label=tr(lang, "active profiles, gear 2")),
+    ]
+    _legend_below(fig, ax, handles)
+    return fig
+
+
+MAKERS = {"cam_motion": ("cam", _motion), "cam_zone": ("cam", _zone), "cam_profile": ("cam", _profile),
+          "cam_pressure_angle": ("cam", _pressure), "gears_planetary": ("gears", _planetary),
+          "gears_assembly": ("gears", _assembly), "gears_mesh": ("gears", _mesh)}
+
+
+def note_figure(result, lang: str, name: str):
+    """One note figure (a matplotlib Figure); call inside :func:`note_style`."""
+    from .kit import decimal_commas
+
+    part, make = MAKERS[name]
+    fig = make(result.cam if part == "cam" else result.gears, lang)
+    decimal_commas(fig, lang)
+    legible(fig)
+    return fig
+
+
+def note_style():
+    """The rc settings of the note's figures (Liberation Serif, 10 pt, SVG text as text)."""
+    import matplotlib
+
+    _fonts()
+    return matplotlib.rc_context(RC)
+
+
+def save_note_figure(folder: Path, result, lang: str, name: str, raster: bool = False) -> list[Path]:
+    """Draw the note figure `name` and save it as note_<name>.svg (and a 300 dpi PNG for the DOCX)."""
+    with note_style():
+        fig = note_figure(result, lang, name)
+        out = [Path(folder) / f"note_{name}.svg"]
+        fig.savefig(out[0], format="svg", metadata={"Date": None})
+        if raster:
+            out.append(Path(folder) / f"note_{name}.png")
+            fig.savefig(out[1], format="png", dpi=DPI_RASTER, metadata={"Software": None})
+    return out

@@ -1,0 +1,534 @@
+"""The DOCX writer: the same :class:`~.model.Document` as note.docx for Word and LibreOffice.
+
+Why python-docx (and OMML written here, :mod:`.omml`): a normcontroller opens the file in Word and
+looks for real styles — headings that make a field-based table of contents, captions, Word tables
+with a repeated header row, native equations. python-docx writes exactly these parts and nothing
+else (no conversion step that guesses), is pure Python on lxml, and reads the file back for the
+tests. pandoc (pypandoc-binary) would bring a 100 MB binary and its own idea of the styles.
+
+ГОСТ 7.32 page and text: A4, margins 30/15/20/20 mm, Times New Roman 14 pt (12 pt in tables),
+1,5 lines, indent 1,25 cm, justified; page number at the bottom centre from the title page, not
+shown on it. Figures: the note's own figures as SVG (Word 2016 and later) with a 300 dpi PNG beside
+them for every other reader.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .model import (
+    SCI_EXPONENT,
+    SUPER_DIGITS,
+    Abstract,
+    Contents,
+    Document,
+    Figure,
+    Formula,
+    Heading,
+    ListBlock,
+    PageBreak,
+    Paragraph,
+    ReferenceList,
+    Table,
+    TaskSheet,
+    TitlePage,
+    split_math,
+)
+from .omml import omath, omath_para
+
+FONT = "Times New Roman"
+SVG_EXT = "{96DAC541-7B7A-43D3-8B79-37D633B846F1}"
+ASVG = "http://schemas.microsoft.com/office/drawing/2016/SVG/main"
+TEXT_CM = 16.5
+
+
+class DocxWriter:
+    def __init__(self, doc: Document, folder: Path, title):
+        import docx
+
+        self.doc = doc
+        self.folder = Path(folder)
+        self.title = title
+        self.d = docx.Document()
+        self.ru = doc.lang == "ru"
+        self._setup()
+
+    # -- page and styles -------------------------------------------------------------------------
+    def _setup(self) -> None:
+        from docx.enum.text import WD_ALIGN_PARAGRAPH, WD_LINE_SPACING
+        from docx.shared import Cm, Mm, Pt
+
+        sec = self.d.sections[0]
+        sec.page_width, sec.page_height = Mm(210), Mm(297)
+        sec.left_margin, sec.right_margin = Mm(30), Mm(15)
+        sec.top_margin, sec.bottom_margin = Mm(20), Mm(20)
+        sec.footer_distance = Mm(10)
+        sec.different_first_page_header_footer = True  # the title page counts, shows no number
+        fp = sec.footer.paragraphs[0]
+        fp.alignment = WD_ALIGN_PARAGRAPH.CENTER
+        fp.paragraph_format.first_line_indent = Cm(0)
+        self._field(fp, "PAGE", "1")
+
+        st = self.d.styles
+        normal = st["Normal"]
+        normal.font.name = FONT
+        normal.font.size = Pt(14)
+        self._east_asian(normal.element, FONT)
+        pf = normal.paragraph_format
+        pf.line_spacing_rule = WD_LINE_SPACING.ONE_POINT_FIVE
+        pf.first_line_indent = Cm(1.25)
+        pf.space_before = Pt(0)
+        pf.space_after = Pt(0)
+        pf.alignment = WD_ALIGN_PARAGRAPH.JUSTIFY
+        pf.widow_control = True
+        for name, size, level in (("Heading 1", 14, 0), ("Heading 2", 14, 1)):
+            h = st[name]
+            h.font.name = FONT
+            h.font.size = Pt(size)
+            h.font.bold = True
+            h.font.italic = False
+            h.font.color.rgb = None
+            self._east_asian(h.element, FONT)
+            f = h.paragraph_format
+            f.first_line_indent = Cm(1.25)
+            f.left_indent = Cm(0)
+            f.space_before = Pt(12)
+            f.space_after = Pt(12)
+            f.keep_with_next = True
+            f.alignment = WD_ALIGN_PARAGRAPH.LEFT
+            f.line_spacing_rule = WD_LINE_SPACING.ONE_POINT_FIVE
+        st["Heading 1"].paragraph_format.page_break_before = True
+        from docx.enum.style import WD_STYLE_TYPE
+
+        for name, outline in (("Structural", True), ("Structural Plain", False)):
+            s = st.add_style(name, WD_STYLE_TYPE.PARAGRAPH)
+            s.base_style = st["Heading 1"] if outline else st["Normal"]
+            s.font.bold = True
+            s.font.all_caps = True
+            s.font.size = Pt(14)
+            f = s.paragraph_format
+            f.alignment = WD_ALIGN_PARAGRAPH.CENTER
+            f.first_line_indent = Cm(0)
+            f.page_break_before = True
+            f.space_after = Pt(12)
+            f.keep_with_next = True
+        cap = st["Caption"]
+        cap.font.name = FONT
+        cap.font.size = Pt(14)
+        cap.font.bold = False
+        cap.font.italic = False
+        cap.font.color.rgb = None
+        cap.paragraph_format.first_line_indent = Cm(0)
+        cap.paragraph_format.space_before = Pt(6)
+        cap.paragraph_format.space_after = Pt(6)
+        cap.paragraph_format.line_spacing_rule = WD_LINE_SPACING.SINGLE
+        tab = st.add_style("Table Text", WD_STYLE_TYPE.PARAGRAPH)
+        tab.base_style = normal
+        tab.font.size = Pt(12)
+        tab.paragraph_format.first_line_indent = Cm(0)
+        tab.paragraph_format.line_spacing_rule = WD_LINE_SPACING.SINGLE
+        tab.paragraph_format.alignment = WD_ALIGN_PARAGRAPH.LEFT
+        core = self.d.core_properties
+        core.title = self.title_text()
+        core.author = getattr(self.title, "student", "") or ""
+        core.language = "ru-RU" if self.ru else "en-GB"
+        self._language()
+
+    def title_text(self) -> str:
+        return "Пояснительная записка" if self.ru else "Explanatory note"
+
+    def _language(self) -> None:
+        """The document's language (Word's hyphenation and spelling)."""
+        from docx.oxml.ns import qn
+        from lxml import etree
+
+        rpr = self.d.styles.element.find(qn("w:docDefaults"))
+        if rpr is None:
+            return
+        rpr_default = rpr.find(qn("w:rPrDefault"))
+        rpr_el = rpr_default.find(qn("w:rPr")) if rpr_default is not None else None
+        if rpr_el is None:
+            return
+        lang = rpr_el.find(qn("w:lang"))
+        if lang is None:
+            lang = etree.SubElement(rpr_el, qn("w:lang"))
+        lang.set(qn("w:val"), "ru-RU" if self.ru else "en-GB")
+        settings = self.d.settings.element
+        # in the schema's order: autoHyphenation after defaultTabStop, updateFields before the notes and compat
+        if settings.find(qn("w:autoHyphenation")) is None:
+            e = etree.Element(qn("w:autoHyphenation"))
+            e.set(qn("w:val"), "true")
+            tab = settings.find(qn("w:defaultTabStop"))
+            (tab.addnext(e) if tab is not None else settings.insert(0, e))
+        if settings.find(qn("w:updateFields")) is None:  # Word fills the contents and page count on opening
+            e = etree.Element(qn("w:updateFields"))
+            e.set(qn("w:val"), "true")
+            later = next((settings.find(qn(t)) for t in ("w:hdrShapeDefaults", "w:footnotePr", "w:endnotePr", "w:compat",
+                                                          "w:docVars", "w:rsids", "m:mathPr", "w:themeFontLang",
+                                                          "w:clrSchemeMapping", "w:shapeDefaults", "w:decimalSymbol",
+                                                          "w:listSeparator") if settings.find(qn(t)) is not None), None)
+            (later.addprevious(e) if later is not None else settings.append(e))
+        self._drop_styles_with_effects()
+
+    def _drop_styles_with_effects(self) -> None:
+        """python-docx's template carries Word 2010's stylesWithEffects.xml, a copy of the styles that
+        no longer matches once styles are added (Word may then offer to repair): it is optional, so
+        it goes."""
+        part = self.d.part
+        for rid, rel in list(part.rels.items()):
+            if rel.reltype.endswith("/stylesWithEffects"):
+                part.drop_rel(rid) if hasattr(part, "drop_rel") else part.rels.pop(rid)
+
+    @staticmethod
+    def _east_asian(style_el, font: str) -> None:
+        from docx.oxml.ns import qn
+
+        rpr = style_el.get_or_add_rPr()
+        fonts = rpr.find(qn("w:rFonts"))
+        if fonts is None:
+            from lxml import etree
+
+            fonts = etree.SubElement(rpr, qn("w:rFonts"))
+        for k in ("w:ascii", "w:hAnsi", "w:cs", "w:eastAsia"):
+            fonts.set(qn(k), font)
+
+    def _field(self, paragraph, code: str, cached: str = "") -> None:
+        """A Word field (PAGE, NUMPAGES, SEQ, TOC) with its cached result."""
+        from docx.oxml import OxmlElement
+        from docx.oxml.ns import qn
+
+        def char(kind):
+            r = OxmlElement("w:r")
+            fc = OxmlElement("w:fldChar")
+            fc.set(qn("w:fldCharType"), kind)
+            r.append(fc)
+            return r
+
+        p = paragraph._p
+        p.append(char("begin"))
+        r = OxmlElement("w:r")
+        it = OxmlElement("w:instrText")
+        it.set(qn("xml:space"), "preserve")
+        it.text = f" {code} "
+        r.append(it)
+        p.append(r)
+        p.append(char("separate"))
+        run = paragraph.add_run(cached)
+        p.append(run._r)
+        p.append(char("end"))
+
+    # -- inline ------------------------------------------------------------------------------------
+    def inline(self, paragraph, text: str, bold: bool = False, size: float | None = None) -> None:
+        from docx.shared import Pt
+
+        text = self.doc.resolve(text)
+        for is_math, piece in split_math(text):
+            if is_math:
+                paragraph._p.append(omath(piece))
+            elif piece:
+                # a power of ten, "1,458·10⁻⁴", as a superscript run
+                parts = SCI_EXPONENT.split(piece)
+                for k, part in enumerate(parts):
+                    if not part:
+                        continue
+                    run = paragraph.add_run(part.translate(SUPER_DIGITS) if k % 2 else part)
+                    run.bold = bold or None
+                    if k % 2:
+                        run.font.superscript = True
+                    if size:
+                        run.font.size = Pt(size)
+
+    STYLE_IDS = {"Structural": "Structural", "Structural Plain": "StructuralPlain", "Caption": "Caption",
+                 "Table Text": "TableText", "Heading 1": "Heading1", "Heading 2": "Heading2"}
+
+    def _styled(self, p, style: str | None):
+        """Set a paragraph's style by its id (python-docx looks a style up by walking all of them)."""
+        if style:
+            p._p.get_or_add_pPr().get_or_add_pStyle().val = self.STYLE_IDS[style]
+        return p
+
+    def para(self, text: str = "", style: str | None = None, indent: bool = True, align=None, bold: bool = False):
+        from docx.shared import Cm
+
+        p = self._styled(self.d.add_paragraph(), style)
+        if not indent:
+            p.paragraph_format.first_line_indent = Cm(0)
+        if align is not None:
+            p.alignment = align
+        if text:
+            self.inline(p, text, bold=bold)
+        return p
+
+    # -- blocks ------------------------------------------------------------------------------------
+    def write(self, path: Path) -> None:
+        self.doc.number()
+        for b in self.doc.blocks:
+            self.block(b)
+        self.d.save(str(path))
+
+    def block(self, b) -> None:
+        if isinstance(b, TitlePage):
+            self.title_page(b.fields)
+        elif isinstance(b, TaskSheet):
+            self.para(b.title.upper(), style="Structural Plain")
+            for line in b.lines:
+                self.para(line, indent=False)
+            self.para(b.contents[0])
+            for i, item in enumerate(b.contents[1:], 1):
+                self.para(f"{i}) {item}")
+        elif isinstance(b, Abstract):
+            self.abstract(b)
+        elif isinstance(b, Contents):
+            self.contents()
+        elif isinstance(b, Heading):
+            self.heading(b)
+        elif isinstance(b, Paragraph):
+            self.para(b.text, indent=b.indent)
+        elif isinstance(b, Formula):
+            self.formula(b)
+        elif isinstance(b, ListBlock):
+            for i, item in enumerate(b.items, 1):
+                self.para((f"{i}) " if b.ordered else "– ") + item)
+        elif isinstance(b, Table):
+            self.table(b)
+        elif isinstance(b, Figure):
+            self.figure(b)
+        elif isinstance(b, ReferenceList):
+            for i, src in enumerate(self.doc.references(), 1):
+                self.para(f"{i}. {src.text}")
+        elif isinstance(b, PageBreak):
+            from docx.enum.text import WD_BREAK
+
+            self.d.add_paragraph().add_run().add_break(WD_BREAK.PAGE)
+        else:
+            raise TypeError(b)
+
+    def title_page(self, f: dict) -> None:
+        from docx.enum.text import WD_ALIGN_PARAGRAPH as A
+        from docx.shared import Pt
+
+        def line(text, bold=False, align=A.CENTER, space=0):
+            p = self.para("", indent=False, align=align)
+            p.paragraph_format.space_after = Pt(space)
+            run = p.add_run(text)
+            run.bold = bold or None
+            return p
+
+        if f.get("ministry"):
+            line(f["ministry"])
+        for ln in f["org-lines"] or ["_" * 50, "_" * 50]:
+            line(ln)
+        for _ in range(6):
+            line("")
+        line(f["doc-kind"].upper(), bold=True)
+        line(f["discipline"])
+        line(f["topic"], bold=True)
+        line(f["variant-line"])
+        line(f["designation"], space=12)
+        for _ in range(5):
+            line("")
+        date = ("«___» __________ 20__ " + f["date-label"]).strip()
+        for label, name, extra in ((f["teacher-label"], f["teacher"], date),
+                                   (f["student-label"] + (", " + f["group-label"] + " " + f["group"] if f["group"] else ""),
+                                    f["student"], date)):
+            line(f"{label}  ____________  {name or '____________'}", align=A.RIGHT)
+            line(extra, align=A.RIGHT, space=8)
+        line(f"{f['grade-label']} ____________", align=A.RIGHT)
+        for _ in range(5):
+            line("")
+        line(((f["city"] + " ") if f["city"] else "") + f["year"])
+
+    def abstract(self, b: Abstract) -> None:
+        c = self.doc.counts()
+        self.para("РЕФЕРАТ" if self.ru else "ABSTRACT", style="Structural Plain")
+        p = self.para("")
+        p.add_run("Пояснительная записка " if self.ru else "Explanatory note: ")
+        self._field(p, "NUMPAGES", "")
+        words = ("с.", "рис.", "табл.", "источн.", "прил.") if self.ru else ("p.", "fig.", "tables", "sources", "app.")
+        tail = f" {words[0]}, {c['figures']} {words[1]}, {c['tables']} {words[2]}, {c['sources']} {words[3]}"
+        if c["appendices"]:
+            tail += f", {c['appendices']} {words[4]}"
+        p.add_run(tail)
+        self.para(", ".join(b.keywords).upper())
+        for text in b.text:
+            self.para(text)
+
+    def contents(self) -> None:
+        p = self.para("", indent=False)
+        self._field(p, 'TOC \\o "1-2" \\h \\z \\u',
+                    "Обновите поле (F9), чтобы получить содержание." if self.ru else "Update the field (F9) to build the contents.")
+
+    def heading(self, b: Heading) -> None:
+        from docx.enum.text import WD_ALIGN_PARAGRAPH
+
+        if b.kind == "structural":
+            style = "Structural" if b.outlined else "Structural Plain"
+            self.para(b.text.upper(), style=style)
+            return
+        if b.kind == "appendix":
+            word = "ПРИЛОЖЕНИЕ" if self.ru else "APPENDIX"
+            p = self._styled(self.d.add_paragraph(), "Structural")
+            p.add_run(f"{word} {b.number}")
+            p2 = self.para(f"({b.status})", indent=False, align=WD_ALIGN_PARAGRAPH.CENTER)
+            p2.paragraph_format.keep_with_next = True
+            p3 = self.para(b.text, indent=False, align=WD_ALIGN_PARAGRAPH.CENTER, bold=True)
+            p3.paragraph_format.keep_with_next = True
+            return
+        p = self._styled(self.d.add_paragraph(), f"Heading {min(b.level, 2)}")
+        self.inline(p, f"{b.number} {b.text}")
+
+    def formula(self, b: Formula) -> None:
+        from docx.enum.table import WD_TABLE_ALIGNMENT
+        from docx.enum.text import WD_ALIGN_PARAGRAPH
+        from docx.shared import Cm
+
+        if b.numbered:
+            t = self.d.add_table(rows=1, cols=3)
+            t.alignment = WD_TABLE_ALIGNMENT.CENTER
+            t.autofit = False
+            widths = (Cm(1.5), Cm(TEXT_CM - 3.0), Cm(1.5))
+            for cell, w in zip(t.rows[0].cells, widths):
+                cell.width = w
+            mid = t.rows[0].cells[1].paragraphs[0]
+            mid.paragraph_format.first_line_indent = Cm(0)
+            mid.alignment = WD_ALIGN_PARAGRAPH.CENTER
+            mid._p.append(omath_para(b.math))
+            num = t.rows[0].cells[2].paragraphs[0]
+            num.paragraph_format.first_line_indent = Cm(0)
+            num.alignment = WD_ALIGN_PARAGRAPH.RIGHT
+            num.add_run(f"({b.number})")
+            from docx.enum.table import WD_CELL_VERTICAL_ALIGNMENT
+
+            for cell in t.rows[0].cells:
+                cell.vertical_alignment = WD_CELL_VERTICAL_ALIGNMENT.CENTER
+            self._no_split(t.rows[0])
+        else:
+            p = self.para("", indent=False, align=WD_ALIGN_PARAGRAPH.CENTER)
+            p._p.append(omath_para(b.math))
+        for i, w in enumerate(b.where):
+            word = ("где " if self.ru else "where ") if i == 0 else ""
+            p = self.para("", indent=False)
+            if i:
+                p.paragraph_format.left_indent = Cm(1.0)
+            p.paragraph_format.keep_with_next = i < len(b.where) - 1
+            self.inline(p, f"{word}${w.symbol}$ – {w.meaning}" + (";" if i < len(b.where) - 1 else ""))
+
+    def _no_split(self, row) -> None:
+        from docx.oxml import OxmlElement
+
+        trpr = row._tr.get_or_add_trPr()
+        trpr.append(OxmlElement("w:cantSplit"))
+
+    def table(self, b: Table) -> None:
+        from docx.enum.table import WD_TABLE_ALIGNMENT
+        from docx.enum.text import WD_ALIGN_PARAGRAPH
+        from docx.oxml import OxmlElement
+        from docx.shared import Cm
+
+        cap = self.para("", style="Caption", indent=False, align=WD_ALIGN_PARAGRAPH.LEFT)
+        cap.paragraph_format.keep_with_next = True
+        cap.add_run("Таблица " if self.ru else "Table ")
+        self._seq(cap, "Таблица" if self.ru else "Table", b.number)
+        self.inline(cap, " – " + b.caption)
+        n = len(b.header)
+        t = self.d.add_table(rows=1 + len(b.rows), cols=n)
+        t._tbl.tblPr.get_or_add_tblStyle().val = "TableGrid"
+        t.alignment = WD_TABLE_ALIGNMENT.CENTER
+        if b.widths:
+            total = sum(b.widths)
+            for j, w in enumerate(b.widths):
+                for row in t.rows:
+                    row.cells[j].width = Cm(TEXT_CM * w / total)
+        aligns = b.align or ["left"] + ["center"] * (n - 1)
+        amap = {"left": WD_ALIGN_PARAGRAPH.LEFT, "center": WD_ALIGN_PARAGRAPH.CENTER, "right": WD_ALIGN_PARAGRAPH.RIGHT}
+        for j, h in enumerate(b.header):
+            p = self._styled(t.rows[0].cells[j].paragraphs[0], "Table Text")
+            p.alignment = WD_ALIGN_PARAGRAPH.CENTER
+            self.inline(p, h)
+        hdr = t.rows[0]._tr.get_or_add_trPr()
+        hdr.append(OxmlElement("w:tblHeader"))  # repeated on every page the table runs over
+        for i, row in enumerate(b.rows, 1):
+            for j, cell in enumerate(row):
+                p = self._styled(t.rows[i].cells[j].paragraphs[0], "Table Text")
+                p.alignment = amap.get(aligns[j] if j < len(aligns) else "left")
+                self.inline(p, cell)
+            self._no_split(t.rows[i])
+        self.para("", indent=False)
+
+    def _seq(self, paragraph, name: str, number: str) -> None:
+        """A caption number: a SEQ field (Word renumbers after edits) unless it is an appendix's А.1."""
+        if "." in number:
+            paragraph.add_run(number)
+        else:
+            self._field(paragraph, f"SEQ {name} \\* ARABIC", number)
+
+    def figure(self, b: Figure) -> None:
+        from docx.enum.text import WD_ALIGN_PARAGRAPH
+        from docx.shared import Cm
+
+        p = self.para("", indent=False, align=WD_ALIGN_PARAGRAPH.CENTER)
+        p.paragraph_format.keep_with_next = True
+        png = self.folder / b.raster if b.raster else None
+        if png is None or not png.exists():
+            return
+        run = p.add_run()
+        run.add_picture(str(png), width=Cm(min(b.width_cm, TEXT_CM)))
+        svg = self.folder / b.file
+        if svg.exists() and svg.suffix == ".svg":
+            self._svg_beside(run, svg)
+        cap = self.para("", style="Caption", indent=False, align=WD_ALIGN_PARAGRAPH.CENTER)
+        cap.add_run("Рисунок " if self.ru else "Figure ")
+        self._seq(cap, "Рисунок" if self.ru else "Figure", b.number)
+        self.inline(cap, " – " + b.caption)
+
+    def _svg_beside(self, run, svg: Path) -> None:
+        """The SVG as the picture Word 2016+ shows (asvg:svgBlip), the PNG kept for other readers."""
+        from docx.opc.constants import RELATIONSHIP_TYPE as RT
+        from docx.opc.packuri import PackURI
+        from docx.opc.part import Part
+        from docx.oxml.ns import qn
+        from lxml import etree
+
+        data = svg.read_bytes().replace(b"font-family: 'Liberation Serif'",
+                                        b"font-family: 'Times New Roman', 'Liberation Serif', serif")
+        package = self.d.part.package
+        n = sum(1 for p in package.iter_parts() if str(p.partname).endswith(".svg")) + 1
+        part = Part(PackURI(f"/word/media/tmm_svg{n}.svg"), "image/svg+xml", data, package)
+        rid = self.d.part.relate_to(part, RT.IMAGE)
+        blip = run._r.findall(".//" + qn("a:blip"))[-1]
+        ext_lst = etree.SubElement(blip, qn("a:extLst"))
+        ext = etree.SubElement(ext_lst, qn("a:ext"))
+        ext.set("uri", SVG_EXT)
+        sb = etree.SubElement(ext, f"{{{ASVG}}}svgBlip", nsmap={"asvg": ASVG})
+        sb.set(qn("r:embed"), rid)
+
+
+def write_docx(doc: Document, path: Path, folder: Path, title) -> Path:
+    """note.docx from the document; TmmError if it cannot be written."""
+    from ...errors import TmmError
+
+    try:
+        import docx  # noqa: F401
+    except ImportError:  # pragma: no cover - a dependency
+        raise TmmError("cannot write the note for Word (python-docx is missing; reinstall tmm)") from None
+    try:
+        DocxWriter(doc, folder, title).write(Path(path))
+    except OSError as exc:
+        raise TmmError(f"cannot write the note for Word ({exc.strerror})") from None
+    return Path(path)
+
+
+def docx_text(path: Path) -> str:
+    """The text of a DOCX (paragraphs, tables, equations as their plain text) — for the tests."""
+    import docx
+    from docx.oxml.ns import qn
+
+    d = docx.Document(str(path))
+    body = d.element.body
+    out = []
+    for p in body.iter(qn("w:p")):
+        text = "".join(t.text or "" for t in p.iter() if t.tag in (qn("w:t"), qn("m:t")))
+        if text.strip():
+            out.append(text)
+    return "\n".join(out)
+

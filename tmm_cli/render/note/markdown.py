@@ -1,0 +1,90 @@
+"""The Markdown writer: the note as report.md (headings, tables, formulas as text with
+<sub>/<sup>, figures with their captions), readable on GitHub or in any editor."""
+
+from __future__ import annotations
+
+import re
+
+from .mathsyntax import parse, to_text
+from .model import (
+    Abstract,
+    Contents,
+    Document,
+    Figure,
+    Formula,
+    Heading,
+    ListBlock,
+    PageBreak,
+    Paragraph,
+    ReferenceList,
+    Table,
+    TaskSheet,
+    TitlePage,
+    split_math,
+)
+
+
+def _inline(doc: Document, text: str) -> str:
+    out = []
+    for is_math, piece in split_math(doc.resolve(text)):
+        if is_math:
+            out.append(to_text(parse(piece)))
+        else:
+            out.append(re.sub(r"([*_`\\])", r"\\\1", piece))
+    return "".join(out)
+
+
+def _table(doc: Document, b: Table, word: str) -> list[str]:
+    cell = lambda c: _inline(doc, c).replace("|", "\\|").replace("\n", " ")  # noqa: E731
+    out = [f"*{word} {b.number} – {_inline(doc, b.caption)}*", ""]
+    out.append("| " + " | ".join(cell(h) for h in b.header) + " |")
+    out.append("|" + "|".join(["---"] * len(b.header)) + "|")
+    out += ["| " + " | ".join(cell(c) for c in row) + " |" for row in b.rows]
+    return out + [""]
+
+
+def markdown(doc: Document, title: str, figure_file=lambda f: f.file) -> str:
+    """The document as Markdown; `figure_file(figure)` names the image a reader opens (the PNG)."""
+    doc.number()
+    ru = doc.lang == "ru"
+    fig_word, tab_word = ("Рисунок", "Таблица") if ru else ("Figure", "Table")
+    out = [f"# {title}", ""]
+    for b in doc.blocks:
+        if isinstance(b, Heading):
+            if b.kind == "chapter":
+                out += ["#" * (b.level + 1) + f" {b.number} {_inline(doc, b.text)}", ""]
+            elif b.kind == "appendix":
+                app = "Приложение" if ru else "Appendix"
+                out += [f"## {app} {b.number} ({b.status}). {_inline(doc, b.text)}", ""]
+            else:
+                out += [f"## {_inline(doc, b.text)}", ""]
+        elif isinstance(b, Paragraph):
+            out += [_inline(doc, b.text), ""]
+        elif isinstance(b, Formula):
+            tail = f" ({b.number})" if b.numbered else ""
+            out += [f"> {to_text(parse(b.math))}{tail}", ""]
+            if b.where:
+                word = "где" if ru else "where"
+                out += [word + " " + "; ".join(f"{to_text(parse(w.symbol))} – {_inline(doc, w.meaning)}"
+                                               for w in b.where) + ".", ""]
+        elif isinstance(b, ListBlock):
+            out += [(f"{i}. " if b.ordered else "- ") + _inline(doc, t) for i, t in enumerate(b.items, 1)] + [""]
+        elif isinstance(b, Table):
+            out += _table(doc, b, tab_word)
+        elif isinstance(b, Figure):
+            cap = _inline(doc, b.caption)
+            out += [f"![{cap}]({figure_file(b)})", "", f"*{fig_word} {b.number} – {cap}*", ""]
+        elif isinstance(b, TaskSheet):
+            out += [f"## {b.title}", ""] + [_inline(doc, x) + "  " for x in b.lines] + [""]
+            out += [_inline(doc, b.contents[0]), ""] + [f"{i}. {_inline(doc, x)}" for i, x in enumerate(b.contents[1:], 1)] + [""]
+        elif isinstance(b, Abstract):
+            c = doc.counts()
+            head = (f"Пояснительная записка: {c['figures']} рис., {c['tables']} табл., {c['sources']} источн."
+                    if ru else f"Explanatory note: {c['figures']} fig., {c['tables']} tables, {c['sources']} sources.")
+            out += ["## " + ("Реферат" if ru else "Abstract"), "", head, "", ", ".join(b.keywords).upper(), ""]
+            out += [_inline(doc, t) + "\n" for t in b.text]
+        elif isinstance(b, ReferenceList):
+            out += [f"{i}. {src.text}" for i, src in enumerate(doc.references(), 1)] + [""]
+        elif isinstance(b, (TitlePage, Contents, PageBreak)):
+            continue
+    return "\n".join(out).rstrip() + "\n"
