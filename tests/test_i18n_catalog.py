@@ -17,7 +17,7 @@ from tmm_cli.i18n import tr, trc  # noqa: E402
 PACKAGE = Path(__file__).resolve().parents[1] / "tmm_cli"
 PROSE = re.compile("[а-яё]{3,}")  # three lower-case Cyrillic letters: a word, not a symbol's subscript (n_кр, φ_дс)
 # rooms whose text is still written inline (pick(lang, en, ru)); each is to move into the catalogue
-PENDING = {"render/note", "i18n/lang.py"}
+PENDING = {"render/note", "i18n/lang.py"}  # render/note: the note's inline t(en, ru) texts are still to move
 # Russian that is data, not a translation
 ALLOWED = {"авто",  # `--shift авто` is read as `--shift auto`
            'name = "Механизм"',  # an example line of a mechanism file, in an error message
