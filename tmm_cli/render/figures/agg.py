@@ -160,13 +160,13 @@ def _has_shared_fontsets() -> bool:
 
 
 def _has_height_metrics() -> bool:
-    import inspect
-
     import matplotlib.text
     from matplotlib.font_manager import fontManager
 
-    # matplotlib asks a renderer for them where it has the method (Text._get_layout, 3.11)
-    return ("_get_font_height_metrics" in inspect.getsource(matplotlib.text.Text._get_layout)
+    # matplotlib asks a renderer for them where it has the method (Text._get_layout, 3.11): the
+    # name is among those its code reads
+    code = matplotlib.text.Text._get_layout.__code__
+    return ("_get_font_height_metrics" in code.co_names + code.co_consts
             and callable(getattr(fontManager, "_find_fonts_by_props", None)))
 
 
