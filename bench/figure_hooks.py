@@ -4,7 +4,8 @@
     python bench/figure_hooks.py --rounds 5
 
 Each configuration runs in a fresh process (``TMM_MPL_HOOKS`` chooses the hooks) that computes
-variants 3, 17, 40 and 65, then draws and saves (PNG, 120 dpi, in memory) the eight figures of each:
+variants 17, 3, 40 and 65, then draws and saves (PNG, 120 dpi, in memory) the eight figures of each
+and the SVG copies the note takes:
 the first variant is what one `tmm project` draws (cold: fonts, grammar, caches empty), the other
 three what a batch worker draws next (warm). Times are CPU seconds of the drawing process
 (``time.process_time``), so other jobs on the machine move them less than wall time; the
@@ -34,16 +35,23 @@ def child() -> None:
     from tmm_cli.render.figures.kit import _warm_up
     from tmm_cli.variants import get_variant
 
+    from tmm_cli.render.figures.kit import share_svg_text
+    from tmm_cli.render.note import NOTE_FIGURES
+
     results = [run_project(get_variant(n)) for n in VARIANTS]
     import matplotlib  # noqa: F401  (imported before the clock starts: the floor's share)
+    import matplotlib.backends.backend_svg  # noqa: F401
 
     times = []
     t0 = time.process_time()
     _warm_up()
+    share_svg_text()
     for r in results:
         figs = {**gears_figures(r.gears, "ru"), **cam_figures(r.cam, "ru")}
         for fig in figs.values():
             fig.savefig(io.BytesIO(), format="png", dpi=120)
+        for name in NOTE_FIGURES:  # the note's SVG copies, as tmm project makes them
+            figs[name].savefig(io.BytesIO(), format="svg")
         t1 = time.process_time()
         times.append(t1 - t0)
         t0 = t1

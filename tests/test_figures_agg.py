@@ -46,9 +46,9 @@ def _pixels(fig):
 
 
 def test_the_hooks_found_on_this_matplotlib():
-    """What detection finds, by release: the text bitmaps, the formula cache and the copied ticks
-    from 3.8.4; the glyph bitmaps, the shared fontsets and the kept height metrics where matplotlib
-    ≥ 3.11 has the parts they replace; nothing outside the tested range."""
+    """What detection finds, by release: the text bitmaps, the formula cache, the copied ticks and
+    the shared SVG text from 3.8.4; the glyph bitmaps, the shared fontsets and the kept height
+    metrics where matplotlib ≥ 3.11 has the parts they replace; nothing outside the tested range."""
     v = matplotlib.__version_info__
     found = agg.available()
     if not agg.in_tested_range():
@@ -56,7 +56,7 @@ def test_the_hooks_found_on_this_matplotlib():
     elif (v.major, v.minor) >= (3, 11):
         assert found == frozenset(agg.HOOKS)
     else:
-        assert found == {"text_bitmaps", "formula_cache", "copied_ticks"}
+        assert found == {"text_bitmaps", "formula_cache", "copied_ticks", "svg_text"}
     assert agg.hooks() == found  # the tests run with everything this matplotlib allows
 
 
@@ -136,6 +136,36 @@ def test_hooks_but_the_text_bitmaps_draw_matplotlibs_own_pixels(variant17, hooks
     agg.use(every & {"text_bitmaps"})
     for name, fig in _figures(variant17).items():
         assert (hooked[name] != _pixels(fig)).any(axis=2).sum() == 0, name
+
+
+def test_shared_svg_text_writes_matplotlibs_own_svg(variant17, hooks_back, tmp_path):
+    """The note's SVG copies with one TextToPath and one metrics table for every SVG renderer are
+    matplotlib's own files, byte for byte (ids and date fixed)."""
+    from tmm_cli.render.figures.agg import share_svg_text
+
+    if "svg_text" not in agg.hooks():
+        pytest.skip("no svg_text hook on this matplotlib")
+
+    def svgs():
+        out = {}
+        with matplotlib.rc_context({"svg.hashsalt": "tmm"}):
+            for name, fig in _figures(variant17).items():
+                buf = io.BytesIO()
+                fig.savefig(buf, format="svg", metadata={"Date": None})
+                out[name] = buf.getvalue()
+        return out
+
+    agg.use(agg.hooks() - {"svg_text"})
+    share_svg_text()  # nothing: the hook is off
+    from matplotlib.backends.backend_svg import RendererSVG
+
+    assert "_text2path" not in RendererSVG.__dict__ and not agg._SVG_TEXT
+    theirs = svgs()
+    agg.use(agg.hooks() | {"svg_text"})
+    share_svg_text()
+    ours = svgs()
+    assert len(agg._SVG_TEXT) == 1 and agg._SVG_METRICS  # shared, and used
+    assert ours == theirs
 
 
 def test_text_bitmaps_are_matplotlibs_pixels_before_3_11(hooks_back):

@@ -19,7 +19,9 @@ figures of a project, matplotlib 3.11.2; see :data:`HOOKS`):
   per formula and looks every glyph's metrics up again), kerning read at the formula's own size;
 - ``height_metrics`` — a font's ascent, descent and line gap kept (matplotlib ≥ 3.11 reads them
   from the font's tables for every layout of every text);
-- ``copied_ticks`` — a new tick is a copy of its axis's first one, not five artists made anew.
+- ``copied_ticks`` — a new tick is a copy of its axis's first one, not five artists made anew;
+- ``svg_text`` — every SVG renderer lays its text out with one ``TextToPath`` and one table of text
+  metrics (:func:`share_svg_text`).
 
 What uses public API only is always on: figures of one size share a renderer, every renderer one
 mathtext parser, and an opaque figure goes to PNG as RGB by :func:`png_rgb`.
@@ -37,7 +39,8 @@ import os
 # (tests/test_figures_agg.py, the floors test on the lowest and the newest release) and moves this.
 TESTED = ((3, 8, 4), (3, 12, 0))
 
-HOOKS = ("text_bitmaps", "glyph_bitmaps", "formula_cache", "shared_fontsets", "height_metrics", "copied_ticks")
+HOOKS = ("text_bitmaps", "glyph_bitmaps", "formula_cache", "shared_fontsets", "height_metrics", "copied_ticks",
+         "svg_text")
 
 _STATE: dict = {}  # "hooks": the frozenset in use, "classes": (figure class, canvas class), "parse": matplotlib's own
 _RENDERERS: dict = {}  # (width px, height px, dpi) -> a renderer shared by the figures of that size
@@ -50,6 +53,8 @@ _GLYPHS: dict = {}  # (font, size, dpi, glyph, flags, antialiased, turn, 1/64 px
 _GLYPHS_KEPT = 50_000  # a glyph's bitmap is ≈ 100 bytes; a batch meets ≈ 8 000 keys
 _GLYPH_MATRICES: dict = {}  # (angle, slant, extend) -> FreeType's 16.16 transform
 _HEIGHT_METRICS: dict = {}  # (font, dpi) -> (ascent, descent, line gap) [px]: a few fonts and sizes
+_SVG_TEXT: list = []  # the one TextToPath of every SVG renderer in this process (see share_svg_text)
+_SVG_METRICS: dict = {}  # (text, font, ismath) -> (width, height, descent) in SVG points
 
 
 def in_tested_range(version_info=None) -> bool:
@@ -102,6 +107,8 @@ def use(names) -> frozenset[str]:
     _STATE.pop("classes", None)
     _STATE["hooks"] = available() & frozenset(names)
     _install_formula_cache("formula_cache" in _STATE["hooks"])
+    if "svg_text" not in _STATE["hooks"]:
+        _unshare_svg_text()
     return _STATE["hooks"]
 
 
@@ -182,9 +189,20 @@ def _has_copied_ticks() -> bool:
             and all(hasattr(XAxis, m) for m in ("majorTicks", "minorTicks", "get_majorticklocs", "get_minorticklocs")))
 
 
+def _has_svg_text() -> bool:
+    import io
+
+    from matplotlib.backends.backend_svg import RendererSVG
+    from matplotlib.textpath import TextToPath
+
+    code = RendererSVG.__dict__["get_text_width_height_descent"].__code__  # its own: it asks its TextToPath
+    return (isinstance(getattr(RendererSVG(1, 1, io.StringIO()), "_text2path", None), TextToPath)
+            and {"_text2path", "get_text_width_height_descent"} <= set(code.co_names))
+
+
 _DETECT = {"text_bitmaps": _has_text_bitmaps, "glyph_bitmaps": _has_glyph_bitmaps, "formula_cache": _has_formula_cache,
            "shared_fontsets": _has_shared_fontsets, "height_metrics": _has_height_metrics,
-           "copied_ticks": _has_copied_ticks}
+           "copied_ticks": _has_copied_ticks, "svg_text": _has_svg_text}
 
 
 # --- the process-wide parts: the formula cache, fonts across a fork --------------------------------
@@ -520,6 +538,58 @@ def _font_key(prop) -> tuple:
     """What tells two FontProperties apart (the tuple matplotlib hashes them by)."""
     return (tuple(prop.get_family()), prop.get_slant(), prop.get_variant(), prop.get_weight(),
             prop.get_stretch(), prop.get_size(), prop.get_file(), prop.get_math_fontfamily())
+
+
+# --- SVG copies ------------------------------------------------------------------------------------
+
+def share_svg_text() -> None:
+    """Every SVG renderer of this process lays its text out with one ``TextToPath`` and one table
+    of text metrics, so the formulas parsed and the strings measured for one SVG copy serve the
+    next (matplotlib gives each renderer its own, and its formula cache is keyed by the parser:
+    a variant's ~30 formulas were parsed again for every SVG copy of the note, a quarter of the
+    time of the copies; a tick label was measured again in every figure). The files are the same
+    byte for byte. A forked child starts afresh (the parsed formulas hold FreeType fonts, which
+    must never cross a fork). Only where the ``svg_text`` hook is in use."""
+    if "svg_text" not in hooks():
+        return
+    from matplotlib.backends import backend_svg
+
+    renderer = backend_svg.RendererSVG
+    if "svg" in _STATE:
+        return
+    init = renderer.__init__
+    _STATE["svg"] = (init, renderer.__dict__["get_text_width_height_descent"])
+
+    def __init__(self, *args, **kwargs):
+        init(self, *args, **kwargs)
+        if _SVG_TEXT:
+            self._text2path = _SVG_TEXT[0]
+        else:
+            _SVG_TEXT.append(self._text2path)
+
+    def get_text_width_height_descent(self, s, prop, ismath):
+        key = (s, _font_key(prop), ismath)
+        got = _SVG_METRICS.get(key)
+        if got is None:
+            got = _SVG_METRICS[key] = self._text2path.get_text_width_height_descent(s, prop, ismath)
+        return got
+
+    renderer.__init__ = __init__
+    renderer.get_text_width_height_descent = get_text_width_height_descent
+    if not _STATE.get("svg_fork") and hasattr(os, "register_at_fork"):
+        os.register_at_fork(after_in_child=_SVG_TEXT.clear)
+        _STATE["svg_fork"] = True
+
+
+def _unshare_svg_text() -> None:
+    """matplotlib's own SVG renderer back (:func:`use` without ``svg_text``)."""
+    own = _STATE.pop("svg", None)
+    if own is not None:
+        from matplotlib.backends import backend_svg
+
+        backend_svg.RendererSVG.__init__, backend_svg.RendererSVG.get_text_width_height_descent = own
+        _SVG_TEXT.clear()
+        _SVG_METRICS.clear()
 
 
 # --- ticks ------------------------------------------------------------------------------------------

@@ -16,7 +16,7 @@ import re
 import sys
 
 from ...i18n.numbers import num
-from .agg import copying_ticks, png_rgb  # noqa: F401  (the figures' kit; the hooks live in agg.py)
+from .agg import copying_ticks, png_rgb, share_svg_text  # noqa: F401  (the figures' kit; the hooks live in agg.py)
 
 PT = 1 / 72  # inch per point
 
@@ -122,46 +122,6 @@ def _warm_up() -> None:
     fig.text(0.1, 0.5, mt("x_пл"), fontsize=10)
     fig.text(0.1, 0.2, "x", fontsize=10, weight="bold")
     fig.savefig(io.BytesIO(), format="png", dpi=10)
-
-
-_SVG_TEXT: list = []  # the one TextToPath of every SVG renderer in this process (see share_svg_text)
-_SVG_METRICS: dict = {}  # (text, font properties, ismath) -> (width, height, descent) in SVG points
-
-
-def share_svg_text() -> None:
-    """Every SVG renderer of this process lays its text out with one ``TextToPath`` and one table
-    of text metrics, so the formulas parsed and the strings measured for one SVG copy serve the
-    next (matplotlib gives each renderer its own, and its formula cache is keyed by the parser:
-    a variant's ~30 formulas were parsed again for every SVG copy of the note, a quarter of the
-    time of the copies; a tick label was measured again in every figure). The files are the same
-    byte for byte. A forked child starts afresh (the parsed formulas hold FreeType fonts, which
-    must never cross a fork; see forget_fonts)."""
-    from matplotlib.backends import backend_svg
-
-    renderer = backend_svg.RendererSVG
-    if getattr(renderer, "_tmm_shared_text", False):
-        return
-    init = renderer.__init__
-
-    def __init__(self, *args, **kwargs):
-        init(self, *args, **kwargs)
-        if _SVG_TEXT:
-            self._text2path = _SVG_TEXT[0]
-        else:
-            _SVG_TEXT.append(self._text2path)
-
-    def get_text_width_height_descent(self, s, prop, ismath):
-        key = (s, tuple(prop.__dict__.values()), ismath)
-        got = _SVG_METRICS.get(key)
-        if got is None:
-            got = _SVG_METRICS[key] = self._text2path.get_text_width_height_descent(s, prop, ismath)
-        return got
-
-    renderer.__init__ = __init__
-    renderer.get_text_width_height_descent = get_text_width_height_descent
-    renderer._tmm_shared_text = True
-    if hasattr(os, "register_at_fork"):
-        os.register_at_fork(after_in_child=_SVG_TEXT.clear)
 
 
 _FORKED = False  # set in a child forked here: it never forks again (two cores are busy already)
