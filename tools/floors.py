@@ -131,6 +131,7 @@ def smoke(py: Path, log) -> list[str]:
         (["linkage", str(e / "shaper.toml"), "--out", "l"], 0, ["l/linkage/linkage.json", "l/linkage/linkage_diagrams.png"]),
         (["carrier", str(e / "carrier-5.csv"), "--radius", "125", "--out", "r"], 0, ["r/carrier/carrier.json", "r/carrier/carrier.png"]),
         (["note", "p/variant-17"], 0, ["p/variant-17/note.pdf"]),
+        (["assign", "--roster", str(e / "roster.csv"), "--out", "a"], 0, ["a/assignments.pdf", "a/assignment-Ivanov.pdf"]),
     ]
     lines = []
     with tempfile.TemporaryDirectory(prefix="tmm-smoke-") as d:
