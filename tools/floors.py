@@ -164,10 +164,14 @@ def suite(py: Path, tests: str, log) -> str:
     env = {**os.environ, "MPLBACKEND": "Agg", "PYTHONIOENCODING": "utf-8"}
     env.pop("PYTHONPATH", None)
     env.pop("TMM_FLOORS", None)
-    done = _run([str(py.parent / "pytest"), "-q", "-p", "no:cacheprovider", *paths], log, cwd=ROOT, env=env, ok=(0, 1))
+    # -p no:warnings: the old releases' deprecation warnings (pyparsing's, thousands) would bury the failures
+    done = _run([str(py.parent / "pytest"), "-q", "-p", "no:cacheprovider", "-p", "no:warnings", *paths], log,
+                cwd=ROOT, env=env, ok=(0, 1))
     tail = [ln for ln in done.stdout.splitlines() if ln.strip()][-1:]
     if done.returncode:
-        raise RuntimeError(f"the tests failed:\n{done.stdout[-6000:]}\n{done.stderr[-2000:]}")
+        failures = done.stdout[done.stdout.find("= FAILURES ="):][:6000]
+        summary = done.stdout[done.stdout.find("short test summary info"):][-4000:]
+        raise RuntimeError(f"the tests failed:\n{failures}\n...\n{summary}\n{done.stderr[-2000:]}")
     return tail[0] if tail else ""
 
 
