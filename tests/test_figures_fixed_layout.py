@@ -12,6 +12,7 @@ import pytest
 from matplotlib.figure import Figure
 
 from tmm_cli.project import run_project
+from tmm_cli.render.figures import agg
 from tmm_cli.render.figures import kit as figure_kit
 from tmm_cli.render.figures.cam import cam_figures
 from tmm_cli.render.figures.gears import gears_figures
@@ -147,6 +148,7 @@ def test_opaque_figures_go_to_png_as_rgb_transparent_ones_keep_alpha(tmp_path):
     assert Image.open(tmp_path / "clear.png").mode == "RGBA"
 
 
+@pytest.mark.skipif("text_bitmaps" not in agg.hooks(), reason="no text bitmaps on this matplotlib")
 def test_plain_text_lands_where_matplotlib_puts_it_and_a_second_draw_is_the_same(tmp_path):
     """Texts go through our renderer (one bitmap per text, kept): each text's ink stays within a
     pixel of matplotlib 3.11's own rendering, at any angle, and the kept bitmaps draw it again

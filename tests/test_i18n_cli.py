@@ -77,7 +77,8 @@ def test_help_language_from_the_locale_then_english_again():
 @pytest.mark.parametrize("args,expected", [
     (["project"], "Не задан параметр '--variant'"),
     (["project", "--variant", 17, "--format", "jpg"], "Недопустимое значение '--format'"),
-    (["project", "--variant", 17, "--bogus"], "Нет такого параметра '--bogus'"),
+    # click < 8.4 says "No such option: --bogus", 8.4 "No such option '--bogus'.": both are in tmm.po
+    (["project", "--variant", 17, "--bogus"], re.compile(r"Нет такого параметра:? '?--bogus")),
     (["project", "--variant", 17, "extra"], "Лишний аргумент (extra)"),
     (["gears", "--variant", 17, "--crank-rpm", "abc"], "'abc' — не число"),
     (["frobnicate"], "Нет такой команды 'frobnicate'"),
@@ -87,7 +88,7 @@ def test_click_errors_in_russian(args, expected, tmp_path):
     assert res.exit_code == 2
     lines = res.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("tmm: ошибка: "), res.stderr
-    assert expected in lines[0], lines[0]
+    assert (expected.search(lines[0]) if isinstance(expected, re.Pattern) else expected in lines[0]), lines[0]
     assert not list(tmp_path.iterdir())
 
 

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from hypothesis import given, settings
+from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from tmm_cli.cli import cli
@@ -384,7 +384,9 @@ NUMBERS = st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.integers(
                     st.sampled_from(["1e308", "-0", "1e-9", "0x10", "1,5", "", " ", "nan", "9" * 400]))
 
 
-@settings(max_examples=20, deadline=None)
+# data_too_large: hypothesis 6.80 (the floor) overruns its buffer now and then drawing the 10**25
+# integers ("20 examples overran while generating 8 valid ones"); newer releases do not
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.data_too_large])
 @given(crank=NUMBERS | st.floats(0.5, 3500), torque=NUMBERS | st.floats(0, 2e5), tol=NUMBERS | st.floats(0, 25),
        planets=NUMBERS | st.integers(0, 14))
 def test_any_numbers_give_a_design_or_one_line(tmp_path_factory, crank, torque, tol, planets):
