@@ -88,3 +88,58 @@ def test_no_translation_inside_an_f_string():
                     if isinstance(sub, ast.Call) and getattr(sub.func, "id", None) in ("tr", "trc", "ntr", "N_"):
                         found.append(f"{path.relative_to(PACKAGE)}:{node.lineno}")
     assert not found, found
+
+
+def _fields(template: str) -> set[str]:
+    import string
+
+    return {name.split(".")[0].split("[")[0] for _, name, _, _ in string.Formatter().parse(template) if name}
+
+
+def _formatted_calls():
+    """(path, line, msgid literals, names given) of every tr/trc/ntr/t(…).format(…) in the package."""
+    for path in sorted(PACKAGE.rglob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr == "format"
+                    and isinstance(node.func.value, ast.Call)):
+                continue
+            inner = node.func.value
+            if getattr(inner.func, "id", getattr(inner.func, "attr", "")) not in ("tr", "trc", "ntr", "t"):
+                continue
+            given = {k.arg for k in node.keywords} | {str(i) for i in range(len(node.args))}
+            literals = [a.value for a in inner.args if isinstance(a, ast.Constant) and isinstance(a.value, str)]
+            yield path, node.lineno, literals, given
+
+
+def test_every_formatted_msgid_gets_its_fields():
+    """tr(lang, "… {x} …").format(x=…): every field the English template names is given (a field
+    nobody gives is a KeyError, or a {cite:…} left unescaped)."""
+    missing = [f"{path.relative_to(PACKAGE)}:{line}: {sorted(_fields(lit) - given)}"
+               for path, line, literals, given in _formatted_calls() for lit in literals if _fields(lit) - given]
+    assert not missing, missing
+
+
+def test_every_translation_names_only_the_fields_of_its_msgid():
+    """A Russian template that is formatted may drop a field but never invent one (it would fail
+    only in Russian): the msgids the code formats, and the notes' sentences."""
+    from babel.messages.pofile import read_po
+
+    from tmm_cli.i18n.lang import _catalogue
+
+    formatted = {lit for _, _, literals, _ in _formatted_calls() for lit in literals} | set(_catalogue().values())
+    with open(build.po_path("ru"), "rb") as f:
+        catalogue = read_po(f, locale="ru")
+    wrong = []
+    for m in catalogue:
+        ids = m.id if isinstance(m.id, tuple) else (m.id,)
+        if not m.id or m.context in ("click", "error") or not set(ids) & formatted:
+            continue
+        strings = m.string if isinstance(m.string, tuple) else (m.string,)
+        try:
+            extra = set().union(*(_fields(s) for s in strings if s)) - set().union(*(_fields(i) for i in ids))
+        except ValueError as exc:  # an unbalanced brace
+            wrong.append(f"{ids[0][:60]!r}: {exc}")
+            continue
+        if extra:
+            wrong.append(f"{ids[0][:60]!r}: {sorted(extra)}")
+    assert not wrong, wrong

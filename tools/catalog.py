@@ -18,7 +18,7 @@ from pathlib import Path
 from tmm_cli.i18n import DOMAIN, LOCALE_DIR
 
 PACKAGE = Path(__file__).resolve().parents[1] / "tmm_cli"
-KEYWORDS = {"tr": (2,), "trc": ((2, "c"), 3), "ntr": (2, 3), "N_": None}
+KEYWORDS = {"tr": (2,), "trc": ((2, "c"), 3), "ntr": (2, 3), "N_": None, "t": (1,)}  # t: the note's Ctx.t(msgid)
 # Kept by hand, not extracted: "error" — our error messages as templates ("{p} does not exist; …"): they
 # are f-strings at the raise sites, matched against these at the edge (i18n/errors.py; the tests check
 # that every raise site has one); "click" — click's own messages (its msgids); "system" — the

@@ -244,6 +244,5 @@ def markdown_note(result, lang: str, figure_files: list[str]) -> str:
     figures = {name: (by_name[name], None, 16.5, 10.0) for name in NOTE_FIGURES if name in by_name}
     doc = build_note(result, lang, figures)
     v = result.variant
-    title = pick(lang, f"TMM course project, variant {v.number}: explanatory note",
-                 f"Курсовой проект по ТММ, вариант {v.number}: пояснительная записка")
+    title = lang("TMM course project, variant {number}: explanatory note").format(number=v.number)
     return markdown(doc, title)

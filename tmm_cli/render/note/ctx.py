@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from ...i18n import tr
 from ...i18n.numbers import num
 from .mathsyntax import check_line, parse, top_level_splits, width
 from .model import Document, Figure, Formula, Paragraph, Table, WhereItem
@@ -47,7 +48,12 @@ class Ctx:
             self.doc = Document(self.lang)
 
     # -- words -------------------------------------------------------------------------------------
-    def t(self, en: str, ru: str) -> str:
+    def t(self, msgid: str) -> str:
+        """`msgid` (English) in the note's language, from the catalogue."""
+        return tr(self.lang, msgid)
+
+    def t2(self, en: str, ru: str) -> str:
+        """The old form a few sentences still use, the Russian written inline: being moved to t()."""
         return ru if self.lang == "ru" else en
 
     @property
