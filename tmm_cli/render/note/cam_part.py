@@ -9,29 +9,27 @@ from __future__ import annotations
 
 import math
 
+from functools import reduce
+
 from ...cam.laws import law_impacts, law_max
+from ...i18n import N_
 from ..terminal.variants import law_words
 from .ctx import Ctx, V
 
-_PHASE = {"rise": ("rise", "удаление"), "far_dwell": ("far dwell", "дальнее стояние"),
-          "return": ("return", "возвращение"), "near_dwell": ("near dwell", "ближнее стояние")}
+_PHASE = {"rise": N_("rise"), "far_dwell": N_("far dwell"), "return": N_("return"), "near_dwell": N_("near dwell")}
 
 _LAW_F = {
-    1: ['f(t) = 2t^2 "  при " 0 <= t <= 1/2', 'f(t) = 1 - 2(1 - t)^2 "  при " 1/2 < t <= 1'],
+    1: ['f(t) = 2t^2 "  for " 0 <= t <= 1/2', 'f(t) = 1 - 2(1 - t)^2 "  for " 1/2 < t <= 1'],  # "for" translated
     2: ["f(t) = 3t^2 - 2t^3"],
     3: ["f(t) = (1 - cos π t)/2"],
     4: ["f(t) = t - (sin 2π t)/(2π)"],
 }
 
 _SCHEME = {
-    1: ("a translating roller follower kept on the cam by a spring (force closure)",
-        "поступательный роликовый толкатель с силовым замыканием (пружиной)"),
-    2: ("a translating roller follower in a groove of the cam (form closure)",
-        "поступательный роликовый толкатель с геометрическим замыканием (пазовый кулачок)"),
-    3: ("an oscillating roller follower (rocker) kept on the cam by a spring (force closure)",
-        "качающийся роликовый толкатель (коромысло) с силовым замыканием (пружиной)"),
-    4: ("an oscillating roller follower (rocker) in a groove of the cam (form closure)",
-        "качающийся роликовый толкатель (коромысло) с геометрическим замыканием (пазовый кулачок)"),
+    1: N_("a translating roller follower kept on the cam by a spring (force closure)"),
+    2: N_("a translating roller follower in a groove of the cam (form closure)"),
+    3: N_("an oscillating roller follower (rocker) kept on the cam by a spring (force closure)"),
+    4: N_("an oscillating roller follower (rocker) in a groove of the cam (form closure)"),
 }
 
 
@@ -58,13 +56,11 @@ def _input(c: Ctx, r) -> None:
     t, n = c.t, c.n
     mm = t("mm")
     c.doc.add(_heading(c, 2, t("Input data")))
-    c.p(c.t2(f"The cam mechanism is designed for variant {v.number} of Table 1.2 {{cite:book}}: "
-          f"{_SCHEME[v.scheme][0]}. The input data are given in Table {{tab:cam_input}}.",
-          f"Кулачковый механизм проектируется по варианту {v.number} таблицы 1.2 {{cite:book}}: "
-          f"{_SCHEME[v.scheme][1]}. Исходные данные приведены в таблице {{tab:cam_input}}."))
+    c.p(t("The cam mechanism is designed for variant {number} of Table 1.2 {{cite:book}}: {scheme}. The input data "
+          "are given in Table {{tab:cam_input}}.").format(number=v.number, scheme=t(_SCHEME[v.scheme])))
     rows = [
         [t("Scheme of the mechanism"), "—", str(v.scheme)],
-        [t("Acceleration law"), "—",
+        [c.tc("note, input data", "Acceleration law"), "—",
          f"{v.law} ({law_words(v.law, c.lang)})"],
     ]
     if v.is_rocker:
@@ -75,7 +71,7 @@ def _input(c: Ctx, r) -> None:
     rows += [
         [t("Allowed pressure angle"), "$ν_max$, °", n(v.nu_max_deg)],
         [t("Cam speed (sign: sense of rotation)"),
-         f"$n_k$, {t('rpm')}", n(v.n_cam_rpm)],
+         "$n_k$, " + t("rpm"), n(v.n_cam_rpm)],
         [t("Rise angle"), '$φ_"у"$, °', n(v.phi_rise_deg)],
         [t("Far-dwell angle"), '$φ_"дс"$, °', n(v.phi_far_dwell_deg)],
         [t("Return angle"), '$φ_"в"$, °', n(v.phi_return_deg)],
@@ -111,7 +107,7 @@ def _motion(c: Ctx, r) -> None:
                t("velocity and acceleration change without jumps, so there are no impacts"))
     c.p(t("The follower moves by the {law} law (Figure 1.9 {{cite:book}}), the same on the rise and on the return; {impacts}. With the share $t$ of the phase angle turned, the displacement as a share of the stroke is").format(law=law_words(v.law, c.lang), impacts=impacts))
     for j, line in enumerate(_LAW_F[v.law]):
-        c.formula(line.replace('"  при "', '"  ' + t("for") + ' "'),
+        c.formula(line.replace('"  for "', '"  ' + t("for") + ' "'),
                   where=["t", "f(t)"] if j == len(_LAW_F[v.law]) - 1 else ())
     h_sym = "γ_max" if rocker else "S_max"
     c.p(t("The follower's displacement on the rise is $s = {h_sym} f(φ/φ_\"у\")$, on the return $s = {h_sym} (1 - f((φ - φ_\"у\" - φ_\"дс\")/φ_\"в\"))$. The cam turns at a constant speed, so $V = ω_k d s/d φ$ and $a = ω_k^2 d^2 s/d φ^2$; the largest values on the rise are").format(h_sym=h_sym))
@@ -161,14 +157,13 @@ def _motion_table(c: Ctx, r) -> None:
     v, m = r.variant, r.motion
     t, n = c.t, c.n
     rocker = v.is_rocker
-    mm = t("mm")
+    mm, ms, rad_s, rad_s2, m_s, m_s2 = t("mm"), t("ms"), t("rad/s"), t("rad/s²"), t("m/s"), t("m/s²")
     if rocker:
-        header = ["№", "$φ$, °", f"$t$, {t('ms')}", "$γ$, °", f"$ω$, {t('rad/s')}",
-                  f"$ε$, {t('rad/s²')}", f"$S_B$, {mm}", f"$V_B$, {t('m/s')}",
-                  f"$a_B$, {t('m/s²')}", f"$B D$, {mm}"]
+        header = ["№", "$φ$, °", f"$t$, {ms}", "$γ$, °", f"$ω$, {rad_s}", f"$ε$, {rad_s2}", f"$S_B$, {mm}",
+                  f"$V_B$, {m_s}", f"$a_B$, {m_s2}", f"$B D$, {mm}"]
     else:
-        header = ["№", "$φ$, °", f"$t$, {t('ms')}", f"$S$, {mm}", f"$V$, {t('m/s')}",
-                  f"$a$, {t('m/s²')}", f"$B D$, {mm}", t("Phase")]
+        header = ["№", "$φ$, °", f"$t$, {ms}", f"$S$, {mm}", f"$V$, {m_s}", f"$a$, {m_s2}", f"$B D$, {mm}",
+                  t("Phase")]
     rows = []
     for row in m.table:
         bd = abs(row.v_b_m_s if rocker else row.v) / m.omega * 1000
@@ -179,7 +174,7 @@ def _motion_table(c: Ctx, r) -> None:
                          n(bd, decimals=2)])
         else:
             rows.append([str(row.index), n(row.phi_deg), n(row.t_s * 1000, decimals=2), n(row.s * 1000, decimals=3),
-                         n(row.v, decimals=3), n(row.a, decimals=1), n(bd, decimals=2), t(*_PHASE[row.phase])])
+                         n(row.v, decimals=3), n(row.a, decimals=1), n(bd, decimals=2), t(_PHASE[row.phase])])
     align = ["center"] + ["right"] * (len(header) - 1 - (0 if rocker else 1)) + ([] if rocker else ["left"])
     widths = [0.55, 0.7, 0.9, 0.9, 1.0, 1.0, 1.0, 1.0, 1.0, 0.9] if rocker else [0.5, 0.65, 0.85, 1.0, 0.9, 1.0, 0.9, 1.55]
     c.table("cam_motion", t("Displacement, velocity and acceleration of the follower in the positions of the cam"), header, rows, align=align,
@@ -262,20 +257,21 @@ def _sizing(c: Ctx, r) -> None:
             given.append("$l_(O C)$")
         own_geo = (t(", $l_(O C) = {v}$ mm").format(v=c.q(own.l_oc_m * 1000, decimals=2))
                    if rocker else t(", $e = {v}$ mm").format(v=c.q(own.e_m * 1000, decimals=2)))
-        c.p(c.t2(f"The designer sets {' and '.join(given)}; the other dimensions follow from them. The point of the zone "
-              f"nearest to $B_0$ would give $r_0 = {c.q(own.r0_m * 1000, decimals=2)}$ mm{own_geo}.",
-              f"Конструктором заданы {' и '.join(given)}; остальные размеры получены из них. Ближайшая к $B_0$ "
-              f"точка зоны дала бы $r_0 = {c.q(own.r0_m * 1000, decimals=2)}$ мм{own_geo}."))
+        given_text = reduce(lambda a, b: t("{a} and {b}").format(a=a, b=b), given)
+        c.p(t("The designer sets {given}; the other dimensions follow from them. The point of the zone nearest to $B_0$ "
+              "would give $r_0 = {r0}$ mm{own_geo}.").format(given=given_text, r0=c.q(own.r0_m * 1000, decimals=2),
+                                                           own_geo=own_geo))
         c.doc.claim(kind="cam_student", r0_mm=r0, own_r0_mm=own.r0_m * 1000)
     elif r.pivot_move == "centre":
         r0_min = (z.r0_min_m or z.r0_m) * 1000
         c.p(t("The point of the zone nearest to $B_0$ gives $r_0 = {r0_min}$ mm, but there the cam body reaches the rocker's pivot C; the centre is moved along the zone to the nearest point at which the cam clears the pivot, $r_0 = {r0}$ mm.").format(r0_min=c.q(r0_min, decimals=2), r0=c.q(r0, decimals=2)))
         c.doc.claim(kind="cam_centre_moved", r0_mm=r0, r0_min_mm=r0_min)
     else:
-        c.p(c.t2(f"The cam centre is taken at the point of the zone nearest to $B_0$, which gives the smallest cam"
-              + (" for this swing" if rocker else "") + f": $r_0 = {c.q(r0, decimals=2)}$ mm.",
-              f"Центр кулачка принимаем в ближайшей к $B_0$ точке зоны, что даёт наименьший кулачок"
-              + (" при этом направлении качания" if rocker else "") + f": $r_0 = {c.q(r0, decimals=2)}$ мм."))
+        nearest = (t("The cam centre is taken at the point of the zone nearest to $B_0$, which gives the smallest cam "
+                     "for this swing: $r_0 = {r0}$ mm.") if rocker else
+                   t("The cam centre is taken at the point of the zone nearest to $B_0$, which gives the smallest cam: "
+                     "$r_0 = {r0}$ mm."))
+        c.p(nearest.format(r0=c.q(r0, decimals=2)))
         c.doc.claim(kind="cam_centre_nearest", r0_mm=r0)
     # the book's vertex beside the taken centre
     if not student:
@@ -287,10 +283,10 @@ def _sizing(c: Ctx, r) -> None:
             cmp = t("The construction of the textbook (the vertex where its two bounding lines meet) gives $r_0 = {book_r0}$ mm: the two differ by less than 0,1 %, within the step of the construction.").format(book_r0=c.q(book_r0, decimals=2))
         else:
             more = diff > 0
-            cmp = c.t2(f"The construction of the textbook (the vertex where its two bounding lines meet) gives "
-                    f"$r_0 = {c.q(book_r0, decimals=2)}$ mm, {c.pct(abs(diff))} {'larger' if more else 'smaller'}",
-                    f"Построение пособия (точка пересечения двух ограничивающих прямых) даёт $r_0 = "
-                    f"{c.q(book_r0, decimals=2)}$ мм — на {c.pct(abs(diff))} {'больше' if more else 'меньше'}")
+            cmp = (t("The construction of the textbook (the vertex where its two bounding lines meet) gives "
+                     "$r_0 = {book_r0}$ mm, {diff} larger") if more else
+                   t("The construction of the textbook (the vertex where its two bounding lines meet) gives "
+                     "$r_0 = {book_r0}$ mm, {diff} smaller")).format(book_r0=c.q(book_r0, decimals=2), diff=c.pct(abs(diff)))
             book_nu = z.book_nu_rise_max_deg if z.closure == "force" else max(z.book_nu_rise_max_deg, z.book_nu_return_max_deg)
             if book_nu > v.nu_max_deg + 0.05:
                 cmp += t(", and there the pressure angle reaches {book_nu}° > $ν_max$: the bounding lines of the textbook turn with the follower and do not bound the zone exactly.").format(book_nu=n(book_nu, decimals=2))
@@ -336,16 +332,13 @@ def _swing(c: Ctx, r) -> None:
         return
     pc = r.pivot_conflict
     if pc is not None and r.pivot_move == "swing":
-        c.p(c.t2(f"The rocker may turn on the rise either way. Turning {sense[pc.swing]} it needs the smaller cam, "
-              f"$r_0 = {c.q(pc.r0_m * 1000, decimals=2)}$ mm, but then the cam body (radius "
-              f"{c.qty(pc.body_m * 1000, 'mm', decimals=2)}) reaches the rocker's pivot C "
-              f"($l_(O C) = {c.q(pc.l_oc_m * 1000, decimals=2)}$ mm). Therefore the rocker is made to turn "
-              f"{sense[z.swing]}: $r_0 = {c.q(r0, decimals=2)}$ mm, and the cam clears the pivot.",
-              f"Коромысло может поворачиваться при удалении в любую сторону. При повороте {sense[pc.swing]} "
-              f"кулачок получается меньше, $r_0 = {c.q(pc.r0_m * 1000, decimals=2)}$ мм, но тогда тело кулачка "
-              f"(радиус {c.qty(pc.body_m * 1000, 'мм', decimals=2)}) задевает ось коромысла C "
-              f"($l_(O C) = {c.q(pc.l_oc_m * 1000, decimals=2)}$ мм). Поэтому принимаем поворот коромысла "
-              f"{sense[z.swing]}: $r_0 = {c.q(r0, decimals=2)}$ мм, и кулачок не задевает ось."))
+        c.p(t("The rocker may turn on the rise either way. Turning {other_sense} it needs the smaller cam, "
+              "$r_0 = {other_r0}$ mm, but then the cam body (radius {body}) reaches the rocker's pivot C "
+              "($l_(O C) = {other_l_oc}$ mm). Therefore the rocker is made to turn {sense}: $r_0 = {r0}$ mm, and the "
+              "cam clears the pivot.").format(
+            other_sense=sense[pc.swing], other_r0=c.q(pc.r0_m * 1000, decimals=2),
+            body=c.qty(pc.body_m * 1000, t("mm"), decimals=2), other_l_oc=c.q(pc.l_oc_m * 1000, decimals=2),
+            sense=sense[z.swing], r0=c.q(r0, decimals=2)))
         c.doc.claim(kind="cam_swing_pivot", carried_r0_mm=r0, rejected_r0_mm=pc.r0_m * 1000,
                     rejected_l_oc_mm=pc.l_oc_m * 1000, rejected_body_mm=pc.body_m * 1000)
         return
@@ -365,21 +358,15 @@ def _profile(c: Ctx, r) -> None:
     v, z, p, d = r.variant, r.sizing, r.profile, r.drawing
     t, n = c.t, c.n
     mm = t("mm")
-    c.doc.add(_heading(c, 2, t("Profile of the cam")))
+    c.doc.add(_heading(c, 2, c.tc("note, heading", "Profile of the cam")))
     c.p(t("The profile is built by inversion (§1.4 {cite:book}): the cam is held still and the frame with the follower is turned about the cam centre against the cam's rotation; the roller centre then traces the pitch (theoretical) profile, and the working profile is the envelope of the roller's circles."))
     w, h = d.extent_mm
-    c.p(c.t2(f"The profile is drawn at the scale {d.scale} ($k_(S k) = {c.q(d.k_sk, sig=4)}$ m/mm, Table 1.1 "
-          f"{{cite:book}}): the largest scale of the standard series at which the cam with its roller "
-          f"({c.qty(w, 'mm', decimals=1)} × {c.qty(h, 'mm', decimals=1)}) fits the field of "
-          f"{c.qty(d.field_mm, 'mm', decimals=0)} × {c.qty(d.field_mm, 'mm', decimals=0)} of the sheet. The scale of the "
-          "sizing construction is taken equal to that of the displacement diagram, $k'_S = k_S$; the lengths are "
-          "converted {cite:book:formulas (1.26), (1.27)}:",
-          f"Профиль вычерчивается в масштабе {d.scale} ($k_(S k) = {c.q(d.k_sk, sig=4)}$ м/мм, таблица 1.1 "
-          f"{{cite:book}}) — наибольшем стандартном масштабе, при котором кулачок с роликом "
-          f"({c.qty(w, 'мм', decimals=1)} × {c.qty(h, 'мм', decimals=1)}) помещается в поле листа "
-          f"{c.qty(d.field_mm, 'мм', decimals=0)} × {c.qty(d.field_mm, 'мм', decimals=0)}. Масштаб построения "
-          "основных размеров принят равным масштабу диаграммы перемещений, $k'_S = k_S$; отрезки пересчитываются "
-          "по формулам {cite:book:формулы (1.26), (1.27)}:"))
+    c.p(t("The profile is drawn at the scale {scale} ($k_(S k) = {k_sk}$ m/mm, Table 1.1 {{cite:book}}): the largest "
+          "scale of the standard series at which the cam with its roller ({width} × {height}) fits the field of "
+          "{field} × {field} of the sheet. The scale of the sizing construction is taken equal to that of the "
+          "displacement diagram, $k'_S = k_S$; the lengths are converted {{cite:book:formulas (1.26), (1.27)}}:").format(
+        scale=d.scale, k_sk=c.q(d.k_sk, sig=4), width=c.qty(w, mm, decimals=1), height=c.qty(h, mm, decimals=1),
+        field=c.qty(d.field_mm, mm, decimals=0)))
     c.doc.claim(kind="cam_drawing_scale", scale=d.scale, fits=d.fits, width_mm=w, height_mm=h, field_mm=d.field_mm)
     st = d.size("stroke")
     r0s = d.size("r0")
@@ -423,13 +410,13 @@ def _roller(c: Ctx, r) -> None:
     if rule == "book":
         c.p(t("The roller must be smaller than the smallest radius of curvature {where_rho}, $ρ_min = {rho}$ mm, or the working profile is undercut; $r_\"р\" = {roller} < ρ_min$, so the roller of the textbook is taken and the profile is not undercut.").format(where_rho=where_rho, rho=c.q(rho, decimals=2), roller=c.q(roller, decimals=2)))
     elif rule == "limited":
-        c.p(c.t2(f"The roller must be smaller than the smallest radius of curvature {where_rho}, "
-              f"$ρ_min = {c.q(rho, decimals=2)}$ mm, or the working profile is undercut. The textbook's roller "
-              f"{'reaches' if book >= rho else 'comes within 20 % of'} it, so the roller is reduced to 0,8 $ρ_min$:",
-              f"Радиус ролика должен быть меньше наименьшего радиуса кривизны {where_rho} "
-              f"$ρ_min = {c.q(rho, decimals=2)}$ мм, иначе действительный профиль получится подрезанным. Ролик по "
-              f"рекомендации пособия {'не меньше' if book >= rho else 'ближе чем на 20 % к'} этого значения, "
-              "поэтому радиус ролика уменьшаем до 0,8 $ρ_min$:"))
+        limited = (t("The roller must be smaller than the smallest radius of curvature {where_rho}, $ρ_min = {rho}$ mm, or "
+                     "the working profile is undercut. The textbook's roller reaches it, so the roller is reduced to "
+                     "0,8 $ρ_min$:") if book >= rho else
+                   t("The roller must be smaller than the smallest radius of curvature {where_rho}, $ρ_min = {rho}$ mm, or "
+                     "the working profile is undercut. The textbook's roller comes within 20 % of it, so the roller is "
+                     "reduced to 0,8 $ρ_min$:"))
+        c.p(limited.format(where_rho=where_rho, rho=c.q(rho, decimals=2)))
         c.formula(c.calc('r_"р" = "0,8" ρ_min', "{0} dot {1}", [V(0.8, exact=True), V(rho, decimals=2)],
                          V(roller, decimals=2), mm), where=["ρ_min"])
         fix = r.book_roller_fix
@@ -439,13 +426,11 @@ def _roller(c: Ctx, r) -> None:
             c.p(t("The textbook's roller could be kept with a larger cam, $r_0 = {v}$ mm, ${geo}$ mm; the smaller roller keeps the smallest cam.").format(v=c.q(fix.r0_m * 1000, decimals=2), geo=geo))
     else:
         ok = roller < rho
-        c.p(c.t2(f"The designer takes the roller $r_\"р\" = {c.q(roller, decimals=2)}$ mm. The smallest radius of "
-              f"curvature {where_rho} is $ρ_min = {c.q(rho, decimals=2)}$ mm: "
-              + ("the roller is smaller, the profile is not undercut." if ok else
-                 "the roller is not smaller, the working profile is undercut."),
-              f"Конструктор принимает ролик $r_\"р\" = {c.q(roller, decimals=2)}$ мм. Наименьший радиус кривизны "
-              f"{where_rho} $ρ_min = {c.q(rho, decimals=2)}$ мм: "
-              + ("ролик меньше, подреза нет." if ok else "ролик не меньше, действительный профиль подрезан.")))
+        given = (t("The designer takes the roller $r_\"р\" = {roller}$ mm. The smallest radius of curvature {where_rho} is "
+                   "$ρ_min = {rho}$ mm: the roller is smaller, the profile is not undercut.") if ok else
+                 t("The designer takes the roller $r_\"р\" = {roller}$ mm. The smallest radius of curvature {where_rho} is "
+                   "$ρ_min = {rho}$ mm: the roller is not smaller, the working profile is undercut."))
+        c.p(given.format(roller=c.q(roller, decimals=2), where_rho=where_rho, rho=c.q(rho, decimals=2)))
     c.doc.claim(kind="cam_roller", rule=rule, roller_mm=roller, book_mm=book, rho_mm=rho)
     c.p(t("Here $r_0$ is the base radius of the pitch profile; the smallest radius of the working profile is $r_0 - r_\"р\" = {v}$ mm; the far-dwell radius of the pitch profile is {v2}.").format(v=c.q(p.working_min_radius_m * 1000, decimals=2), v2=c.qty(p.r_far_m * 1000, mm, decimals=2)))
 

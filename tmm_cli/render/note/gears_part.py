@@ -63,7 +63,8 @@ def _motor(c: Ctx) -> None:
     low = [x for x in g.motor_candidates if x < 3 * g.crank_rpm]
     rejected = ""
     if low:
-        rejected = t(" ({str} rpm {v} below this)").format(str=', '.join(map(str, low)), v='is' if len(low) == 1 else 'are')
+        rejected = c.nt(" ({speeds} rpm is below this)", " ({speeds} rpm are below this)", len(low)).format(
+            speeds=", ".join(map(str, low)))
     c.p(t("The motor speed is the smallest of the standard speeds ({cands} rpm) that is at least three times the crank speed (§2.2 {{cite:book}}), so that the planetary reducer has a ratio of at least 3{rejected}:").format(cands=cands, rejected=rejected))
     c.formula(c.calc('n_"д" >= 3 n_"кр"', "3 dot {0}", [V(g.crank_rpm, exact=True)], V(3 * g.crank_rpm, exact=True), rpm)
               + f'; quad n_"д" = {g.motor_rpm} {c.u(rpm)}', where=['n_"д"', 'n_"кр"'])
@@ -261,23 +262,17 @@ def _search(c: Ctx) -> None:
     two = g.scheme == "1+1"
     what = (t("pairs of single-row stages") if two else
             t("tooth sets of the scheme"))
-    c.p(c.t2(f"The procedure of the textbook follows one simple fraction; another tooth set may give a smaller reducer or "
-          f"a more accurate ratio. Therefore all {what} with at most {s.z_max} teeth per wheel that satisfy "
-          f"coaxiality and Table 2.2 {{cite:book}} were compared: {s.n_sets} of them give the ratio within ±{tol} %. "
-          "The size of a reducer is taken as $max(Γ_1, Γ_2) = max(z_k + 2 z_c, z_n)$ teeth (§2.5 {cite:book}); "
-          f"the smallest sets are listed in Table {{tab:search}}.",
-          f"Методика пособия следует одной простой дроби; другой набор чисел зубьев может дать меньший редуктор или "
-          f"более точное передаточное отношение. Поэтому сопоставлены все {'пары однорядных ступеней' if two else 'наборы чисел зубьев схемы'} "
-          f"с числом зубьев каждого колеса не более {s.z_max}, удовлетворяющие условию соосности и таблице 2.2 "
-          f"{{cite:book}}: {s.n_sets} из них дают передаточное отношение с точностью ±{tol} %. Габарит редуктора "
-          "оценивается числом $max(Γ_1, Γ_2) = max(z_k + 2 z_c, z_n)$ (п. 2.5 {cite:book}); наименьшие наборы "
-          "приведены в таблице {tab:search}."))
+    c.p(t("The procedure of the textbook follows one simple fraction; another tooth set may give a smaller reducer or a "
+          "more accurate ratio. Therefore all {what} with at most {z_max} teeth per wheel that satisfy coaxiality and "
+          "Table 2.2 {{cite:book}} were compared: {n_sets} of them give the ratio within ±{tol} %. The size of a reducer "
+          "is taken as $max(Γ_1, Γ_2) = max(z_k + 2 z_c, z_n)$ teeth (§2.5 {{cite:book}}); the smallest sets are listed "
+          "in Table {{tab:search}}.").format(what=what, z_max=s.z_max, n_sets=s.n_sets, tol=tol))
     if two:
         header = [t("Stage 1: $z_k$/$z_c$/$z_n$"),
                   t("Stage 2: $z_k$/$z_c$/$z_n$")]
     else:
         header = ["$z_k$", "$z_c$", "$z'_c$", "$z_n$"] if g.scheme == "2" else ["$z_k$", "$z_c$", "$z_n$"]
-    header += ["$i$", t("Deviation, %"), t("Size"), "$k$", t("Note")]
+    header += ["$i$", t("Deviation, %"), c.tc("note, tooth sets", "Size"), "$k$", t("Note")]
     rows = []
     shown = list(s.alternatives)
     for extra in (s.more_accurate, s.exact):
@@ -291,7 +286,7 @@ def _search(c: Ctx) -> None:
         if s.smallest is not None and a == s.smallest and a != design:
             note.append(t("smallest"))
         if a == s.exact and a != design:
-            note.append(t("exact"))
+            note.append(c.tc("note, tooth sets", "exact"))
         rows.append(cells + [n(a.ratio, decimals=4), n(a.ratio_error_pct, decimals=2), str(a.size), str(a.planets),
                              ", ".join(note)])
     teeth_w = [1.9, 1.9] if two else [0.75] * (4 if g.scheme == "2" else 3)
@@ -336,38 +331,27 @@ def _selection(c: Ctx) -> None:
         if bs == design.size:
             cmp = t("The textbook's procedure gives {book}, a reducer of the same size.").format(book=book)
         elif design.size < bs:
-            cmp = c.t2(f"The textbook's procedure gives {book} (size {bs}): the set taken is {bs - design.size} teeth smaller.",
-                    f"Методика пособия даёт набор {book} (габарит {bs}): принятый набор меньше на {bs - design.size} "
-                    f"зуб{_teeth_word(bs - design.size)}.")
+            less = bs - design.size
+            cmp = c.nt("The textbook's procedure gives {book} (size {bs}): the set taken is {less} tooth smaller.",
+                       "The textbook's procedure gives {book} (size {bs}): the set taken is {less} teeth smaller.",
+                       less).format(book=book, bs=bs, less=less)
         else:
-            cmp = c.t2(f"The textbook's procedure gives {book} (size {bs}), {design.size - bs} teeth smaller than the set "
-                    "taken, which is preferred by the rule above.",
-                    f"Методика пособия даёт набор {book} (габарит {bs}) — на {design.size - bs} "
-                    f"зуб{_teeth_word(design.size - bs)} меньше принятого, который предпочтён по указанному правилу.")
+            less = design.size - bs
+            cmp = c.nt("The textbook's procedure gives {book} (size {bs}), {less} tooth smaller than the set taken, "
+                       "which is preferred by the rule above.",
+                       "The textbook's procedure gives {book} (size {bs}), {less} teeth smaller than the set taken, "
+                       "which is preferred by the rule above.", less).format(book=book, bs=bs, less=less)
         c.p(cmp)
         c.doc.claim(kind="book_vs_carried", book_size=bs, carried_size=design.size)
     if g.scheme == "1+1":
         r1, r2 = (st.ratio for st in design.stages)
         lo, hi = STAGE_RANGE_1
         inside = s.stage_range_ok
-        c.p(c.t2(f"The stage with the larger ratio is put on the motor side (its gears carry the smaller torque): "
-              f"$i_1 = {c.q(r1, decimals=3)}$, $i_2 = {c.q(r2, decimals=3)}$"
-              + (f", both within the range {c.n(lo)} … {c.n(hi)} of a single-row stage." if inside else
-                 f"; no pair keeps both within {c.n(lo)} … {c.n(hi)}."),
-              f"Ступень с большим передаточным отношением ставится со стороны двигателя (её колёса нагружены меньшим "
-              f"моментом): $i_1 = {c.q(r1, decimals=3)}$, $i_2 = {c.q(r2, decimals=3)}$"
-              + (f", обе в диапазоне {c.n(lo)} … {c.n(hi)} однорядной ступени." if inside else
-                 f"; ни одна пара не укладывается в диапазон {c.n(lo)} … {c.n(hi)}.")))
-
-
-def _teeth_word(k: int) -> str:
-    """зуб, зуба, зубов (after 'на K')."""
-    k = abs(k)
-    if k % 10 == 1 and k % 100 != 11:
-        return ""
-    if k % 10 in (2, 3, 4) and k % 100 not in (12, 13, 14):
-        return "а"
-    return "ов"
+        stages = (t("The stage with the larger ratio is put on the motor side (its gears carry the smaller torque): "
+                    "$i_1 = {i1}$, $i_2 = {i2}$, both within the range {lo} … {hi} of a single-row stage.") if inside else
+                  t("The stage with the larger ratio is put on the motor side (its gears carry the smaller torque): "
+                    "$i_1 = {i1}$, $i_2 = {i2}$; no pair keeps both within {lo} … {hi}."))
+        c.p(stages.format(i1=c.q(r1, decimals=3), i2=c.q(r2, decimals=3), lo=c.n(lo), hi=c.n(hi)))
 
 
 # --------------------------------------------------------------------------------------------------
@@ -410,9 +394,9 @@ def _conditions(c: Ctx) -> None:
             if sc.k_max != sc.k_max_book:
                 c.p(t("The form of the textbook (z_k·i/k whole) admits at most $k = {k_max_book}$; the exact condition above admits $k = {k_max}$.").format(k_max_book=sc.k_max_book, k_max=sc.k_max))
         zbig = max(st.z_planet, st.zc2)
-        c.p(c.t2(f"4. Neighbouring {{cite:book:formula (2.5)}} (the larger planet, {zbig} teeth):",
-              f"4. Условие соседства {{cite:book:формула (2.5)}} (по большему венцу сателлита, {zbig} зуб"
-              f"{_teeth_word(zbig)}):"), indent=False)
+        c.p(c.nt("4. Neighbouring {{cite:book:formula (2.5)}} (the larger planet, {z} tooth):",
+                 "4. Neighbouring {{cite:book:formula (2.5)}} (the larger planet, {z} teeth):", zbig).format(z=zbig),
+            indent=False)
         c.formula(c.calc(f"sin π/k", "sin π/{0}", [V(k, exact=True)], V(sc.neighbour_sin, decimals=4))
                   + " > " + c.calc("(z_c + 2 h^*_a)/(z_k + z_c)", "({0} + 2)/{1}",
                                    [V(zbig, exact=True), V(st.z_sun + st.z_planet, exact=True)],
@@ -427,10 +411,11 @@ def _conditions(c: Ctx) -> None:
             choice = t("the number of planets is set to {k}").format(k=k)
         else:
             choice = t("the largest of them, {k}, is taken").format(k=c.planets(k))
-        c.p(c.t2(f"All conditions {'hold' if ok else 'hold except those noted'}. The assembly condition admits $k = {ks}$, "
-              f"the neighbouring condition $k <= {sc.neighbour_limit}$; {choice}.",
-              f"Все условия {'выполняются' if ok else 'выполняются, кроме отмеченных'}. Условие сборки допускает "
-              f"$k = {ks}$, условие соседства — $k <= {sc.neighbour_limit}$; {choice}."))
+        held = (t("All conditions hold. The assembly condition admits $k = {ks}$, the neighbouring condition "
+                  "$k <= {limit}$; {choice}.") if ok else
+                t("All conditions hold except those noted. The assembly condition admits $k = {ks}$, the neighbouring "
+                  "condition $k <= {limit}$; {choice}."))
+        c.p(held.format(ks=ks, limit=sc.neighbour_limit, choice=choice))
         c.doc.claim(kind="planets", chosen=k, allowed=tuple(sc.assembly_ks_exact), limit=sc.neighbour_limit,
                     forced=g.forced_planets, ok=ok)
 
@@ -507,10 +492,9 @@ def _spur(c: Ctx) -> None:
                   where=["z_1", "z_2"])
     dev = (sp.i_actual / sp.i_d - 1) * 100
     cam_rpm = g.cam_rpm_actual
-    c.p(c.t2(f"The cam turns at {c.qty(cam_rpm, 'rpm', decimals=1)} instead of {c.qty(abs(g.cam_rpm), 'rpm')} "
-          f"(ratio deviation {c.pct(dev, sign=True)}).",
-          f"Кулачок вращается с частотой {c.qty(cam_rpm, 'об/мин', decimals=1)} вместо {c.qty(abs(g.cam_rpm), 'об/мин')} "
-          f"(отклонение передаточного отношения {c.pct(dev, sign=True)})."))
+    rpm = t("rpm")
+    c.p(t("The cam turns at {speed} instead of {required} (ratio deviation {dev}).").format(
+        speed=c.qty(cam_rpm, rpm, decimals=1), required=c.qty(abs(g.cam_rpm), rpm), dev=c.pct(dev, sign=True)))
     c.doc.claim(kind="spur_teeth", z1=sp.z1, z2=sp.z2, i_d=sp.i_d, multiplier=sp.multiplier)
     ca = math.cos(math.radians(sp.alpha_deg))
     m_ = V(sp.m_mm, exact=True)
@@ -546,9 +530,8 @@ def _spur(c: Ctx) -> None:
               c.calc("2 h = d_(a 1) - d_(f 1)", "{0} - {1}", [V(sp.da1_mm, decimals=2), V(sp.df1_mm, decimals=2)],
                      V(sp.check_2h_1_mm, decimals=2), mm))
     ok = sp.check_ok
-    c.p(c.t2(f"The centre distance equals $a$ and the tooth height $h$: {'the check holds' if ok else 'the check fails'}.",
-          f"Межосевое расстояние совпадает с $a$, высота зуба — с $h$: "
-          f"{'проверка выполняется' if ok else 'проверка не выполняется'}."))
+    c.p(t("The centre distance equals $a$ and the tooth height $h$: the check holds.") if ok else
+        t("The centre distance equals $a$ and the tooth height $h$: the check fails."))
     if min(sp.z1, sp.z2) < sp.z_min_undercut:
         c.p(t("With $α = 20°$ and $h^*_a = 1$ the undercut limit of a zero gear is $z_min = 2 h^*_a/sin^2 α = {z_min_undercut}$: the 17-tooth gear has an insignificant undercut of the root, which the textbook's rule $z >= 17$ accepts.").format(z_min_undercut=q(sp.z_min_undercut, decimals=2)))
     _contact_ratio(c)
@@ -575,21 +558,15 @@ def _contact_ratio(c: Ctx) -> None:
     eps = sp.eps_alpha
     two = (eps - 1) * 100
     ok = eps >= 1.2
-    c.p(c.t2(f"On the line of action the zones of two-pair mesh $P_1 U_2 = U_1 P_2 = {q(sp.double_zone_mm, decimals=2)}$ mm "
-          f"enclose the zone of single-pair mesh $U_2 U_1 = {q(sp.single_zone_mm, decimals=2)}$ mm. With "
-          f"$ε_α = {q(eps, decimals=3)}$ two pairs of teeth are in mesh during $ε_α - 1$ = {c.pct(two, decimals=1)} "
-          f"of the running time and one pair during the remaining {c.pct(100 - two, decimals=1)}. "
-          + (f"Since $ε_α >= \"1.2\"$, the recommended least value for spur gears, the pair runs smoothly."
-             if ok else "Since $ε_α < \"1.2\"$, the recommended least value for spur gears, the smoothness of the pair "
-             "is insufficient."),
-          f"На линии зацепления зоны двухпарного зацепления $P_1 U_2 = U_1 P_2 = {q(sp.double_zone_mm, decimals=2)}$ мм "
-          f"ограничивают зону однопарного зацепления $U_2 U_1 = {q(sp.single_zone_mm, decimals=2)}$ мм. При "
-          f"$ε_α = {q(eps, decimals=3)}$ две пары зубьев находятся в зацеплении в течение $ε_α - 1$ = "
-          f"{c.pct(two, decimals=1)} времени работы передачи, одна пара — в течение остальных "
-          f"{c.pct(100 - two, decimals=1)}. "
-          + ("Так как $ε_α >= \"1,2\"$ (рекомендуемое наименьшее значение для прямозубых передач), передача "
-             "работает плавно." if ok else "Так как $ε_α < \"1,2\"$ (рекомендуемое наименьшее значение для "
-             "прямозубых передач), плавность работы передачи недостаточна.")))
+    zones = t("On the line of action the zones of two-pair mesh $P_1 U_2 = U_1 P_2 = {double}$ mm enclose the zone of "
+              "single-pair mesh $U_2 U_1 = {single}$ mm. With $ε_α = {eps}$ two pairs of teeth are in mesh during "
+              "$ε_α - 1$ = {two} of the running time and one pair during the remaining {one}.").format(
+        double=q(sp.double_zone_mm, decimals=2), single=q(sp.single_zone_mm, decimals=2), eps=q(eps, decimals=3),
+        two=c.pct(two, decimals=1), one=c.pct(100 - two, decimals=1))
+    smooth = (t("Since $ε_α >= \"1.2\"$, the recommended least value for spur gears, the pair runs smoothly.") if ok else
+              t("Since $ε_α < \"1.2\"$, the recommended least value for spur gears, the smoothness of the pair is "
+                "insufficient."))
+    c.p(zones + " " + smooth)
     c.doc.claim(kind="contact_ratio", eps=eps, two_pair_pct=two, ok=ok, double=sp.double_zone_mm,
                 single=sp.single_zone_mm, pb=sp.pb_mm)
     if c.has("gears_mesh"):
@@ -621,12 +598,10 @@ def _spur_shifted(c: Ctx) -> None:
             align=["left", "center", "center"], widths=[3, 1, 1])
     c.doc.claim(kind="spur_teeth", z1=sp.z1, z2=sp.z2, i_d=sp.i_d, multiplier=sp.multiplier)
     smooth = sp.eps_alpha >= 1.2
-    c.p(c.t2(f"The transverse contact ratio $ε_α = {c.q(sp.eps_alpha, decimals=3)}$ is "
-          + ("not below 1.2, the recommended least value: the pair runs smoothly." if smooth else
-             "below 1.2, the recommended least value: the smoothness is insufficient."),
-          f"Коэффициент торцевого перекрытия $ε_α = {c.q(sp.eps_alpha, decimals=3)}$ "
-          + ("не меньше рекомендуемого значения 1,2: передача работает плавно." if smooth else
-             "меньше рекомендуемого значения 1,2: плавность работы недостаточна.")))
+    c.p((t("The transverse contact ratio $ε_α = {eps}$ is not below 1.2, the recommended least value: the pair runs "
+           "smoothly.") if smooth else
+         t("The transverse contact ratio $ε_α = {eps}$ is below 1.2, the recommended least value: the smoothness is "
+           "insufficient.")).format(eps=c.q(sp.eps_alpha, decimals=3)))
     if c.has("gears_mesh"):
         c.p(t("The mesh is shown in Figure {fig:gears_mesh}."))
         c.fig("gears_mesh", t("Involute mesh of the spur pair"))
