@@ -4,7 +4,7 @@
     python tools/catalog.py --check    # exit 1 if tmm.po or tmm.mo is not current or incomplete
 
 The msgids come from the code (Babel's Python extractor: ``tr(lang, MSGID)``, ``trc(lang, CTX,
-MSGID)``, ``ntr(lang, SINGULAR, PLURAL, n)``, ``N_(MSGID)``) and from the command line itself (every command's help and every option's help, read from the
+MSGID)``, ``ntr(lang, SINGULAR, PLURAL, n)``, ``N_(MSGID)``; the note's ``t``, ``tc``, ``nt``) and from the command line itself (every command's help and every option's help, read from the
 click tree). A translator edits only ``tmm.po``; new msgids arrive in it untranslated and the check
 (run by the tests) names them.
 """
@@ -18,7 +18,8 @@ from pathlib import Path
 from tmm_cli.i18n import DOMAIN, LOCALE_DIR
 
 PACKAGE = Path(__file__).resolve().parents[1] / "tmm_cli"
-KEYWORDS = {"tr": (2,), "trc": ((2, "c"), 3), "ntr": (2, 3), "N_": None}
+# t, tc, nt: the note's Ctx.t(msgid), Ctx.tc(context, msgid), Ctx.nt(singular, plural, n) (its language is the Ctx's)
+KEYWORDS = {"tr": (2,), "trc": ((2, "c"), 3), "ntr": (2, 3), "N_": None, "t": (1,), "tc": ((1, "c"), 2), "nt": (1, 2)}
 # Kept by hand, not extracted: "error" — our error messages as templates ("{p} does not exist; …"): they
 # are f-strings at the raise sites, matched against these at the edge (i18n/errors.py; the tests check
 # that every raise site has one); "click" — click's own messages (its msgids); "system" — the

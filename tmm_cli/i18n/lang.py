@@ -25,11 +25,6 @@ def default_lang() -> str:
     return "ru" if loc.lower().startswith("ru") else "en"
 
 
-def pick(lang: str, en: str, ru: str) -> str:
-    """The label in the chosen language: ``pick(lang, "Base radius", "Минимальный радиус")``."""
-    return ru if lang == "ru" else en
-
-
 _CATALOGUE: dict[str, str] = {}
 
 

@@ -136,7 +136,7 @@ def _table(rows) -> str:
 
 def page_source(a, lang: str, *, teacher: str = "", org: str = "", issued=None, due=None) -> str:
     """One student's page: a call of the style's `assignment`."""
-    from ..note import TEXTBOOK
+    from ..note import textbook
 
     org_lines = [s.strip() for s in (org or "").split(",") if s.strip()]
     org_arg = "(" + "".join(typst_string(s) + ", " for s in org_lines) + ")"
@@ -154,7 +154,7 @@ def page_source(a, lang: str, *, teacher: str = "", org: str = "", issued=None, 
         "\n".join(f"- {_t(s)}" for s in sheets_list(lang)),
         "*" + tr(lang, '5. Explanatory note') + "* " + _t(tr(lang, '(A4, with every quantity as formula, substitution and result):')),
         "\n".join(f"#pad(left: 1em)[{_t(s)}]" for s in note_chapters(lang)),
-        "*" + tr(lang, '6. Literature:') + "* " + _t("1. " + (TEXTBOOK["ru"] if lang == "ru" else TEXTBOOK["en"])),
+        "*" + tr(lang, '6. Literature:') + "* " + _t("1. " + textbook(lang)),
         "#v(0.5em)",
         tr(lang, 'Issued: ') + _date(issued, lang) + " #h(2em) "
         + tr(lang, 'Due: ') + _date(due, lang),

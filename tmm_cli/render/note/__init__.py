@@ -15,10 +15,13 @@ from pathlib import Path
 
 from ...errors import TmmError
 from ...limits import NOTE_TEMPLATE_BYTES
-from .sources import SOURCES
+from .sources import source_text
 from .typeset import FONT_FAMILIES, FONTS_DIR  # noqa: F401  (the note's fonts, shipped with tmm)
 
-TEXTBOOK = SOURCES["book"]  # the textbook's entry by language (the assignment sheets cite it too)
+
+def textbook(lang: str) -> str:
+    """The textbook's entry in the list of sources of `lang` (the assignment sheets cite it too)."""
+    return source_text(lang)["book"]
 
 STYLE_FILE = "note-style.typ"
 NOTE_FILES = ("note.typ", STYLE_FILE, "note.pdf")
@@ -237,13 +240,12 @@ def rewrite_docx(path: Path, lang: str, title=None) -> Path:
 
 def markdown_note(result, lang: str, figure_files: list[str]) -> str:
     """The note as Markdown (report.md), with the screen PNGs (figure_files) as its pictures."""
-    from ...i18n.lang import pick
+    from ...i18n import tr
     from .markdown import markdown
 
     by_name = {Path(f).stem: f for f in figure_files}
     figures = {name: (by_name[name], None, 16.5, 10.0) for name in NOTE_FIGURES if name in by_name}
     doc = build_note(result, lang, figures)
     v = result.variant
-    title = pick(lang, f"TMM course project, variant {v.number}: explanatory note",
-                 f"Курсовой проект по ТММ, вариант {v.number}: пояснительная записка")
+    title = tr(lang, "TMM course project, variant {number}: explanatory note").format(number=v.number)
     return markdown(doc, title)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from ...i18n import ntr, tr, trc
 from ...i18n.numbers import num
 from .mathsyntax import check_line, parse, top_level_splits, width
 from .model import Document, Figure, Formula, Paragraph, Table, WhereItem
@@ -39,7 +40,7 @@ class Ctx:
     figures: dict = field(default_factory=dict)  # name -> (svg file, png file or None, width cm, height cm)
     doc: Document = None  # type: ignore[assignment]
     explained: set = field(default_factory=set)  # symbols already explained in a «где»
-    glossary: dict = field(default_factory=dict)  # symbol -> (meaning en, meaning ru)
+    glossary: dict = field(default_factory=dict)  # symbol -> its meaning (an English msgid)
     off: list = field(default_factory=list)  # substitutions that could not be made to reproduce
 
     def __post_init__(self):
@@ -47,12 +48,18 @@ class Ctx:
             self.doc = Document(self.lang)
 
     # -- words -------------------------------------------------------------------------------------
-    def t(self, en: str, ru: str) -> str:
-        return ru if self.lang == "ru" else en
+    def t(self, msgid: str) -> str:
+        """`msgid` (English) in the note's language, from the catalogue."""
+        return tr(self.lang, msgid)
 
-    @property
-    def ru(self) -> bool:
-        return self.lang == "ru"
+    def tc(self, context: str, msgid: str) -> str:
+        """`msgid` in the note's language where the note words it otherwise than the rest of tmm
+        (msgctxt `context`: "Student" on the title page is «Автор работы», not «Студент»)."""
+        return trc(self.lang, context, msgid)
+
+    def nt(self, singular: str, plural: str, n: int) -> str:
+        """The form of `singular`/`plural` for the count `n` (the catalogue's plural forms)."""
+        return ntr(self.lang, singular, plural, n)
 
     # -- numbers -----------------------------------------------------------------------------------
     def n(self, x, **kw) -> str:
@@ -131,8 +138,7 @@ class Ctx:
         return self.doc.add(Formula(math, label=label, numbered=numbered, where=items))
 
     def glossary_text(self, sym: str) -> str:
-        en, ru = self.glossary[sym]
-        return ru if self.ru else en
+        return self.t(self.glossary[sym])
 
     def p(self, text: str, indent: bool = True) -> Paragraph:
         return self.doc.add(Paragraph(text, indent))
@@ -159,10 +165,7 @@ class Ctx:
 
     def planets(self, k: int) -> str:
         """"4 сателлита" / "4 planets"."""
-        from ...i18n.numbers import plural
-
-        return plural(k, self.lang, {"one": "planet", "other": "planets"} if not self.ru
-                      else {"one": "сателлит", "few": "сателлита", "many": "сателлитов"})
+        return self.nt("{k} planet", "{k} planets", k).format(k=k)
 
 
 LINE_EM = 33.0  # the width of a display formula line (16,5 cm less the number) in :func:`width`'s em

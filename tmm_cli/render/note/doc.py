@@ -15,6 +15,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from ...i18n import tr
+
 _REF = re.compile(r"\{(fig|tab):([a-z0-9_]+)\}")
 _TYPST_SPECIAL = re.compile(r"([\\#*_`$@<>\[\]~])")
 
@@ -202,11 +204,6 @@ class Doc:
 
     # -- writers ---------------------------------------------------------------------------------
 
-    def _ref_word(self, kind: str) -> str:
-        if self.lang == "ru":
-            return "рисунок" if kind == "fig" else "таблица"
-        return "Figure" if kind == "fig" else "Table"
-
     def _drop_missing(self, text: str) -> str:
         """Remove references to figures that were not drawn (`--no-plots`), with their words."""
         def gone(m):
@@ -315,12 +312,12 @@ class Doc:
             elif kind == "fig":
                 _, name, file, caption, _width = b
                 n = self.numbers["fig:" + name]
-                word = "Рисунок" if self.lang == "ru" else "Figure"
+                word = tr(self.lang, "Figure")
                 out += [f"![{self._inline_md(caption)}]({file})", "", f"*{word} {n} – {self._inline_md(caption)}*", ""]
             elif kind == "tab":
                 _, name, caption, header, rows, _align, _w = b
                 n = self.numbers["tab:" + name]
-                word = "Таблица" if self.lang == "ru" else "Table"
+                word = tr(self.lang, "Table")
                 out += [f"*{word} {n} – {self._inline_md(caption)}*", ""]
                 cell = lambda c: self._inline_md(c).replace("|", "\\|").replace("\n", " ")  # noqa: E731
                 out.append("| " + " | ".join(cell(h) for h in header) + " |")

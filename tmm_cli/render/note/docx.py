@@ -16,7 +16,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ...i18n import tr
 from .model import (
+    ABSTRACT_COUNTS,
+    APPENDIX_COUNT,
     SCI_EXPONENT,
     SUPER_DIGITS,
     Abstract,
@@ -135,7 +138,7 @@ class DocxWriter:
         self._language()
 
     def title_text(self) -> str:
-        return "Пояснительная записка" if self.ru else "Explanatory note"
+        return tr(self.doc.lang, "Explanatory note")
 
     def _language(self) -> None:
         """The document's language (Word's hyphenation and spelling)."""
@@ -340,14 +343,15 @@ class DocxWriter:
 
     def abstract(self, b: Abstract) -> None:
         c = self.doc.counts()
-        self.para("РЕФЕРАТ" if self.ru else "ABSTRACT", style="Structural Plain")
+        lang = self.doc.lang
+        self.para(tr(lang, "Abstract").upper(), style="Structural Plain")
         p = self.para("")
-        p.add_run("Пояснительная записка " if self.ru else "Explanatory note: ")
+        head, _, tail = tr(lang, ABSTRACT_COUNTS).partition("{pages}")  # the page count is Word's field
+        p.add_run(head)
         self._field(p, "NUMPAGES", "")
-        words = ("с.", "рис.", "табл.", "источн.", "прил.") if self.ru else ("p.", "fig.", "tables", "sources", "app.")
-        tail = f" {words[0]}, {c['figures']} {words[1]}, {c['tables']} {words[2]}, {c['sources']} {words[3]}"
+        tail = tail.format(figures=c["figures"], tables=c["tables"], sources=c["sources"])
         if c["appendices"]:
-            tail += f", {c['appendices']} {words[4]}"
+            tail += tr(lang, APPENDIX_COUNT).format(appendices=c["appendices"])
         p.add_run(tail)
         self.para(", ".join(b.keywords).upper())
         for text in b.text:
@@ -356,7 +360,7 @@ class DocxWriter:
     def contents(self) -> None:
         p = self.para("", indent=False)
         self._field(p, 'TOC \\o "1-2" \\h \\z \\u',
-                    "Обновите поле (F9), чтобы получить содержание." if self.ru else "Update the field (F9) to build the contents.")
+                    tr(self.doc.lang, "Update the field (F9) to build the contents."))
 
     def heading(self, b: Heading) -> None:
         from docx.enum.text import WD_ALIGN_PARAGRAPH
@@ -366,7 +370,7 @@ class DocxWriter:
             self.para(b.text.upper(), style=style)
             return
         if b.kind == "appendix":
-            word = "ПРИЛОЖЕНИЕ" if self.ru else "APPENDIX"
+            word = tr(self.doc.lang, "Appendix").upper()
             p = self._styled(self.d.add_paragraph(), "Structural")
             p.add_run(f"{word} {b.number}")
             p2 = self.para(f"({b.status})", indent=False, align=WD_ALIGN_PARAGRAPH.CENTER)
@@ -406,7 +410,7 @@ class DocxWriter:
             p = self.para("", indent=False, align=WD_ALIGN_PARAGRAPH.CENTER)
             p._p.append(omath_para(b.math))
         for i, w in enumerate(b.where):
-            word = ("где " if self.ru else "where ") if i == 0 else ""
+            word = tr(self.doc.lang, "where") + " " if i == 0 else ""
             p = self.para("", indent=False)
             if i:
                 p.paragraph_format.left_indent = Cm(1.0)
@@ -427,8 +431,9 @@ class DocxWriter:
 
         cap = self.para("", style="Caption", indent=False, align=WD_ALIGN_PARAGRAPH.LEFT)
         cap.paragraph_format.keep_with_next = True
-        cap.add_run("Таблица " if self.ru else "Table ")
-        self._seq(cap, "Таблица" if self.ru else "Table", b.number)
+        word = tr(self.doc.lang, "Table")
+        cap.add_run(word + " ")
+        self._seq(cap, word, b.number)
         self.inline(cap, " – " + b.caption)
         n = len(b.header)
         t = self.d.add_table(rows=1 + len(b.rows), cols=n)
@@ -477,8 +482,9 @@ class DocxWriter:
         if svg.exists() and svg.suffix == ".svg":
             self._svg_beside(run, svg)
         cap = self.para("", style="Caption", indent=False, align=WD_ALIGN_PARAGRAPH.CENTER)
-        cap.add_run("Рисунок " if self.ru else "Figure ")
-        self._seq(cap, "Рисунок" if self.ru else "Figure", b.number)
+        word = tr(self.doc.lang, "Figure")
+        cap.add_run(word + " ")
+        self._seq(cap, word, b.number)
         self.inline(cap, " – " + b.caption)
 
     def _svg_beside(self, run, svg: Path) -> None:

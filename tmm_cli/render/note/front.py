@@ -9,9 +9,7 @@ from ..terminal.variants import law_words
 from .ctx import Ctx
 from .model import Abstract, Contents, Heading, ListBlock, ReferenceList, TaskSheet, TitlePage
 
-from .sources import SOURCES
-
-MINISTRY_RU = "Министерство науки и высшего образования Российской Федерации"
+from .sources import source_text
 
 
 def title_meta(c: Ctx, title) -> dict:
@@ -21,42 +19,41 @@ def title_meta(c: Ctx, title) -> dict:
     org = [s.strip() for s in (title.org or "").split(",") if s.strip()]
     return {
         "lang": c.lang,
-        "doc-title": t(f"Explanatory note, TMM course project, variant {v.number}",
-                       f"Пояснительная записка к курсовому проекту по ТММ, вариант {v.number}"),
-        "ministry": t("", MINISTRY_RU),
+        "doc-title": t("Explanatory note, TMM course project, variant {number}").format(number=v.number),
+        # the founder's line of ГОСТ 7.32's title page, on the Russian note only (a Russian university's)
+        "ministry": t("Ministry of Science and Higher Education of the Russian Federation") if c.lang == "ru" else "",
         "org-lines": org,
-        "doc-kind": t("Explanatory note", "Пояснительная записка"),
-        "discipline": t("to the course project in the discipline «Theory of mechanisms and machines»",
-                        "к курсовому проекту по дисциплине «Теория механизмов и машин»"),
-        "topic": t("«Synthesis of the cam mechanism and of the gear drive»",
-                   "«Синтез кулачкового механизма и зубчатых механизмов привода»"),
-        "variant-line": t(f"Variant {v.number}", f"Вариант {v.number}"),
-        "designation": title.designation_for(0, v.number) + t("", " ПЗ"),
-        "teacher-label": t("Supervisor", "Руководитель"),
+        "doc-kind": t("Explanatory note"),
+        "discipline": t("to the course project in the discipline «Theory of mechanisms and machines»"),
+        "topic": t("«Synthesis of the cam mechanism and of the gear drive»"),
+        "variant-line": t("Variant {number}").format(number=v.number),
+        # ГОСТ 2.102's code of an explanatory note (ПЗ), a part of the Russian designation
+        "designation": title.designation_for(0, v.number) + (" ПЗ" if c.lang == "ru" else ""),
+        "teacher-label": t("Supervisor"),
         "teacher": title.teacher,
-        "student-label": t("Student", "Автор работы"),
+        "student-label": c.tc("note, title page", "Student"),
         "student": title.student,
-        "group-label": t("group", "студент группы"),
+        "group-label": c.tc("note, title page", "group"),
         "group": title.group,
-        "sign-label": t("signature", "подпись"),
-        "date-label": t("", "г."),  # after «  » ______ 20__
-        "grade-label": t("Defended with the mark", "Работа защищена с оценкой"),
+        "sign-label": t("signature"),
+        "date-label": "г." if c.lang == "ru" else "",  # the Russian date's «  » ______ 20__ г.; none in English
+        "grade-label": t("Defended with the mark"),
         "city": getattr(title, "city", "") or "",
         "year": str(title.the_year),
-        "figure-word": t("Figure", "Рисунок"),
-        "table-word": t("Table", "Таблица"),
-        "continued-word": t("Table continued", "Продолжение таблицы"),
-        "where-word": t("where", "где"),
-        "appendix-word": t("Appendix", "Приложение"),
+        "figure-word": t("Figure"),
+        "table-word": t("Table"),
+        "continued-word": t("Table continued"),
+        "where-word": t("where"),
+        "appendix-word": t("Appendix"),
     }
 
 
 def front_matter(c: Ctx, title) -> None:
-    c.doc.sources = {k: v["ru" if c.ru else "en"] for k, v in SOURCES.items()}
+    c.doc.sources = source_text(c.lang)
     c.doc.add(TitlePage(title_meta(c, title)))
     _task(c, title)
     _abstract(c)
-    c.doc.add(Heading(1, c.t("Contents", "Содержание"), "structural", outlined=False))
+    c.doc.add(Heading(1, c.t("Contents"), "structural", outlined=False))
     c.doc.add(Contents())
     _introduction(c)
 
@@ -65,79 +62,59 @@ def _task(c: Ctx, title) -> None:
     t, n = c.t, c.n
     r = c.r
     v, g = r.variant, r.gears
-    mm = t("mm", "мм")
-    stroke = (t(f"swing of the rocker $γ_max$ = {n(v.stroke)}°, rocker length $l_(B C)$ = {c.qty(v.l_bc_m * 1000, mm)}",
-                f"угол качания коромысла $γ_max$ = {n(v.stroke)}°, длина коромысла $l_(B C)$ = "
-                f"{c.qty(v.l_bc_m * 1000, mm)}") if v.is_rocker else
-              t(f"stroke of the follower $S_max$ = {c.qty(v.stroke * 1000, mm)}",
-                f"ход толкателя $S_max$ = {c.qty(v.stroke * 1000, mm)}"))
-    crank = (t(f"crank speed $n_\"кр\"$ = {c.qty(g.crank_rpm, 'rpm')}", f"частота вращения кривошипа $n_\"кр\"$ = "
-               f"{c.qty(g.crank_rpm, 'об/мин')}") + (t(" (taken as in the textbook's example)", " (принята по примеру пособия)")
-                                                    if g.crank_rpm_assumed else ""))
-    torque = ("; " + t(f"mean reduced moment M = {c.qty(g.torque_nm, 'N·m')}", f"средний приведённый момент M = "
-                       f"{c.qty(g.torque_nm, 'Н·м')}")) if g.torque_nm is not None else ""
+    mm = t("mm")
+    stroke = (t("swing of the rocker $γ_max$ = {stroke}°, rocker length $l_(B C)$ = {v}").format(stroke=n(v.stroke), v=c.qty(v.l_bc_m * 1000, mm)) if v.is_rocker else
+              t("stroke of the follower $S_max$ = {v}").format(v=c.qty(v.stroke * 1000, mm)))
+    rpm = t("rpm")
+    crank = (t("crank speed $n_\"кр\"$ = {speed}").format(speed=c.qty(g.crank_rpm, rpm))
+             + (t(" (taken as in the textbook's example)") if g.crank_rpm_assumed else ""))
+    torque = ("; " + t("mean reduced moment M = {torque}").format(torque=c.qty(g.torque_nm, t("N·m")))
+              if g.torque_nm is not None else "")
     who = title.student or "_" * 24
     group = title.group or "_" * 10
     lines = [
-        t(f"Student: {who}, group {group}.", f"Студент: {who}, группа {group}."),
-        t(f"Topic: synthesis of the cam mechanism and of the gear drive, variant {v.number}.",
-          f"Тема проекта: синтез кулачкового механизма и зубчатых механизмов привода, вариант {v.number}."),
-        t(f"Input data (Table 1.2 {{cite:book}}, variant {v.number}): scheme of the cam mechanism {v.scheme}; "
-          f"acceleration law {v.law} ({law_words(v.law, c.lang)}); {stroke}; allowed pressure angle $ν_max$ = "
-          f"{n(v.nu_max_deg)}°; cam speed $n_k$ = {c.qty(v.n_cam_rpm, 'rpm' if not c.ru else 'об/мин')}; phase angles "
-          f"$φ_\"у\"$ = {n(v.phi_rise_deg)}°, $φ_\"дс\"$ = {n(v.phi_far_dwell_deg)}°, $φ_\"в\"$ = {n(v.phi_return_deg)}°; "
-          f"{crank}{torque}.",
-          f"Исходные данные (таблица 1.2 {{cite:book}}, вариант {v.number}): схема кулачкового механизма {v.scheme}; "
-          f"закон изменения ускорения {v.law} ({law_words(v.law, c.lang)}); {stroke}; допустимый угол давления "
-          f"$ν_max$ = {n(v.nu_max_deg)}°; частота вращения кулачка $n_k$ = {c.qty(v.n_cam_rpm, 'об/мин')}; фазовые "
-          f"углы $φ_\"у\"$ = {n(v.phi_rise_deg)}°, $φ_\"дс\"$ = {n(v.phi_far_dwell_deg)}°, $φ_\"в\"$ = "
-          f"{n(v.phi_return_deg)}°; {crank}{torque}."),
-        t("Drawings: sheet 3 — synthesis of the cam mechanism (A1); sheet 4 — synthesis of the gear mechanisms (A1).",
-          "Графическая часть: лист 3 — синтез кулачкового механизма (формат А1); лист 4 — синтез зубчатых механизмов "
-          "(формат А1)."),
-        t("Date of issue ____________    Supervisor ____________", "Дата выдачи задания ____________    Руководитель ____________"),
+        t("Student: {who}, group {group}.").format(who=who, group=group),
+        t("Topic: synthesis of the cam mechanism and of the gear drive, variant {number}.").format(number=v.number),
+        t("Input data (Table 1.2 {{cite:book}}, variant {number}): scheme of the cam mechanism {scheme}; acceleration "
+          "law {law} ({law_words}); {stroke}; allowed pressure angle $ν_max$ = {nu_max}°; cam speed $n_k$ = {n_cam}; "
+          "phase angles $φ_\"у\"$ = {phi_rise}°, $φ_\"дс\"$ = {phi_far}°, $φ_\"в\"$ = {phi_return}°; "
+          "{crank}{torque}.").format(
+            number=v.number, scheme=v.scheme, law=v.law, law_words=law_words(v.law, c.lang), stroke=stroke,
+            nu_max=n(v.nu_max_deg), n_cam=c.qty(v.n_cam_rpm, rpm), phi_rise=n(v.phi_rise_deg),
+            phi_far=n(v.phi_far_dwell_deg), phi_return=n(v.phi_return_deg), crank=crank, torque=torque),
+        t("Drawings: sheet 3 — synthesis of the cam mechanism (A1); sheet 4 — synthesis of the gear mechanisms (A1)."),
+        t("Date of issue ____________    Supervisor ____________"),
     ]
     contents = [
-        t("The explanatory note contains:", "Содержание пояснительной записки:"),
-        t("the motion law of the follower, its diagrams and scales;", "закон движения толкателя, его диаграммы и масштабы;"),
-        t("the main dimensions of the cam mechanism by the allowed pressure angle;",
-          "определение основных размеров кулачкового механизма по допустимому углу давления;"),
-        t("the profile of the cam;", "построение профиля кулачка;"),
-        t("the choice of the motor, the scheme and the tooth numbers of the planetary reducer;",
-          "выбор двигателя, схемы и чисел зубьев планетарного редуктора;"),
-        t("the geometry of the spur pair and its contact ratio; the power of the motor.",
-          "расчёт геометрии простой зубчатой передачи и коэффициента перекрытия; мощность двигателя."),
+        t("The explanatory note contains:"),
+        t("the motion law of the follower, its diagrams and scales;"),
+        t("the main dimensions of the cam mechanism by the allowed pressure angle;"),
+        t("the profile of the cam;"),
+        t("the choice of the motor, the scheme and the tooth numbers of the planetary reducer;"),
+        t("the geometry of the spur pair and its contact ratio; the power of the motor."),
     ]
-    c.doc.add(TaskSheet(t("Task", "Задание"), lines, contents))
+    c.doc.add(TaskSheet(t("Task"), lines, contents))
 
 
 def _abstract(c: Ctx) -> None:
     t = c.t
     r = c.r
     z, g = r.cam.sizing, r.gears
-    kw = [t("cam mechanism", "кулачковый механизм"), t("pressure angle", "угол давления"),
-          t("cam profile", "профиль кулачка"), t("planetary reducer", "планетарный редуктор"),
-          t("tooth numbers", "числа зубьев"), t("assembly condition", "условие сборки"),
-          t("neighbouring condition", "условие соседства"), t("involute mesh", "эвольвентное зацепление"),
-          t("contact ratio", "коэффициент перекрытия")]
-    geo = (t(f"$l_(O C)$ = {c.qty(z.l_oc_m * 1000, 'mm', decimals=2)}", f"$l_(O C)$ = {c.qty(z.l_oc_m * 1000, 'мм', decimals=2)}")
-           if r.variant.is_rocker else t(f"$e$ = {c.qty(z.e_m * 1000, 'mm', decimals=2)}",
-                                         f"$e$ = {c.qty(z.e_m * 1000, 'мм', decimals=2)}"))
+    kw = [t("cam mechanism"), t("pressure angle"),
+          t("cam profile"), t("planetary reducer"),
+          t("tooth numbers"), t("assembly condition"),
+          t("neighbouring condition"), t("involute mesh"),
+          t("contact ratio")]
+    mm = t("mm")
+    geo = (f"$l_(O C)$ = {c.qty(z.l_oc_m * 1000, mm, decimals=2)}" if r.variant.is_rocker
+           else f"$e$ = {c.qty(z.e_m * 1000, mm, decimals=2)}")
     text = [
-        t(f"The object of the project is the drive of a machine: the cam mechanism of variant {r.variant.number} and "
-          "the gear mechanisms between the motor, the cam and the crank of the linkage.",
-          f"Объект проектирования — привод машины: кулачковый механизм варианта {r.variant.number} и зубчатые "
-          "механизмы между двигателем, кулачком и кривошипом рычажного механизма."),
-        t("The aim is to find the main dimensions and the profile of the cam and the tooth numbers of the planetary "
-          "reducer and of the spur pair that satisfy the conditions of the textbook.",
-          "Цель работы — определить основные размеры и профиль кулачка, числа зубьев планетарного редуктора и "
-          "простой передачи, удовлетворяющие условиям пособия."),
-        t(f"Results: the cam with the base radius $r_0$ = {c.qty(z.r0_m * 1000, 'mm', decimals=2)}, {geo}; the "
-          f"planetary reducer {_teeth_text(g)} with {c.planets(g.planetary.planets)}; the spur pair "
-          f"$z_1$ = {g.spur.z1}, $z_2$ = {g.spur.z2}, $m$ = {c.qty(g.spur.m_mm, 'mm')}.",
-          f"Результаты: кулачок с радиусом основной окружности $r_0$ = {c.qty(z.r0_m * 1000, 'мм', decimals=2)}, "
-          f"{geo}; планетарный редуктор с числами зубьев {_teeth_text(g)} и {c.planets(g.planetary.planets)}; "
-          f"простая передача $z_1$ = {g.spur.z1}, $z_2$ = {g.spur.z2}, $m$ = {c.qty(g.spur.m_mm, 'мм')}."),
+        t("The object of the project is the drive of a machine: the cam mechanism of variant {number} and the gear mechanisms between the motor, the cam and the crank of the linkage.").format(number=r.variant.number),
+        t("The aim is to find the main dimensions and the profile of the cam and the tooth numbers of the planetary reducer and of the spur pair that satisfy the conditions of the textbook."),
+        t("Results: the cam with the base radius $r_0$ = {r0}, {geo}; the planetary reducer {teeth} with {planets}; "
+          "the spur pair $z_1$ = {z1}, $z_2$ = {z2}, $m$ = {m}.").format(
+            r0=c.qty(z.r0_m * 1000, mm, decimals=2), geo=geo, teeth=_teeth_text(g), planets=c.planets(g.planetary.planets),
+            z1=g.spur.z1, z2=g.spur.z2, m=c.qty(g.spur.m_mm, mm)),
     ]
     c.doc.add(Abstract(kw, text))
 
@@ -150,22 +127,9 @@ def _teeth_text(g) -> str:
 
 def _introduction(c: Ctx) -> None:
     t = c.t
-    c.doc.add(Heading(1, t("Introduction", "Введение"), "structural"))
-    c.p(t("The course project in the theory of mechanisms and machines teaches the synthesis of the main mechanisms of "
-          "a machine by the methods of the discipline. This note covers sheets 3 and 4 of the project: the synthesis "
-          "of the cam mechanism (the motion law of the follower, the main dimensions by the allowed pressure angle, the "
-          "profile of the cam) and the synthesis of the gear mechanisms of the drive (the choice of the motor and of "
-          "the scheme of the planetary reducer, its tooth numbers under the conditions of synthesis, the geometry of "
-          "the spur pair) by the textbook {cite:book}.",
-          "Курсовой проект по теории механизмов и машин посвящён синтезу основных механизмов машины методами "
-          "дисциплины. В настоящей записке выполнены листы 3 и 4 проекта: синтез кулачкового механизма (закон "
-          "движения толкателя, основные размеры по допустимому углу давления, профиль кулачка) и синтез зубчатых "
-          "механизмов привода (выбор двигателя и схемы планетарного редуктора, подбор чисел зубьев с проверкой "
-          "условий синтеза, расчёт геометрии простой передачи) по методике пособия {cite:book}."))
-    c.p(t("The computations were made with the program tmm, which follows the procedures of the textbook and prints "
-          "every substitution, so that each number of the note can be checked by hand.",
-          "Расчёты выполнены с помощью программы tmm, реализующей методику пособия; все подстановки приведены, так "
-          "что каждое число записки может быть проверено вручную."))
+    c.doc.add(Heading(1, t("Introduction"), "structural"))
+    c.p(t("The course project in the theory of mechanisms and machines teaches the synthesis of the main mechanisms of a machine by the methods of the discipline. This note covers sheets 3 and 4 of the project: the synthesis of the cam mechanism (the motion law of the follower, the main dimensions by the allowed pressure angle, the profile of the cam) and the synthesis of the gear mechanisms of the drive (the choice of the motor and of the scheme of the planetary reducer, its tooth numbers under the conditions of synthesis, the geometry of the spur pair) by the textbook {cite:book}."))
+    c.p(t("The computations were made with the program tmm, which follows the procedures of the textbook and prints every substitution, so that each number of the note can be checked by hand."))
 
 
 # --- assumptions -------------------------------------------------------------------------------------
@@ -177,44 +141,23 @@ def assumptions(c: Ctx) -> None:
     r = c.r
     g, cam = r.gears, r.cam
     s = cam.motion.scales
-    c.doc.add(Heading(1, t("Assumptions", "Принятые допущения"), "chapter", "assumptions"))
+    c.doc.add(Heading(1, t("Assumptions"), "chapter", "assumptions"))
     items = [
-        t("The schemes of Figure 1.8 {cite:book} are read as: 1 — translating roller follower, force closure; 2 — the "
-          "same, form closure (grooved cam); 3 — rocker, force closure; 4 — rocker, form closure.",
-          "Схемы рисунка 1.8 {cite:book}: 1 — поступательный роликовый толкатель с силовым замыканием; 2 — то же с "
-          "геометрическим замыканием (пазовый кулачок); 3 — коромысло с силовым замыканием; 4 — коромысло с "
-          "геометрическим замыканием."),
-        t(f"The diagrams are laid out for the sheet with $b$ = {c.qty(s.b_mm, 'mm')} for the working angle and "
-          f"$Y_(S max)$ = {c.qty(s.y_s_max_mm, 'mm')}; the integration bases are the largest round values that keep "
-          "the ordinates within 60 mm.",
-          f"Диаграммы размещаются на листе при длине рабочего угла $b$ = {c.qty(s.b_mm, 'мм')} и наибольшей "
-          f"ординате перемещений $Y_(S max)$ = {c.qty(s.y_s_max_mm, 'мм')}; базы интегрирования — наибольшие "
-          "круглые значения, при которых ординаты не превышают 60 мм."),
+        t("The schemes of Figure 1.8 {cite:book} are read as: 1 — translating roller follower, force closure; 2 — the same, form closure (grooved cam); 3 — rocker, force closure; 4 — rocker, form closure."),
+        t("The diagrams are laid out for the sheet with $b$ = {b} for the working angle and $Y_(S max)$ = {y_max}; the "
+          "integration bases are the largest round values that keep the ordinates within 60 mm.").format(
+            b=c.qty(s.b_mm, t("mm")), y_max=c.qty(s.y_s_max_mm, t("mm"))),
     ]
     if g.crank_rpm_assumed:
-        items.append(t(f"The crank speed of the linkage is not given by Table 1.2; $n_\"кр\"$ = {c.qty(g.crank_rpm, 'rpm')} "
-                       "is taken as in the example of §2.4 {cite:book}. With the crank speed of sheet 1 the motor, the "
-                       "ratios and the reducer change.",
-                       f"Частота вращения кривошипа в таблице 1.2 не задана; принята $n_\"кр\"$ = "
-                       f"{c.qty(g.crank_rpm, 'об/мин')}, как в примере п. 2.4 {{cite:book}}. При частоте вращения "
-                       "кривошипа по листу 1 изменятся двигатель, передаточные отношения и редуктор."))
-    items.append(t(f"The planetary ratio may deviate from the required by ±{n(g.tolerance_pct)} % (§2.4 {{cite:book}}); "
-                   "the ranges of the schemes are read as $i <= 8$ — scheme 1, $8 < i <= 16$ — scheme 2, $i > 16$ — "
-                   "two stages.",
-                   f"Допускаемое отклонение передаточного отношения редуктора ±{n(g.tolerance_pct)} % (п. 2.4 "
-                   "{cite:book}); границы схем: $i <= 8$ — схема 1, $8 < i <= 16$ — схема 2, $i > 16$ — две ступени."))
-    items.append(t("The neighbouring condition (2.5) is computed exactly instead of being read from Table 2.1.",
-                   "Условие соседства (2.5) вычисляется точно, а не по таблице 2.1."))
-    items.append(t(f"The efficiencies in the power of the motor are $η_1$ = {c.n(g.eta1, sig=4)} (0,96 per single- or "
-                   f"double-row stage) and $η_2$ = {c.n(g.eta2)} (§2.6 {{cite:book}}).",
-                   f"КПД при расчёте мощности двигателя: $η_1$ = {c.n(g.eta1, sig=4)} (0,96 на однорядную или "
-                   f"двухрядную ступень), $η_2$ = {c.n(g.eta2)} (п. 2.6 {{cite:book}})."))
+        items.append(t("The crank speed of the linkage is not given by Table 1.2; $n_\"кр\"$ = {speed} is taken as in the "
+                       "example of §2.4 {{cite:book}}. With the crank speed of sheet 1 the motor, the ratios and the "
+                       "reducer change.").format(speed=c.qty(g.crank_rpm, t("rpm"))))
+    items.append(t("The planetary ratio may deviate from the required by ±{tolerance_pct} % (§2.4 {{cite:book}}); the ranges of the schemes are read as $i <= 8$ — scheme 1, $8 < i <= 16$ — scheme 2, $i > 16$ — two stages.").format(tolerance_pct=n(g.tolerance_pct)))
+    items.append(t("The neighbouring condition (2.5) is computed exactly instead of being read from Table 2.1."))
+    items.append(t("The efficiencies in the power of the motor are $η_1$ = {eta1} (0,96 per single- or double-row stage) and $η_2$ = {eta2} (§2.6 {{cite:book}}).").format(eta1=c.n(g.eta1, sig=4), eta2=c.n(g.eta2)))
     if g.torque_nm is None:
-        items.append(t("The mean reduced moment of sheet 2 is not given; the power of the motor is not computed.",
-                       "Средний приведённый момент (лист 2) не задан; мощность двигателя не вычисляется."))
-    items.append(t("A transverse contact ratio of at least 1,2 is taken as sufficient for the smoothness of a spur pair.",
-                   "Достаточным для плавной работы прямозубой передачи принят коэффициент торцевого перекрытия не "
-                   "менее 1,2."))
+        items.append(t("The mean reduced moment of sheet 2 is not given; the power of the motor is not computed."))
+    items.append(t("A transverse contact ratio of at least 1,2 is taken as sufficient for the smoothness of a spur pair."))
     c.doc.add(ListBlock(items, ordered=True))
 
 
@@ -226,94 +169,76 @@ def conclusion(c: Ctx) -> None:
     r = c.r
     cam, g = r.cam, r.gears
     v, z, p, ch = cam.variant, cam.sizing, cam.profile, cam.checks
-    c.doc.add(Heading(1, t("Conclusion", "Заключение"), "structural"))
-    mm = t("mm", "мм")
-    met, unmet = t("met", "выполнено"), t("NOT met", "не выполнено")
+    c.doc.add(Heading(1, t("Conclusion"), "structural"))
+    mm = t("mm")
+    met, unmet = t("met"), t("NOT met")
 
     def verdict(ok: bool) -> str:
         return met if ok else unmet
 
     geo = (f"$l_(O C)$ = {c.qty(z.l_oc_m * 1000, mm, decimals=2)}" if v.is_rocker
-           else t("offset", "эксцентриситет") + f" $e$ = {c.qty(z.e_m * 1000, mm, decimals=2)}")
-    c.p(t(f"A cam mechanism of scheme {v.scheme} is designed: the base radius of the pitch profile $r_0$ = "
-          f"{c.qty(z.r0_m * 1000, mm, decimals=2)}, {geo}, the roller radius $r_\"р\"$ = "
-          f"{c.qty(p.roller_m * 1000, mm, decimals=2)}; the profile is drawn at {cam.drawing.scale}.",
-          f"Спроектирован кулачковый механизм по схеме {v.scheme}: радиус основной окружности теоретического профиля "
-          f"$r_0$ = {c.qty(z.r0_m * 1000, mm, decimals=2)}, {geo}, радиус ролика $r_\"р\"$ = "
-          f"{c.qty(p.roller_m * 1000, mm, decimals=2)}; профиль вычерчен в масштабе {cam.drawing.scale}."))
+           else t("offset") + f" $e$ = {c.qty(z.e_m * 1000, mm, decimals=2)}")
+    c.p(t("A cam mechanism of scheme {scheme} is designed: the base radius of the pitch profile $r_0$ = {v}, {geo}, the roller radius $r_\"р\"$ = {v2}; the profile is drawn at {scale}.").format(scheme=v.scheme, v=c.qty(z.r0_m * 1000, mm, decimals=2), geo=geo, v2=c.qty(p.roller_m * 1000, mm, decimals=2), scale=cam.drawing.scale))
     reqs = []
     ok = ch.nu_rise_ok and ch.nu_return_ok
-    where_en = f"on the rise {n(ch.nu_rise_deg, decimals=2)}°"
-    where_ru = f"на удалении {n(ch.nu_rise_deg, decimals=2)}°"
+    where = t("on the rise {nu}°").format(nu=n(ch.nu_rise_deg, decimals=2))
     if ch.return_limited:
-        where_en += f", on the return {n(ch.nu_return_deg, decimals=2)}°"
-        where_ru += f", на возвращении {n(ch.nu_return_deg, decimals=2)}°"
-    nu_txt = t(f"the largest pressure angle ({where_en}) {'does not exceed' if ok else 'exceeds'} the allowed "
-               f"$ν_max$ = {n(v.nu_max_deg)}°",
-               f"наибольший угол давления ({where_ru}) {'не превышает' if ok else 'превышает'} допускаемый "
-               f"$ν_max$ = {n(v.nu_max_deg)}°")
+        where += t(", on the return {nu}°").format(nu=n(ch.nu_return_deg, decimals=2))
+    nu_txt = (t("the largest pressure angle ({where}) does not exceed the allowed $ν_max$ = {nu_max}°") if ok else
+              t("the largest pressure angle ({where}) exceeds the allowed $ν_max$ = {nu_max}°")).format(
+        where=where, nu_max=n(v.nu_max_deg))
     reqs.append((nu_txt, ok))
-    reqs.append((t(f"no undercut of the profile: $r_\"р\"$ = {n(ch.roller_m * 1000, decimals=2)} mm < $ρ_min$ = "
-                   f"{n(ch.rho_limit_m * 1000, decimals=2)} mm",
-                   f"отсутствие подреза профиля: $r_\"р\"$ = {c.qty(ch.roller_m * 1000, 'мм', decimals=2)} < $ρ_min$ = "
-                   f"{c.qty(ch.rho_limit_m * 1000, 'мм', decimals=2)}"), ch.undercut_ok))
+    reqs.append((t("no undercut of the profile: $r_\"р\"$ = {roller} < $ρ_min$ = {rho}").format(
+        roller=c.qty(ch.roller_m * 1000, mm, decimals=2), rho=c.qty(ch.rho_limit_m * 1000, mm, decimals=2)), ch.undercut_ok))
     if ch.pivot_ok is not None:
-        reqs.append((t(f"the cam clears the rocker's pivot: $l_(O C)$ = {n(ch.l_oc_m * 1000, decimals=2)} mm > "
-                       f"{n(ch.body_m * 1000, decimals=2)} mm",
-                       f"кулачок не задевает ось коромысла: $l_(O C)$ = {c.qty(ch.l_oc_m * 1000, 'мм', decimals=2)} > "
-                       f"{c.qty(ch.body_m * 1000, 'мм', decimals=2)}"), bool(ch.pivot_ok)))
-    reqs.append((t(f"the profile fits the field of the sheet at a standard scale ({cam.drawing.scale})",
-                   f"профиль помещается в поле листа в стандартном масштабе ({cam.drawing.scale})"), cam.drawing.fits))
+        reqs.append((t("the cam clears the rocker's pivot: $l_(O C)$ = {l_oc} > {body}").format(
+            l_oc=c.qty(ch.l_oc_m * 1000, mm, decimals=2), body=c.qty(ch.body_m * 1000, mm, decimals=2)), bool(ch.pivot_ok)))
+    reqs.append((t("the profile fits the field of the sheet at a standard scale ({scale})").format(scale=cam.drawing.scale), cam.drawing.fits))
     c.doc.add(ListBlock([f"{txt} — {verdict(ok)};" for txt, ok in reqs[:-1]] + [f"{reqs[-1][0]} — {verdict(reqs[-1][1])}."]))
     c.doc.claim(kind="conclusion_cam", met=tuple(ok for _, ok in reqs), checks=ch, fits=cam.drawing.fits)
 
     d = g.planetary
-    scheme_words = {"1": t("a single-row planetary reducer", "однорядный планетарный редуктор"),
-                    "2": t("a double-row planetary reducer", "двухрядный планетарный редуктор"),
-                    "1+1": t("two single-row planetary stages", "двухступенчатый планетарный редуктор из однорядных ступеней")}[g.scheme]
+    scheme_words = {"1": t("a single-row planetary reducer"),
+                    "2": t("a double-row planetary reducer"),
+                    "1+1": t("two single-row planetary stages")}[g.scheme]
     sp = g.spur
-    c.p(t(f"The drive: a motor of {c.qty(g.motor_rpm, 'rpm')}, {scheme_words} {_teeth_text(g)} with "
-          f"{c.planets(d.planets)} ($i$ = {n(d.ratio, decimals=4)}), the spur pair $z_1$ = {sp.z1}, $z_2$ = {sp.z2}, "
-          f"$m$ = {c.qty(sp.m_mm, 'mm')}.",
-          f"Спроектирован привод: двигатель с частотой вращения {c.qty(g.motor_rpm, 'об/мин')}, {scheme_words} "
-          f"{_teeth_text(g)} с {d.planets} {'сателлитом' if d.planets == 1 else 'сателлитами'} ($i$ = "
-          f"{n(d.ratio, decimals=4)}), простая передача $z_1$ = {sp.z1}, $z_2$ = {sp.z2}, $m$ = {c.qty(sp.m_mm, 'мм')}."))
+    rpm = t("rpm")
+    c.p(t("The drive: a motor of {speed}, {scheme_words} {teeth} {with_planets} ($i$ = {ratio}), the spur pair "
+          "$z_1$ = {z1}, $z_2$ = {z2}, $m$ = {m}.").format(
+        speed=c.qty(g.motor_rpm, rpm), scheme_words=scheme_words, teeth=_teeth_text(g),
+        with_planets=c.nt("with {k} planet", "with {k} planets", d.planets).format(k=d.planets),
+        ratio=n(d.ratio, decimals=4), z1=sp.z1, z2=sp.z2, m=c.qty(sp.m_mm, mm)))
     gch = g.checks
-    greqs = [(t(f"the ratio deviates from the required {n(g.i_planetary, decimals=4)} by {c.pct(gch.ratio_error_pct, sign=True)}, "
-                f"within ±{n(g.tolerance_pct)} % (the crank turns at {c.qty(g.crank_rpm_actual, 'rpm', decimals=1)})",
-                f"отклонение передаточного отношения от требуемого {n(g.i_planetary, decimals=4)} составляет "
-                f"{c.pct(gch.ratio_error_pct, sign=True)} при допускаемых ±{n(g.tolerance_pct)} % (кривошип вращается "
-                f"с частотой {c.qty(g.crank_rpm_actual, 'об/мин', decimals=1)})"), gch.ratio_ok)]
+    greqs = [(t("the ratio deviates from the required {i_pl} by {error}, within ±{tolerance} % (the crank turns at "
+                "{speed})").format(i_pl=n(g.i_planetary, decimals=4), error=c.pct(gch.ratio_error_pct, sign=True),
+                                   tolerance=n(g.tolerance_pct), speed=c.qty(g.crank_rpm_actual, rpm, decimals=1)),
+              gch.ratio_ok)]
     for j, sc in enumerate(gch.stages, 1):
-        stage = t(f" of stage {j}", f" ступени {j}") if len(gch.stages) > 1 else ""
-        greqs.append((t(f"coaxiality, assembly, neighbouring and no interference{stage}",
-                        f"условия соосности, сборки, соседства и отсутствия интерференции{stage}"), sc.ok))
-    greqs.append((t(f"at least three planets ($k$ = {d.planets})", f"не менее трёх сателлитов ($k$ = {d.planets})"),
+        stage = t(" of stage {j}").format(j=j) if len(gch.stages) > 1 else ""
+        greqs.append((t("coaxiality, assembly, neighbouring and no interference{stage}").format(stage=stage), sc.ok))
+    greqs.append((t("at least three planets ($k$ = {planets})").format(planets=d.planets),
                   d.planets >= 3))
     if not sp.shifted:
-        greqs.append((t("the centre distance and the tooth heights of the spur pair agree",
-                        "проверка межосевого расстояния и высоты зубьев простой передачи"), sp.check_ok))
-    greqs.append((t(f"smooth running of the spur pair: $ε_α$ = {n(sp.eps_alpha, decimals=3)} ≥ 1,2",
-                    f"плавность работы простой передачи: $ε_α$ = {n(sp.eps_alpha, decimals=3)} ≥ 1,2").replace(
+        greqs.append((t("the centre distance and the tooth heights of the spur pair agree"), sp.check_ok))
+    greqs.append((t("smooth running of the spur pair: $ε_α$ = {eps_alpha} ≥ 1,2").format(eps_alpha=n(sp.eps_alpha, decimals=3)).replace(
         "≥", "≥" if sp.eps_alpha >= 1.2 else "<"), sp.eps_alpha >= 1.2))
     if min(sp.z1, sp.z2) < 17:
-        greqs.append((t("no gear below 17 teeth (undercut)", "отсутствие колёс с числом зубьев менее 17 (подрез)"), False))
+        greqs.append((t("no gear below 17 teeth (undercut)"), False))
     if g.power is not None:
         if g.power.rated_kw is not None:
-            greqs.append((t(f"the motor's rated power {n(g.power.rated_kw)} kW ≥ the required {n(g.power.power_kw, decimals=3)} kW",
-                            f"номинальная мощность двигателя {c.qty(g.power.rated_kw, 'кВт')} ≥ потребной "
-                            f"{c.qty(g.power.power_kw, 'кВт', decimals=3)}"), True))
+            kw = t("kW")
+            greqs.append((t("the motor's rated power {rated} ≥ the required {power}").format(
+                rated=c.qty(g.power.rated_kw, kw), power=c.qty(g.power.power_kw, kw, decimals=3)), True))
         else:
-            greqs.append((t("a motor of the standard series covers the required power",
-                            "двигатель стандартного ряда обеспечивает потребную мощность"), False))
+            greqs.append((t("a motor of the standard series covers the required power"), False))
     c.doc.add(ListBlock([f"{txt} — {verdict(ok)};" for txt, ok in greqs[:-1]] + [f"{greqs[-1][0]} — {verdict(greqs[-1][1])}."]))
     c.doc.claim(kind="conclusion_gears", met=tuple(ok for _, ok in greqs), gears=g)
     bad = [txt for txt, ok in reqs + greqs if not ok]
     if bad:
-        c.p(t(f"{len(bad)} of the requirements {'is' if len(bad) == 1 else 'are'} not met; the design has to be "
-              "revised there.", f"Не выполнено требований: {len(bad)}; в этой части проект требует доработки."))
+        c.p(c.nt("{bad} of the requirements is not met; the design has to be revised there.",
+                 "{bad} of the requirements are not met; the design has to be revised there.", len(bad)).format(bad=len(bad)))
     else:
-        c.p(t("All requirements of the task are met.", "Все требования задания выполнены."))
+        c.p(t("All requirements of the task are met."))
 
 
 # --- references and appendix ---------------------------------------------------------------------------
@@ -321,7 +246,7 @@ def conclusion(c: Ctx) -> None:
 
 def references(c: Ctx) -> None:
     t = c.t
-    c.doc.add(Heading(1, t("References", "Список использованных источников"), "structural"))
+    c.doc.add(Heading(1, t("References"), "structural"))
     c.doc.add(ReferenceList())
 
 
@@ -332,17 +257,12 @@ def appendix_profile(c: Ctx) -> None:
     t, n = c.t, c.n
     cam = c.r.cam
     p = cam.profile
-    c.doc.add(Heading(1, t("Coordinates of the cam profile", "Координаты профиля кулачка"), "appendix", "profile",
-                      status=t("informative", "справочное")))
-    c.p(t("The coordinates are given in the frame of the cam: the origin at its centre O, the axis y along the "
-          f"initial direction of the follower's rise; the polar angle is counted against the cam's rotation "
-          f"(Table {{tab:profile_xy}}).",
-          "Координаты даны в системе кулачка: начало — в центре O, ось y — по начальному направлению удаления "
-          "толкателя; полярный угол отсчитывается в сторону, противоположную вращению кулачка "
-          "(таблица {tab:profile_xy})."))
+    c.doc.add(Heading(1, t("Coordinates of the cam profile"), "appendix", "profile",
+                      status=t("informative")))
+    c.p(t("The coordinates are given in the frame of the cam: the origin at its centre O, the axis y along the initial direction of the follower's rise; the polar angle is counted against the cam's rotation (Table {tab:profile_xy})."))
     phi = np.degrees(np.asarray(p.phi))
     rows = []
-    mm = t("mm", "мм")
+    mm = t("mm")
     groove = p.outer is not None
     for a in range(0, 360, 10):
         k = int(np.argmin(np.abs(phi - a)))
@@ -356,8 +276,7 @@ def appendix_profile(c: Ctx) -> None:
     header = ["$φ$, °", f"$x$, {mm}", f"$y$, {mm}", f"$R$, {mm}", f"$x_1$, {mm}", f"$y_1$, {mm}"]
     if groove:
         header += [f"$x_2$, {mm}", f"$y_2$, {mm}"]
-    cap = t("Coordinates of the pitch profile ($x$, $y$, radius $R$) and of the working profile ($x_1$, $y_1$"
-            + (t("; the outer wall of the groove $x_2$, $y_2$", "") if groove else "") + ")",
-            "Координаты теоретического профиля ($x$, $y$, радиус-вектор $R$) и действительного профиля ($x_1$, $y_1$"
-            + ("; наружная стенка паза $x_2$, $y_2$" if groove else "") + ")")
+    cap = (t("Coordinates of the pitch profile ($x$, $y$, radius $R$) and of the working profile ($x_1$, $y_1$; the "
+             "outer wall of the groove $x_2$, $y_2$)") if groove else
+           t("Coordinates of the pitch profile ($x$, $y$, radius $R$) and of the working profile ($x_1$, $y_1$)"))
     c.table("profile_xy", cap, header, rows, align=["center"] * len(header))

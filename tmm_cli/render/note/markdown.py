@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 
+from ...i18n import tr
 from .mathsyntax import parse, to_text
 from .model import (
     Abstract,
@@ -46,15 +47,15 @@ def _table(doc: Document, b: Table, word: str) -> list[str]:
 def markdown(doc: Document, title: str, figure_file=lambda f: f.file) -> str:
     """The document as Markdown; `figure_file(figure)` names the image a reader opens (the PNG)."""
     doc.number()
-    ru = doc.lang == "ru"
-    fig_word, tab_word = ("Рисунок", "Таблица") if ru else ("Figure", "Table")
+    lang = doc.lang
+    fig_word, tab_word = tr(lang, "Figure"), tr(lang, "Table")
     out = [f"# {title}", ""]
     for b in doc.blocks:
         if isinstance(b, Heading):
             if b.kind == "chapter":
                 out += ["#" * (b.level + 1) + f" {b.number} {_inline(doc, b.text)}", ""]
             elif b.kind == "appendix":
-                app = "Приложение" if ru else "Appendix"
+                app = tr(lang, "Appendix")
                 out += [f"## {app} {b.number} ({b.status}). {_inline(doc, b.text)}", ""]
             else:
                 out += [f"## {_inline(doc, b.text)}", ""]
@@ -64,7 +65,7 @@ def markdown(doc: Document, title: str, figure_file=lambda f: f.file) -> str:
             tail = f" ({b.number})" if b.numbered else ""
             out += [f"> {to_text(parse(b.math))}{tail}", ""]
             if b.where:
-                word = "где" if ru else "where"
+                word = tr(lang, "where")
                 out += [word + " " + "; ".join(f"{to_text(parse(w.symbol))} – {_inline(doc, w.meaning)}"
                                                for w in b.where) + ".", ""]
         elif isinstance(b, ListBlock):
@@ -79,9 +80,9 @@ def markdown(doc: Document, title: str, figure_file=lambda f: f.file) -> str:
             out += [_inline(doc, b.contents[0]), ""] + [f"{i}. {_inline(doc, x)}" for i, x in enumerate(b.contents[1:], 1)] + [""]
         elif isinstance(b, Abstract):
             c = doc.counts()
-            head = (f"Пояснительная записка: {c['figures']} рис., {c['tables']} табл., {c['sources']} источн."
-                    if ru else f"Explanatory note: {c['figures']} fig., {c['tables']} tables, {c['sources']} sources.")
-            out += ["## " + ("Реферат" if ru else "Abstract"), "", head, "", ", ".join(b.keywords).upper(), ""]
+            head = tr(lang, "Explanatory note: {figures} fig., {tables} tables, {sources} sources.").format(
+                figures=c["figures"], tables=c["tables"], sources=c["sources"])
+            out += ["## " + tr(lang, "Abstract"), "", head, "", ", ".join(b.keywords).upper(), ""]
             out += [_inline(doc, t) + "\n" for t in b.text]
         elif isinstance(b, ReferenceList):
             out += [f"{i}. {src.text}" for i, src in enumerate(doc.references(), 1)] + [""]

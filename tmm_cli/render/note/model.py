@@ -24,13 +24,19 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from ...i18n import N_, tr
+
 REF = re.compile(r"\{(fig|tab|eq|app):([a-z0-9_]+)\}")
 CITE = re.compile(r"\{cite:([a-z0-9_]+)(?::([^{}]*))?\}")
 MATH = re.compile(r"(\$[^$]*\$)")
 
 # ГОСТ 7.32 letters of appendices (Ё, З, Й, О, Ч, Ь, Ы, Ъ are not used)
-APPENDIX_LETTERS_RU = "АБВГДЕЖИКЛМНПРСТУФХЦШЩЭЮЯ"
-APPENDIX_LETTERS_EN = "ABCDEFGHJKLMNPQRSTUVWXYZ"
+# ГОСТ 7.32: the appendices are lettered in the alphabet of the note, without the letters that read as
+# digits or as other letters (Ё З Й О Ч Ъ Ы Ь; I O)
+APPENDIX_LETTERS = N_("ABCDEFGHJKLMNPQRSTUVWXYZ")
+# the abstract's first line (ГОСТ 7.32: the pages, figures, tables, sources and appendices), typst and docx
+ABSTRACT_COUNTS = N_("Explanatory note: {pages} p., {figures} fig., {tables} tables, {sources} sources")
+APPENDIX_COUNT = N_(", {appendices} app.")
 
 
 # --- blocks ---------------------------------------------------------------------------------------
@@ -188,7 +194,7 @@ class Document:
         counts = {"fig": 0, "tab": 0, "eq": 0}
         chapter = [0, 0, 0]
         appendix = None
-        letters = APPENDIX_LETTERS_RU if self.lang == "ru" else APPENDIX_LETTERS_EN
+        letters = tr(self.lang, APPENDIX_LETTERS)
         n_app = 0
         self.numbers = {}
         for b in self._walk():

@@ -1,14 +1,36 @@
-"""The sources the note may cite, as ГОСТ 7.0.100-2018 entries (the list of references prints the
-cited ones, in the order of their first citation)."""
+"""The sources the note may cite (the list of references prints the cited ones, in the order of
+their first citation).
 
-# ГОСТ 7.0.100-2018 entries of the sources the note may cite
+A source's entry is not a translation but a bibliographic record: ГОСТ Р 7.0.100-2018 (п. 4.8)
+describes a resource in the language of its own imprint, so the textbook — a Russian book — has its
+record in Russian, the Russian note's entry (data, kept here and allowed by the catalogue's test);
+the English note gives the same record transliterated and translated (п. 4.8.1), marked "(in
+Russian)".
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Source:
+    record: str  # ГОСТ Р 7.0.100-2018, in the language of the resource
+    english: str  # transliterated and translated, for the English note
+
+
 SOURCES = {
-    "book": {
-        "ru": "Пожбелко, В. И. Курсовое проектирование по теории механизмов и машин : учебное пособие. Ч. 2 / "
-              "В. И. Пожбелко, П. Г. Веницкий, Н. И. Ахметшин ; под ред. В. И. Пожбелко. – Челябинск : Изд-во ЮУрГУ, "
-              "2003. – 52 с.",
-        "en": "Pozhbelko, V. I., Venitsky, P. G., Akhmetshin, N. I. Course design in the theory of mechanisms and "
-              "machines: a textbook. Part 2 / ed. by V. I. Pozhbelko. Chelyabinsk: South Ural State University, 2003. "
-              "52 p. (in Russian)",
-    },
+    "book": Source(
+        record="Пожбелко, В. И. Курсовое проектирование по теории механизмов и машин : учебное пособие. Ч. 2 / "
+               "В. И. Пожбелко, П. Г. Веницкий, Н. И. Ахметшин ; под ред. В. И. Пожбелко. – Челябинск : Изд-во "
+               "ЮУрГУ, 2003. – 52 с.",
+        english="Pozhbelko, V. I., Venitsky, P. G., Akhmetshin, N. I. Course design in the theory of mechanisms and "
+                "machines: a textbook. Part 2 / ed. by V. I. Pozhbelko. Chelyabinsk: South Ural State University, "
+                "2003. 52 p. (in Russian)",
+    ),
 }
+
+
+def source_text(lang: str) -> dict[str, str]:
+    """Each source's entry in the note of `lang`: the record itself in a Russian note, else its English form."""
+    return {key: s.record if lang == "ru" else s.english for key, s in SOURCES.items()}

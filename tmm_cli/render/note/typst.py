@@ -10,7 +10,10 @@ from __future__ import annotations
 
 import re
 
+from ...i18n import tr
 from .model import (
+    ABSTRACT_COUNTS,
+    APPENDIX_COUNT,
     SCI_EXPONENT,
     SUPER_DIGITS,
     Abstract,
@@ -216,14 +219,13 @@ class TypstWriter:
 
     def abstract(self, b: Abstract) -> list[str]:
         c = self.doc.counts()
-        ru = self.doc.lang == "ru"
-        words = ("с.", "рис.", "табл.", "источн.", "прил.") if ru else ("p.", "fig.", "tables", "sources", "app.")
-        counts = [f"#context counter(page).final().first() {words[0]}", f"{c['figures']} {words[1]}",
-                  f"{c['tables']} {words[2]}", f"{c['sources']} {words[3]}"]
+        lang = self.doc.lang
+        head = tr(lang, ABSTRACT_COUNTS).format(
+            pages="#context counter(page).final().first()", figures=c["figures"], tables=c["tables"], sources=c["sources"])
         if c["appendices"]:
-            counts.append(f"{c['appendices']} {words[4]}")
-        head = ("Пояснительная записка " if ru else "Explanatory note: ") + ", ".join(counts)
-        out = [f"#structural({string('РЕФЕРАТ' if ru else 'ABSTRACT')}, outlined: false)", "", head, "",
+            head += tr(lang, APPENDIX_COUNT).format(appendices=c["appendices"])
+        title = string(tr(lang, "Abstract").upper())
+        out = [f"#structural({title}, outlined: false)", "", head, "",
                "#par(justify: false)[#text(hyphenate: false)[" + ", ".join(escape(k, start=False) for k in b.keywords).upper() + "]]", ""]
         out += [self.inline(t) + "\n" for t in b.text]
         return out
