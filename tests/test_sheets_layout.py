@@ -179,3 +179,38 @@ def test_dashes_render_in_ezdxfs_drawing_addon():
         assert pieces > 4, layer
         assert 0.3 * total[layer] < length < 0.95 * total[layer], (layer, length, total[layer])
     assert set(drawn) == {"Осевые", "Штриховые"}
+
+
+@pytest.mark.parametrize("which", ["sheet3", "sheet4"])
+def test_the_pdf_renderer_draws_what_ezdxfs_own_backend_draws(which):
+    """render/sheets/pdf.py draws the sheet as a few collections (one per colour and weight) for
+    speed; the picture must be ezdxf's: rastered beside ezdxf's stock MatplotlibBackend (an artist
+    per entity, with its own hole detection), no pixel differs by more than anti-aliasing."""
+    import io
+
+    import matplotlib.image as mpimg
+    from ezdxf.addons.drawing.matplotlib import MatplotlibBackend
+
+    import tmm_cli.render.sheets.pdf as pdf
+
+    sh = sheet3(design_cam(V[44]), "ru", TITLE) if which == "sheet3" else \
+        sheet4(design_gears(V[44].n_cam_rpm, None, stiffness=False), 44, "ru", TITLE)
+    sh.finish()
+
+    def raster(backend) -> np.ndarray:
+        real = pdf._backend
+        pdf._backend = backend
+        try:
+            fig = pdf.sheet_figure(sh.doc)
+        finally:
+            pdf._backend = real
+        buf = io.BytesIO()
+        fig.savefig(buf, format="png", dpi=100)
+        buf.seek(0)
+        return mpimg.imread(buf)[..., :3].mean(axis=2)
+
+    ours = raster(pdf._backend)
+    stock = raster(lambda ax: MatplotlibBackend(ax, adjust_figure=False))
+    ink = stock < 0.5
+    assert ink.sum() > 100_000  # a sheet was drawn
+    assert int((np.abs(ours - stock) > 0.25).sum()) <= ink.sum() // 10_000, "the collections changed the picture"
