@@ -16,52 +16,11 @@ import re
 from dataclasses import dataclass, field
 
 from ...i18n import tr
+from .typst import escape, inline_math, string
 
 _REF = re.compile(r"\{(fig|tab):([a-z0-9_]+)\}")
-_TYPST_SPECIAL = re.compile(r"([\\#*_`$@<>\[\]~])")
-
-
-def typst_escape(text: str, start: bool = True) -> str:
-    """Plain text for typst markup: special characters escaped, no accidental list or heading.
-
-    >>> typst_escape("a_b #1 *x* [y] <z> 2 - 3")
-    'a\\\\_b \\\\#1 \\\\*x\\\\* \\\\[y\\\\] \\\\<z\\\\> 2 - 3'
-    >>> typst_escape("- item")
-    '\\\\- item'
-    """
-    out = _TYPST_SPECIAL.sub(r"\\\1", text)
-    out = out.replace("//", "/\u200b/").replace("--", "-\u200b-")
-    m = re.match(r"(\s*)(\d+)\.", out)
-    if not start:
-        return out
-    if m:  # "1. " would start a numbered list
-        out = out[:m.end() - 1] + "\\." + out[m.end():]
-    elif re.match(r"\s*[-+=/]", out):  # a list, a heading or a term
-        lead = len(out) - len(out.lstrip())
-        out = out[:lead] + "\\" + out[lead:]
-    return out
-
-
-def typst_string(text: str) -> str:
-    """A typst string literal."""
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
-
-
-def inline_slashes(math: str) -> str:
-    """Inline math keeps a/b on the line: every / outside strings becomes \\/.
-
-    >>> print(inline_slashes('a/b + "°/мм"'))
-    a\\/b + "°/мм"
-    """
-    out, quoted = [], False
-    for i, ch in enumerate(math):
-        if ch == '"' and (i == 0 or math[i - 1] != "\\"):
-            quoted = not quoted
-        if ch == "/" and not quoted and (i == 0 or math[i - 1] != "\\"):
-            out.append("\\/")
-        else:
-            out.append(ch)
-    return "".join(out)
+# the escaping of the note's typst writer (one rule for every typst text tmm writes)
+typst_escape, typst_string, inline_slashes = escape, string, inline_math
 
 
 def split_long(math: str, limit: int = 72) -> str:
