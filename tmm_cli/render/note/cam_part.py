@@ -276,7 +276,7 @@ def _sizing(c: Ctx, r) -> None:
     # the book's vertex beside the taken centre
     if not student:
         base = (z.r0_min_m or z.r0_m) * 1000
-        diff = (book_r0 / base - 1) * 100
+        diff = (round(book_r0, 2) / round(base, 2) - 1) * 100  # of the printed radii: the reader's check
         if n(book_r0, decimals=2) == n(base, decimals=2):
             cmp = t("The construction of the textbook (the vertex where its two bounding lines meet) gives the same point.")
         elif abs(diff) < 0.1:
@@ -349,7 +349,7 @@ def _swing(c: Ctx, r) -> None:
     if c.n(o, decimals=2) == c.n(r0, decimals=2):
         c.p(t("On the rise the rocker turns {sense}; the other sense needs the same cam ($r_0 = {o}$ mm): the mechanism is symmetric.").format(sense=sense[z.swing], o=c.q(o, decimals=2)))
     else:
-        c.p(t("On the rise the rocker turns {sense}: the other sense would need a larger cam, $r_0 = {o}$ mm ({v} more).").format(sense=sense[z.swing], o=c.q(o, decimals=2), v=c.pct((o / r0 - 1) * 100)))
+        c.p(t("On the rise the rocker turns {sense}: the other sense would need a larger cam, $r_0 = {o}$ mm ({v} more).").format(sense=sense[z.swing], o=c.q(o, decimals=2), v=c.pct((round(o, 2) / round(r0, 2) - 1) * 100)))
     c.doc.claim(kind="cam_swing_smaller", carried_r0_mm=r0, other_r0_mm=o)
 
 

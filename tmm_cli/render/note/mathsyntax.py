@@ -550,8 +550,8 @@ def check_line(src: str) -> list[Check]:
     """Every numeric part of a formula line against the result of its chain.
 
     A chain is split at its relations (=, ≈, <, >, ≤, ≥); the numeric parts joined by "=" must
-    agree with the last numeric part of the chain (the result) to one unit of the result's last
-    printed digit; "≈" allows half a unit of the rounded side; <, >, ≤, ≥ must hold.
+    agree with the last numeric part of the chain (the result) to half a unit of the result's last
+    printed digit (the printed result is the rounding of what the substitution gives); "≈" allows half a unit of the rounded side; <, >, ≤, ≥ must hold.
 
     >>> [c.ok for c in check_line('x_(i k) = k\\'_S/k_(S k) x_i = "0,425" dot 115 = "48,86" thin "мм"')]
     [False]
@@ -602,7 +602,7 @@ def _run_checks(values, run) -> list[Check]:
     if len(nums) < 2:
         return []
     text, target, unit = nums[-1]
-    tol = unit * (1 + 1e-9) + 1e-12 * abs(target)
+    tol = 0.5 * unit * (1 + 1e-6) + 1e-12 * abs(target)  # the printed result is the rounding of the substitution
     return [Check(t, v, "=", target, unit, abs(v - target) <= tol) for t, v, _ in nums[:-1]]
 
 
