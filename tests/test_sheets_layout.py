@@ -214,3 +214,32 @@ def test_the_pdf_renderer_draws_what_ezdxfs_own_backend_draws(which):
     ink = stock < 0.5
     assert ink.sum() > 100_000  # a sheet was drawn
     assert int((np.abs(ours - stock) > 0.25).sum()) <= ink.sum() // 10_000, "the collections changed the picture"
+
+
+@pytest.mark.parametrize("number, crank", [(3, None), (17, None), (17, 40.0), (54, 60.0)])
+def test_sheet4_velocity_texts_describe_the_drawing(number, crank):
+    """The velocity pictures' texts state what is drawn (a teacher measures them): a line of the
+    sheet leaves at each printed φ_k, φ_H from the vertical, and the printed ok, oh are lengths
+    between points of the angular picture's line."""
+    import re
+
+    sh = sheet4(design_gears(V[number].n_cam_rpm, crank, stiffness=False), number, "ru", TITLE)
+    sh.finish()
+    texts = [e.text if e.dxftype() == "MTEXT" else e.dxf.text for e in sh.doc.modelspace().query("TEXT MTEXT")]
+    plain = [re.sub(r"\\S\^ ?([^;]*);", r"\1", t).replace(",", ".") for t in texts]
+    line = next(t for t in plain if t.startswith("i = tg"))
+    angles = [float(a) for a in re.findall(r"([0-9.]+)°", line)]  # φ_k of each stage, then φ_H
+    assert angles, line
+    directions = []
+    for e in sh.doc.modelspace().query("LINE"):
+        dx, dy = e.dxf.end.x - e.dxf.start.x, e.dxf.end.y - e.dxf.start.y
+        if math.hypot(dx, dy) > 5.0:
+            directions.append(math.degrees(math.atan2(abs(dx), abs(dy))))
+    for a in angles:
+        assert min(abs(d - a) for d in directions) < 0.006, (a, line)
+    ok_oh = next(t for t in plain if t.startswith("i = ok/oh"))
+    ok, oh = (float(x) for x in re.search(r"= ([0-9.]+)/([0-9.]+)", ok_oh).groups())
+    xs = sorted({round(e.dxf.end.x, 3) for e in sh.doc.modelspace().query("LINE")} |
+                {round(e.dxf.start.x, 3) for e in sh.doc.modelspace().query("LINE")})
+    gaps = {round(abs(b - a), 2) for a in xs for b in xs}
+    assert ok in gaps and oh in gaps, (ok, oh)

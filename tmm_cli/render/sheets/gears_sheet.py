@@ -213,9 +213,15 @@ def _scheme_field(sh: Sheet, r, lang: str):
         sh.dot(q, 0.5)
         sh.label(t, q, H_MIN_LABEL, within=inner, dirs=("ne", "e", "se", "n", "nw"), priority=5)
     s0, sl = v.stages[0], v.stages[-1]
+
+    def drawn(phi_deg: float) -> float:
+        """The angle of a ray as drawn here [°]: velocities at k_V, radii at the scheme's scale (the
+        core's φ is at equal scales); tg φ scales by kv/f alike for k and H, so i = tg φ_k / tg φ_H holds."""
+        return math.degrees(math.atan(kv / f * math.tan(math.radians(phi_deg))))
+
     rr = 0.35 * f * min(s0.r_a, sl.r_c)
-    sh.dim_arc(V(0, 0), rr, 90 - s0.phi_k_deg, 90, "φ_{k}", H_MIN_LABEL, within=inner)
-    sh.dim_arc(V(0, 0), rr * 1.45, 90 - sl.phi_h_deg, 90, "φ_{H}", H_MIN_LABEL, within=inner)
+    sh.dim_arc(V(0, 0), rr, 90 - drawn(s0.phi_k_deg), 90, "φ_{k}", H_MIN_LABEL, within=inner)
+    sh.dim_arc(V(0, 0), rr * 1.45, 90 - drawn(sl.phi_h_deg), 90, "φ_{H}", H_MIN_LABEL, within=inner)
     ratios = " · ".join(_n(s.ratio, lang, 4) for s in v.stages)
     mm = tr(lang, "mm")
     teeth = "; ".join(", ".join(f"{n} = {val}" for n, val in zip(
@@ -226,8 +232,8 @@ def _scheme_field(sh: Sheet, r, lang: str):
         + f"k_{{V}} = {num(k_v, lang, sig=3)} " + tr(lang, "(m/s)/mm") + ";  "
         + tr(lang, "scheme {scheme}: ").format(scheme=d.scheme) + teeth,
         f"i = tg φ_{{k}} / tg φ_{{H}} = {ratios};  φ_{{k}} = "
-        + "; ".join(f"{_n(s.phi_k_deg, lang, 2)}°" for s in v.stages)
-        + ";  φ_{H} = " + "; ".join(f"{_n(s.phi_h_deg, lang, 2)}°" for s in v.stages),
+        + "; ".join(f"{_n(drawn(s.phi_k_deg), lang, 2)}°" for s in v.stages)
+        + ";  φ_{H} = " + "; ".join(f"{_n(drawn(s.phi_h_deg), lang, 2)}°" for s in v.stages),
     ]
     sh.caption(x0b, x1b, y0b + 2.5, lines, H_NOTE, LINE)
     return fld, rmax
@@ -279,7 +285,8 @@ def _angular_field(sh: Sheet, r, lang: str):
         sh.line(pole, q, "Основные")
         sh.dot(q, 0.5)
         sh.label(name, q, H_LABEL, within=inner, dirs=("n", "ne", "nw"), dists=(1.2, 2.5, 4.0), priority=7)
-    lines = [f"i = ok/oh = {_n(v.ok, lang, 1)}/{_n(v.oh, lang, 2)} = {_n(v.ratio, lang, 4)}",
+    # the segments as drawn here [mm] (the core's ok, oh are at its own pole distance)
+    lines = [f"i = ok/oh = {_n(v.ok * f, lang, 2)}/{_n(v.oh * f, lang, 2)} ≈ {_n(v.ratio, lang, 3)}",
              f"k_{{ω}} = {num(k_w, lang, sig=3)} " + tr(lang, "(rad/s)/mm") + ";  "
              + tr(lang, "pole distance") + f" {_n(h * f, lang, 1)} " + tr(lang, "mm")]
     sh.caption(x0b, x1b, y0b + 2.5, lines, H_NOTE, LINE)
