@@ -655,7 +655,12 @@ def _profile_field(sh: Sheet, r, lang: str, box):
             ray = rays[j_row]
             rl = _local_radius(r, fac, ray)
             end = o_s + ray * (rl + 6.0)
-            sh.line(o_s + ray * (rl + 2.0), end, "Тонкие")
+            # the division point C_i of the angle scale, and its ray out to the number i′ (the book's
+            # inversion: the follower's axis at position i is the tangent at C_i, drawn above)
+            c_i = o_s + ray * float(np.hypot(*foot)) * fac
+            if np.hypot(*foot) * fac > 0.5:
+                sh.dot(c_i, 0.4)
+            sh.line(c_i, end, "Тонкие")
         sh.label(f"{row.index}′", end, H_MIN_LABEL, within=within, dirs=_dirs(ray), dists=(0.8, 2.0, 3.5), priority=4)
     # centre O, the pivot C_0 (rocker) with the rocker in the start position
     _cross(sh, o_s, 5.0)
