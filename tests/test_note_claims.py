@@ -325,6 +325,20 @@ def test_the_conclusion_states_requirements_not_assumptions():
     assert "## 3 Принятые допущения" in md
 
 
+def test_without_the_moment_the_note_claims_no_motor_power():
+    """No mean moment (sheet 2) given: the power is not computed, so the task does not list it and
+    the conclusion does not say every requirement of the task is met (teacher's review); with the
+    moment both come back."""
+    _, doc = note_of(17, {})
+    md = markdown(doc, "t")
+    task = md[:md.index("## Реферат")] if "## Реферат" in md else md[:3000]
+    assert "мощность двигателя." not in task
+    assert "Все требования задания выполнены" not in md and "мощности нужен средний приведённый момент" in md
+    _, doc = note_of(17, {"crank_rpm": 140.0, "torque_nm": 80.0})
+    md = markdown(doc, "t")
+    assert "мощность двигателя." in md and "Все требования задания выполнены" in md
+
+
 # ---------------------------------------------------------------------------------------------------
 # the program does not speak
 

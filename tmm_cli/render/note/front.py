@@ -91,7 +91,8 @@ def _task(c: Ctx, title) -> None:
         t("the main dimensions of the cam mechanism by the allowed pressure angle;"),
         t("the profile of the cam;"),
         t("the choice of the motor, the scheme and the tooth numbers of the planetary reducer;"),
-        t("the geometry of the spur pair and its contact ratio; the power of the motor."),
+        t("the geometry of the spur pair and its contact ratio; the power of the motor.") if c.r.gears.torque_nm is not None
+        else t("the geometry of the spur pair and its contact ratio."),
     ]
     c.doc.add(TaskSheet(t("Task"), lines, contents))
 
@@ -237,6 +238,9 @@ def conclusion(c: Ctx) -> None:
     if bad:
         c.p(c.nt("{bad} of the requirements is not met; the design has to be revised there.",
                  "{bad} of the requirements are not met; the design has to be revised there.", len(bad)).format(bad=len(bad)))
+    elif g.power is None:  # no mean moment (sheet 2) given: the motor is chosen by its speed alone
+        c.p(t("All requirements checked in this note are met. The motor is chosen by its speed only: its power "
+              "needs the mean reduced moment of sheet 2, which is not given."))
     else:
         c.p(t("All requirements of the task are met."))
 
