@@ -111,3 +111,17 @@ def test_batch_runs_a_roster_with_mechanisms(tmp_path):
     without = json.loads(next((tmp_path / "out").rglob("variant-18/results.json")).read_text(encoding="utf-8"))
     assert with_file["gears"]["crank_rpm"] == pytest.approx(60.0) and "mechanism" in with_file
     assert without["gears"]["crank_rpm_assumed"] and "mechanism" not in without
+
+
+def test_project_sheets_share_one_designation_scheme(tmp_path):
+    """With --mechanism the four sheets carry the project's variant in ТММ.<sheet>.<variant>.00.00
+    (sheets 1–2 said 00, sheets 3–4 the variant; teacher's review)."""
+    import ezdxf
+
+    r = run("project", "-v", 17, "--mechanism", EXAMPLES / "four_bar.toml", "--no-plots", "--report", "md",
+            "--out", tmp_path, "--lang", "ru")
+    assert r.exit_code == 0, r.output
+    folder = tmp_path / "variant-17"
+    for n in (1, 2, 3, 4):
+        texts = {e.dxf.text for e in ezdxf.readfile(folder / f"sheet{n}.dxf").modelspace().query("TEXT")}
+        assert f"ТММ.0{n}.17.00.00" in texts, n

@@ -113,7 +113,7 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
 
             later.append(lambda: write_sheets(tmp, result, lang, title))
             if result.linkage is not None:  # and sheets 1–2 of the mechanism file (tmm project --mechanism)
-                later.append(lambda: _write_linkage_sheets(tmp, result.linkage, lang, title))
+                later.append(lambda: _write_linkage_sheets(tmp, result.linkage, lang, title, result.variant.number))
         if parallel and (names or note_figs):
             prepare_figures(svg, note=bool(note_figs))
         with SharedWork(draw, later, fork=parallel) as work:
@@ -162,14 +162,15 @@ def _write_linkage_data(tmp: Path, s2, lang: str) -> None:
     write_text(tmp / "linkage_dynamics.csv", dynamics_csv(s2))
 
 
-def _write_linkage_sheets(tmp: Path, s2, lang: str, title) -> list[str]:
+def _write_linkage_sheets(tmp: Path, s2, lang: str, title, variant: int) -> list[str]:
     from ..inputs.titleblock import TitleFields
     from .sheets import save_sheet
     from .sheets.dynamics_sheet import sheet2
     from .sheets.linkage_sheet import sheet1
 
     title = title or TitleFields()
-    return save_sheet(sheet1(s2.sheet1, lang, title), tmp, "sheet1") + save_sheet(sheet2(s2, lang, title), tmp, "sheet2")
+    return (save_sheet(sheet1(s2.sheet1, lang, title, variant), tmp, "sheet1")
+            + save_sheet(sheet2(s2, lang, title, variant), tmp, "sheet2"))
 
 
 def _note_files(result, note_figs) -> dict:

@@ -734,8 +734,9 @@ def _rows(s: Sheet2, lang: str) -> list[tuple[str, str]]:
     return rows
 
 
-def sheet2(s: Sheet2, lang: str, title) -> Sheet:
-    """Build sheet 2 of a mechanism (no file written)."""
+def sheet2(s: Sheet2, lang: str, title, variant: int = 0) -> Sheet:
+    """Build sheet 2 of a mechanism (no file written); `variant` (the project's, with sheets 3–4)
+    goes into the designation ТММ.02.<variant>.00.00 like theirs (0 for `tmm linkage` alone)."""
     sh = Sheet(lang)
     sh.frame()
     rows = _rows(s, lang)
@@ -749,6 +750,6 @@ def sheet2(s: Sheet2, lang: str, title) -> Sheet:
         _wittenbauer_field(sh, s, lang, lay.wittenbauer)
     _results(sh, s, lang, lay.table)
     sh.title_block(title, name=tr(lang, "Force analysis of the lever mechanism and the flywheel"),
-                   designation=title.designation_for(2, 0), scale=lay.group_scale[0])
+                   designation=title.designation_for(2, variant), scale=lay.group_scale[0])
     sh.finish()
     return sh

@@ -503,8 +503,9 @@ def _results(sh: Sheet, s: Sheet1, lang: str, box) -> None:
     table(sh, box, tr(lang, "Main results"), rows, col1=0.55, h=H_NOTE)
 
 
-def sheet1(s: Sheet1, lang: str, title) -> Sheet:
-    """Build sheet 1 of a mechanism (no file written)."""
+def sheet1(s: Sheet1, lang: str, title, variant: int = 0) -> Sheet:
+    """Build sheet 1 of a mechanism (no file written); `variant` (the project's, with sheets 3–4)
+    goes into the designation ТММ.01.<variant>.00.00 like theirs (0 for `tmm linkage` alone)."""
     sh = Sheet(lang)
     sh.frame()
     lay = layout(sh, s, lang)
@@ -515,6 +516,6 @@ def sheet1(s: Sheet1, lang: str, title) -> Sheet:
         _plan_field(sh, s, pl.acceleration, boxes[1], pl.position.label, pl.position.index, lang)
     _results(sh, s, lang, lay.table)
     sh.title_block(title, name=tr(lang, "Kinematic analysis of the lever mechanism"),
-                   designation=title.designation_for(1, 0), scale=scheme.scale_label)
+                   designation=title.designation_for(1, variant), scale=scheme.scale_label)
     sh.finish()
     return sh
