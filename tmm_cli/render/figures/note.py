@@ -374,9 +374,11 @@ def _planetary(g, lang: str):
     for t in list(ax_a.texts):
         if "=" in t.get_text():
             t.remove()
-    m = "m"  # the module's symbol
-    _mu(ax_s, mt(f"μ_l = {_mus(sc.mu_l_per_module, lang)}·{m} " + tr(lang, "mm/mm (radii)")))
-    _mu(ax_v, mt(f"μ_V = {_n(sc.mu_v_per_module, lang, sig=3)}·{m} " + tr(lang, "(m/s)/mm")))
+    # the planetary's module is not chosen by the book's synthesis: the radii are drawn for m = 1 mm
+    # (as on sheet 4), so the scales are numbers (per module they scale with m)
+    m1 = tr(lang, "(m = 1 mm)")
+    _mu(ax_s, mt(f"μ_l = {_mus(sc.mu_l_per_module, lang)} " + tr(lang, "mm/mm") + " " + m1))
+    _mu(ax_v, mt(f"μ_V = {_n(sc.mu_v_per_module, lang, sig=3)} " + tr(lang, "(m/s)/mm") + " " + m1))
     _mu(ax_a, mt(f"μ_ω = {_n(sc.mu_omega, lang, sig=3)} " + tr(lang, "(rad/s)/mm")), "upper right")
     return fig
 
@@ -400,7 +402,7 @@ def _assembly(g, lang: str):
         ax.set_title(title, y=1.0, pad=4)
         ax.set_xlim(-mu * side / 2, mu * side / 2)
         ax.set_ylim(-mu * side / 2, mu * side / 2)
-    _mu(fig.axes[0], mt(f"μ_l = {_mus(mu, lang)}·m " + tr(lang, "mm/mm")), "lower left")
+    _mu(fig.axes[0], mt(f"μ_l = {_mus(mu, lang)} " + tr(lang, "mm/mm") + " " + tr(lang, "(m = 1 mm)")), "lower left")
     return fig
 
 
