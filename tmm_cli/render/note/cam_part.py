@@ -363,8 +363,10 @@ def _profile(c: Ctx, r) -> None:
     w, h = d.extent_mm
     c.p(t("The profile is drawn at the scale {scale} ($k_(S k) = {k_sk}$ m/mm, Table 1.1 {{cite:book}}): the largest "
           "scale of the standard series at which the cam with its roller ({width} × {height}) fits the field of "
-          "{field} × {field} of the sheet. The scale of the sizing construction is taken equal to that of the "
-          "displacement diagram, $k'_S = k_S$; the lengths are converted {{cite:book:formulas (1.26), (1.27)}}:").format(
+          "{field} × {field} of the sheet. The sizing construction is built in the scale of the displacement "
+          "diagram, $k'_S = k_S$ (§1.3.1 {{cite:book}}: its segments are laid off from the diagram's ordinates); "
+          "sheet 3 shows it at the standard scale stated in its field. The lengths are carried over to the "
+          "drawing of the profile {{cite:book:formulas (1.26), (1.27)}}:").format(
         scale=d.scale, k_sk=c.q(d.k_sk, sig=4), width=c.qty(w, mm, decimals=1), height=c.qty(h, mm, decimals=1),
         field=c.qty(d.field_mm, mm, decimals=0)))
     c.doc.claim(kind="cam_drawing_scale", scale=d.scale, fits=d.fits, width_mm=w, height_mm=h, field_mm=d.field_mm)
