@@ -47,6 +47,15 @@ def mtext_runs(content: str):
     return [(t, lv) for t, lv in out if t], wf
 
 
+def all_texts(doc) -> list[str]:
+    """Every text of the sheet as a reader sees it: TEXT as written, MTEXT with its stacked indices
+    written inline (r\\S^ 0; -> r0), a number's minus (set as «–»: the sheet font has no U+2212)
+    read as '-'."""
+    out = [e.dxf.text for e in doc.modelspace().query("TEXT")]
+    out += ["".join(t for t, _ in mtext_runs(e.text)[0]) for e in doc.modelspace().query("MTEXT")]
+    return [re.sub(r"–(?=\d)", "-", t) for t in out]
+
+
 def text_boxes(doc):
     """(entity, corners (4, 2), height, rotation, plain text) of every TEXT and MTEXT."""
     out = []

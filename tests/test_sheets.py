@@ -17,6 +17,7 @@ import ezdxf
 import numpy as np
 import pytest
 from click.testing import CliRunner
+from sheet_check import all_texts  # noqa: E402  (re-exported: the other sheet tests import it from here)
 
 from tmm_cli.cam.design import design_cam
 from tmm_cli.cli import cli
@@ -36,14 +37,6 @@ TITLE = TitleFields(student="Иванов И. И.", group="П-243", teacher="П�
 GEAR_CASES = {"1": 220.0, "2": 60.0, "1+1": 40.0}
 
 
-def all_texts(doc) -> list[str]:
-    """Every text of the sheet as a reader sees it: TEXT as written, MTEXT with its stacked
-    indices written inline (r\\S^ 0; -> r0)."""
-    from sheet_check import mtext_runs
-
-    out = [e.dxf.text for e in doc.modelspace().query("TEXT")]
-    out += ["".join(t for t, _ in mtext_runs(e.text)[0]) for e in doc.modelspace().query("MTEXT")]
-    return out
 
 
 def fields(doc) -> dict:

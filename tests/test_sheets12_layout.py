@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sheet_check import field_boxes, mtext_runs, problems
+from sheet_check import all_texts, field_boxes, mtext_runs, problems
 from test_sheets import TITLE
 from tmm_cli.linkage.analysis import analyse
 from tmm_cli.linkage.geometry import make_geometry
@@ -168,10 +168,7 @@ def test_english(name):
 # the core's scales and numbers
 
 
-def _texts(doc) -> list[str]:
-    out = [e.dxf.text for e in doc.modelspace().query("TEXT")]
-    out += ["".join(t for t, _ in mtext_runs(e.text)[0]) for e in doc.modelspace().query("MTEXT")]
-    return out
+_texts = all_texts
 
 
 def _placed_texts(doc) -> list[tuple[str, float, float]]:

@@ -404,7 +404,7 @@ def _zone_field(sh: Sheet, r, lang: str, box):
         f"ν_{{max}} = {num(v.nu_max_deg, lang, sig=6)}°;  r_{{0}} = {_n(z.r0_m * k, lang, 2)} {mm};  "
         + (f"l_{{OC}} = {_n(z.l_oc_m * k, lang, 2)} {mm};  l_{{BC}} = {num(v.l_bc_m * k, lang, sig=6)} {mm}"
            if z.rocker else f"e = {_n(z.e_m * k, lang, 2)} {mm}"),
-        tr(lang, "Hatched: the centres with ν ≤ ν_max at every position (the wedges at D_i)"),
+        tr(lang, "Hatched: the centres with ν ≤ ν_{max} at every position (the wedges at D_{i})"),
         tr(lang, "O_b — the book's vertex: r_0 = {v} mm").format(v=_n(z.book_r0_m * k, lang, 2)),
     ]
     if not fit.fits:

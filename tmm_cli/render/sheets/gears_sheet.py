@@ -228,7 +228,7 @@ def _scheme_field(sh: Sheet, r, lang: str):
         ("z_{k}", "z_{c}", "z_{c′}", "z_{n}") if s.z_planet2 is not None else ("z_{k}", "z_{c}", "z_{n}"), s.teeth))
         + f", k = {s.planets}" for s in d.stages)
     lines = [
-        f"K_{{S}} = {num(k_s, lang, sig=3)} " + tr(lang, "m/mm") + f" ({_m(lang, fit.label)}, m = 1 {mm});  "
+        f"k_{{l}} = {num(k_s, lang, sig=3)} " + tr(lang, "m/mm") + f" ({_m(lang, fit.label)}, m = 1 {mm});  "
         + f"k_{{V}} = {num(k_v, lang, sig=3)} " + tr(lang, "(m/s)/mm") + ";  "
         + tr(lang, "scheme {scheme}: ").format(scheme=d.scheme) + teeth,
         f"i = tg φ_{{k}} / tg φ_{{H}} = {ratios};  φ_{{k}} = "

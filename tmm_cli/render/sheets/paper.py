@@ -62,7 +62,19 @@ STYLE = "OpenGostTypeB-Regular"  # LibreCAD maps this name to its GOST type B fo
 FONT = "osifont.ttf"  # ships in tmm_cli/render/sheets/fonts (GPL with the font exception)
 FONT_DIR = Path(__file__).with_name("fonts")
 # characters osifont lacks, written with ones it has
-GLYPHS = str.maketrans({"′": "'", "−": "-", "→": "–", "…": "...", "\u2009": " ", "\u202f": " ", "\xa0": " "})
+# osifont has no U+2212 (minus): a minus is set as the en dash it has (a hyphen is too short beside
+# the digits, ГОСТ 2.304 draws the minus as long as the plus's bar)
+GLYPHS = str.maketrans({"′": "'", "−": "–", "→": "–", "…": "...", "\u2009": " ", "\u202f": " ", "\xa0": " "})
+_MINUS = re.compile(r"(?<![\w.,)\]])-(?=\d)")  # a hyphen-minus before a number (not in a word or range)
+
+
+def glyphs(text: str) -> str:
+    """`text` in the glyphs of the sheet's font: the translations above, a number's minus as «–».
+
+    >>> glyphs("e = -20,65 мм; (-0,29 %); радиус-вектор; 1-68; М 1:2")
+    'e = –20,65 мм; (–0,29 %); радиус-вектор; 1-68; М 1:2'
+    """
+    return _MINUS.sub("–", text.translate(GLYPHS))
 
 
 def gost_scale(label: str) -> float:
@@ -557,7 +569,7 @@ class Sheet:
 
     def text_width(self, text: str, h: float, wf: float = 1.0) -> float:
         w = 0.0
-        for part, lv in rich_parts(text.translate(GLYPHS)):
+        for part, lv in rich_parts(glyphs(text)):
             w += self._w(part, h if lv == 0 else h * SUB_RATIO, wf)
         return w
 
@@ -574,7 +586,7 @@ class Sheet:
     def _put(self, x, y, text: str, h: float, wf: float, rot: float, layer: str, register: bool = True):
         """One line of text with its insertion at the left end of the baseline; TEXT when plain,
         MTEXT when it carries an index."""
-        text = text.translate(GLYPHS)
+        text = glyphs(text)
         parts = rich_parts(text)
         sub = any(lv for _, lv in parts)
         if not sub:
@@ -687,7 +699,7 @@ class Sheet:
                 and self.obstacles.line_hits(corners) == 0)
 
     def _place(self, lab: Label) -> None:
-        text = lab.text.translate(GLYPHS)
+        text = glyphs(lab.text)
         h = lab.h
         w = self.text_width(text, h)
         sub = any(lv for _, lv in rich_parts(text))
