@@ -394,9 +394,13 @@ def _conditions(c: Ctx) -> None:
             if sc.k_max != sc.k_max_book:
                 c.p(t("The form of the textbook (z_k·i/k whole) admits at most $k = {k_max_book}$; the exact condition above admits $k = {k_max}$.").format(k_max_book=sc.k_max_book, k_max=sc.k_max))
         zbig = max(st.z_planet, st.zc2)
-        c.p(c.nt("4. Neighbouring {{cite:book:formula (2.5)}} (the larger planet, {z} tooth):",
-                 "4. Neighbouring {{cite:book:formula (2.5)}} (the larger planet, {z} teeth):", zbig).format(z=zbig),
-            indent=False)
+        if st.z_planet2 is None:  # a single-row planet has one crown
+            head = c.nt("4. Neighbouring {{cite:book:formula (2.5)}} (the planet, {z} tooth):",
+                        "4. Neighbouring {{cite:book:formula (2.5)}} (the planet, {z} teeth):", zbig)
+        else:
+            head = c.nt("4. Neighbouring {{cite:book:formula (2.5)}} (the larger planet, {z} tooth):",
+                        "4. Neighbouring {{cite:book:formula (2.5)}} (the larger planet, {z} teeth):", zbig)
+        c.p(head.format(z=zbig), indent=False)
         c.formula(c.calc(f"sin π/k", "sin π/{0}", [V(k, exact=True)], V(sc.neighbour_sin, decimals=4))
                   + " > " + c.calc("(z_c + 2 h^*_a)/(z_k + z_c)", "({0} + 2)/{1}",
                                    [V(zbig, exact=True), V(st.z_sun + st.z_planet, exact=True)],
