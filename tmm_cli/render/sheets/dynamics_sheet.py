@@ -346,7 +346,9 @@ def _lever_items(s: Sheet2, lang: str) -> list[str]:
     lv = s.lever
     nm = tr(lang, "N·m")
     return [tr(lang, "Σ M_{p}(F) = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)} " + tr(lang, "W"),
-            tr(lang, "M_{b} = ΣM_{p}/ω_{1} = ") + f"{num(float(lv.balancing[i]), lang, decimals=3)} {nm}",
+            # ω_1 signed (counter-clockwise positive, as M_b): the substitution shows why M_b takes its sign
+            tr(lang, "M_{b} = ΣM_{p}/ω_{1} = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)}/"
+            + f"({num(s.sheet1.mechanism.crank.omega, lang, sig=5)}) = {num(float(lv.balancing[i]), lang, decimals=3)} {nm}",
             tr(lang, "force analysis: ") + f"{num(float(s.balancing[i]), lang, decimals=3)} {nm}",
             f"Δ = {num(float(s.difference_pct()[i]), lang, decimals=4)} %"]
 
