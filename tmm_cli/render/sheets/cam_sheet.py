@@ -824,7 +824,7 @@ def _results(sh: Sheet, r, lang: str, box, prof_scale: str) -> None:
          f"{_n(p.psi_rise_deg, lang, 1)}°; {_n(p.psi_far_deg, lang, 1)}°; {_n(p.psi_return_deg, lang, 1)}°"),
         (tr(lang, "Scales k_{S}, k_{V}, k_{a}") if not z.rocker
          else tr(lang, "Scales k_{γ}, k_{ω}, k_{ε}"),
-         f"{_g(sc.k_s, lang, 3)}; {_g(sc.k_v, lang, 3)}; {_g(sc.k_a, lang, 3)}"),
+         f"{_g(sc.k_s, lang)}; {_g(sc.k_v, lang)}; {_g(sc.k_a, lang)}"),
         (tr(lang, "Profile scale (k_{Sk})"), _m(lang, prof_scale)),
         (tr(lang, "Closure, follower"),
          (tr(lang, "force closure") if z.closure == "force" else tr(lang, "form closure")) + ", "
