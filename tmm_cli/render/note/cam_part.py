@@ -226,6 +226,9 @@ def _scales(c: Ctx, r) -> None:
     c.formula(c.calc('Y_(a "в" max) = Y_(a "у" max) (φ_"у"/φ_"в")^2', "{0} dot ({1}/{2})^2",
                      [V(s.y_a_rise_max_mm, sig=4), V(v.phi_rise_deg, exact=True), V(v.phi_return_deg, exact=True)],
                      V(s.y_a_return_max_mm, sig=4), t("mm")), where=['Y_(a "в" max)', 'Y_(a "у" max)'])
+    if c.has("cam_motion"):  # the note's figures are drawn for the page, not at the sheet's scales
+        c.p(t("These are the scales of sheet 3. The figures of this note are drawn for its page, each at its own "
+              "scales μ, stated on the figure."))
 
 
 # --------------------------------------------------------------------------------------------------
