@@ -63,11 +63,12 @@ def read_template(path) -> str:
 # decides from the result whether it has anything to say.
 def _chapters():
     from .cam_part import cam_chapter
+    from .dynamics_part import dynamics_chapter
     from .gears_part import gears_chapter
 
     return (
         # linkage_structure_chapter,   sheet 1 (issue 24)
-        # linkage_forces_chapter,      sheet 2 (issue 25)
+        dynamics_chapter,  # sheet 2 (issue 25)
         cam_chapter,
         gears_chapter,
     )
