@@ -171,7 +171,7 @@ def _loads(c: Ctx, s) -> None:
           "(a moment is positive counter-clockwise).").format(label=p.label))
     c.table("dyn_loads", t("Forces and moments applied to the links, position {label}").format(label=p.label),
             [t("Symbol"), t("Kind"), t("Link"), t("Point"), t("Value")], rows,
-            align=["center", "left", "center", "center", "right"], widths=[0.9, 2.2, 0.7, 0.8, 1.3])
+            align=["center", "left", "center", "center", "right"], widths=[1.3, 2.0, 0.7, 0.8, 1.2])
 
 
 def _kind(c: Ctx, kind: str) -> str:
@@ -199,14 +199,17 @@ def _load(c: Ctx, s) -> None:
     f, on = float(fraction[i]), bool(working[i])
     sym = fsym(c, "Fc" if ld.kind == "force" else "Mc")
     unit = t("N") if ld.kind == "force" else t("N·m")
-    pairs = "; ".join(f"{n(x, sig=3)} → {n(y, sig=5)}" for x, y in zip(ld.stroke, ld.values))
     what = (t("The useful resistance ${sym}$ acts on the output slider along its guide against the working stroke; "
-              "its diagram gives it against the share of the working stroke covered (share → {unit}): {pairs}; "
-              "it is linear between these points and zero on the return stroke.") if ld.kind == "force" else
+              "its diagram (Table {{tab:dyn_load}}) gives it against the share of the working stroke covered; it is "
+              "linear between these points and zero on the return stroke.") if ld.kind == "force" else
             t("The useful resistance moment ${sym}$ acts on the output rocker against its working swing; its diagram "
-              "gives it against the share of the swing covered (share → {unit}): {pairs}; it is linear between these "
+              "(Table {{tab:dyn_load}}) gives it against the share of the swing covered; it is linear between these "
               "points and zero on the return stroke."))
-    c.p(what.format(sym=sym, unit=unit, pairs=pairs))
+    c.p(what.format(sym=sym))
+    share = t("Share of the working stroke") if ld.kind == "force" else t("Share of the working swing")
+    c.table("dyn_load", t("Diagram of the useful resistance"), [share] + [n(x, sig=3) for x in ld.stroke],
+            [[f"${sym}$, {unit}"] + [n(y, sig=5) for y in ld.values]],
+            align=["left"] + ["center"] * len(ld.stroke), widths=[2.2] + [1.0] * len(ld.stroke))
     value = float(table_value(ld, f)) if on else 0.0
     if on:
         c.p(t("In position {label} the crank is on the working stroke and the output has covered the share {share} of "
@@ -544,14 +547,14 @@ def _flywheel(c: Ctx, s) -> None:
     c.p(t("The flywheel keeps the crank speed within the allowed coefficient of speed fluctuation "
           "$δ = (ω_max - ω_min)/ω_1 = {delta}$. By N. I. Mertsalov's method {{cite:artobolevsky}} the links are split "
           "into the first group of constant reduced inertia $J_\"I\"$ (the crank, the rotor and the flywheel) and the "
-          "second, $J_\"II\"(φ) = J_\"пр\" - J_\"кр\" - J_\"рот\"$; the kinetic energy of the second group is taken at "
+          "second, $J_\"II\" (φ) = J_\"пр\" - J_\"кр\" - J_\"рот\"$; the kinetic energy of the second group is taken at "
           "the mean speed, and the first group's changes by").format(delta=c.q(fw.delta, sig=4)))
     c.formula('Δ T_"I" = Δ T - (J_"II" ω_1^2)/2',
               where=[('Δ T_"I"', t("the change of the kinetic energy of the first group, J")),
                      ('J_"II"', t("the reduced moment of inertia of the second group, kg·m²"))])
     hi, lo = float(me.dT_I[me.i_max]), float(me.dT_I[me.i_min])
-    deg = lambda k: n(math.degrees(float(d.travel[k])), decimals=1)  # noqa: E731
-    c.p(t("Over the turn $Δ T_\"I\"$ is largest at $φ = {phi_max}°$ and smallest at $φ = {phi_min}°$; the moment of "
+    deg = lambda k: c.qd(math.degrees(float(d.travel[k])), decimals=1)  # noqa: E731
+    c.p(t("Over the turn $Δ T_\"I\"$ is largest at $φ = {phi_max}$ and smallest at $φ = {phi_min}$; the moment of "
           "inertia the first group needs and the flywheel's:").format(phi_max=deg(me.i_max), phi_min=deg(me.i_min)))
     vals = [V(hi, sig=6), V(lo, sig=6), V(fw.delta, exact=True), V(fw.omega_mean, sig=5)]
     c.formula(c.calc('J_"I" = (Δ T_("I" max) - Δ T_("I" min))/(δ ω_1^2)', _neg("({0} - {1})/({2} dot {3}^2)", vals, 1),
@@ -587,7 +590,7 @@ def _flywheel(c: Ctx, s) -> None:
     if fw.size is not None:
         _size(c, fw)
     c.p(t("With the flywheel the crank speed changes over the turn between {w_min} and {w_max} rad/s: "
-          "$δ = {delta}$.").format(w_min=n(float(fw.omega.min()), sig=5), w_max=n(float(fw.omega.max()), sig=5),
+          "$δ = {delta}$.").format(w_min=n(float(fw.omega.min()), decimals=4), w_max=n(float(fw.omega.max()), decimals=4),
                                   delta=c.q(fw.delta_actual, sig=3)))
     c.doc.claim(kind="linkage_delta_actual", delta=fw.delta, actual=fw.delta_actual)
 
