@@ -309,3 +309,36 @@ def test_the_project_command_writes_the_chapter(tmp_path):
     assert "## 1 Силовой анализ и динамика рычажного механизма" in md
     assert "Артоболевский, И. И." in md  # the cited source is listed
     assert md.index("рычагу Жуковского") < md.index("Момент инерции маховика") < md.index("Синтез кулачкового")
+
+
+# ---------------------------------------------------------------------------------------------------
+# the documents
+
+
+@pytest.mark.parametrize("name", ["shaper", "four_bar"])
+def test_pdf_and_docx_carry_the_chapter(name, tmp_path):
+    """note.pdf (typst) and note.docx of the project with the chapter: both written, the chapter's
+    headings and numbers in them, the DOCX valid OOXML, no typst syntax left in the PDF's text."""
+    pypdf = pytest.importorskip("pypdf")
+    import docx
+
+    from tmm_cli.inputs.titleblock import TitleFields
+    from tmm_cli.render.note import write_note
+    from test_note import _audit, _squash, _text
+
+    r, _ = case(name)
+    write_note(tmp_path, r, "ru", TitleFields(), {}, docx=True, pdf=True)
+    text = _text(tmp_path / "note.pdf")
+    flat = _squash(text)
+    assert "Силовойанализидинамикарычажногомеханизма" in flat and "рычагуЖуковского" in flat
+    assert "Артоболевский,И.И." in flat
+    assert not re.search(r"[^\W_]_[^\W_(]|[^\W_]_\(", text)
+    numbers = [int(n) for n in re.findall(r"\((\d{1,3})\)\s*$", text, flags=re.M)]
+    assert numbers[:3] == [1, 2, 3] and len(numbers) == len(set(numbers))
+    m = abs(r.linkage.dynamics.M_d)
+    assert f"{m:.2f}".replace(".", ",") in text
+    d = docx.Document(str(tmp_path / "note.docx"))
+    body = "\n".join(p.text for p in d.paragraphs)
+    assert "Силовой анализ и динамика рычажного механизма" in body and "Момент инерции маховика" in body
+    _audit(tmp_path / "note.docx")
+    assert len(pypdf.PdfReader(tmp_path / "note.pdf").pages) > 20
