@@ -342,3 +342,57 @@ def test_pdf_and_docx_carry_the_chapter(name, tmp_path):
     assert "Силовой анализ и динамика рычажного механизма" in body and "Момент инерции маховика" in body
     _audit(tmp_path / "note.docx")
     assert len(pypdf.PdfReader(tmp_path / "note.pdf").pages) > 20
+
+
+# ---------------------------------------------------------------------------------------------------
+# other mechanism files: the chapter says what it has, and its substitutions still reproduce
+
+
+def _variant(name, change):
+    t = tables(name)
+    change(t)
+    return t
+
+
+def _no_dynamics(t):
+    del t["dynamics"]
+
+
+def _no_gravity_no_masses(t):
+    t["gravity"] = False
+    del t["mass"]
+
+
+def _crank_off_centre(t):  # the crank's centre of mass on OA: its weight and inertia force turn it
+    t["point"] = t.get("point", []) + [{"name": "S1", "link": ["O", "A"], "along": 0.03}]
+    t["mass"][0]["centre"] = "S1"
+
+
+def _return_stroke(t):  # the plans' position on the return stroke: no useful resistance there
+    t["plan"] = "9"
+
+
+VARIANTS = [("four_bar", _no_dynamics), ("shaper", _no_gravity_no_masses), ("four_bar", _crank_off_centre),
+            ("compressor", _crank_off_centre), ("shaper", _return_stroke)]
+
+
+@pytest.mark.parametrize("name,change", VARIANTS, ids=[f"{n}-{c.__name__.strip('_')}" for n, c in VARIANTS])
+def test_other_files(name, change):
+    s2 = analyse_linkage(_variant(name, change), f"{name}.toml")
+    r = dataclasses.replace(run_project(get_variant("17")), linkage=s2)
+    doc = build_note(r, "ru", {})
+    assert doc.off == []
+    for f in chapter_formulas(doc):
+        for c in check_line(f.math):
+            assert c.ok, f"{c.text} {c.relation} {c.target} in: {f.math}"
+    md = markdown(doc, "t")
+    chapter = md[md.index("Силовой анализ и динамика"):md.index("Синтез кулачкового")]
+    i = s2.force_position
+    assert result(doc, 'abs(M_"ур")') == pytest.approx(abs(float(s2.balancing[i])), rel=5e-4)
+    if change is _no_dynamics:
+        assert "маховик не рассчитывается" in chapter and "Мерцалова" not in chapter
+    if change is _no_gravity_no_masses:
+        assert "Силы тяжести" not in chapter and "Силы инерции приложены" not in chapter
+    if change is _return_stroke:
+        assert "совершает холостой ход" in chapter and "F<sub>пс</sub> = 0" in chapter
+        assert float(s2.balancing[i]) * s2.sheet1.cycle.kin.omega1 != 0

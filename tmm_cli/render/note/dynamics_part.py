@@ -374,10 +374,14 @@ def _crank(c: Ctx, s) -> None:
                          t("N·m")),
                   where=['M_"ур"', ("h_21", t("the arm of $R_21$ about the crank's pivot, m"))])
     else:
-        c.formula(c.calc(f'abs(M_"ур") = abs({r21} h_21 plus.minus Σ M_O^((1)))', "abs({0} + {1})",
-                         [V(abs(moment_r), sig=5), V(others if moment_r >= 0 else -others, sig=5)],
+        other = others if moment_r >= 0 else -others
+        c.formula(c.calc(f'abs(M_"ур") = abs({r21} h_21 plus.minus Σ M_({pt(mech.crank.pivot)})^((1)))',
+                         "abs({0} - {1})" if other < 0 else "abs({0} + {1})", [V(abs(moment_r), sig=5), V(abs(other), sig=5)],
                          V(abs(mb), sig=4), t("N·m")),
-                  where=['M_"ур"', ("h_21", t("the arm of $R_21$ about the crank's pivot, m"))])
+                  where=['M_"ур"', ("h_21", t("the arm of $R_21$ about the crank's pivot, m")),
+                         (f"Σ M_({pt(mech.crank.pivot)})^((1))",
+                          t("the moment about the crank's pivot of the crank's own loads (its weight and inertia force), "
+                            "N·m"))])
     w = kin.omega1
     drives = mb * w > 0
     sense = t("counter-clockwise") if mb > 0 else t("clockwise")
