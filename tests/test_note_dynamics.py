@@ -396,3 +396,54 @@ def test_other_files(name, change):
     if change is _return_stroke:
         assert "совершает холостой ход" in chapter and "F<sub>пс</sub> = 0" in chapter
         assert float(s2.balancing[i]) * s2.sheet1.cycle.kin.omega1 != 0
+
+
+# ---------------------------------------------------------------------------------------------------
+# the note's figure of sheet 2
+
+
+def test_the_dynamics_figure_is_drawn_only_with_a_mechanism():
+    from tmm_cli.render.note import NOTE_FIGURES, note_figures
+
+    r, _ = case("shaper")
+    assert note_figures(r) == NOTE_FIGURES + ("linkage_dynamics",)
+    assert note_figures(run_project(get_variant("17"))) == NOTE_FIGURES
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_the_dynamics_figure_at_round_scales(name):
+    """Each diagram at a round μ (1, 2, 2,5, 4, 5 × 10^k) that holds its curve; the turn at 2,5 °/mm
+    on 144 mm; no text under 10 pt on paper."""
+    from matplotlib.text import Text
+
+    from tmm_cli.render.figures import note_scales as S
+    from tmm_cli.render.figures.note import MIN_PT, note_figure, note_style
+
+    r, _ = case(name)
+    d = r.linkage.dynamics
+    sc = S.dynamics_scales(r.linkage)
+    assert sc.phi.mu * sc.phi.mm == pytest.approx(360.0) and sc.phi.mm <= S.DYNAMICS["x"][1]
+    for axis, lo, hi in ((sc.M, min(d.M_r.min(), d.M_d), max(d.M_r.max(), d.M_d)), (sc.T, d.dT.min(), d.dT.max()),
+                         (sc.J, d.J_r.min(), d.J_r.max())):
+        mantissa = axis.mu / 10 ** math.floor(math.log10(axis.mu))
+        assert any(abs(mantissa - m) < 1e-9 for m in (1, 2, 2.5, 4, 5)), axis.mu
+        assert axis.lo <= lo and hi <= axis.hi and axis.mm == S.DYNAMICS["panel"]
+    with note_style():
+        fig = note_figure(r, "ru", "linkage_dynamics")
+        texts = [t for t in fig.findobj(Text) if t.get_text()]
+        assert all(t.get_fontsize() >= MIN_PT for t in texts)
+        words = " ".join(t.get_text() for t in texts)
+        assert "положения кривошипа" in words and "пр" in words
+        w, h = fig.get_size_inches()
+        assert (w * 2.54, h * 2.54) == pytest.approx(S.figure_size_cm("linkage_dynamics"), abs=0.01)
+
+
+def test_the_project_draws_it_into_the_note(tmp_path):
+    res = CliRunner().invoke(cli, ["project", "-v", "17", "--mechanism", str(EXAMPLES / "four_bar.toml"), "--no-sheets",
+                                   "--report", "pdf", "--out", str(tmp_path), "--lang", "ru"])
+    assert res.exit_code == 0, res.output
+    folder = tmp_path / "variant-17"
+    assert (folder / "note_linkage_dynamics.svg").is_file()
+    typ = (folder / "note.typ").read_text(encoding="utf-8")
+    assert typ.count("note_linkage_dynamics.svg") == 1
+    assert typ.index("note_linkage_dynamics.svg") < typ.index("note_cam_motion.svg")

@@ -29,7 +29,14 @@ DOCX_FILE = "note.docx"
 # the note's own figures (drawn at the note's size, render/figures/note.py), in their order
 NOTE_FIGURES = ("cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle",
                 "gears_planetary", "gears_assembly", "gears_mesh")
+# … and those of sheets 1–2, drawn only for a project with a mechanism file (tmm project --mechanism)
+LINKAGE_NOTE_FIGURES = ("linkage_dynamics",)
 MAX_TEMPLATE_BYTES = NOTE_TEMPLATE_BYTES
+
+
+def note_figures(result) -> tuple[str, ...]:
+    """The note figures of this project: the cam's and the gears', and sheet 2's when it has one."""
+    return NOTE_FIGURES + (LINKAGE_NOTE_FIGURES if getattr(result, "linkage", None) is not None else ())
 
 
 def note_figure_file(name: str, ext: str = "svg") -> str:

@@ -535,6 +535,11 @@ def _reduction(c: Ctx, s) -> None:
     c.doc.claim(kind="linkage_drive_moment", moment=m, work=a_c)
     c.p(t("The driving work grows linearly, $A_\"д\" = M_\"д\" φ$, and the kinetic energy of the machine changes by "
           "$Δ T = A_\"д\" + A_\"с\"$ (Table {tab:dyn_reduced}); over the cycle $Δ T$ comes back to zero."))
+    if c.has("linkage_dynamics"):
+        c.p(t("The diagrams of $M_\"пр\"$ and $M_\"д\"$, of $Δ T$ (with $Δ T_\"I\"$ of the flywheel's calculation) and of "
+              "$J_\"пр\"$ over the crank's turn are shown in Figure {fig:linkage_dynamics}."))
+        c.fig("linkage_dynamics", t("Reduced moments, change of the kinetic energy and reduced moment of inertia over "
+                                    "the crank's turn"))
 
 
 # --- 5. the flywheel --------------------------------------------------------------------------------
