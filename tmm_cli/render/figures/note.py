@@ -439,9 +439,68 @@ def _mesh(g, lang: str):
     return fig
 
 
+# ------------------------------------------------------------------------------------------------
+# sheet 2 (tmm project --mechanism)
+
+
+def _dynamics(s2, lang: str):
+    """M_пр and M_д, ΔT and ΔT_I (Mertsalov), J_пр over the crank's turn from position 0, each at its
+    round μ; the positions of the crank marked on the axis."""
+    from .kit import mt
+
+    d, fw = s2.dynamics, s2.flywheel
+    c = s2.sheet1.cycle
+    sc = S.dynamics_scales(s2)
+    size = S.DYNAMICS["size"]
+    fig = _new(size)
+    left, width = S.DYNAMICS["x"]
+    ph, gap, bottom = S.DYNAMICS["panel"], S.DYNAMICS["gap"], S.DYNAMICS["bottom"]
+    x = np.degrees(d.travel)
+    nm, jj, kg, mm = tr(lang, "N·m"), tr(lang, "J"), tr(lang, "kg·m²"), tr(lang, "mm")
+    axes = []
+    for k in range(3):
+        box = S.Box(left, bottom + (2 - k) * (ph + gap), width, ph)
+        axes.append(_axes(fig, box, size))
+    ax = axes[0]
+    ax.plot(x, d.M_r, color="k", lw=1.2, label=mt(trc(lang, "note figure, dynamics", "M_r")))
+    ax.axhline(d.M_d, color=C_RET, lw=1.2, label=mt(trc(lang, "note figure, dynamics", "M_d")) + " = " + _n(d.M_d, lang, decimals=2) + " " + nm)
+    ax.set_ylabel(mt(f"M, {nm}"))
+    _limits(ax, sc.phi, sc.M)
+    _mu(ax, mt(f"μ_M = {_mus(sc.M.mu, lang)} {nm}/{mm}"), "lower left")
+    ax = axes[1]
+    ax.plot(x, d.dT, color="k", lw=1.2, label="Δ$T$")
+    if fw is not None:
+        me = fw.mertsalov
+        t1 = me.dT_I - me.dT_I[0]
+        ax.plot(x, t1, color=C_RISE, lw=1.1, ls="--", label="Δ" + mt("T_I"))  # I: the first group (Mertsalov)
+        for j, mark in ((me.i_max, "v"), (me.i_min, "^")):
+            ax.plot(x[j], t1[j], mark, color=C_RISE, ms=5)
+    ax.set_ylabel(mt(f"ΔT, {jj}"))
+    _limits(ax, sc.phi, sc.T)
+    _mu(ax, mt(f"μ_T = {_mus(sc.T.mu, lang)} {jj}/{mm}"), "lower left")
+    ax = axes[2]
+    ax.plot(x, d.J_r, color="k", lw=1.2, label=mt(trc(lang, "note figure, dynamics", "J_r")))
+    ax.set_ylabel(mt(f"J, {kg}"))
+    _limits(ax, sc.phi, sc.J)
+    _mu(ax, mt(f"μ_J = {_mus(sc.J.mu, lang)} {kg}/{mm}"), "upper left")
+    ticks = [(math.degrees(p.travel), p.label) for p in c.positions if p.label.isdigit()] + [(360.0, "0")]
+    for k, ax in enumerate(axes):
+        if c.working is not None:
+            ax.axvspan(0, math.degrees(c.working), color=C_RISE, alpha=0.06, lw=0)
+        ax.axhline(0, color="k", lw=0.5)
+        ax.set_xticks([t for t, _ in ticks])
+        ax.set_xticklabels([lab for _, lab in ticks] if k == 2 else [])
+        ax.grid(alpha=0.3, lw=0.4)
+        ax.legend(loc="upper right", ncol=2, fontsize=MIN_PT, frameon=True, framealpha=0.9, edgecolor="0.6")
+    axes[-1].set_xlabel(mt(tr(lang, "positions of the crank; φ from position 0 (μ_φ = {mu} °/mm), the working stroke "
+                              "shaded").format(mu=_mus(sc.phi.mu, lang))))
+    return fig
+
+
 MAKERS = {"cam_motion": ("cam", _motion), "cam_zone": ("cam", _zone), "cam_profile": ("cam", _profile),
           "cam_pressure_angle": ("cam", _pressure), "gears_planetary": ("gears", _planetary),
-          "gears_assembly": ("gears", _assembly), "gears_mesh": ("gears", _mesh)}
+          "gears_assembly": ("gears", _assembly), "gears_mesh": ("gears", _mesh),
+          "linkage_dynamics": ("linkage", _dynamics)}
 
 
 def note_figure(result, lang: str, name: str):
@@ -449,7 +508,7 @@ def note_figure(result, lang: str, name: str):
     from .kit import decimal_commas
 
     part, make = MAKERS[name]
-    fig = make(result.cam if part == "cam" else result.gears, lang)
+    fig = make({"cam": result.cam, "gears": result.gears, "linkage": result.linkage}[part], lang)
     decimal_commas(fig, lang)
     legible(fig)
     return fig

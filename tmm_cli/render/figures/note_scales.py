@@ -89,6 +89,33 @@ MESH = {"size": (TEXT_WIDTH_MM, 140.0), "box": Box(18.0, 33.0, 143.0, 103.0)}
 PLANETARY = {"size": (TEXT_WIDTH_MM, 178.0), "scheme": Box(4.0, 52.0, 78.0, 122.0), "velocity": Box(86.0, 52.0, 76.0, 122.0),
              "angular": Box(86.0, 4.0, 76.0, 42.0)}
 ASSEMBLY_MM = 100.0  # one stage's plan, square (two stages: 76 mm each)
+# sheet 2's diagrams over the crank's turn (M_пр and M_д, ΔT and ΔT_I, J_пр): 360° at 2,5 °/mm on 144 mm
+DYNAMICS = {"size": (TEXT_WIDTH_MM, 162.0), "x": (17.0, 144.0), "panel": 40.0, "gap": 7.0, "bottom": 16.0,
+            "mu_phi": 2.5}
+
+
+@record
+class DynamicsScales:
+    """The note's diagrams of sheet 2 over the crank's turn φ (0 … 360°)."""
+
+    phi: Axis  # °
+    M: Axis  # N·m
+    T: Axis  # J
+    J: Axis  # kg·m²
+
+
+def dynamics_scales(s2) -> DynamicsScales:
+    """μ of the note's M_пр/M_д, ΔT/ΔT_I and J_пр diagrams (a Sheet2), each on its panel."""
+    d, fw = s2.dynamics, s2.flywheel
+    ph = DYNAMICS["panel"]
+    m_lo, m_hi = min(float(d.M_r.min()), d.M_d), max(float(d.M_r.max()), d.M_d)
+    t_lo, t_hi = float(d.dT.min()), float(d.dT.max())
+    if fw is not None:
+        dt1 = fw.mertsalov.dT_I - fw.mertsalov.dT_I[0]
+        t_lo, t_hi = min(t_lo, float(dt1.min())), max(t_hi, float(dt1.max()))
+    mu_phi = DYNAMICS["mu_phi"]
+    return DynamicsScales(Axis(0.0, mu_phi, 360.0 / mu_phi), fit_axis(m_lo, m_hi, ph), fit_axis(t_lo, t_hi, ph),
+                          fit_axis(float(d.J_r.min()), float(d.J_r.max()), ph, keep_zero=False))
 
 
 @record
@@ -236,7 +263,8 @@ def assembly_scale(gears) -> float:
 def figure_size_cm(name: str, gears=None) -> tuple[float, float]:
     """Width and height of a note figure as printed [cm]."""
     sizes = {"cam_motion": MOTION["size"], "cam_pressure_angle": PRESSURE["size"], "cam_zone": PLAN["size"],
-             "cam_profile": PLAN["size"], "gears_mesh": MESH["size"], "gears_planetary": PLANETARY["size"]}
+             "cam_profile": PLAN["size"], "gears_mesh": MESH["size"], "gears_planetary": PLANETARY["size"],
+             "linkage_dynamics": DYNAMICS["size"]}
     if name == "gears_assembly":
         n = len(gears.planetary.stages)
         side = assembly_side(gears)

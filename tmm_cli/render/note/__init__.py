@@ -29,7 +29,14 @@ DOCX_FILE = "note.docx"
 # the note's own figures (drawn at the note's size, render/figures/note.py), in their order
 NOTE_FIGURES = ("cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle",
                 "gears_planetary", "gears_assembly", "gears_mesh")
+# … and those of sheets 1–2, drawn only for a project with a mechanism file (tmm project --mechanism)
+LINKAGE_NOTE_FIGURES = ("linkage_dynamics",)
 MAX_TEMPLATE_BYTES = NOTE_TEMPLATE_BYTES
+
+
+def note_figures(result) -> tuple[str, ...]:
+    """The note figures of this project: the cam's and the gears', and sheet 2's when it has one."""
+    return NOTE_FIGURES + (LINKAGE_NOTE_FIGURES if getattr(result, "linkage", None) is not None else ())
 
 
 def note_figure_file(name: str, ext: str = "svg") -> str:
@@ -63,11 +70,12 @@ def read_template(path) -> str:
 # decides from the result whether it has anything to say.
 def _chapters():
     from .cam_part import cam_chapter
+    from .dynamics_part import dynamics_chapter
     from .gears_part import gears_chapter
 
     return (
         # linkage_structure_chapter,   sheet 1 (issue 24)
-        # linkage_forces_chapter,      sheet 2 (issue 25)
+        dynamics_chapter,  # sheet 2 (issue 25)
         cam_chapter,
         gears_chapter,
     )

@@ -1,0 +1,639 @@
+"""The chapter on the force analysis and the dynamics of the lever mechanism (sheet 2), from the
+:class:`~tmm_cli.linkage.sheet2.Sheet2` of ``tmm project --mechanism`` (``ProjectResult.linkage``).
+
+Nothing is computed anew: every number is read from the result (the applied forces, the reactions,
+Zhukovsky's lever, the reduced quantities, the flywheel); the substitutions only show how the
+printed numbers follow from each other (the tests recompute them). What the chapter states as a
+decision (the motor drives or brakes the crank in the position, a flywheel is needed or not) is a
+claim (:meth:`~.model.Document.claim`) that the tests check.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...i18n import N_
+from .ctx import Ctx, V
+from .model import Heading
+
+# the kinds of Assur groups as the book writes them (В — a turning pair, П — a sliding pair)
+_KIND = {"RRR": N_("RRR"), "RRP": N_("RRP"), "RPR": N_("RPR")}
+
+
+def dynamics_chapter(c: Ctx) -> None:
+    """Sheet 2's chapter; nothing without a mechanism file."""
+    s = getattr(c.r, "linkage", None)
+    if s is None:
+        return
+    c.doc.add(Heading(1, c.t("Force analysis and dynamics of the lever mechanism"), "chapter", "dynamics"))
+    _loads(c, s)
+    _groups(c, s)
+    _lever(c, s)
+    _reduction(c, s)
+    _flywheel(c, s)
+
+
+# --- symbols ----------------------------------------------------------------------------------------
+
+
+def _split(sym: str) -> tuple[str, str]:
+    """'MΦ3′' → ('MΦ', '3′'): the letters of a book's symbol and its number (with a tick)."""
+    k = 0
+    while k < len(sym) and not sym[k].isdigit():
+        k += 1
+    return sym[:k], sym[k:]
+
+
+def fsym(c: Ctx, sym: str) -> str:
+    """A force's or couple's symbol of :mod:`tmm_cli.linkage.forces` as typst math: 'Φ2' → Φ_2,
+    'MΦ3' → M_(Φ 3), 'Fc' → F_"пс", 'Rτ34' → R_34^τ, a lever's 'MΦ3′' → M_(Φ 3)^prime."""
+    tick = ""
+    for mark, word in (("″", '^"″"'), ("′", '^"′"')):
+        if sym.endswith(mark):
+            sym, tick = sym[:-1], word
+    if sym in ("Fc", "Mc"):
+        name = c.t(sym)  # the book's Fпс, Mпс
+        return f'{name[0]}_"{name[1:]}"' + tick
+    letters, number = _split(sym)
+    if letters == "MΦ":
+        return f"M_(Φ {number})" + tick
+    if letters in ("Rτ", "Rn"):
+        return f"R_({number.replace(',', ' ')})^{'τ' if letters == 'Rτ' else 'n'}"
+    if letters == "R":
+        return f"R_({number.replace(',', ' ')})"
+    return f"{letters}_{number}" + tick if number else letters + tick
+
+
+def pt(name: str) -> str:
+    """A point's name as typst math: 'A' → A, 'O2' → O_2, 'S3' → S_3."""
+    letters, number = _split(name)
+    if len(letters) == 1 and letters.isalpha() and (number.isdigit() or not number):
+        return f"{letters}_{number}" if number else letters
+    return f'"{name}"'
+
+
+def seg(a: str, b: str) -> str:
+    """A length's subscript: l_(A B), or l_("O2A") when a name is not one letter."""
+    if len(a) == 1 and len(b) == 1 and a.isalpha() and b.isalpha():
+        return f"l_({a} {b})"
+    return f'l_"{a}{b}"'
+
+
+def _neg(sub: str, vals: list, k: int) -> str:
+    """`sub` with the leaf {k} in parentheses when its value is negative (a − (−b))."""
+    v = vals[k]
+    if v.x < 0:
+        return sub.replace("{%d}" % k, "({%d})" % k)
+    return sub
+
+
+# --- 1. the loads of the position -----------------------------------------------------------------------
+
+
+def _position(s):
+    return s.sheet1.cycle.positions[s.force_position]
+
+
+def _loads(c: Ctx, s) -> None:
+    from ...linkage.forces import G
+    from ...linkage.masses import centre_motion
+
+    t, n = c.t, c.n
+    mech = s.sheet1.mechanism
+    kin = s.sheet1.cycle.kin
+    i = s.force_position
+    p = _position(s)
+    w1 = abs(kin.omega1)
+    c.doc.add(Heading(2, t("Loads of the mechanism in the position of the force analysis")))
+    c.p(t("The force analysis is made for position {label} of the crank ($φ = {phi}$), the position of the velocity "
+          "and acceleration plans of sheet 1. By d'Alembert's principle every moving link carries, beside the real "
+          "forces, the inertia force $Φ = -m a_S$ at its centre of mass and the inertia moment $M_Φ = -J_S ε$, and is "
+          "then in equilibrium {{cite:artobolevsky}}. The crank turns uniformly at its mean speed ($ε_1 = 0$); the "
+          "friction in the pairs is neglected.").format(label=p.label, phi=c.qd(math.degrees(p.phi) % 360, decimals=2)))
+    c.formula(c.calc("ω_1 = (π n_1)/30", "(π dot {0})/30", [V(mech.crank.rpm, sig=6, exact=True)],
+                     V(w1, sig=4), t("rad/s")), where=["ω_1", "n_1"])
+    # the masses
+    rows = []
+    for ms in s.input.masses:
+        ln = mech.link(ms.link)
+        rows.append([str(ms.number), _link_name(c, ln), n(ms.m, sig=4), n(ms.J, sig=4) if ms.J > 0 else "—",
+                     f"${pt(ms.label)}$"])
+    if rows:
+        c.p(t("The masses of the links, their moments of inertia about the centres of mass and the centres are given in "
+              "Table {tab:dyn_masses}; the links not listed are taken massless."))
+        c.table("dyn_masses", t("Masses of the links"),
+                [t("Link"), t("Name"), "$m$, " + t("kg"), "$J_S$, " + t("kg·m²"), t("Centre of mass")], rows,
+                align=["center", "left", "right", "right", "center"], widths=[0.7, 2.2, 1, 1.1, 1.2])
+    forces, couples = s.loading.forces, s.loading.couples
+    weights = [f for f in forces if f.kind == "weight"]
+    inertia = [f for f in forces if f.kind == "inertia"]
+    moments = [m for m in couples if m.kind == "inertia"]
+    mass_of = {ms.number: ms for ms in s.input.masses}
+    if weights:
+        c.p(t("The weights of the links act at their centres of mass downwards:"))
+        c.formula("G_i = m_i g", where=["G_i", "m_i", "g"])
+        c.formula(*[c.calc(f"G_{f.number} = m_{f.number} g", "{0} dot {1}",
+                           [V(mass_of[f.number].m, exact=True), V(G, exact=True)], V(abs(complex(f.f[i])), sig=4),
+                           t("N")) for f in weights])
+    if inertia:
+        c.p(t("The inertia forces act at the centres of mass against their accelerations $a_S$ (taken from the "
+              "acceleration plan of sheet 1):"))
+        c.formula("Φ_i = m_i a_(S i)", where=["Φ_i", "a_(S i)"])
+        lines = []
+        for f in inertia:
+            ms = mass_of[f.number]
+            a = abs(complex(centre_motion(kin, ms)[2][i]))
+            lines.append(c.calc(f"Φ_{f.number} = m_{f.number} a_(S {f.number})", "{0} dot {1}",
+                                [V(ms.m, exact=True), V(a, sig=4)], V(abs(complex(f.f[i])), sig=4), t("N")))
+        c.formula(*lines)
+    if moments:
+        c.p(t("The inertia moments act against the angular accelerations $ε$ of the links:"))
+        c.formula("M_(Φ i) = J_(S i) ε_i", where=["M_(Φ i)", "J_(S i)", "ε_i"])
+        lines = []
+        for m in moments:
+            ms = mass_of[m.number]
+            eps = abs(float(kin.epsilon[m.link][i]))
+            lines.append(c.calc(f"M_(Φ {m.number}) = J_(S {m.number}) ε_{m.number}", "{0} dot {1}",
+                                [V(ms.J, exact=True), V(eps, sig=4)], V(abs(float(m.m[i])), sig=4), t("N·m")))
+        c.formula(*lines)
+    _load(c, s)
+    # all the applied forces of the position
+    rows = []
+    for f in forces:
+        rows.append([f"${fsym(c, f.symbol)}$", _kind(c, f.kind), str(f.number), f"${pt(f.point)}$",
+                     n(abs(complex(f.f[i])), decimals=1) + " " + t("N")])
+    for m in couples:
+        rows.append([f"${fsym(c, m.symbol)}$", _kind(c, m.kind), str(m.number), "—",
+                     n(float(m.m[i]), decimals=2) + " " + t("N·m")])
+    c.p(t("The forces and moments applied to the links in position {label} are collected in Table {{tab:dyn_loads}} "
+          "(a moment is positive counter-clockwise).").format(label=p.label))
+    c.table("dyn_loads", t("Forces and moments applied to the links, position {label}").format(label=p.label),
+            [t("Symbol"), t("Kind"), t("Link"), t("Point"), t("Value")], rows,
+            align=["center", "left", "center", "center", "right"], widths=[1.3, 2.0, 0.7, 0.8, 1.2])
+
+
+def _kind(c: Ctx, kind: str) -> str:
+    return {"inertia": c.t("inertia"), "weight": c.t("weight"), "load": c.t("useful resistance")}[kind]
+
+
+def _link_name(c: Ctx, ln) -> str:
+    words = {"crank": c.t("crank"), "bar": c.t("bar"), "slider": c.t("slider"), "block": c.t("block"),
+             "slotted": c.t("slotted link")}
+    ends = ln.axis if ln.axis is not None and ln.kind not in ("slider", "block") else (ln.name,)
+    return words[ln.kind] + " " + "".join(ends)
+
+
+def _load(c: Ctx, s) -> None:
+    from ...linkage.loads import progress, table_value
+
+    t, n = c.t, c.n
+    ld, st = s.input.load, s.stroke
+    if ld is None or st is None:
+        return
+    mech = s.sheet1.mechanism
+    i = s.force_position
+    kin = s.sheet1.cycle.kin
+    _, fraction, working = progress(st, mech, kin)
+    f, on = float(fraction[i]), bool(working[i])
+    sym = fsym(c, "Fc" if ld.kind == "force" else "Mc")
+    unit = t("N") if ld.kind == "force" else t("N·m")
+    what = (t("The useful resistance ${sym}$ acts on the output slider along its guide against the working stroke; "
+              "its diagram (Table {{tab:dyn_load}}) gives it against the share of the working stroke covered; it is "
+              "linear between these points and zero on the return stroke.") if ld.kind == "force" else
+            t("The useful resistance moment ${sym}$ acts on the output rocker against its working swing; its diagram "
+              "(Table {{tab:dyn_load}}) gives it against the share of the swing covered; it is linear between these "
+              "points and zero on the return stroke."))
+    c.p(what.format(sym=sym))
+    share = t("Share of the working stroke") if ld.kind == "force" else t("Share of the working swing")
+    c.table("dyn_load", t("Diagram of the useful resistance"), [share] + [n(x, sig=3) for x in ld.stroke],
+            [[f"${sym}$, {unit}"] + [n(y, sig=5) for y in ld.values]],
+            align=["left"] + ["center"] * len(ld.stroke), widths=[2.2] + [1.0] * len(ld.stroke))
+    value = float(table_value(ld, f)) if on else 0.0
+    if on:
+        c.p(t("In position {label} the crank is on the working stroke and the output has covered the share {share} of "
+              "it, so ${sym} = {value}$ {unit}.").format(label=_position(s).label, share=n(f, decimals=3), sym=sym,
+                                                      value=c.q(value, decimals=1), unit=unit))
+    else:
+        c.p(t("In position {label} the crank is on the return stroke: ${sym} = 0$.").format(
+            label=_position(s).label, sym=sym))
+
+
+# --- 2. the groups ----------------------------------------------------------------------------------
+
+
+def known_moment(s, number: int, about: complex, i: int) -> float:
+    """Σ of the moments [N·m] about the point `about` of the known forces on the link `number` in
+    position `i`: its applied forces and couples and the reactions of the groups solved before it
+    (taken with the opposite sign), as the force analysis loads the link."""
+    from ...linkage.motion import cross
+
+    forces, couples = s.loading.on(number)
+    total = sum(float(cross(complex(f.z[i]) - about, complex(f.f[i]))) for f in forces)
+    total += sum(float(m.m[i]) for m in couples)
+    for r in s.forces.reactions:
+        if r.pair.links[0] == number and 0 < number < 2 * r.pair.group:
+            total += float(cross(complex(r.at[i]) - about, -complex(r.force[i])))
+            if r.couple is not None:
+                total -= float(r.couple[i])
+    return total
+
+
+def _groups(c: Ctx, s) -> None:
+    t, n = c.t, c.n
+    mech = s.sheet1.mechanism
+    kin = s.sheet1.cycle.kin
+    i = s.force_position
+    z = {k: complex(v[i]) for k, v in kin.z.items()}
+    N = t("N")
+    c.doc.add(Heading(2, t("Force analysis of the groups")))
+    c.p(t("The mechanism is analysed group by group from the last attached to the crank, each group with the forces "
+          "applied to it and the reactions of the groups already solved taken with the opposite sign "
+          "{cite:artobolevsky}. $R_(i j)$ is the force of link $i$ on link $j$ (0 the frame); a pin transmits a force "
+          "through its centre, a slide a force across the guide. The force polygons are drawn on sheet 2."))
+    first = True
+    for g in reversed(mech.groups):
+        n2, n3 = g.numbers
+        pa, pb, pc = g.pairs
+        ra, rb, rc = (s.forces.reaction(_label(q)) for q in g.pairs)
+        head = t("Group {index} ({kind}: links {n2} and {n3})").format(index=g.index, kind=t(_KIND[g.kind]), n2=n2,
+                                                                        n3=n3)
+        c.p(head + (t(" is solved first.") if first else t(" is solved next.")), indent=True)
+        first = False
+        if g.kind in ("RRR", "RRP"):
+            ja, jb = g.joints[0], g.joints[1]
+            l2 = abs(z[jb] - z[ja])
+            m2 = known_moment(s, n2, z[jb], i)
+            unknown = (t("Unknown are the reactions ${a}$ at ${A}$ and ${c}$ at ${C}$ (each in size and direction) and "
+                         "the inner reaction ${b}$. The outer ones are split into components along the links, "
+                         "$R^n$, and across them, $R^τ$; the moments of links {n2} and {n3} about ${B}$ give the "
+                         "tangential components:") if g.kind == "RRR" else
+                       t("Unknown are the reaction ${a}$ at ${A}$ (in size and direction), the guide's reaction ${c}$ "
+                         "across the guide and the inner reaction ${b}$. ${a}$ is split into the components along "
+                         "the link, $R^n$, and across it, $R^τ$; the moment of link {n2} about ${B}$ gives the "
+                         "tangential one:"))
+            c.p(unknown.format(a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label), A=pt(ja), B=pt(jb),
+                               C=pt(g.joints[-1]), n2=n2, n3=n3))
+            lines = [c.calc(f"{fsym(c, 'Rτ' + ra.label[1:])} = abs(Σ M_({pt(jb)})^(({n2})))/{seg(ja, jb)}", "{0}/{1}",
+                            [V(abs(m2), sig=5), V(l2, sig=4)], V(abs(complex(ra.tangential[i])), sig=4), N)]
+            if g.kind == "RRR":
+                jc = g.joints[2]
+                l3 = abs(z[jb] - z[jc])
+                m3 = known_moment(s, n3, z[jb], i)
+                lines.append(c.calc(f"{fsym(c, 'Rτ' + rc.label[1:])} = abs(Σ M_({pt(jb)})^(({n3})))/{seg(jc, jb)}",
+                                    "{0}/{1}", [V(abs(m3), sig=5), V(l3, sig=4)],
+                                    V(abs(complex(rc.tangential[i])), sig=4), N))
+            c.formula(*lines, where=[_sum_where(c, jb)])
+            if g.kind == "RRR":
+                poly = (f"{fsym(c, 'Rτ' + ra.label[1:])} + Σ F^(({n2})) + Σ F^(({n3})) + "
+                        f"{fsym(c, 'Rτ' + rc.label[1:])} + {fsym(c, 'Rn' + rc.label[1:])} + "
+                        f"{fsym(c, 'Rn' + ra.label[1:])} = 0")
+                c.p(t("The normal components close the force polygon of the group; the inner reaction follows from "
+                      "the polygon of link {n3}, ${b} = -({c} + Σ F^(({n3})))$:").format(
+                    n3=n3, b=fsym(c, rb.label), c=fsym(c, rc.label)))
+            else:
+                poly = (f"{fsym(c, 'Rτ' + ra.label[1:])} + Σ F^(({n2})) + Σ F^(({n3})) + {fsym(c, rc.label)} + "
+                        f"{fsym(c, 'Rn' + ra.label[1:])} = 0")
+                c.p(t("The normal component and the guide's reaction close the force polygon of the group; the inner "
+                      "reaction follows from the polygon of the slider, ${b} = -({c} + Σ F^(({n3})))$:").format(
+                    b=fsym(c, rb.label), c=fsym(c, rc.label), n3=n3))
+            c.formula(poly, numbered=False)
+        else:
+            ja, jc = g.joints
+            rho = abs(z[ja] - z[jc])
+            m3 = known_moment(s, n3, z[jc], i)
+            c.p(t("Unknown are the reaction ${a}$ on the block at ${A}$, the block's pressure ${b}$ on the slotted link "
+                  "(across the slot: the slide is frictionless) and the reaction ${c}$ at the pivot ${C}$. The moments "
+                  "of link {n3} about ${C}$ give the pressure of the block, ${l}$ being the distance from the pivot "
+                  "to the block:").format(l=seg(jc, ja), a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label), A=pt(ja),
+                                          C=pt(jc), n3=n3))
+            mb = float(rb.couple[i]) if rb.couple is not None else 0.0
+            if abs(mb) > 1e-9 * max(1.0, abs(m3)):
+                line = c.calc(f"{fsym(c, rb.label)} = abs(Σ M_({pt(jc)})^(({n3})) + M_({n2} {n3}))/{seg(jc, ja)}",
+                              "abs({0} + {1})/{2}", [V(m3, sig=5), V(mb, sig=5), V(rho, sig=4)],
+                              V(abs(complex(rb.force[i])), sig=4), N)
+            else:
+                line = c.calc(f"{fsym(c, rb.label)} = abs(Σ M_({pt(jc)})^(({n3})))/{seg(jc, ja)}", "{0}/{1}",
+                              [V(abs(m3), sig=5), V(rho, sig=4)], V(abs(complex(rb.force[i])), sig=4), N)
+            c.formula(line, where=[_sum_where(c, jc)])
+            c.p(t("The polygons of the block and of the slotted link give the other two:"))
+            c.formula(f"{fsym(c, ra.label)} = {fsym(c, rb.label)} - Σ F^(({n2})); quad "
+                      f"{fsym(c, rc.label)} = -({fsym(c, rb.label)} + Σ F^(({n3})))", numbered=False)
+        _group_table(c, s, g)
+    _crank(c, s)
+    _reactions_table(c, s)
+
+
+def _sum_where(c: Ctx, joint: str):
+    return (f"Σ M_({pt(joint)})^((k))", c.t("the sum of the moments about the point ${p}$ of the known forces on link "
+                                           "$k$, N·m").format(p=pt(joint)))
+
+
+def _label(pair) -> str:
+    from ...linkage.kinetostatics import pair_label
+
+    return pair_label(pair)
+
+
+def _group_table(c: Ctx, s, g) -> None:
+    """The reactions of one group found: their components and sizes."""
+    t, n = c.t, c.n
+    i = s.force_position
+    parts = []
+    for q in g.pairs:
+        r = s.forces.reaction(_label(q))
+        if r.tangential is not None:
+            parts.append(f"${fsym(c, 'Rτ' + r.label[1:])} = {c.q(abs(complex(r.tangential[i])), decimals=1)}$")
+            parts.append(f"${fsym(c, 'Rn' + r.label[1:])} = {c.q(abs(complex(r.normal[i])), decimals=1)}$")
+        parts.append(f"${fsym(c, r.label)} = {c.q(abs(complex(r.force[i])), decimals=1)}$")
+    c.p(t("The group's reactions, N: {list}.").format(list=", ".join(parts)))
+
+
+def _crank(c: Ctx, s) -> None:
+    from ...linkage.motion import cross
+
+    t = c.t
+    mech = s.sheet1.mechanism
+    kin = s.sheet1.cycle.kin
+    i = s.force_position
+    r01 = s.forces.reaction(_label(mech.pairs[0]))
+    r12 = next(r for r in s.forces.reactions if r.pair.links[0] == 1)
+    zo = complex(kin.z[mech.crank.pivot][i])
+    moment_r = float(cross(complex(r12.at[i]) - zo, -complex(r12.force[i])))
+    others = known_moment(s, 1, zo, i) - moment_r
+    mb = float(s.balancing[i])
+    size = abs(complex(r12.force[i]))
+    h = abs(moment_r) / size if size > 0 else 0.0
+    r21 = "R_21"
+    c.p(t("The crank comes last. On it act the reaction ${r21} = -{r12}$ of link 2, its own loads and the balancing "
+          "moment $M_\"ур\"$ of the motor; the frame's reaction ${r01}$ closes its polygon. The moments about "
+          "${O}$:").format(r21=r21, r12=fsym(c, r12.label), r01=fsym(c, r01.label), O=pt(mech.crank.pivot)))
+    if abs(others) <= 1e-9 * max(1.0, abs(moment_r)):
+        c.formula(c.calc(f'abs(M_"ур") = {r21} h_21', "{0} dot {1}", [V(size, sig=5), V(h, sig=4)], V(abs(mb), sig=4),
+                         t("N·m")),
+                  where=['M_"ур"', ("h_21", t("the arm of $R_21$ about the crank's pivot, m"))])
+    else:
+        other = others if moment_r >= 0 else -others
+        c.formula(c.calc(f'abs(M_"ур") = abs({r21} h_21 plus.minus Σ M_({pt(mech.crank.pivot)})^((1)))',
+                         "abs({0} - {1})" if other < 0 else "abs({0} + {1})", [V(abs(moment_r), sig=5), V(abs(other), sig=5)],
+                         V(abs(mb), sig=4), t("N·m")),
+                  where=['M_"ур"', ("h_21", t("the arm of $R_21$ about the crank's pivot, m")),
+                         (f"Σ M_({pt(mech.crank.pivot)})^((1))",
+                          t("the moment about the crank's pivot of the crank's own loads (its weight and inertia force), "
+                            "N·m"))])
+    w = kin.omega1
+    drives = mb * w > 0
+    sense = t("counter-clockwise") if mb > 0 else t("clockwise")
+    c.p((t("The balancing moment turns {sense}, the way the crank turns: in this position the motor drives the "
+           "mechanism.") if drives else
+         t("The balancing moment turns {sense}, against the crank's rotation: in this position the mechanism drives "
+           "the crank and the motor brakes it.")).format(sense=sense))
+    c.doc.claim(kind="linkage_balancing_sense", moment=mb, omega=w, drives=drives)
+
+
+def _reactions_table(c: Ctx, s) -> None:
+    t, n = c.t, c.n
+    i = s.force_position
+    rows = []
+    for r in s.forces.reactions:
+        what = t("pin") if r.pair.kind == "R" else t("slide")
+        rows.append([f"${fsym(c, r.label)}$", f"${pt(r.pair.joint)}$", what,
+                     n(abs(complex(r.force[i])), decimals=1)])
+    rows.append(['$M_"ур"$, ' + t("N·m"), "—", "—", n(float(s.balancing[i]), decimals=2)])
+    c.p(t("The reactions of the pairs in position {label} are given in Table {{tab:dyn_reactions}}.").format(
+        label=_position(s).label))
+    c.table("dyn_reactions", t("Reactions in the kinematic pairs and the balancing moment, position {label}").format(
+        label=_position(s).label), [t("Pair"), t("Joint"), t("Kind"), t("Magnitude, N")], rows,
+        align=["center", "center", "left", "right"], widths=[1, 0.8, 1.2, 1.3])
+
+
+# --- 3. Zhukovsky's lever -----------------------------------------------------------------------------
+
+
+def _lever(c: Ctx, s) -> None:
+    t, n = c.t, c.n
+    mech = s.sheet1.mechanism
+    kin = s.sheet1.cycle.kin
+    i = s.force_position
+    plan = s.sheet1.plans[0]
+    mu = plan.velocity.scale
+    c.doc.add(Heading(2, t("Balancing moment by Zhukovsky's lever")))
+    c.p(t("The balancing moment is checked by N. E. Zhukovsky's theorem {{cite:artobolevsky}}: the velocity plan of "
+          "position {label} ($μ_v = {mu}$ m/(s·mm)) is turned through 90°, every force is applied at the image of "
+          "its point, parallel to itself (an inertia moment as two forces $M_Φ/l$ across its link at the link's "
+          "ends), and the plan, a rigid lever pivoted at the pole $p$, is in equilibrium with the balancing force "
+          "$F_\"ур\"$ at the image $a$ of the crank pin, across the crank. The arms $h$ are measured on the turned "
+          "plan (Table {{tab:dyn_lever}}).").format(label=plan.position.label, mu=c.q(mu, sig=3)))
+    rows = []
+    total = 0.0
+    for f in s.lever.forces:
+        size = abs(complex(f.force[i]))
+        mom = float(f.moment[i]) / mu  # N·mm on the plan
+        if size <= 1e-12:
+            continue
+        total += mom
+        rows.append([f"${fsym(c, f.symbol)}$", f"${pt(f.point)}$", n(size, decimals=2),
+                     n(abs(mom) / size, decimals=2), n(mom, decimals=1)])
+    rows.append([t("Sum"), "", "", "", n(total, decimals=1)])
+    c.table("dyn_lever", t("Moments of the forces about the pole of the turned velocity plan (counter-clockwise "
+                           "positive)"),
+            [t("Force"), t("Point"), "$F$, " + t("N"), "$h$, " + t("mm"), "$F h$, " + t("N·mm")], rows,
+            align=["center", "center", "right", "right", "right"], widths=[1, 0.8, 1.1, 1, 1.3])
+    r = complex(kin.z[mech.crank.joint][i] - kin.z[mech.crank.pivot][i])
+    pa = abs(kin.omega1) * abs(r) / mu
+    fb = abs(complex(s.lever.balancing_force[i]))
+    mz = float(s.lever.balancing[i])
+    l1 = mech.crank.length
+    c.p(t("The balancing force from the equilibrium of the lever, $F_\"ур\" dot p a = abs(Σ F_i h_i)$, and the "
+          "balancing moment:"))
+    c.formula(c.calc('F_"ур" = abs(Σ F_i h_i)/(p a)', "{0}/{1}", [V(abs(total), sig=6), V(pa, sig=5)], V(fb, sig=4),
+                     t("N")),
+              c.calc('M_"ур"^"Ж" = F_"ур" l_1', "{0} dot {1}", [V(fb, sig=5), V(l1, exact=True)], V(abs(mz), sig=4),
+                     t("N·m")),
+              where=[('F_"ур"', t("the balancing force at the crank pin, N")),
+                     ("p a", t("the image of the crank pin's velocity on the plan, mm")),
+                     ("l_1", t("the length of the crank, m"))])
+    mb = float(s.balancing[i])
+    diff = float(s.difference_pct()[i])
+    c.p(t("Its difference from the moment of the force analysis:"))
+    c.formula(c.calc('Δ = (abs(M_"ур") - abs(M_"ур"^"Ж"))/abs(M_"ур") dot 100', "({0} - {1})/{0} dot 100",
+                     [V(abs(mb), sig=6), V(abs(mz), sig=6)], V(abs(diff) if abs(diff) < 5e-3 else diff, decimals=2),
+                     "%"))
+    ok = abs(diff) < 1.0
+    c.p((t("The two agree within 1 %, as required: both rest on the same exact velocity and acceleration plans, so "
+           "they differ by rounding only.") if ok else
+         t("The two differ by more than 1 %.")))
+    c.doc.claim(kind="linkage_zhukovsky", kinetostatic=mb, lever=mz, diff_pct=diff, ok=ok)
+
+
+# --- 4. the reduction to the crank, the driving moment --------------------------------------------------
+
+
+def _reduction(c: Ctx, s) -> None:
+    from ...linkage.loads import table_integral
+
+    t, n = c.t, c.n
+    d = s.dynamics
+    positions = s.sheet1.cycle.positions
+    c.doc.add(Heading(2, t("Dynamic model: reduced moment and reduced moment of inertia")))
+    c.p(t("The mechanism is replaced by its dynamic model: the crank with the reduced moment of the resistance forces "
+          "and weights and the reduced moment of inertia of all the links {cite:artobolevsky}, found from the "
+          "equality of powers and of kinetic energies:"))
+    c.formula('M_"пр" = 1/ω_1 Σ (F_i v_i cos α_i + M_i ω_i)',
+              where=['M_"пр"', ("F_i, v_i", t("a force and the velocity of its point, N, m/s")),
+                     ("α_i", t("the angle between them")), ("M_i, ω_i", t("a moment and the angular velocity of its "
+                                                                        "link, N·m, rad/s"))])
+    c.formula('J_"пр" = Σ (m_i (v_(S i)/ω_1)^2 + J_(S i) (ω_i/ω_1)^2) + J_"рот"',
+              where=['J_"пр"', ("v_(S i)", t("the velocity of the centre of mass of link $i$, m/s")),
+                     ('J_"рот"', t("the moment of inertia of the rotor and the gears reduced to the crank, kg·m²"))])
+    sense = t("counter-clockwise") if d.sense > 0 else t("clockwise")
+    c.p(t("Here the moments and works are taken positive when they drive the crank (it turns {sense}); $φ$ is the "
+          "angle the crank has turned from position 0. The values at the positions (from the grid of every 0,5° on "
+          "which the works are computed) are given in Table {{tab:dyn_reduced}}.").format(sense=sense))
+    rows = []
+    for p in positions:
+        k = p.index
+        at = lambda y: float(np.interp(p.travel, d.travel, y))  # noqa: E731
+        rows.append([p.label, n(math.degrees(p.travel), decimals=1), n(d.sense * float(s.reduced_moment[k]), decimals=2),
+                     n(float(s.reduced_inertia[k]), sig=5), n(at(d.A_r), decimals=2), n(at(d.dT), decimals=2)])
+    rows.append(["0", "360", n(float(d.M_r[-1]), decimals=2), n(float(d.J_r[-1]), sig=5), n(float(d.A_r[-1]), decimals=2),
+                 n(float(d.dT[-1]), decimals=2)])
+    c.table("dyn_reduced", t("Reduced moment, reduced moment of inertia, work of the resistances and change of the "
+                             "kinetic energy"),
+            ["№", "$φ$, °", '$M_"пр"$, ' + t("N·m"), '$J_"пр"$, ' + t("kg·m²"), '$A_"с"$, ' + t("J"),
+             "$Δ T$, " + t("J")], rows,
+            align=["center"] + ["right"] * 5, widths=[0.6, 0.8, 1.1, 1.2, 1.1, 1.1])
+    # the work of the resistances over the cycle
+    ld, st = s.input.load, s.stroke
+    a_c = float(d.A_r[-1])
+    if ld is not None and st is not None:
+        area = float(table_integral(ld, 1.0))
+        if ld.kind == "force":
+            c.p(t("The work of the resistances over a cycle: the weights do none (their centres come back), the useful "
+                  "resistance takes the area $S_F$ under its diagram times the stroke $H$:"))
+            c.formula(c.calc('A_"с" = -H S_F', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)], V(a_c, sig=5),
+                             t("J")),
+                      where=['A_"с"', ("H", t("the stroke of the output slider, m")),
+                             ("S_F", t("the area under the diagram of the useful resistance against the share of the "
+                                       "stroke, N"))])
+        else:
+            c.p(t("The work of the resistances over a cycle: the weights do none (their centres come back), the useful "
+                  "resistance takes the area $S_M$ under its diagram times the swing $ψ$ of the rocker:"))
+            c.formula(c.calc('A_"с" = -ψ S_M', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)], V(a_c, sig=5),
+                             t("J")),
+                      where=['A_"с"', ("ψ", t("the swing of the output rocker, rad")),
+                             ("S_M", t("the area under the diagram of the resistance moment against the share of the "
+                                       "swing, N·m"))])
+    c.p(t("Over a steady cycle the driving work equals the resistance work, so the constant driving moment of the "
+          "motor reduced to the crank is"))
+    m = abs(d.M_d)
+    c.formula(c.calc('M_"д" = abs(A_"с")/(2 π)', "{0}/(2 π)", [V(abs(a_c), sig=6)], V(m, sig=5), t("N·m")),
+              where=['M_"д"'])
+    c.p(t("This is the mean reduced moment $M$ = {m} by which the power of the motor is chosen in the chapter on the "
+          "gear mechanisms.").format(m=c.qty(m, t("N·m"), sig=5)))
+    c.doc.claim(kind="linkage_drive_moment", moment=m, work=a_c)
+    c.p(t("The driving work grows linearly, $A_\"д\" = M_\"д\" φ$, and the kinetic energy of the machine changes by "
+          "$Δ T = A_\"д\" + A_\"с\"$ (Table {tab:dyn_reduced}); over the cycle $Δ T$ comes back to zero."))
+    if c.has("linkage_dynamics"):
+        c.p(t("The diagrams of $M_\"пр\"$ and $M_\"д\"$, of $Δ T$ (with $Δ T_\"I\"$ of the flywheel's calculation) and of "
+              "$J_\"пр\"$ over the crank's turn are shown in Figure {fig:linkage_dynamics}."))
+        c.fig("linkage_dynamics", t("Reduced moments, change of the kinetic energy and reduced moment of inertia over "
+                                    "the crank's turn"))
+
+
+# --- 5. the flywheel --------------------------------------------------------------------------------
+
+
+def _flywheel(c: Ctx, s) -> None:
+    t, n = c.t, c.n
+    d, fw = s.dynamics, s.flywheel
+    if fw is None:
+        c.p(t("The allowed coefficient of speed fluctuation is not given: the flywheel is not computed."))
+        return
+    me, wi = fw.mertsalov, fw.wittenbauer
+    c.doc.add(Heading(2, t("Moment of inertia of the flywheel")))
+    c.p(t("The flywheel keeps the crank speed within the allowed coefficient of speed fluctuation "
+          "$δ = (ω_max - ω_min)/ω_1 = {delta}$. By N. I. Mertsalov's method {{cite:artobolevsky}} the links are split "
+          "into the first group of constant reduced inertia $J_\"I\"$ (the crank, the rotor and the flywheel) and the "
+          "second, $J_\"II\" (φ) = J_\"пр\" - J_\"кр\" - J_\"рот\"$; the kinetic energy of the second group is taken at "
+          "the mean speed, and the first group's changes by").format(delta=c.q(fw.delta, sig=4)))
+    c.formula('Δ T_"I" = Δ T - (J_"II" ω_1^2)/2',
+              where=[('Δ T_"I"', t("the change of the kinetic energy of the first group, J")),
+                     ('J_"II"', t("the reduced moment of inertia of the second group, kg·m²"))])
+    hi, lo = float(me.dT_I[me.i_max]), float(me.dT_I[me.i_min])
+    deg = lambda k: c.qd(math.degrees(float(d.travel[k])), decimals=1)  # noqa: E731
+    c.p(t("Over the turn $Δ T_\"I\"$ is largest at $φ = {phi_max}$ and smallest at $φ = {phi_min}$; the moment of "
+          "inertia the first group needs and the flywheel's:").format(phi_max=deg(me.i_max), phi_min=deg(me.i_min)))
+    vals = [V(hi, sig=6), V(lo, sig=6), V(fw.delta, exact=True), V(fw.omega_mean, sig=5)]
+    c.formula(c.calc('J_"I" = (Δ T_("I" max) - Δ T_("I" min))/(δ ω_1^2)', _neg("({0} - {1})/({2} dot {3}^2)", vals, 1),
+                     vals, V(me.J_I, sig=5), t("kg·m²")))
+    j_crank = d.J_first - d.J_rotor
+    vals = [V(me.J_I, sig=6), V(j_crank, sig=4), V(d.J_rotor, exact=True)]
+    c.formula(c.calc('J_"м" = J_"I" - J_"кр" - J_"рот"', "{0} - {1} - {2}", vals, V(me.J_fl, sig=5), t("kg·m²")),
+              where=[('J_"м"', t("the moment of inertia of the flywheel, kg·m²")),
+                     ('J_"кр"', t("the moment of inertia of the crank about its axis, kg·m²"))])
+    needed = me.J_fl > 0
+    c.doc.claim(kind="linkage_flywheel", needed=needed, J_fl=me.J_fl, J_I=me.J_I, delta=fw.delta)
+    # Wittenbauer
+    c.p(t("The energy–mass diagram of F. Wittenbauer, $Δ T$ against $J_\"пр\"$, checks it: the tangents to the curve "
+          "at the slopes $\"tg\" ψ_max = ω_max^2/2$ and $\"tg\" ψ_min = ω_min^2/2$, $ω_(max, min) = ω_1 (1 ± δ/2)$, "
+          "cut the segment $k l$ on the axis of $Δ T$:"))
+    c.formula(c.calc('ω_max = ω_1 (1 + δ/2)', "{0} dot (1 + {1}/2)", [V(fw.omega_mean, sig=6), V(fw.delta, exact=True)],
+                     V(fw.omega_max, sig=5), t("rad/s")),
+              c.calc('ω_min = ω_1 (1 - δ/2)', "{0} dot (1 - {1}/2)", [V(fw.omega_mean, sig=6), V(fw.delta, exact=True)],
+                     V(fw.omega_min, sig=5), t("rad/s")))
+    vals = [V(wi.c_max, sig=6), V(wi.c_min, sig=6), V(wi.slope_max, sig=6), V(wi.slope_min, sig=6)]
+    c.formula(c.calc('J_"м"^"В" = (k l)/("tg" ψ_max - "tg" ψ_min)', _neg("({0} - {1})/({2} - {3})", vals, 1), vals,
+                     V(wi.J_fl, sig=5), t("kg·m²")),
+              where=[("k l", t("the segment between the tangents on the axis of $Δ T$, J"))])
+    if needed and wi.J_fl > 0:
+        diff = 100.0 * (me.J_fl - wi.J_fl) / wi.J_fl
+        c.p(t("The two differ by {diff}: Mertsalov's method neglects the change of the second group's energy with the "
+              "speed. The flywheel of Mertsalov's method is taken, $J_\"м\"$ = {j}.").format(
+            diff=c.pct(abs(diff)), j=c.qty(me.J_fl, t("kg·m²"), sig=5)))
+        c.doc.claim(kind="linkage_flywheel_methods", diff_pct=diff, mertsalov=me.J_fl, wittenbauer=wi.J_fl)
+    elif not needed:
+        c.p(t("$J_\"м\" <= 0$: the crank, the rotor and the links alone keep the speed within $δ$, no flywheel is "
+              "needed."))
+    if fw.size is not None:
+        _size(c, fw)
+    c.p(t("With the flywheel the crank speed changes over the turn between {w_min} and {w_max} rad/s: "
+          "$δ = {delta}$.").format(w_min=n(float(fw.omega.min()), decimals=4), w_max=n(float(fw.omega.max()), decimals=4),
+                                  delta=c.q(fw.delta_actual, sig=3)))
+    c.doc.claim(kind="linkage_delta_actual", delta=fw.delta, actual=fw.delta_actual)
+
+
+def _size(c: Ctx, fw) -> None:
+    t = c.t
+    z = fw.size
+    rho = c.r.linkage.input.dynamics.density
+    psi_b = z.b / z.D
+    mm = t("mm")
+    if z.kind == "disc":
+        c.p(t("The flywheel is a solid steel disc of width $b = ψ_b D$ ($ψ_b = {psi}$, $ρ = {rho}$ kg/m³): "
+              "$J_\"м\" = m D^2/8$, $m = ρ π D^2 b/4$, so").format(psi=c.q(psi_b, sig=3), rho=c.q(rho, sig=4)))
+        c.formula(c.calc('D = ((32 J_"м")/(π ρ ψ_b))^(1/5)', "((32 dot {0})/(π dot {1} dot {2}))^(1/5)",
+                         [V(z.J, sig=6), V(rho, exact=True), V(psi_b, sig=4)], V(z.D, sig=4), t("m")),
+                  where=[("D", t("the diameter of the flywheel, m")), ("ψ_b", t("the ratio of its width to the diameter")),
+                         ("ρ", t("the density of steel, kg/m³"))])
+        c.formula(c.calc("b = ψ_b D", "{0} dot {1}", [V(psi_b, sig=4), V(z.D, sig=5)], V(z.b, sig=4), t("m")),
+                  c.calc("m = (ρ π D^2 b)/4", "({0} dot π dot {1}^2 dot {2})/4",
+                         [V(rho, exact=True), V(z.D, sig=5), V(z.b, sig=5)], V(z.m, sig=4), t("kg")))
+    else:
+        psi_h = z.h / z.b
+        c.p(t("The flywheel is a steel rim of width $b = ψ_b D$ and thickness $h = ψ_h b$ at the mean diameter $D$ "
+              "($ψ_b = {psi}$, $ψ_h = {psi_h}$, $ρ = {rho}$ kg/m³): $J_\"м\" = m D^2/4$, $m = ρ π D b h$, so").format(
+            psi=c.q(psi_b, sig=3), psi_h=c.q(psi_h, sig=3), rho=c.q(rho, sig=4)))
+        c.formula(c.calc('D = ((4 J_"м")/(π ρ ψ_b^2 ψ_h))^(1/5)', "((4 dot {0})/(π dot {1} dot {2}^2 dot {3}))^(1/5)",
+                         [V(z.J, sig=6), V(rho, exact=True), V(psi_b, sig=4), V(psi_h, sig=4)], V(z.D, sig=4), t("m")),
+                  where=[("D", t("the mean diameter of the rim, m")), ("ψ_b", t("the ratio of its width to the diameter")),
+                         ("ψ_h", t("the ratio of its thickness to the width")), ("ρ", t("the density of steel, kg/m³"))])
+        c.formula(c.calc("b = ψ_b D", "{0} dot {1}", [V(psi_b, sig=4), V(z.D, sig=5)], V(z.b, sig=4), t("m")),
+                  c.calc("h = ψ_h b", "{0} dot {1}", [V(psi_h, sig=4), V(z.b, sig=5)], V(z.h, sig=4), t("m")),
+                  c.calc("m = ρ π D b h", "{0} dot π dot {1} dot {2} dot {3}",
+                         [V(rho, exact=True), V(z.D, sig=5), V(z.b, sig=5), V(z.h, sig=5)], V(z.m, sig=4), t("kg")))
+    dims = t("$D$ = {d}, $b$ = {b}").format(d=c.qty(z.D * 1000, mm, decimals=0), b=c.qty(z.b * 1000, mm, decimals=0))
+    if z.h is not None:
+        dims += t(", $h$ = {h}").format(h=c.qty(z.h * 1000, mm, decimals=0))
+    c.p(t("The flywheel: {dims}, mass {m}.").format(dims=dims, m=c.qty(z.m, t("kg"), decimals=1)))
