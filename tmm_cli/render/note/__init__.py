@@ -64,9 +64,10 @@ def read_template(path) -> str:
 def _chapters():
     from .cam_part import cam_chapter
     from .gears_part import gears_chapter
+    from .linkage_part import linkage_chapter
 
     return (
-        # linkage_structure_chapter,   sheet 1 (issue 24)
+        linkage_chapter,  # sheet 1 (issue 24)
         # linkage_forces_chapter,      sheet 2 (issue 25)
         cam_chapter,
         gears_chapter,

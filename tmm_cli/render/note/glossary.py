@@ -103,4 +103,18 @@ GLOSSARY = {
     'ω_"кр"': N_("the angular speed of the crank, rad/s"),
     "η_1": N_("the efficiency of the planetary reducer"),
     "η_2": N_("the efficiency of the linkage"),
+    # the lever mechanism (sheet 1)
+    "W": N_("the degree of freedom of the mechanism"),
+    "n": N_("the number of moving links"),
+    "p_5": N_("the number of lower pairs (class 5)"),
+    "p_4": N_("the number of higher pairs (class 4)"),
+    "ω_1": N_("the angular speed of the crank, rad/s"),
+    "n_1": N_("the crank speed, rpm"),
+    "H": N_("the stroke of the slider, mm"),
+    "ψ": N_("the swing of the rocker, °"),
+    'φ_"р.х"': N_("the crank angle of the working stroke, °"),
+    'φ_"х.х"': N_("the crank angle of the return stroke, °"),
+    "K": N_("the time ratio (of the mean speeds of the output link)"),
+    "μ_v": N_("the scale of the velocity plan, (m/s)/mm"),
+    "μ_a": N_("the scale of the acceleration plan, (m/s²)/mm"),
 }

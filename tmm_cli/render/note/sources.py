@@ -28,6 +28,12 @@ SOURCES = {
                 "machines: a textbook. Part 2 / ed. by V. I. Pozhbelko. Chelyabinsk: South Ural State University, "
                 "2003. 52 p. (in Russian)",
     ),
+    "artobolevsky": Source(
+        record="Артоболевский, И. И. Теория механизмов и машин : учебник для втузов / И. И. Артоболевский. – 4-е "
+               "изд., перераб. и доп. – Москва : Наука, 1988. – 640 с.",
+        english="Artobolevsky, I. I. Theory of mechanisms and machines: a textbook for technical universities. 4th "
+                "ed. Moscow: Nauka, 1988. 640 p. (in Russian)",
+    ),
 }
 
 
