@@ -282,9 +282,16 @@ class _Plans:
     def seg(self, v) -> str:
         return "(" + label_math(v.start) + " " + label_math(v.end) + ")"
 
+    def tiny(self, x: float, plan=None) -> bool:
+        """Zero to rounding (a plan's point on another: v_BA of a crank-slider at 90°)."""
+        ref = max(abs(z) for z in plan.points.values()) if plan is not None else abs(self.m.crank.omega)
+        return abs(x) <= 1e-9 * ref
+
     def measured(self, plan, vec, unit: str, mu: str) -> str:
         """``v_(B A) = (a b) μ_v = 3,6 · 0,01 = 0,036 м/с``: a magnitude read from the plan."""
         c = self.c
+        if self.tiny(vec.magnitude, plan):
+            return f"{self.sym.mag(vec.symbol)} = 0"
         return c.calc(self.sym.mag(vec.symbol), self.seg(vec) + f" {mu} = {{0}} dot {{1}}",
                       [V(vec.magnitude / plan.scale, decimals=1), V(plan.scale, exact=True)],
                       V(vec.magnitude, sig=4), unit)
@@ -293,6 +300,8 @@ class _Plans:
         """``(p a) = v_A/μ_v = 0,6283/0,01 = 62,83 мм``: a known vector's segment on the plan."""
         c = self.c
         mu = "μ_v" if plan.kind == "velocity" else "μ_a"
+        if self.tiny(vec.magnitude, plan):
+            return self.seg(vec) + " = 0"
         return c.calc(self.seg(vec) + " = " + self.sym.mag(vec.symbol) + "/" + mu, "{0}/{1}",
                       [V(vec.magnitude, sig=4), V(plan.scale, exact=True)],
                       V(vec.magnitude / plan.scale, decimals=1), c.t("mm"))
@@ -390,12 +399,16 @@ def _eq(P: _Plans, plan, group: int) -> list[str]:
 
 def _omega_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l_sym: str) -> str:
     num = P.m.link(link).number
+    if P.tiny(P.w[link]):
+        return f"ω_{num} = 0"
     return c.calc(f"ω_{num} = {P.sym.mag(vec.symbol)}/{l_sym}", "{0}/{1}",
                   [V(vec.magnitude, sig=4), V(length, exact=exact, sig=5)], V(abs(P.w[link]), sig=5), c.t("rad/s"))
 
 
 def _eps_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l_sym: str) -> str:
     num = P.m.link(link).number
+    if P.tiny(P.e[link], P.pl.acceleration):
+        return f"ε_{num} = 0"
     return c.calc(f"ε_{num} = {P.sym.mag(vec.symbol)}/{l_sym}", "{0}/{1}",
                   [V(vec.magnitude, sig=4), V(length, exact=exact, sig=5)], V(abs(P.e[link]), sig=5), c.t("rad/s²"))
 
@@ -459,9 +472,9 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
     if g.kind in ("RRR", "RRP"):
         ja, jb = g.joints[0], g.joints[1]
         an = P.acc[f"a^n_{jb}{ja}"]
-        w = abs(P.w[g.links[0]])
+        w = abs(P.w[g.links[0]]) if not P.tiny(P.w[g.links[0]]) else 0.0
         known.append(c.calc(f"{P.sym.mag(an.symbol)} = {rad}_{n2}^2 l{sub(ja, jb)}", "{0}^2 dot {1}",
-                            [V(w, sig=5), V(g.lengths[0], exact=True)], V(an.magnitude, sig=4), ms2))
+                            [V(w, sig=5), V(g.lengths[0], exact=True)], V(an.magnitude if w else 0.0, sig=4), ms2))
         known.append(P.drawn(ap, an))
         at = P.acc[f"a^τ_{jb}{ja}"]
         lines += [P.measured(ap, at, ms2, "μ_a")]
@@ -469,9 +482,9 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
         if g.kind == "RRR":
             jc = g.joints[2]
             an2 = P.acc[f"a^n_{jb}{jc}"]
-            w3 = abs(P.w[g.links[1]])
+            w3 = abs(P.w[g.links[1]]) if not P.tiny(P.w[g.links[1]]) else 0.0
             known.append(c.calc(f"{P.sym.mag(an2.symbol)} = {rad}_{n3}^2 l{sub(jb, jc)}", "{0}^2 dot {1}",
-                                [V(w3, sig=5), V(g.lengths[1], exact=True)], V(an2.magnitude, sig=4), ms2))
+                                [V(w3, sig=5), V(g.lengths[1], exact=True)], V(an2.magnitude if w3 else 0.0, sig=4), ms2))
             known.append(P.drawn(ap, an2))
             at2 = P.acc[f"a^τ_{jb}{jc}"]
             lines += [P.measured(ap, at2, ms2, "μ_a")]
@@ -481,7 +494,7 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
         ja, jc = g.joints
         p3, p2 = f"{ja}{n3}", f"{ja}{n2}"
         rho = abs(P.z[ja] - P.z[jc])
-        w = abs(P.w[g.links[1]])
+        w = abs(P.w[g.links[1]]) if not P.tiny(P.w[g.links[1]]) else 0.0
         rel = P.vel[f"v_{p3}{p2}"]
         cor = P.acc[f"a^k_{p3}{p2}"]
         an = P.acc[f"a^n_{p3}{jc}"]
@@ -489,10 +502,11 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
               "Coriolis component, perpendicular to the slotted link (the relative velocity turned by 90° in the "
               "sense of $ω_{n3}$). The known components and their segments on the plan:").format(a=ja, n2=n2, n3=n3))
         known.append(c.calc(f"{P.sym.mag(cor.symbol)} = 2 ω_{n3} {P.sym.mag(rel.symbol)}", "2 dot {0} dot {1}",
-                            [V(w, sig=5), V(rel.magnitude, sig=4)], V(cor.magnitude, sig=4), ms2))
+                            [V(w, sig=5), V(0.0 if P.tiny(rel.magnitude, P.pl.velocity) else rel.magnitude, sig=4)],
+                            V(0.0 if P.tiny(cor.magnitude, ap) else cor.magnitude, sig=4), ms2))
         known.append(P.drawn(ap, cor))
         known.append(c.calc(f"{P.sym.mag(an.symbol)} = ω_{n3}^2 l{sub(jc, ja)}", "{0}^2 dot {1}",
-                            [V(w, sig=5), V(rho, sig=5)], V(an.magnitude, sig=4), ms2))
+                            [V(w, sig=5), V(rho, sig=5)], V(an.magnitude if w else 0.0, sig=4), ms2))
         known.append(P.drawn(ap, an))
         ar, at = P.acc[f"a^r_{p3}{p2}"], P.acc[f"a^τ_{p3}{jc}"]
         lines += [P.measured(ap, ar, ms2, "μ_a"), P.measured(ap, at, ms2, "μ_a"),
