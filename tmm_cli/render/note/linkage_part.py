@@ -50,8 +50,13 @@ def linkage_chapter(c: Ctx) -> None:
 
 
 def pm(name: str) -> str:
-    """A joint's or a point's name inside typst math: 'A', 'O1', "B'" as they are, else a string."""
-    return name if _NAME.fullmatch(name) else '"' + name.replace('"', "") + '"'
+    """A joint's or a point's name inside typst math, as the book writes it: 'A', "B'", 'O1' → 'O_1'
+    (typst would read O1 as a variable's name); anything else upright, as a string."""
+    m = _NAME.fullmatch(name)
+    if not m:
+        return '"' + name.replace('"', "") + '"'
+    letter, digits, primes = name[0], name[1:].rstrip("'′"), name[1:][len(name[1:].rstrip("'′")):]
+    return letter + primes + (f"_{digits}" if digits else "")
 
 
 def sub(*names: str) -> str:
@@ -228,7 +233,8 @@ def _positions(c: Ctx, s) -> None:
         if slider:
             c.p(t("The stroke of the slider (the distance between its extreme positions {a} and {b}):").format(
                 a=first.label, b=last.label))
-            c.formula(f"H = {c.q(cy.stroke * 1000, decimals=2)} {c.u(t('mm'))}", where=["H"])
+            mm = t("mm")
+            c.formula(f"H = {c.q(cy.stroke * 1000, decimals=2)} {c.u(mm)}", where=["H"])
         else:
             c.p(t("The swing of the rocker (the angle between its extreme positions {a} and {b}):").format(
                 a=first.label, b=last.label))
@@ -336,7 +342,8 @@ def _plans(c: Ctx, s, pl) -> None:
                      (f"l{sub(o, a)}", t("the length of the crank, m"))])
     c.p(t("The scale of the velocity plan is the round value with which its longest vector is at most 100 mm "
           "long:"))
-    c.formula(f"μ_v = {c.q(vp.scale)} {c.u(t('(m/s)/mm'))}", P.drawn(vp, va), *_points_line(c, P, 0, vp, ms, "μ_v"),
+    mu_v = t("(m/s)/mm")
+    c.formula(f"μ_v = {c.q(vp.scale)} {c.u(mu_v)}", P.drawn(vp, va), *_points_line(c, P, 0, vp, ms, "μ_v"),
               where=["μ_v"])
     for g in m.groups:
         _group_velocity(c, P, g)
@@ -359,7 +366,8 @@ def _plans(c: Ctx, s, pl) -> None:
                          [V(abs(P.s.cycle.kin.eps1), sig=4), V(cr.length, exact=True)], V(at.magnitude, sig=4), ms2),
                   where=[(f"a_{pm(a)}", t("the acceleration of the crank pin {a}, m/s²").format(a=a))])
     c.p(t("The scale of the acceleration plan, chosen the same way:"))
-    c.formula(f"μ_a = {c.q(ap.scale)} {c.u(t('(m/s²)/mm'))}", P.drawn(ap, aa), *_points_line(c, P, 0, ap, ms2, "μ_a"),
+    mu_a = t("(m/s²)/mm")
+    c.formula(f"μ_a = {c.q(ap.scale)} {c.u(mu_a)}", P.drawn(ap, aa), *_points_line(c, P, 0, ap, ms2, "μ_a"),
               where=["μ_a"])
     for g in m.groups:
         _group_acceleration(c, P, g)
