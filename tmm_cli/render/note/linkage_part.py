@@ -59,6 +59,11 @@ def pm(name: str) -> str:
     return letter + primes + (f"_{digits}" if digits else "")
 
 
+def jm(name: str) -> str:
+    """A joint's name in the text, as inline math ($O_1$)."""
+    return "$" + pm(name) + "$"
+
+
 def sub(*names: str) -> str:
     """A subscript of joint names: '_A' or '_(O1 A)'."""
     body = " ".join(pm(n) for n in names)
@@ -334,11 +339,11 @@ def _plans(c: Ctx, s, pl) -> None:
     vp, ap = pl.velocity, pl.acceleration
     # --- velocities
     c.p(t("The velocity of the crank pin {a} is perpendicular to the crank and directed in the sense of its "
-          "rotation:").format(a=a))
+          "rotation:").format(a=jm(a)))
     va = P.vel[f"v_{a}"]
     c.formula(c.calc(f"v_{pm(a)} = ω_1 l{sub(o, a)}", "{0} dot {1}", [V(abs(cr.omega), sig=4), V(cr.length, exact=True)],
                      V(va.magnitude, sig=4), ms),
-              where=[(f"v_{pm(a)}", t("the velocity of the crank pin {a}, m/s").format(a=a)),
+              where=[(f"v_{pm(a)}", t("the velocity of the crank pin {a}, m/s").format(a=jm(a))),
                      (f"l{sub(o, a)}", t("the length of the crank, m"))])
     c.p(t("The scale of the velocity plan is the round value with which its longest vector is at most 100 mm "
           "long:"))
@@ -349,13 +354,13 @@ def _plans(c: Ctx, s, pl) -> None:
         _group_velocity(c, P, g)
     # --- accelerations
     c.p(t("The crank turns at a constant speed ($ε_1 = 0$), so the acceleration of {a} is its normal acceleration, "
-          "directed from {a} to {o}:").format(a=a, o=o) if P.s.cycle.kin.eps1 == 0 else
-        t("The acceleration of {a} has a normal and a tangential component:").format(a=a))
+          "directed from {a} to {o}:").format(a=jm(a), o=jm(o)) if P.s.cycle.kin.eps1 == 0 else
+        t("The acceleration of {a} has a normal and a tangential component:").format(a=jm(a)))
     if f"a_{a}" in P.acc and P.acc[f"a_{a}"].relation:
         aa = P.acc[f"a_{a}"]
         c.formula(c.calc(f"a_{pm(a)} = a^n_{pm(a)} = ω_1^2 l{sub(o, a)}", "{0}^2 dot {1}",
                          [V(abs(cr.omega), sig=4), V(cr.length, exact=True)], V(aa.magnitude, sig=4), ms2),
-                  where=[(f"a_{pm(a)}", t("the acceleration of the crank pin {a}, m/s²").format(a=a))])
+                  where=[(f"a_{pm(a)}", t("the acceleration of the crank pin {a}, m/s²").format(a=jm(a)))])
     else:
         an = P.acc[f"a^n_{a}"]
         at = P.acc[f"a^τ_{a}"]
@@ -364,7 +369,7 @@ def _plans(c: Ctx, s, pl) -> None:
                          [V(abs(cr.omega), sig=4), V(cr.length, exact=True)], V(an.magnitude, sig=4), ms2),
                   c.calc(f"a^τ_{pm(a)} = ε_1 l{sub(o, a)}", "{0} dot {1}",
                          [V(abs(P.s.cycle.kin.eps1), sig=4), V(cr.length, exact=True)], V(at.magnitude, sig=4), ms2),
-                  where=[(f"a_{pm(a)}", t("the acceleration of the crank pin {a}, m/s²").format(a=a))])
+                  where=[(f"a_{pm(a)}", t("the acceleration of the crank pin {a}, m/s²").format(a=jm(a)))])
     c.p(t("The scale of the acceleration plan, chosen the same way:"))
     mu_a = t("(m/s²)/mm")
     c.formula(f"μ_a = {c.q(ap.scale)} {c.u(mu_a)}", P.drawn(ap, aa), *_points_line(c, P, 0, ap, ms2, "μ_a"),
@@ -458,7 +463,7 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
     lines += _points_line(c, P, g.index, vp, ms, "μ_v")
     if g.kind == "RPR":
         c.p(t("Here $l{l}$ is the distance from the pivot {c} to the block in this position; the block {n2} turns "
-              "together with the slotted link {n3}.").format(l=sub(g.joints[1], g.joints[0]), c=g.joints[1],
+              "together with the slotted link {n3}.").format(l=sub(g.joints[1], g.joints[0]), c=jm(g.joints[1]),
                                                              n2=n2, n3=n3))
     c.formula(*lines)
 
@@ -506,9 +511,10 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
         rel = P.vel[f"v_{p3}{p2}"]
         cor = P.acc[f"a^k_{p3}{p2}"]
         an = P.acc[f"a^n_{p3}{jc}"]
-        c.p(t("The block slides along the turning slotted link, so the acceleration of {a}{n3} relative to {a}{n2} has a "
+        c.p(t("The block slides along the turning slotted link, so the acceleration of {a3} relative to {a2} has a "
               "Coriolis component, perpendicular to the slotted link (the relative velocity turned by 90° in the "
-              "sense of $ω_{n3}$). The known components and their segments on the plan:").format(a=ja, n2=n2, n3=n3))
+              "sense of $ω_{n3}$). The known components and their segments on the plan:").format(
+            a3=jm(f"{ja}{n3}"), a2=jm(f"{ja}{n2}"), n3=n3))
         known.append(c.calc(f"{P.sym.mag(cor.symbol)} = 2 ω_{n3} {P.sym.mag(rel.symbol)}", "2 dot {0} dot {1}",
                             [V(w, sig=5), V(0.0 if P.tiny(rel.magnitude, P.pl.velocity) else rel.magnitude, sig=4)],
                             V(0.0 if P.tiny(cor.magnitude, ap) else cor.magnitude, sig=4), ms2))
