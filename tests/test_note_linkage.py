@@ -204,6 +204,12 @@ def check_claim(claim, s1):
     elif kind == "linkage_time_ratio":
         assert claim["K"] == pytest.approx(claim["working_deg"] / claim["return_deg"], rel=1e-12)
         assert claim["working_deg"] + claim["return_deg"] == pytest.approx(360.0)
+    elif kind == "linkage_plan_position":  # "in the middle of the working stroke": the nearest of the positions
+        c = s1.cycle
+        evens = [p for p in c.positions if p.label.isdigit()]
+        nearest = min(evens, key=lambda p: abs(p.travel - c.working / 2)) if c.working is not None else None
+        assert claim["middle"] == (nearest is not None and nearest.label == claim["label"])
+        assert claim["label"] == s1.plans[0].position.label
     elif kind == "linkage_pressure":
         assert claim["ok"] == (claim["worst_deg"] <= claim["limit_deg"])
     else:
@@ -216,7 +222,7 @@ def test_every_claim_of_the_chapter_holds(name):
     doc = note(name)
     s1 = project(name).linkage.sheet1
     kinds = [c["kind"] for c in doc.claims if check_claim(c, s1)]
-    assert {"linkage_dof", "linkage_class", "linkage_position0", "linkage_pressure"} <= set(kinds)
+    assert {"linkage_dof", "linkage_class", "linkage_position0", "linkage_pressure", "linkage_plan_position"} <= set(kinds)
 
 
 ENGLISH = re.compile(r"\b[A-Za-z]{3,}\b")

@@ -267,7 +267,7 @@ def _positions(c: Ctx, s) -> None:
                 limit=n(PRESSURE_WARN_DEG))
             c.p(t("The largest pressure angle of group {group} ({kind}) over the turn is {angle}° at $φ = {phi}°$, "
                   "{verdict}.").format(group=p.group, kind=pattern(g.kind, c.lang), angle=n(worst, decimals=2),
-                                       phi=c.q(_deg(p.phi), decimals=1), verdict=verdict))
+                                       phi=c.q(round(_deg(p.phi), 1) % 360.0, decimals=1), verdict=verdict))
         c.doc.claim(kind="linkage_pressure", group=p.group, worst_deg=worst, limit_deg=PRESSURE_WARN_DEG,
                     ok=worst <= PRESSURE_WARN_DEG)
 
@@ -318,6 +318,14 @@ class _Plans:
                       V(vec.magnitude / plan.scale, decimals=1), c.t("mm"))
 
 
+def _middle_of_working(cy, pos) -> bool:
+    """Whether `pos` is the evenly spaced position nearest the middle of the working stroke."""
+    if cy.working is None:
+        return False
+    evens = [p for p in cy.positions if p.label.isdigit()]
+    return min(evens, key=lambda p: abs(p.travel - 0.5 * cy.working)).index == pos.index
+
+
 def _sense(c: Ctx, x: float) -> str:
     return c.t("counter-clockwise") if x > 0 else c.t("clockwise")
 
@@ -328,11 +336,15 @@ def _plans(c: Ctx, s, pl) -> None:
     P = _Plans(c, s, pl)
     pos = pl.position
     c.doc.add(Heading(2, t("Velocity and acceleration plans of position {label}").format(label=pos.label)))
-    c.p(t("The plans are built for position {label} ($φ = {phi}°$), in the middle of the working stroke, by the vector "
-          "equations of the groups in the order of the structural formula {{cite:artobolevsky}}: the velocities from "
-          "the pole $p$, the accelerations from the pole $π$; the points of the fixed joints lie at the poles. The "
-          "vectors of both plans are given in Table {{tab:linkage_plans}}.").format(
-        label=pos.label, phi=c.q(_deg(pos.phi), decimals=2)))
+    middle = _middle_of_working(s.cycle, pos)
+    where = (t("in the middle of the working stroke") if middle else
+             t("the position the task names") if s.mechanism.plan is not None else t("the position chosen for the plans"))
+    c.p(t("The plans are built for position {label} ($φ = {phi}°$), {where}, by the vector equations of the groups in "
+          "the order of the structural formula {{cite:artobolevsky}}: the velocities from the pole $p$, the "
+          "accelerations from the pole $π$; the points of the fixed joints lie at the poles. The vectors of both plans "
+          "are given in Table {{tab:linkage_plans}}.").format(label=pos.label, phi=c.q(_deg(pos.phi), decimals=2),
+                                                              where=where))
+    c.doc.claim(kind="linkage_plan_position", label=pos.label, middle=middle)
     ms, ms2, rad_s, rad_s2 = t("m/s"), t("m/s²"), t("rad/s"), t("rad/s²")
     cr = m.crank
     o, a = cr.pivot, cr.joint
@@ -385,7 +397,7 @@ def _plans(c: Ctx, s, pl) -> None:
                      (_sense(c, w) if abs(w) > 1e-12 else "—") + " / " + (_sense(c, e) if abs(e) > 1e-12 else "—")])
     c.table("linkage_omega", t("Angular velocities and accelerations of the links, position {label}").format(label=pos.label),
             ["№", t("Link"), f"$ω$, {rad_s}", f"$ε$, {rad_s2}", t("Sense of ω / of ε")], rows,
-            align=["center", "center", "right", "right", "left"], widths=[0.5, 0.9, 1.1, 1.1, 2.4])
+            align=["center", "center", "right", "right", "left"], widths=[0.4, 0.8, 1.0, 1.0, 3.2])
     _vector_table(c, P)
 
 
@@ -603,5 +615,6 @@ def _table(c: Ctx, s) -> None:
             w, e = links[ln.name]
             row += [n(w, decimals=3), n(e, decimals=2)]
         rows.append(row)
+    widths = [0.45, 0.8, 0.85, 0.8, 0.75] + [1.0] * (len(head) - 5)
     c.table("linkage_positions", t("Kinematics of the mechanism in its positions"), head, rows,
-            align=["center"] + ["right"] * (len(head) - 1))
+            align=["center"] + ["right"] * (len(head) - 1), widths=widths)

@@ -654,7 +654,7 @@ def width(node) -> float:
     if isinstance(node, Group):
         return width(node.body) + 0.7
     if isinstance(node, Func):
-        return width(node.arg) + {"sqrt": 1.0, "abs": 0.5}.get(node.name, 0.3)
+        return width(node.arg) + {"sqrt": 1.0, "abs": 0.5}.get(node.name, 0.5)  # arrow: the accent and its attachments
     return 0.0
 
 
