@@ -16,6 +16,7 @@ import re
 
 from ...i18n import N_
 from ...linkage.positions import PRESSURE_WARN_DEG, output_coordinate
+from ...linkage.scales import PLAN_MM, SCHEME_MM
 from ..terminal.mechanism import pattern
 from .ctx import Ctx, V
 from .model import Heading
@@ -228,9 +229,9 @@ def _positions(c: Ctx, s) -> None:
         extra = t(" The extreme positions of the output link that fall between them are added as {labels}.").format(
             labels=", ".join(p.label for p in primes))
     c.p(t("The crank's turn is divided into {count} positions every {step}°, numbered 0, 1, 2, … in the sense of its "
-          "rotation.{extra} The mechanism in all positions is drawn on sheet 1 at the scale "
-          "$μ_l = {mu_l}$ m/mm.").format(count=m.positions, step=n(round(step, 2)), extra=extra,
-                                         mu_l=c.q(s.scheme_scale, sig=3)))
+          "rotation.{extra} The scale of the scheme in all positions is $μ_l = {mu_l}$ m/mm, the round value with "
+          "which it takes at most {room} mm.").format(count=m.positions, step=n(round(step, 2)), extra=extra,
+                                                      mu_l=c.q(s.scheme_scale, sig=3), room=n(SCHEME_MM)))
     if cy.stroke is not None and cy.working is not None:
         first = next(p for p in cy.positions if p.extreme == "start")
         last = next(p for p in cy.positions if p.extreme == "end")
@@ -357,8 +358,8 @@ def _plans(c: Ctx, s, pl) -> None:
                      V(va.magnitude, sig=4), ms),
               where=[(f"v_{pm(a)}", t("the velocity of the crank pin {a}, m/s").format(a=jm(a))),
                      (f"l{sub(o, a)}", t("the length of the crank, m"))])
-    c.p(t("The scale of the velocity plan is the round value with which its longest vector is at most 100 mm "
-          "long:"))
+    c.p(t("The scale of the velocity plan is the round value with which its longest vector is at most {room} mm "
+          "long:").format(room=c.n(PLAN_MM)))
     mu_v = t("(m/s)/mm")
     c.formula(f"μ_v = {c.q(vp.scale)} {c.u(mu_v)}", P.drawn(vp, va), *_points_line(c, P, 0, vp, ms, "μ_v"),
               where=["μ_v"])
@@ -472,7 +473,12 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
                   P.measured(vp, P.vel[f"v_{p3}"], ms, "μ_v")]
         lines += [_omega_line(c, P, g.links[1], rot, rho, False, "l" + sub(jc, ja)),
                   f"ω_{n2} = ω_{n3}"]
-    lines += _points_line(c, P, g.index, vp, ms, "μ_v")
+    points = _points_line(c, P, g.index, vp, ms, "μ_v")
+    lines += points
+    if points:
+        c.p(t("The points {points} of the group's links are found on the plan by similarity: the figure of a link's "
+              "points on the plan is similar to the link itself.").format(
+            points=", ".join(jm(pt.name) for pt in P.m.points if P.m.link(pt.link).group == g.index)))
     if g.kind == "RPR":
         c.p(t("Here $l{l}$ is the distance from the pivot {c} to the block in this position; the block {n2} turns "
               "together with the slotted link {n3}.").format(l=sub(g.joints[1], g.joints[0]), c=jm(g.joints[1]),
