@@ -271,3 +271,44 @@ def test_a_vector_is_an_arrow_in_every_writer():
 
     xml = etree.tostring(omath_para(src)).decode()
     assert xml.count("m:acc>") >= 3 or xml.count(":acc>") >= 3
+
+
+# ---------------------------------------------------------------------------------------------------
+# the note's figure of the plans
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_the_plans_figure_fits_its_boxes_at_a_round_scale(name):
+    from tmm_cli.render.figures import note_scales as S
+
+    s1 = project(name).linkage.sheet1
+    layout = S.linkage_layout(s1)
+    pl = s1.plans[0]
+    for kind, plan in (("velocity", pl.velocity), ("acceleration", pl.acceleration)):
+        box = layout[kind]
+        x, y = S.linkage_plan_axes(plan, box)
+        assert x.mu == y.mu and x.mm == box.width and y.mm == box.height  # one scale, 1 mm of paper = μ
+        mant = x.mu / 10 ** math.floor(math.log10(x.mu) + 1e-9)
+        assert any(abs(mant - m) < 1e-9 for m in S.PLAN_SERIES)
+        for z in plan.points.values():
+            assert x.lo <= z.real <= x.hi and y.lo <= z.imag <= y.hi - S.LINKAGE_TITLE_MM * y.mu
+        # the next smaller round scale would not fit: the plan is drawn as large as the series allows
+        smaller = max(m * 10 ** e for e in range(-6, 4) for m in S.PLAN_SERIES if m * 10 ** e < x.mu * (1 - 1e-9))
+        xs, ys = [z.real for z in plan.points.values()], [z.imag for z in plan.points.values()]
+        assert (max(xs) - min(xs)) * 1.16 / smaller > box.width or \
+            (max(ys) - min(ys)) * 1.16 / smaller > box.height - S.LINKAGE_TITLE_MM
+
+
+def test_project_with_a_mechanism_draws_the_plans_into_the_note(tmp_path):
+    from click.testing import CliRunner
+
+    from tmm_cli.cli import cli
+
+    r = CliRunner().invoke(cli, ["project", "-v", "17", "--mechanism", str(EXAMPLES / "four_bar.toml"), "--no-sheets",
+                                 "--report", "pdf", "--out", str(tmp_path), "--lang", "ru"])
+    assert r.exit_code == 0, r.output
+    folder = tmp_path / "variant-17"
+    assert (folder / "note_linkage_plans.svg").is_file() and (folder / "note.pdf").is_file()
+    typ = (folder / "note.typ").read_text(encoding="utf-8")
+    assert typ.count("note_linkage_plans.svg") == 1
+    assert typ.index("note_linkage_plans.svg") < typ.index("note_cam_motion.svg")  # in chapter 1, before the cam's

@@ -80,7 +80,7 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     from ..output.folder import final_names, staged_dir, staged_names, write_text
     from .data.cam import profile_csv
     from .data.jsontext import write_json
-    from .note import NOTE_FIGURES
+    from .note import note_figures
 
     reports = report_formats(report)
     typeset = reports & {"pdf", "docx"}
@@ -96,7 +96,7 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
         files = [f"{n}.{fmt}" for n in ALL_FIGURES] if plots else []
         # the note's own figures, drawn for the page (render/figures/note.py): SVG for note.typ,
         # and a 300 dpi PNG for note.docx
-        note_figs = list(NOTE_FIGURES) if plots and typeset else []
+        note_figs = list(note_figures(result)) if plots and typeset else []
         # Two processes (one project, not a batch worker): a forked child writes the sheets, then
         # both draw figures from one queue, each figure once; the report waits for the last
         # figure, not for the sheets. Inside a batch worker (or without fork) the same tasks run
@@ -179,7 +179,7 @@ def _note_files(result, note_figs) -> dict:
 
     files = {}
     for name in note_figs:
-        w, h = figure_size_cm(name, result.gears)
+        w, h = figure_size_cm(name, result.gears, result.linkage)
         files[name] = (note_figure_file(name, "svg"), note_figure_file(name, "png"), w, h)
     return files
 
@@ -211,9 +211,9 @@ def _finish_note(tmp: Path, doc, title, reports, pdf: bool, docx: bool):
 
 def _tidy_note_figures(tmp: Path, reports, note_error) -> None:
     """The PNGs serve note.docx only, the SVGs note.typ only; a failed note takes its figures along."""
-    from .note import NOTE_FIGURES, note_figure_file
+    from .note import LINKAGE_NOTE_FIGURES, NOTE_FIGURES, note_figure_file
 
-    for name in NOTE_FIGURES:
+    for name in LINKAGE_NOTE_FIGURES + NOTE_FIGURES:
         (tmp / note_figure_file(name, "png")).unlink(missing_ok=True)
         if note_error is not None or "pdf" not in reports:
             (tmp / note_figure_file(name, "svg")).unlink(missing_ok=True)

@@ -400,6 +400,17 @@ def _plans(c: Ctx, s, pl) -> None:
             ["№", t("Link"), f"$ω$, {rad_s}", f"$ε$, {rad_s2}", t("Sense of ω / of ε")], rows,
             align=["center", "center", "right", "right", "left"], widths=[0.4, 0.8, 1.0, 1.0, 3.2])
     _vector_table(c, P)
+    if c.has("linkage_plans"):
+        c.p(t("The plans are shown in Figure {fig:linkage_plans}, each at a scale of its own that fits the page (written "
+              "on it): the normal components dashed green, the tangential ones dashed orange, the relative ones blue, "
+              "the Coriolis ones red."))
+    if c.has("linkage_plans"):
+        from ..figures.note_scales import LINKAGE_STACKED, linkage_layout
+
+        stacked = linkage_layout(s) is LINKAGE_STACKED
+        c.fig("linkage_plans", (t("Velocity plan (above) and acceleration plan (below) of position {label}") if stacked
+                                else t("Velocity plan (left) and acceleration plan (right) of position {label}")).format(
+            label=pos.label))
 
 
 def _points_line(c: Ctx, P: _Plans, g_index: int, plan, unit: str, mu: str) -> list[str]:
