@@ -306,7 +306,7 @@ def test_the_project_command_writes_the_chapter(tmp_path):
                                    "--report", "md", "--no-sheets", "--out", str(tmp_path), "--lang", "ru"])
     assert res.exit_code == 0, res.output
     md = (tmp_path / "variant-17" / "report.md").read_text(encoding="utf-8")
-    assert "## 1 Силовой анализ и динамика рычажного механизма" in md
+    assert "## 2 Силовой анализ и динамика рычажного механизма" in md  # after sheet 1's chapter
     assert "Артоболевский, И. И." in md  # the cited source is listed
     assert md.index("рычагу Жуковского") < md.index("Момент инерции маховика") < md.index("Синтез кулачкового")
 
@@ -406,7 +406,7 @@ def test_the_dynamics_figure_is_drawn_only_with_a_mechanism():
     from tmm_cli.render.note import NOTE_FIGURES, note_figures
 
     r, _ = case("shaper")
-    assert note_figures(r) == NOTE_FIGURES + ("linkage_dynamics",)
+    assert note_figures(r) == ("linkage_plans", "linkage_dynamics") + NOTE_FIGURES  # the chapters' order
     assert note_figures(run_project(get_variant("17"))) == NOTE_FIGURES
 
 

@@ -179,7 +179,7 @@ def _note_files(result, note_figs) -> dict:
 
     files = {}
     for name in note_figs:
-        w, h = figure_size_cm(name, result.gears)
+        w, h = figure_size_cm(name, result.gears, result.linkage)
         files[name] = (note_figure_file(name, "svg"), note_figure_file(name, "png"), w, h)
     return files
 
@@ -213,7 +213,7 @@ def _tidy_note_figures(tmp: Path, reports, note_error) -> None:
     """The PNGs serve note.docx only, the SVGs note.typ only; a failed note takes its figures along."""
     from .note import LINKAGE_NOTE_FIGURES, NOTE_FIGURES, note_figure_file
 
-    for name in NOTE_FIGURES + LINKAGE_NOTE_FIGURES:
+    for name in LINKAGE_NOTE_FIGURES + NOTE_FIGURES:
         (tmp / note_figure_file(name, "png")).unlink(missing_ok=True)
         if note_error is not None or "pdf" not in reports:
             (tmp / note_figure_file(name, "svg")).unlink(missing_ok=True)

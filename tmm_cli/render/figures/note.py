@@ -440,6 +440,62 @@ def _mesh(g, lang: str):
 
 
 # ------------------------------------------------------------------------------------------------
+# the lever mechanism (sheet 1)
+
+
+def _linkage_plans(s1, lang: str):
+    """The velocity and the acceleration plan of the first plan position, each at its own round
+    scale (written on it), the vectors coloured by kind as on the screen figures."""
+    from .kit import mt
+    from .mechanism import VECTOR_STYLE, _kind, away, joint_tex, point_tex
+
+    pl = s1.plans[0]
+    layout = S.linkage_layout(s1)
+    size = layout["size"]
+    fig = _new(size)
+    for kind in ("velocity", "acceleration"):
+        plan = pl.velocity if kind == "velocity" else pl.acceleration
+        box = layout[kind]
+        ax = _axes(fig, box, size)
+        x, y = S.linkage_plan_axes(plan, box)
+        _limits(ax, x, y)
+        ax.set_aspect("equal", adjustable="box")
+        ax.axis("off")
+        pts = plan.points
+        drawn = set()
+        for v in plan.vectors:
+            a, b = pts[v.start], pts[v.end]
+            if abs(b - a) <= 0.3 * x.mu or (v.start, v.end) in drawn:  # shorter than 0,3 mm: not drawn
+                continue
+            drawn.add((v.start, v.end))
+            colour, ls = VECTOR_STYLE[_kind(v.symbol, v.start)]
+            ax.annotate("", xy=(b.real, b.imag), xytext=(a.real, a.imag), zorder=4,
+                        arrowprops=dict(arrowstyle="-|>", color=colour, lw=0.9, ls=ls, shrinkA=0, shrinkB=0,
+                                        mutation_scale=8))
+        zs = list(pts.values())
+        centre = sum(zs) / len(zs)
+        placed: list[complex] = []
+        for name in sorted(pts, key=lambda q: q != plan.pole):
+            z = pts[name]
+            if any(abs(z - q) < 1.5 * x.mu for q in placed):
+                continue
+            group = sorted((q for q in pts if abs(pts[q] - z) < 1.5 * x.mu), key=lambda q: q != plan.pole)
+            names = [point_tex(q) for q in group]
+            if plan.pole in group:
+                names += [f"${joint_tex(f)}$" for f in plan.at_pole]
+            d = away(z, [q for q in zs if abs(q - z) >= 1.5 * x.mu], centre)
+            ax.annotate(", ".join(names), (z.real, z.imag), xytext=(7 * d.real, 7 * d.imag), textcoords="offset points",
+                        ha="left" if d.real > 0.5 else "right" if d.real < -0.5 else "center",
+                        va="bottom" if d.imag > 0.5 else "top" if d.imag < -0.5 else "center", fontsize=MIN_PT,
+                        zorder=6)
+            ax.plot(z.real, z.imag, "o", ms=2.0, color="k", zorder=5)
+            placed.append(z)
+        unit = tr(lang, "(m/s)/mm") if kind == "velocity" else tr(lang, "(m/s²)/mm")
+        sym = "μ_v" if kind == "velocity" else "μ_a"
+        _mu(ax, mt(f"{sym} = {_mus(x.mu, lang)} ") + unit)
+    return fig
+
+
 # sheet 2 (tmm project --mechanism)
 
 
@@ -500,6 +556,7 @@ def _dynamics(s2, lang: str):
 MAKERS = {"cam_motion": ("cam", _motion), "cam_zone": ("cam", _zone), "cam_profile": ("cam", _profile),
           "cam_pressure_angle": ("cam", _pressure), "gears_planetary": ("gears", _planetary),
           "gears_assembly": ("gears", _assembly), "gears_mesh": ("gears", _mesh),
+          "linkage_plans": ("linkage", lambda s2, lang: _linkage_plans(s2.sheet1, lang)),
           "linkage_dynamics": ("linkage", _dynamics)}
 
 

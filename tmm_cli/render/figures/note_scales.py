@@ -89,6 +89,56 @@ MESH = {"size": (TEXT_WIDTH_MM, 140.0), "box": Box(18.0, 33.0, 143.0, 103.0)}
 PLANETARY = {"size": (TEXT_WIDTH_MM, 178.0), "scheme": Box(4.0, 52.0, 78.0, 122.0), "velocity": Box(86.0, 52.0, 76.0, 122.0),
              "angular": Box(86.0, 4.0, 76.0, 42.0)}
 ASSEMBLY_MM = 100.0  # one stage's plan, square (two stages: 76 mm each)
+# the lever mechanism's velocity and acceleration plans of the first plan position: side by side, or
+# one above the other when that draws them larger (flat plans)
+LINKAGE_SIDE = {"size": (TEXT_WIDTH_MM, 96.0), "velocity": Box(2.0, 2.0, 78.0, 86.0),
+                "acceleration": Box(85.0, 2.0, 78.0, 86.0)}
+LINKAGE_STACKED = {"size": (TEXT_WIDTH_MM, 166.0), "velocity": Box(2.0, 84.0, 161.0, 80.0),
+                   "acceleration": Box(2.0, 2.0, 161.0, 80.0)}
+PLAN_SERIES = (1.0, 1.5, 2.0, 2.5, 4.0, 5.0, 7.5)  # ГОСТ 2.302's ratios 1:1 … 1:75 per decade
+LINKAGE_TITLE_MM = 9.0  # the room for the scale's line at the top of a plan
+
+
+def _plan_nice(x: float) -> float:
+    """The smallest of :data:`PLAN_SERIES` × 10^k not below x.
+
+    >>> _plan_nice(0.0116), _plan_nice(0.03), _plan_nice(0.0)
+    (0.015, 0.04, 1.0)
+    """
+    if not x > 0:
+        return 1.0
+    e = math.floor(math.log10(x))
+    for k in (e, e + 1):
+        for s in PLAN_SERIES:
+            v = s * 10.0 ** k
+            if v >= x * (1 - 1e-9):
+                return float(f"{v:.6g}")
+    return 10.0 ** (e + 1)  # pragma: no cover
+
+
+def linkage_plan_axes(plan, box: Box) -> tuple[Axis, Axis]:
+    """The round scale (the same on both axes) that shows a plan's points [m/s or m/s²] in `box`,
+    the room of the scale's line at the top kept free, the plan centred below it."""
+    pts = list(plan.points.values())
+    xs, ys = [z.real for z in pts], [z.imag for z in pts]
+    h = box.height - LINKAGE_TITLE_MM
+    pad = 0.08
+    mu = _plan_nice(max((max(xs) - min(xs)) * (1 + 2 * pad) / box.width, (max(ys) - min(ys)) * (1 + 2 * pad) / h, 1e-12))
+    cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+    return Axis(cx - mu * box.width / 2, mu, box.width), Axis(cy - mu * h / 2, mu, box.height)
+
+
+def linkage_layout(s1) -> dict:
+    """LINKAGE_SIDE or LINKAGE_STACKED: the one whose smaller plan comes out larger."""
+    pl = s1.plans[0]
+
+    def smallest(layout):
+        return min(1.0 / linkage_plan_axes(plan, layout[kind])[0].mu * max(abs(z) for z in plan.points.values())
+                   for kind, plan in (("velocity", pl.velocity), ("acceleration", pl.acceleration)))
+
+    return LINKAGE_STACKED if smallest(LINKAGE_STACKED) > 1.4 * smallest(LINKAGE_SIDE) else LINKAGE_SIDE
+
+
 # sheet 2's diagrams over the crank's turn (M_пр and M_д, ΔT and ΔT_I, J_пр): 360° at 2,5 °/mm on 144 mm
 DYNAMICS = {"size": (TEXT_WIDTH_MM, 162.0), "x": (17.0, 144.0), "panel": 40.0, "gap": 7.0, "bottom": 16.0,
             "mu_phi": 2.5}
@@ -260,8 +310,12 @@ def assembly_scale(gears) -> float:
     return nice(2 * lim / assembly_side(gears))
 
 
-def figure_size_cm(name: str, gears=None) -> tuple[float, float]:
-    """Width and height of a note figure as printed [cm]."""
+def figure_size_cm(name: str, gears=None, linkage=None) -> tuple[float, float]:
+    """Width and height of a note figure as printed [cm] (`linkage`: the result's sheets 1-2, for
+    its figures)."""
+    if name == "linkage_plans":
+        w, h = linkage_layout(linkage.sheet1)["size"]
+        return w / 10, h / 10
     sizes = {"cam_motion": MOTION["size"], "cam_pressure_angle": PRESSURE["size"], "cam_zone": PLAN["size"],
              "cam_profile": PLAN["size"], "gears_mesh": MESH["size"], "gears_planetary": PLANETARY["size"],
              "linkage_dynamics": DYNAMICS["size"]}

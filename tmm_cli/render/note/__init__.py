@@ -29,14 +29,15 @@ DOCX_FILE = "note.docx"
 # the note's own figures (drawn at the note's size, render/figures/note.py), in their order
 NOTE_FIGURES = ("cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle",
                 "gears_planetary", "gears_assembly", "gears_mesh")
-# … and those of sheets 1–2, drawn only for a project with a mechanism file (tmm project --mechanism)
-LINKAGE_NOTE_FIGURES = ("linkage_dynamics",)
+# … and those of a mechanism file's chapters (sheets 1–2), drawn only when the result has a mechanism
+# (tmm project --mechanism)
+LINKAGE_NOTE_FIGURES = ("linkage_plans", "linkage_dynamics")
 MAX_TEMPLATE_BYTES = NOTE_TEMPLATE_BYTES
 
 
 def note_figures(result) -> tuple[str, ...]:
-    """The note figures of this project: the cam's and the gears', and sheet 2's when it has one."""
-    return NOTE_FIGURES + (LINKAGE_NOTE_FIGURES if getattr(result, "linkage", None) is not None else ())
+    """The note figures of this result, in their order: the mechanism's (if any), the cam's, the gears'."""
+    return (LINKAGE_NOTE_FIGURES if getattr(result, "linkage", None) is not None else ()) + NOTE_FIGURES
 
 
 def note_figure_file(name: str, ext: str = "svg") -> str:
@@ -72,9 +73,10 @@ def _chapters():
     from .cam_part import cam_chapter
     from .dynamics_part import dynamics_chapter
     from .gears_part import gears_chapter
+    from .linkage_part import linkage_chapter
 
     return (
-        # linkage_structure_chapter,   sheet 1 (issue 24)
+        linkage_chapter,  # sheet 1 (issue 24)
         dynamics_chapter,  # sheet 2 (issue 25)
         cam_chapter,
         gears_chapter,
@@ -234,9 +236,9 @@ def rewrite_docx(path: Path, lang: str, title=None) -> Path:
     with tempfile.TemporaryDirectory(prefix=".tmm-note-", dir=folder) as tmp:
         tmp = Path(tmp)
         figures = {}
-        for name in NOTE_FIGURES:
+        for name in note_figures(result):
             save_note_figure(tmp, result, lang, name, raster=True)
-            w, h = figure_size_cm(name, result.gears)
+            w, h = figure_size_cm(name, result.gears, result.linkage)
             figures[name] = (note_figure_file(name, "svg"), note_figure_file(name, "png"), w, h)
         write_note(tmp, result, lang, title, figures, docx=True, pdf=False)
         try:

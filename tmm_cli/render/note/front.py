@@ -25,7 +25,8 @@ def title_meta(c: Ctx, title) -> dict:
         "org-lines": org,
         "doc-kind": t("Explanatory note"),
         "discipline": t("to the course project in the discipline «Theory of mechanisms and machines»"),
-        "topic": t("«Synthesis of the cam mechanism and of the gear drive»"),
+        "topic": (t("«Analysis of the lever mechanism, synthesis of the cam mechanism and of the gear drive»")
+                  if _sheet1(c) is not None else t("«Synthesis of the cam mechanism and of the gear drive»")),
         "variant-line": t("Variant {number}").format(number=v.number),
         # ГОСТ 2.102's code of an explanatory note (ПЗ), a part of the Russian designation
         "designation": title.designation_for(0, v.number) + (" ПЗ" if c.lang == "ru" else ""),
@@ -68,13 +69,17 @@ def _task(c: Ctx, title) -> None:
     rpm = t("rpm")
     crank = (t("crank speed $n_\"кр\"$ = {speed}").format(speed=c.qty(g.crank_rpm, rpm))
              + (t(" (taken as in the textbook's example)") if g.crank_rpm_assumed else ""))
+    s1 = _sheet1(c)
     torque = ("; " + t("mean reduced moment M = {torque}").format(torque=c.qty(g.torque_nm, t("N·m")))
-              if g.torque_nm is not None else "")
+              if g.torque_nm is not None and s1 is None else "")  # with a mechanism, M is a result of sheet 2
     who = title.student or "_" * 24
     group = title.group or "_" * 10
     lines = [
         t("Student: {who}, group {group}.").format(who=who, group=group),
-        t("Topic: synthesis of the cam mechanism and of the gear drive, variant {number}.").format(number=v.number),
+        (t("Topic: analysis of the lever mechanism, synthesis of the cam mechanism and of the gear drive, variant "
+           "{number}.") if s1 is not None else
+         t("Topic: synthesis of the cam mechanism and of the gear drive, variant {number}.")).format(number=v.number),
+        *([_mechanism_line(c, s1)] if s1 is not None else []),
         t("Input data (Table 1.2 {{cite:book}}, variant {number}): scheme of the cam mechanism {scheme}; acceleration "
           "law {law} ({law_words}); {stroke}; allowed pressure angle $ν_max$ = {nu_max}°; cam speed $n_k$ = {n_cam}; "
           "phase angles $φ_\"у\"$ = {phi_rise}°, $φ_\"дс\"$ = {phi_far}°, $φ_\"в\"$ = {phi_return}°; "
@@ -82,11 +87,19 @@ def _task(c: Ctx, title) -> None:
             number=v.number, scheme=v.scheme, law=v.law, law_words=law_words(v.law, c.lang), stroke=stroke,
             nu_max=n(v.nu_max_deg), n_cam=c.qty(v.n_cam_rpm, rpm), phi_rise=n(v.phi_rise_deg),
             phi_far=n(v.phi_far_dwell_deg), phi_return=n(v.phi_return_deg), crank=crank, torque=torque),
-        t("Drawings: sheet 3 — synthesis of the cam mechanism (A1); sheet 4 — synthesis of the gear mechanisms (A1)."),
+        (t("Drawings: sheet 1 — structural and kinematic analysis of the lever mechanism (A1); sheet 2 — force "
+           "analysis of the lever mechanism and the flywheel (A1); sheet 3 — synthesis of the cam mechanism (A1); "
+           "sheet 4 — synthesis of the gear mechanisms (A1).") if s1 is not None else
+         t("Drawings: sheet 3 — synthesis of the cam mechanism (A1); sheet 4 — synthesis of the gear mechanisms (A1).")),
         t("Date of issue ____________    Supervisor ____________"),
     ]
     contents = [
         t("The explanatory note contains:"),
+        *([t("the structure of the lever mechanism, its positions, the velocity and acceleration plans and the "
+             "kinematics in all positions;")] if s1 is not None else []),
+        *([t("the force analysis of the lever mechanism and the mean moment of the resistance forces reduced to the "
+             "crank, M = {torque}, from which the motor is chosen; the flywheel;").format(
+               torque=c.qty(g.torque_nm, t("N·m"), sig=4))] if s1 is not None and g.torque_nm is not None else []),
         t("the motion law of the follower, its diagrams and scales;"),
         t("the main dimensions of the cam mechanism by the allowed pressure angle;"),
         t("the profile of the cam;"),
@@ -106,6 +119,8 @@ def _abstract(c: Ctx) -> None:
           t("tooth numbers"), t("assembly condition"),
           t("neighbouring condition"), t("involute mesh"),
           t("contact ratio")]
+    if _sheet1(c) is not None:
+        kw = [t("lever mechanism"), t("Assur group"), t("velocity plan"), t("acceleration plan")] + kw
     mm = t("mm")
     geo = (f"$l_(O C)$ = {c.qty(z.l_oc_m * 1000, mm, decimals=2)}" if r.variant.is_rocker
            else f"$e$ = {c.qty(z.e_m * 1000, mm, decimals=2)}")
@@ -130,7 +145,31 @@ def _introduction(c: Ctx) -> None:
     t = c.t
     c.doc.add(Heading(1, t("Introduction"), "structural"))
     c.p(t("The course project in the theory of mechanisms and machines teaches the synthesis of the main mechanisms of a machine by the methods of the discipline. This note covers sheets 3 and 4 of the project: the synthesis of the cam mechanism (the motion law of the follower, the main dimensions by the allowed pressure angle, the profile of the cam) and the synthesis of the gear mechanisms of the drive (the choice of the motor and of the scheme of the planetary reducer, its tooth numbers under the conditions of synthesis, the geometry of the spur pair) by the textbook {cite:book}."))
+    if _sheet1(c) is not None:
+        c.p(t("Before them, the note covers sheets 1 and 2: the structural and kinematic analysis of the lever "
+              "mechanism of the machine and its force analysis, which gives the mean moment of the resistance forces "
+              "that the motor of sheet 4 has to overcome."))
     c.p(t("The computations were made with the program tmm, which follows the procedures of the textbook and prints every substitution, so that each number of the note can be checked by hand."))
+
+
+def _sheet1(c: Ctx):
+    from .linkage_part import sheet1_of
+
+    return sheet1_of(c.r)
+
+
+def _mechanism_line(c: Ctx, s1) -> str:
+    """The lever mechanism of the task: its name, crank, groups (sheet 1's data)."""
+    from ..terminal.mechanism import pattern
+
+    m = s1.mechanism
+    cr = m.crank
+    sense = c.t("counter-clockwise") if cr.sense > 0 else c.t("clockwise")
+    groups = ", ".join(f"{pattern(g.kind, c.lang)} ({'–'.join(g.joints)})" for g in m.groups)
+    return c.t("Lever mechanism: «{name}»; the crank {crank} of length {length} turns {sense} at {rpm}; the groups "
+               "{groups}; {count} positions per turn.").format(
+        name=m.name or c.t("Mechanism"), crank=m.links[0].name, length=c.qty(cr.length * 1000, c.t("mm")),
+        sense=sense, rpm=c.qty(cr.rpm, c.t("rpm"), sig=6), groups=groups, count=m.positions)
 
 
 # --- assumptions -------------------------------------------------------------------------------------

@@ -10,7 +10,7 @@ The subset: single letters (Latin, Greek, Cyrillic) are variables; quoted string
 text (numbers with a decimal comma are written as strings: ``"0,875"``); digits; ``_`` and ``^``
 attachments with ``(…)`` grouping; ``a/b`` fractions binding the nearest unit on each side, as
 typst does (parentheses around a numerator or denominator are dropped); ``\\/`` a slash kept on
-the line; ``\\`` a line break; the named symbols of :data:`WORDS`; ``sqrt(…)``, ``abs(…)``.
+the line; ``\\`` a line break; the named symbols of :data:`WORDS`; ``sqrt(…)``, ``abs(…)``, ``arrow(…)`` (a vector: an arrow above).
 Anything else is an error (:class:`MathSyntaxError`), so that a formula the writers cannot read
 never reaches a document.
 """
@@ -82,7 +82,7 @@ class Group:
 
 @dataclass
 class Func:
-    """sqrt(x), abs(x)."""
+    """sqrt(x), abs(x), arrow(x) (a vector, not a number)."""
 
     name: str
     arg: Seq
@@ -243,7 +243,7 @@ class _Parser:
         if kind == "break":
             return Break()
         if kind == "name":
-            if text in ("sqrt", "abs"):
+            if text in ("sqrt", "abs", "arrow"):
                 k, t = self.peek(skip_ws=False)
                 if not (k == "op" and t == "("):
                     self.error(f"{text} without (")
@@ -325,6 +325,8 @@ def to_text(node, html: bool = True) -> str:
         if isinstance(n, Group):
             return n.open + t(n.body) + n.close
         if isinstance(n, Func):
+            if n.name == "arrow":
+                return t(n.arg) + "\u20d7"  # a combining arrow above
             return ("√(" + t(n.arg) + ")") if n.name == "sqrt" else ("|" + t(n.arg) + "|")
         if isinstance(n, Break):
             return "; "
@@ -502,6 +504,8 @@ def _value(n, ev: _Eval) -> float:
         exp = evaluate(_as_seq(n.sup))[0]
         return base ** exp
     if isinstance(n, Func):
+        if n.name == "arrow":
+            raise NotNumeric("a vector")
         v = evaluate(n.arg)[0]
         return math.sqrt(v) if n.name == "sqrt" else abs(v)
     if isinstance(n, Seq):
@@ -650,7 +654,7 @@ def width(node) -> float:
     if isinstance(node, Group):
         return width(node.body) + 0.7
     if isinstance(node, Func):
-        return width(node.arg) + (1.0 if node.name == "sqrt" else 0.5)
+        return width(node.arg) + {"sqrt": 1.0, "abs": 0.5}.get(node.name, 0.5)  # arrow: the accent and its attachments
     return 0.0
 
 

@@ -100,6 +100,8 @@ def _elements(node) -> list:
         pr = _el("m:dPr", _el("m:begChr", m_val=node.open), _el("m:endChr", m_val=node.close))
         return [_el("m:d", pr, _el("m:e", *_elements(node.body)))]
     if isinstance(node, Func):
+        if node.name == "arrow":  # a vector: the accent ⃗ above
+            return [_el("m:acc", _el("m:accPr", _el("m:chr", m_val="\u20d7")), _el("m:e", *_elements(node.arg)))]
         if node.name == "sqrt":
             return [_el("m:rad", _el("m:radPr", _el("m:degHide", m_val="1")), _el("m:deg"),
                         _el("m:e", *_elements(node.arg)))]

@@ -28,12 +28,12 @@ SOURCES = {
                 "machines: a textbook. Part 2 / ed. by V. I. Pozhbelko. Chelyabinsk: South Ural State University, "
                 "2003. 52 p. (in Russian)",
     ),
-    # sheets 1 and 2 (the force analysis, the dynamics, the flywheel): not in the book above
+    # sheets 1 and 2 (the mechanism's structure, kinematics, forces, dynamics, flywheel): not in the book above
     "artobolevsky": Source(
         record="Артоболевский, И. И. Теория механизмов и машин : учебник для втузов / И. И. Артоболевский. – 4-е "
                "изд., перераб. и доп. – Москва : Наука, 1988. – 640 с.",
-        english="Artobolevsky, I. I. Theory of mechanisms and machines: a textbook. 4th ed. Moscow: Nauka, 1988. "
-                "640 p. (in Russian)",
+        english="Artobolevsky, I. I. Theory of mechanisms and machines: a textbook for technical universities. 4th "
+                "ed. Moscow: Nauka, 1988. 640 p. (in Russian)",
     ),
 }
 
