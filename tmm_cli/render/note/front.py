@@ -144,11 +144,15 @@ def _teeth_text(g) -> str:
 def _introduction(c: Ctx) -> None:
     t = c.t
     c.doc.add(Heading(1, t("Introduction"), "structural"))
-    c.p(t("The course project in the theory of mechanisms and machines teaches the synthesis of the main mechanisms of a machine by the methods of the discipline. This note covers sheets 3 and 4 of the project: the synthesis of the cam mechanism (the motion law of the follower, the main dimensions by the allowed pressure angle, the profile of the cam) and the synthesis of the gear mechanisms of the drive (the choice of the motor and of the scheme of the planetary reducer, its tooth numbers under the conditions of synthesis, the geometry of the spur pair) by the textbook {cite:book}."))
-    if _sheet1(c) is not None:
-        c.p(t("Before them, the note covers sheets 1 and 2: the structural and kinematic analysis of the lever "
-              "mechanism of the machine and its force analysis, which gives the mean moment of the resistance forces "
-              "that the motor of sheet 4 has to overcome."))
+    if _sheet1(c) is None:
+        c.p(t("The course project in the theory of mechanisms and machines teaches the synthesis of the main mechanisms of a machine by the methods of the discipline. This note covers sheets 3 and 4 of the project: the synthesis of the cam mechanism (the motion law of the follower, the main dimensions by the allowed pressure angle, the profile of the cam) and the synthesis of the gear mechanisms of the drive (the choice of the motor and of the scheme of the planetary reducer, its tooth numbers under the conditions of synthesis, the geometry of the spur pair) by the textbook {cite:book}."))
+    else:  # the four sheets, in the order of the note
+        c.p(t("The course project in the theory of mechanisms and machines teaches the analysis and the synthesis of "
+              "the main mechanisms of a machine by the methods of the discipline. This note covers the four sheets of "
+              "the project: the structural and kinematic analysis of the lever mechanism (sheet 1); its force analysis, "
+              "which gives the mean moment of the resistance forces the motor has to overcome, and the flywheel "
+              "(sheet 2); the synthesis of the cam mechanism (sheet 3) and the synthesis of the gear mechanisms of the "
+              "drive (sheet 4) by the textbook {cite:book}."))
     c.p(t("The computations were made with the program tmm, which follows the procedures of the textbook and prints every substitution, so that each number of the note can be checked by hand."))
 
 
