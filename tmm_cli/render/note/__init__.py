@@ -71,16 +71,30 @@ def read_template(path) -> str:
 # decides from the result whether it has anything to say.
 def _chapters():
     from .cam_part import cam_chapter
-    from .dynamics_part import dynamics_chapter
     from .gears_part import gears_chapter
-    from .linkage_part import linkage_chapter
 
     return (
-        linkage_chapter,  # sheet 1 (issue 24)
-        dynamics_chapter,  # sheet 2 (issue 25)
+        _linkage_chapter,  # sheet 1 (issue 24)
+        _dynamics_chapter,  # sheet 2 (issue 25)
         cam_chapter,
         gears_chapter,
     )
+
+
+def _linkage_chapter(c) -> None:
+    """Sheet 1's chapter; its modules (the linkage's) are imported only for a project with a mechanism."""
+    if getattr(c.r, "linkage", None) is not None:
+        from .linkage_part import linkage_chapter
+
+        linkage_chapter(c)
+
+
+def _dynamics_chapter(c) -> None:
+    """Sheet 2's chapter, likewise."""
+    if getattr(c.r, "linkage", None) is not None:
+        from .dynamics_part import dynamics_chapter
+
+        dynamics_chapter(c)
 
 
 def build_note(result, lang: str, figures: dict | None = None, title=None):

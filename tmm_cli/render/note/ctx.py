@@ -228,3 +228,11 @@ def group_thousands(text: str, lang: str) -> str:
         groups.insert(0, whole[-3:])
         whole = whole[:-3]
     return sign + NNBSP.join(groups) + sep + frac
+
+
+def sheet1_of(r):
+    """Sheet 1 of the project's result, or None (no mechanism file)."""
+    linkage = getattr(r, "linkage", None)
+    if linkage is None:
+        return None
+    return getattr(linkage, "sheet1", linkage)

@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 
 from ..terminal.variants import law_words
-from .ctx import Ctx
+from .ctx import Ctx, sheet1_of
 from .model import Abstract, Contents, Heading, ListBlock, ReferenceList, TaskSheet, TitlePage
 
 from .sources import source_text
@@ -157,8 +157,6 @@ def _introduction(c: Ctx) -> None:
 
 
 def _sheet1(c: Ctx):
-    from .linkage_part import sheet1_of
-
     return sheet1_of(c.r)
 
 

@@ -18,21 +18,13 @@ from ...i18n import N_
 from ...linkage.positions import PRESSURE_WARN_DEG, output_coordinate
 from ...linkage.scales import PLAN_MM, SCHEME_MM
 from ..terminal.mechanism import pattern
-from .ctx import Ctx, V
+from .ctx import Ctx, V, sheet1_of
 from .model import Heading
 
 _KIND = {"crank": N_("crank"), "bar": N_("bar"), "slider": N_("slider"), "block": N_("block"),
          "slotted": N_("slotted link")}
 _PAIR = {"R": N_("revolute"), "P": N_("prismatic")}
 _NAME = re.compile(r"[^\W\d_]\d*['′]*")
-
-
-def sheet1_of(r):
-    """Sheet 1 of the project's result, or None (no mechanism file)."""
-    linkage = getattr(r, "linkage", None)
-    if linkage is None:
-        return None
-    return getattr(linkage, "sheet1", linkage)
 
 
 def linkage_chapter(c: Ctx) -> None:
