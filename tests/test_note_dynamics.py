@@ -333,7 +333,7 @@ def test_pdf_and_docx_carry_the_chapter(name, tmp_path):
     assert "Силовойанализидинамикарычажногомеханизма" in flat and "рычагуЖуковского" in flat
     assert "Артоболевский,И.И." in flat
     assert not re.search(r"[^\W_]_[^\W_(]|[^\W_]_\(", text)
-    numbers = [int(n) for n in re.findall(r"\((\d{1,3})\)\s*$", text, flags=re.M)]
+    numbers = [int(n) for n in re.findall(r"\s\((\d{1,3})\)\s*$", text, flags=re.M)]  # a space before: not a superscript (2) of ΣM
     assert numbers[:3] == [1, 2, 3] and len(numbers) == len(set(numbers))
     m = abs(r.linkage.dynamics.M_d)
     assert f"{m:.2f}".replace(".", ",") in text
