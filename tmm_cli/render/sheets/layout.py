@@ -136,15 +136,18 @@ def text_corners(x: float, y: float, w: float, h: float, rot: float = 0.0, *, su
     baseline, width `w`, cap height `h`, turned by `rot` [deg]; below the baseline by DESCENT·h
     (SUB_DESCENT·h with a subscript); grown by `pad` on every side."""
     d = (SUB_DESCENT if sub else DESCENT) * h
-    loc = np.array([[-pad, -d - pad], [w + pad, -d - pad], [w + pad, h + pad], [-pad, h + pad]])
+    x0, y0, x1, y1 = -pad, -d - pad, w + pad, h + pad
+    if rot == 0.0:  # the common case, without the rotation's matrix product
+        return np.array([[x + x0, y + y0], [x + x1, y + y0], [x + x1, y + y1], [x + x0, y + y1]])
+    loc = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
     c, s = math.cos(math.radians(rot)), math.sin(math.radians(rot))
     return loc @ np.array([[c, s], [-s, c]]) + np.array([x, y])
 
 
-def _aabb(corners: np.ndarray) -> tuple[float, float, float, float]:
-    lo = corners.min(axis=0)
-    hi = corners.max(axis=0)
-    return float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1])
+def _aabb(corners) -> tuple[float, float, float, float]:
+    """(x0, y0, x1, y1) of a few points (plain Python: numpy's min/max cost more on four points)."""
+    xs, ys = zip(*corners.tolist()) if isinstance(corners, np.ndarray) else zip(*corners)
+    return float(min(xs)), float(min(ys)), float(max(xs)), float(max(ys))
 
 
 def boxes_overlap(a: np.ndarray, b: np.ndarray) -> bool:
@@ -243,6 +246,11 @@ class Obstacles:
         return self._cells(pts)
 
     # -- looking up
+    def free(self, corners: np.ndarray) -> bool:
+        """No line cell and no text cell under the box (one lookup of its cells)."""
+        cells = self._box_cells(np.asarray(corners, dtype=float))
+        return not (self.texts[cells].any() or self.lines[cells].any())
+
     def line_hits(self, corners: np.ndarray) -> int:
         """How many line cells the box covers (0: free of lines)."""
         return int(np.count_nonzero(self.lines[self._box_cells(np.asarray(corners, dtype=float))]))

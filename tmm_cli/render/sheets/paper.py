@@ -695,8 +695,7 @@ class Sheet:
             self._place(lab)
 
     def _free(self, corners, within) -> bool:
-        return (inside(corners, within) and self.obstacles.text_hits(corners) == 0
-                and self.obstacles.line_hits(corners) == 0)
+        return inside(corners, within) and self.obstacles.free(corners)
 
     def _place(self, lab: Label) -> None:
         text = glyphs(lab.text)
