@@ -176,6 +176,18 @@ def _motion(r, lang: str):
     return fig
 
 
+def _plan_frame(ax, xa, ya, lang: str, grid: float) -> None:
+    """A plan in millimetres of the mechanism: its round limits, a light grid, the axes' names and μ_l."""
+    from .kit import mt
+
+    _limits(ax, xa, ya)
+    ax.grid(alpha=grid, lw=0.4)
+    mm = tr(lang, "mm")
+    ax.set_xlabel("x, " + mm)
+    ax.set_ylabel("y, " + mm)
+    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + tr(lang, "m/mm")))
+
+
 def _zone(r, lang: str):
     from matplotlib.lines import Line2D
     from matplotlib.patches import Polygon
@@ -221,13 +233,8 @@ def _zone(r, lang: str):
     else:
         ax.axvline(0, color="k", lw=0.7, ls=":")
         ax.plot([o[0], 0], [o[1], o[1]], color="tab:brown", lw=1.2)
-    _limits(ax, xa, ya)
     ax.set_aspect("auto")
-    ax.grid(alpha=0.25, lw=0.4)
-    mm = tr(lang, "mm")
-    ax.set_xlabel("x, " + mm)
-    ax.set_ylabel("y, " + mm)
-    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + tr(lang, "m/mm")))
+    _plan_frame(ax, xa, ya, lang, 0.25)
     handles = [
         Polygon([[0, 0]], facecolor=C_ZONE, alpha=0.3, edgecolor=C_ZONE, label=tr(lang, "zone of admissible centres")),
         Line2D([], [], color="k", lw=1.0, label=tr(lang, "path of the roller centre B")),
@@ -295,12 +302,7 @@ def _profile(r, lang: str):
                                  mutation_scale=14, lw=1.2, color="k"))
     am = math.radians(225)
     ax.text(0.9 * R * math.cos(am), 0.9 * R * math.sin(am), mt("ω_k"), ha="center", va="center")
-    _limits(ax, xa, ya)
-    ax.grid(alpha=0.2, lw=0.4)
-    mm = tr(lang, "mm")
-    ax.set_xlabel("x, " + mm)
-    ax.set_ylabel("y, " + mm)
-    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + tr(lang, "m/mm")))
+    _plan_frame(ax, xa, ya, lang, 0.2)
     handles = [
         Line2D([], [], color="k", lw=1.6, label=mt(tr(lang, "working profile (roller r_р = {r} mm)").format(r=_n(rp, lang, decimals=2)))),
         Line2D([], [], color=C_RISE, lw=1.0, ls="-.", label=tr(lang, "pitch profile")),
@@ -419,12 +421,7 @@ def _mesh(g, lang: str):
     xa, ya = S.mesh_scales(g)
     _draw_mesh(ax, sp, lang, zoom=True, motor_sense=g.directions.motor)
     ax.set_aspect("auto")
-    _limits(ax, xa, ya)
-    ax.grid(alpha=0.15, lw=0.4)
-    mm = tr(lang, "mm")
-    ax.set_xlabel("x, " + mm)
-    ax.set_ylabel("y, " + mm)
-    _mu(ax, mt(f"μ_l = {_mus(xa.mu / 1000, lang)} " + tr(lang, "m/mm")))
+    _plan_frame(ax, xa, ya, lang, 0.15)
     handles = [
         Line2D([], [], color="0.3", ls="-", label=mt(tr(lang, "pitch circles d"))),
         Line2D([], [], color="0.3", ls="--", label=mt(tr(lang, "base circles d_b"))),

@@ -20,8 +20,8 @@ TEXT_WIDTH_MM = 165.0
 SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)  # round scale values (ГОСТ 2.302 steps), × 10^k
 
 
-def nice(x: float) -> float:
-    """The smallest value of 1, 2, 2,5, 4, 5 × 10^k not below x.
+def nice(x: float, series=SERIES) -> float:
+    """The smallest value of `series` (1, 2, 2,5, 4, 5) × 10^k not below x.
 
     >>> nice(0.43), nice(3.0), nice(2.0), nice(0.0012)
     (0.5, 4.0, 2.0, 0.002)
@@ -30,7 +30,7 @@ def nice(x: float) -> float:
         return 1.0
     e = math.floor(math.log10(x))
     for k in (e, e + 1):
-        for s in SERIES:
+        for s in series:
             v = s * 10.0 ** k
             if v >= x * (1 - 1e-9):
                 return float(f"{v:.6g}")
@@ -105,15 +105,7 @@ def _plan_nice(x: float) -> float:
     >>> _plan_nice(0.0116), _plan_nice(0.03), _plan_nice(0.0)
     (0.015, 0.04, 1.0)
     """
-    if not x > 0:
-        return 1.0
-    e = math.floor(math.log10(x))
-    for k in (e, e + 1):
-        for s in PLAN_SERIES:
-            v = s * 10.0 ** k
-            if v >= x * (1 - 1e-9):
-                return float(f"{v:.6g}")
-    return 10.0 ** (e + 1)  # pragma: no cover
+    return nice(x, PLAN_SERIES)
 
 
 def linkage_plan_axes(plan, box: Box) -> tuple[Axis, Axis]:
