@@ -179,10 +179,12 @@ def _kind(c: Ctx, kind: str) -> str:
 
 
 def _link_name(c: Ctx, ln) -> str:
-    words = {"crank": c.t("crank"), "bar": c.t("bar"), "slider": c.t("slider"), "block": c.t("block"),
-             "slotted": c.t("slotted link")}
+    from ...linkage.roles import link_roles
+    from ..terminal.mechanism import ROLE_WORDS
+
+    role = link_roles(c.r.linkage.sheet1)[ln.name]
     ends = ln.axis if ln.axis is not None and ln.kind not in ("slider", "block") else (ln.name,)
-    return words[ln.kind] + " " + "".join(ends)
+    return c.t(ROLE_WORDS[role]) + " " + "".join(ends)
 
 
 def _load(c: Ctx, s) -> None:
@@ -423,8 +425,8 @@ def _lever(c: Ctx, s) -> None:
           "position {label} ($μ_v = {mu}$ m/(s·mm)) is turned through 90°, every force is applied at the image of "
           "its point, parallel to itself (an inertia moment as two forces $M_Φ/l$ across its link at the link's "
           "ends), and the plan, a rigid lever pivoted at the pole $p$, is in equilibrium with the balancing force "
-          "$F_\"ур\"$ at the image $a$ of the crank pin, across the crank. The arms $h$ are measured on the turned "
-          "plan (Table {{tab:dyn_lever}}).").format(label=plan.position.label, mu=c.q(mu, sig=3)))
+          "$F_\"ур\"$ at the image $a$ of the crank pin, across the crank. The arms $h$ on the turned plan are found "
+          "from the plan's coordinates (Table {{tab:dyn_lever}}).").format(label=plan.position.label, mu=c.q(mu, sig=3)))
     rows = []
     total = 0.0
     for f in s.lever.forces:
@@ -457,13 +459,14 @@ def _lever(c: Ctx, s) -> None:
     mb = float(s.balancing[i])
     diff = float(s.difference_pct()[i])
     c.p(t("Its difference from the moment of the force analysis:"))
+    same = c.n(abs(mb), sig=6) == c.n(abs(mz), sig=6)  # equal to the printed digits: Δ is 0 there
     c.formula(c.calc('Δ = (abs(M_"ур") - abs(M_"ур"^"Ж"))/abs(M_"ур") dot 100', "({0} - {1})/{0} dot 100",
-                     [V(abs(mb), sig=6), V(abs(mz), sig=6)], V(abs(diff) if abs(diff) < 5e-3 else diff, decimals=2),
-                     "%"))
+                     [V(abs(mb), sig=6), V(abs(mz), sig=6)],
+                     V(0.0, decimals=0) if same else V(abs(diff) if abs(diff) < 5e-3 else diff, decimals=2), "%"))
     ok = abs(diff) < 1.0
-    c.p((t("The two agree within 1 %, as required: both rest on the same exact velocity and acceleration plans, so "
-           "they differ by rounding only.") if ok else
-         t("The two differ by more than 1 %.")))
+    c.p((t("The two agree within 1 %, as required (unrounded, the difference is {diff}): both rest on the same exact "
+           "velocity and acceleration plans, so they differ by rounding only.") if ok else
+         t("The two differ by more than 1 % ({diff}).")).format(diff=c.pct_digits(abs(diff))))
     c.doc.claim(kind="linkage_zhukovsky", kinetostatic=mb, lever=mz, diff_pct=diff, ok=ok)
 
 

@@ -61,6 +61,7 @@ from .lever_parts import (
     wrap_items,
 )
 from .paper import FRAME, H_LABEL, TB_BOX, Sheet
+from ..terminal.mechanism import pattern
 
 POLY_PAD = (10.0, 8.0, 10.0, 8.0)  # [mm] around a force polygon: its names
 SHORT_MM = 9.0  # a polygon's vector shorter than this is named in the caption, not on the drawing
@@ -590,7 +591,7 @@ def _lever_need(sh: Sheet, s: Sheet2, lang: str, k: float, width: float | None =
 def _group_heading(s: Sheet2, g: int, lang: str) -> str:
     if g == 0:
         return tr(lang, "The crank")
-    return tr(lang, "Group {g} ({kind})").format(g=g, kind=s.sheet1.mechanism.groups[g - 1].kind)
+    return tr(lang, "Group {g} ({kind})").format(g=g, kind=pattern(s.sheet1.mechanism.groups[g - 1].kind, lang))
 
 
 GROUP_PAD = (8.0, 8.0)  # [mm] around a group's points (pins, blocks, names)
