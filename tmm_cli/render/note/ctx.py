@@ -180,7 +180,7 @@ class Ctx:
         return self.nt("{k} planet", "{k} planets", k).format(k=k)
 
 
-LINE_EM = 33.0  # the width of a display formula line (16,5 cm less the number) in :func:`width`'s em
+LINE_EM = 30.0  # the width of a display formula line in :func:`width`'s em: 16,5 cm (33 em) less the number «(NN)» and a gap, and the rough estimate's error
 
 
 def fit_lines(pieces: list[str], limit: float = LINE_EM) -> str:

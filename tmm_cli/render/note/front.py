@@ -40,6 +40,10 @@ def title_meta(c: Ctx, title) -> dict:
         "date-label": "г." if c.lang == "ru" else "",  # the Russian date's «  » ______ 20__ г.; none in English
         "grade-label": t("Defended with the mark"),
         "city": getattr(title, "city", "") or "",
+        # ГОСТ 7.32's labels under the lines left blank (no --org, no --city)
+        "org-label": t("name of the organisation"),
+        "dept-label": t("name of the department"),
+        "city-label": t("city"),
         "year": str(title.the_year),
         "figure-word": t("Figure"),
         "table-word": t("Table"),
@@ -81,7 +85,7 @@ def _task(c: Ctx, title) -> None:
          t("Topic: synthesis of the cam mechanism and of the gear drive, variant {number}.")).format(number=v.number),
         *([_mechanism_line(c, s1)] if s1 is not None else []),
         t("Input data (Table 1.2 {{cite:book}}, variant {number}): scheme of the cam mechanism {scheme}; acceleration "
-          "law {law} ({law_words}); {stroke}; allowed pressure angle $ν_max$ = {nu_max}°; cam speed $n_k$ = {n_cam}; "
+          "law {law} ({law_words}); {stroke}; allowed pressure angle $ν_max$ = {nu_max}°; cam speed $n_\"к\"$ = {n_cam}; "
           "phase angles $φ_\"у\"$ = {phi_rise}°, $φ_\"дс\"$ = {phi_far}°, $φ_\"в\"$ = {phi_return}°; "
           "{crank}{torque}.").format(
             number=v.number, scheme=v.scheme, law=v.law, law_words=law_words(v.law, c.lang), stroke=stroke,
@@ -232,6 +236,8 @@ def _introduction(c: Ctx) -> None:
               "(sheet 2); the synthesis of the cam mechanism (sheet 3) and the synthesis of the gear mechanisms of the "
               "drive (sheet 4) by the textbook {cite:book}."))
     c.p(t("The computations were made with the program tmm, which follows the procedures of the textbook and prints every substitution, so that each number of the note can be checked by hand."))
+    c.p(t("The drawing sheets follow the unified system for design documentation: the title block by GOST 2.104 "
+          "{cite:gost2104}, the scales by GOST 2.302 {cite:gost2302}; the note is set out by GOST 7.32 {cite:gost732}."))
 
 
 def _sheet1(c: Ctx):
