@@ -13,6 +13,7 @@ import json
 import math
 import tomllib
 
+from ..notes import Note
 from ..records import record
 from .synthesis import RockerSynthesis, SliderSynthesis, SlottedSynthesis
 
@@ -151,13 +152,58 @@ def check_text(text: str, source: str = "synthesis"):
                           math.pi / 2.0 - worst)
 
 
-def synthesised_file(syn, task, source: str = "synthesis"):
+@record(eq=False)
+class Synthesised:
+    """What `tmm synth` hands to its renderers: the task, the synthesis, the file and its check."""
+
+    task: object  # synthesis_task.Task
+    synthesis: object  # SliderSynthesis | RockerSynthesis | SlottedSynthesis
+    text: str  # the mechanism file
+    mechanism: object  # linkage.mechanism.Mechanism, as tmm linkage parses the text
+    cycle: object  # linkage.positions.Cycle
+    check: Check
+    mirrored: bool
+    notes: tuple
+
+
+LOW_TRANSMISSION_DEG = 40.0  # the usual smallest transmission angle of a lever mechanism
+
+
+def _notes(task, syn, chk: Check, mirrored: bool) -> tuple[Note, ...]:
+    notes = []
+    if isinstance(syn, RockerSynthesis):
+        gamma = math.degrees(syn.gamma_min)
+        if syn.mode == "transmission":
+            notes.append(Note.make("synth_best_pivot", "assumption", gamma_deg=gamma))
+        else:
+            notes.append(Note.make("synth_frame_pivot", "assumption", frame_mm=syn.frame * 1000, gamma_deg=gamma,
+                                   best_deg=math.degrees(syn.gamma_best)))
+        if gamma < LOW_TRANSMISSION_DEG and syn.gamma_task is None:
+            notes.append(Note.make("synth_low_transmission", "warning", gamma_deg=gamma, limit_deg=LOW_TRANSMISSION_DEG))
+    if isinstance(syn, SlottedSynthesis):
+        if "rod_ratio" not in task.values:
+            notes.append(Note.make("synth_rod_ratio", "assumption", ratio=syn.rod_ratio))
+        if syn.slot > syn.link:
+            notes.append(Note.make("synth_slot", "warning", slot_mm=syn.slot * 1000, link_mm=syn.link * 1000))
+    if task.rpm is None and task.omega is None:
+        notes.append(Note.make("synth_default_rpm", "assumption", rpm=DEFAULT_RPM))
+    if mirrored:
+        notes.append(Note.make("synth_mirror", "assumption"))
+    if chk.time_ratio is not None and chk.time_ratio < 1.0 - 1e-9:
+        notes.append(Note.make("synth_fast_working", "warning", time_ratio=chk.time_ratio))
+    return tuple(notes)
+
+
+def synthesised_file(syn, task, source: str = "synthesis") -> Synthesised:
     """The mechanism file's text and its check. The working stroke must be the slower one (K ≥ 1
-    as `tmm linkage` counts it): when the task's load.working or start makes it the faster, the
-    mirrored mechanism is written instead (the same lengths, the strokes swapped)."""
+    as `tmm linkage` counts it): when the task's load.working makes it the faster, the mirrored
+    mechanism is written instead (the same lengths, the strokes swapped)."""
     text = mechanism_toml(syn, task)
     mech, c, chk = check_text(text, source)
+    mirrored = False
     if chk.time_ratio is not None and chk.time_ratio < 1.0 - 1e-9:
-        text = mechanism_toml(syn, task, mirror=True)
-        mech, c, chk = check_text(text, source)
-    return text, mech, c, chk
+        text2 = mechanism_toml(syn, task, mirror=True)
+        mech2, c2, chk2 = check_text(text2, source)
+        if chk2.time_ratio is not None and chk2.time_ratio > chk.time_ratio:
+            text, mech, c, chk, mirrored = text2, mech2, c2, chk2, True
+    return Synthesised(task, syn, text, mech, c, chk, mirrored, _notes(task, syn, chk, mirrored))
