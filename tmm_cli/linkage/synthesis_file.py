@@ -144,7 +144,10 @@ def check_text(text: str, source: str = "synthesis"):
     from .mechanism_file import parse_mechanism
     from .positions import cycle
 
+    from .sheet2_file import parse_sheet2
+
     mech = parse_mechanism(tomllib.loads(text), source)
+    parse_sheet2(mech, source)  # the task's masses and load, as tmm linkage will check them
     c = cycle(mech, source)
     worst = max(p.worst for p in c.pressure)
     slider = mech.output.kind == "slider"
