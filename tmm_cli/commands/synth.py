@@ -50,7 +50,10 @@ def synth_cmd(task_file, as_json, force, no_plots, out, fmt, lang):
     path = Path(task_file)
     task = parse_task(read_mechanism_tables(path), str(path))
     syn = synthesise(task, str(path))
-    result = synthesised_file(syn, task, str(path))
+    from ..i18n import tr
+    from ..render.terminal.synth import MECHANISM_NAMES
+
+    result = synthesised_file(syn, task, str(path), tr(lang, MECHANISM_NAMES[task.type]))
 
     from ..output.folder import ensure_writable_dir
     from ..render.data.synth import synth_document

@@ -70,14 +70,15 @@ def _fix(x: float) -> float:
     return 0.0 if abs(x) < 1e-15 else float(x)
 
 
-def mechanism_toml(syn, task, mirror: bool = False) -> str:
+def mechanism_toml(syn, task, mirror: bool = False, default_name: str = "") -> str:
     """The mechanism file's text for the synthesis `syn` of `task` (:class:`.synthesis_task.Task`).
     `mirror` reflects the mechanism (about the frame line, or the vertical through O1), which swaps
-    the slow and the fast stroke for the same sense of rotation."""
+    the slow and the fast stroke for the same sense of rotation; `default_name` names it when the
+    task does not (the command gives the type's name in the reader's language)."""
     head = [f"# {task.name}" if task.name else "# A mechanism found by tmm synth",
             "# Written by `tmm synth` from the task recorded in [synthesis] below (docs/synthesis.md);",
             "# `tmm linkage` reads it as any mechanism file (docs/mechanism.md).",
-            f"name = {_value(task.name or _default_name(task.type))}",
+            f"name = {_value(task.name or default_name)}",
             f"positions = {task.positions}"]
     if task.gravity is not None:
         head.append(f"gravity = {_value(task.gravity)}")
@@ -122,11 +123,6 @@ def mechanism_toml(syn, task, mirror: bool = False) -> str:
     record_lines = ["", "[synthesis]                  # the task (tmm synth)"]
     record_lines += [f"{_key(k)} = {_value(v)}" for k, v in task.record.items()]
     return "\n".join(head + body + tables + record_lines) + "\n"
-
-
-def _default_name(kind: str) -> str:
-    return {"crank-slider": "Кривошипно-ползунный механизм", "crank-rocker": "Кривошипно-коромысловый механизм",
-            "slotted-link": "Кулисный механизм поперечно-строгального станка"}[kind]
 
 
 @record
@@ -197,15 +193,15 @@ def _notes(task, syn, chk: Check, mirrored: bool) -> tuple[Note, ...]:
     return tuple(notes)
 
 
-def synthesised_file(syn, task, source: str = "synthesis") -> Synthesised:
+def synthesised_file(syn, task, source: str = "synthesis", default_name: str = "") -> Synthesised:
     """The mechanism file's text and its check. The working stroke must be the slower one (K ≥ 1
     as `tmm linkage` counts it): when the task's load.working makes it the faster, the mirrored
     mechanism is written instead (the same lengths, the strokes swapped)."""
-    text = mechanism_toml(syn, task)
+    text = mechanism_toml(syn, task, default_name=default_name)
     mech, c, chk = check_text(text, source)
     mirrored = False
     if chk.time_ratio is not None and chk.time_ratio < 1.0 - 1e-9:
-        text2 = mechanism_toml(syn, task, mirror=True)
+        text2 = mechanism_toml(syn, task, mirror=True, default_name=default_name)
         mech2, c2, chk2 = check_text(text2, source)
         if chk2.time_ratio is not None and chk2.time_ratio > chk.time_ratio:
             text, mech, c, chk, mirrored = text2, mech2, c2, chk2, True

@@ -14,6 +14,9 @@ TITLES = {"crank-slider": N_("Synthesis of the crank-slider mechanism"),
           "crank-rocker": N_("Synthesis of the crank-rocker mechanism"),
           "slotted-link": N_("Synthesis of the slotted-link mechanism of a shaper")}
 
+MECHANISM_NAMES = {"crank-slider": N_("Crank-slider mechanism"), "crank-rocker": N_("Crank-rocker mechanism"),
+                   "slotted-link": N_("Slotted-link mechanism of a shaper")}
+
 
 def _mm(x: float, lang: str) -> str:
     return num(x * 1000.0, lang, decimals=2)
@@ -118,10 +121,11 @@ def check_table(result, lang: str):
 def print_synth(console, result, lang: str) -> None:
     from rich.markup import escape
 
-    console.print(f"[bold]{escape(tr(lang, TITLES[result.task.type]))}[/]")
+    title, construction = tr(lang, TITLES[result.task.type]), tr(lang, "Construction")
+    console.print(f"[bold]{escape(title)}[/]")
     for line in derivation(result, lang):
         console.print("  " + escape(line))
-    console.print(f"[bold]{escape(tr(lang, 'Construction'))}[/]")
+    console.print(f"[bold]{escape(construction)}[/]")
     for i, line in enumerate(steps(result, lang), 1):
         console.print(f"  {i}. " + escape(line))
     console.print(check_table(result, lang))
