@@ -246,3 +246,24 @@ def test_hostile_tasks_one_line_exit_2_no_files(case, tmp_path):
     r = run("synth", task, "--out", tmp_path / "o", "--no-plots", "--lang", "en")
     assert_one_line_error(r, key)
     assert not (tmp_path / "o").exists()
+
+
+def _linkage_numbers(name: str):
+    c = cycle(parse_mechanism(tomllib.loads((EXAMPLES / name).read_text(encoding="utf-8"))))
+    return c.stroke, c.time_ratio
+
+
+def test_synthesis_gives_back_the_examples_lengths_from_their_own_h_k_psi():
+    """The examples of docs/examples were drawn by hand; tmm linkage's H, K, ψ of each, synthesised
+    back, give their lengths (docs/synthesis.md's worked examples)."""
+    from tmm_cli.linkage.synthesis import crank_slider_central, slotted_link
+
+    h, k = _linkage_numbers("shaper.toml")  # O1O2 = 0.30, O1A = 0.10, O2B = 0.50, BC = 0.20
+    s = slotted_link(h, k, 0.30, rod_ratio=0.4)
+    assert (s.crank, s.link, s.rod) == pytest.approx((0.10, 0.50, 0.20), rel=1e-9)
+    h, k = _linkage_numbers("compressor.toml")  # r = 0.06, l = 0.24
+    s = crank_slider_central(h, 0.25)
+    assert (s.crank, s.rod, k) == pytest.approx((0.06, 0.24, 1.0), rel=1e-9)
+    psi, k = _linkage_numbers("four_bar.toml")  # OA = 0.08, AB = 0.28, BC = 0.20, OC = 0.30
+    s = crank_rocker(0.20, psi, k, frame=0.30)
+    assert (s.crank, s.coupler) == pytest.approx((0.08, 0.28), rel=1e-9)
