@@ -35,6 +35,7 @@ from ..errors import TmmError
 from ..records import record
 
 TYPES = ("crank-slider", "crank-rocker", "slotted-link")
+GAMMA_TOL = 1e-9  # [rad]: a γ_min equal to the task's γ up to rounding meets it
 
 
 def theta_of(k: float) -> float:
@@ -251,7 +252,8 @@ def _candidates(c1: complex, c2: complex, d: complex, theta: float, rocker: floa
     """For crank pivots A on the locus: the lengths, the transmission angle and whether A gives a
     crank-rocker whose extreme positions are C₁C₂ as the construction says (masked arrays)."""
     a1, a2 = np.abs(pivots - c1), np.abs(pivots - c2)
-    angle = np.abs(np.angle((c2 - pivots) / (c1 - pivots)))
+    with np.errstate(invalid="ignore", divide="ignore"):  # a pivot on C₁ itself: no angle, not valid
+        angle = np.abs(np.angle((c2 - pivots) / (c1 - pivots)))
     far_is_2 = a2 >= a1
     far = np.where(far_is_2, a2, a1)
     near = np.where(far_is_2, a1, a2)
@@ -327,7 +329,7 @@ def crank_rocker(rocker: float, swing: float, k: float, frame: float | None = No
                        f"K = {k:g}: change swing_deg or time_ratio")
     gamma_best = best[0]
     if frame is None:
-        if gamma_task is not None and gamma_best < gamma_task:
+        if gamma_task is not None and gamma_best < gamma_task - GAMMA_TOL:
             raise TmmError(f"'min_transmission_deg' is {math.degrees(gamma_task):g}; the best a crank-rocker with "
                            f"ψ = {math.degrees(swing):g}° and K = {k:g} reaches is {math.degrees(gamma_best):.2f}°: lower "
                            "min_transmission_deg, swing_deg or time_ratio")
@@ -355,7 +357,7 @@ def crank_rocker(rocker: float, swing: float, k: float, frame: float | None = No
         i = int(np.argmax(gamma))
         centre, pivot = found[i][0], found[i][1]
         mode = "frame"
-        if gamma_task is not None and gamma[i] < gamma_task:
+        if gamma_task is not None and gamma[i] < gamma_task - GAMMA_TOL:
             raise TmmError(f"'min_transmission_deg' is {math.degrees(gamma_task):g}; with frame {frame:g} m the smallest "
                            f"transmission angle is {math.degrees(gamma[i]):.2f}° (the best on the locus is "
                            f"{math.degrees(gamma_best):.2f}°): change frame or lower min_transmission_deg")
