@@ -154,7 +154,7 @@ class Mechanism:
     output: Output
     working: str | None  # 'away' | 'towards' (from [load] working), else None
     plan: str | None  # label of the position of the plans (file key `plan`), else None
-    extra: dict  # the sheet-2 tables as read ('gravity', 'mass', 'load', 'dynamics'), unchecked
+    extra: dict  # the sheet-2 tables as read ('gravity', 'mass', 'load', 'dynamics') and 'synthesis', unchecked
 
     def link(self, name: str) -> Link:
         for ln in self.links:
