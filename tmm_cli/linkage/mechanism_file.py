@@ -43,6 +43,7 @@ from ..errors import TmmError
 from .mechanism import FRAME, KINDS, Crank, Group, Guide, Link, Mechanism, Output, Pair, Point
 
 LENGTH_MAX = 100.0  # [m]: any length or coordinate
+LENGTH_MIN = 1.0e-4  # [m]: a link shorter than 0.1 mm is no machine's (and divides by nearly zero)
 RPM_MAX = 100_000.0
 MAX_GROUPS = 20
 MAX_POINTS = 100
@@ -101,6 +102,9 @@ class _Reader:
         x = self.number(value, key, example)
         if not 0.0 < x <= LENGTH_MAX:
             self.fail(f"'{key}' is {x:g}; a length must lie in (0, {LENGTH_MAX:g}] m")
+        if x < LENGTH_MIN:
+            self.fail(f"'{key}' is {x:g} m, shorter than {LENGTH_MIN:g} m (0.1 mm): no link of a machine is; give "
+                      f"lengths in metres, e.g. {example}")
         return x
 
     def coordinate(self, value, key: str, example: str) -> float:
