@@ -59,12 +59,29 @@ class Kinematics:
             self.base)
 
 
-def _points(mech: Mechanism, group: int, z, v, a, omega, eps, link_group):
+def slot_axis(mech: Mechanism, kin: Kinematics, link: str):
+    """(foot, u) of a slotted link over the angles of `kin`: the foot of the perpendicular from
+    its pivot C to its slot [m] and the slot's unit direction towards the block — the slot is
+    foot + t·u (foot = C when the slot passes through the pivot)."""
+    ln = mech.link(link)
+    g = mech.groups[ln.group - 1]
+    ja, jc = g.joints
+    if g.offset == 0.0:
+        r = kin.z[ja] - kin.z[jc]
+        return kin.z[jc], r / np.abs(r)
+    u = np.exp(1j * kin.angle[link])
+    return kin.z[jc] + 1j * g.offset * u, u
+
+
+def _points(mech: Mechanism, group: int, z, v, a, omega, eps, link_group, dirs):
     for pt in mech.points:
         if link_group[pt.link] != group:
             continue
-        d = z[pt.toward] - z[pt.base]
-        r = complex(pt.along, pt.across) * d / np.abs(d)
+        if pt.link in dirs:  # an offset slot: along u, across n = iu from the pivot
+            r = complex(pt.along, pt.across) * dirs[pt.link]
+        else:
+            d = z[pt.toward] - z[pt.base]
+            r = complex(pt.along, pt.across) * d / np.abs(d)
         z[pt.name] = z[pt.base] + r
         v[pt.name], a[pt.name] = rigid(r, v[pt.base], a[pt.base], omega[pt.link], eps[pt.link])
 
@@ -88,7 +105,7 @@ def solve(mech: Mechanism, phi, omega1: float | None = None, eps1: float = 0.0, 
     z = {name: zero + p for name, p in mech.frame.items()}
     v = {name: zero.copy() for name in mech.frame}
     a = {name: zero.copy() for name in mech.frame}
-    angle, omega, eps, slide, base = {}, {}, {}, {}, {}
+    angle, omega, eps, slide, base, dirs = {}, {}, {}, {}, {}, {}
     link_group = {ln.name: ln.group for ln in mech.links}
 
     c = mech.crank
@@ -97,7 +114,7 @@ def solve(mech: Mechanism, phi, omega1: float | None = None, eps1: float = 0.0, 
     r = z[c.joint] - z[c.pivot]
     v[c.joint], a[c.joint] = rigid(r, 0j, 0j, w1, e1)
     angle[name], omega[name], eps[name], base[name] = np.angle(r), np.full(phi.shape, w1), np.full(phi.shape, e1), c.pivot
-    _points(mech, 0, z, v, a, omega, eps, link_group)
+    _points(mech, 0, z, v, a, omega, eps, link_group, dirs)
 
     for g in mech.groups:
         if upto is not None and g.index > upto:
@@ -120,12 +137,16 @@ def solve(mech: Mechanism, phi, omega1: float | None = None, eps1: float = 0.0, 
             base[l1], base[l2] = ja, jb
         else:
             ja, jc = g.joints
-            rho, theta = rpr_position(z[ja], z[jc])
-            w3, e3, dr, ddr = rpr_motion(z[ja], z[jc], v[ja], v[jc], a[ja], a[jc])
+            rho, theta = rpr_position(z[ja], z[jc], g.offset)
+            w3, e3, dr, ddr = rpr_motion(z[ja], z[jc], v[ja], v[jc], a[ja], a[jc], g.offset)
             w2, e2 = w3, e3
-            angle[l1] = angle[l2] = np.angle(-np.exp(1j * theta))  # named AC: from A towards C
+            if g.offset == 0.0:
+                angle[l1] = angle[l2] = np.angle(-np.exp(1j * theta))  # named AC: from A towards C
+            else:  # an offset slot: the direction u of its slot
+                dirs[l2] = np.exp(1j * theta)
+                angle[l1] = angle[l2] = np.angle(dirs[l2])
             slide[l1] = (rho, dr, ddr)
             base[l1], base[l2] = ja, jc
         omega[l1], omega[l2], eps[l1], eps[l2] = w2, w3, e2, e3
-        _points(mech, g.index, z, v, a, omega, eps, link_group)
+        _points(mech, g.index, z, v, a, omega, eps, link_group, dirs)
     return Kinematics(phi, w1, e1, z, v, a, angle, omega, eps, slide, base)

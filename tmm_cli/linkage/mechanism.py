@@ -15,7 +15,8 @@ group kind  joints (file order)   links 2k, 2k+1 (k = group's index)
 RRR         A, B, C (B new)       bar AB, bar BC
 RRP         A, B (B new, slider)  bar AB, slider B (a block on a fixed guide)
 RPR         A, C (nothing new)    block A (turns on the pin A), slotted link AC (turns
-                                  about C, the block slides along it)
+                                  about C, the block slides along it; its slot may pass
+                                  the offset d from C)
 ==========  ====================  =======================================================
 
 The angle of a link named XY is the direction from X to Y (the crank's: from its pivot to its
@@ -105,6 +106,7 @@ class Group:
     new: tuple[str, ...]  # the joints it places: RRR, RRP (B,); RPR ()
     links: tuple[str, str]  # its two links' names, numbers 2k and 2k+1
     pairs: tuple[Pair, Pair, Pair]  # its three pairs, from the first known joint along the chain
+    offset: float = 0.0  # RPR: the slot's distance d from the pivot C [m] (the slot is C + d·n + t·u)
 
     @property
     def numbers(self) -> tuple[int, int]:
@@ -185,7 +187,7 @@ class Mechanism:
         """A size of the mechanism [m]: the largest length or frame coordinate (for tolerances)."""
         sizes = [self.crank.length, *(abs(z) for z in self.frame.values())]
         for g in self.groups:
-            sizes += list(g.lengths)
+            sizes += list(g.lengths) + [abs(g.offset)]
             if g.guide is not None:
                 sizes.append(abs(g.guide.through))
         sizes += [abs(complex(p.along, p.across)) for p in self.points]

@@ -55,7 +55,7 @@ CRANK_KEYS = ("pivot", "joint", "length", "rpm", "omega", "sense", "start_deg")
 GROUP_KEYS = {
     "RRR": ("kind", "joints", "lengths", "branch"),
     "RRP": ("kind", "joints", "length", "guide", "branch"),
-    "RPR": ("kind", "joints"),
+    "RPR": ("kind", "joints", "offset"),
 }
 POINT_KEYS = ("name", "link", "along", "across")
 BRANCHES = {"RRR": {"left": 1, "right": -1}, "RRP": {"ahead": 1, "behind": -1}}
@@ -239,7 +239,7 @@ def _group(r: _Reader, b: _Builder, data, index: int) -> Group:
     ex = EXAMPLES[f"{kind}.joints"]
     joints = r.names(r.required(data, "joints", f"{key}.joints", ex), f"{key}.joints", 3 if kind == "RRR" else 2, ex)
     k, n2, n3 = index, 2 * index, 2 * index + 1
-    guide, branch, lengths = None, 0, ()
+    guide, branch, lengths, offset = None, 0, (), 0.0
     if kind == "RRR":
         a, bj, c = joints
         known, new = (a, c), (bj,)
@@ -257,6 +257,7 @@ def _group(r: _Reader, b: _Builder, data, index: int) -> Group:
     else:
         a, c = joints
         known, new = (a, c), ()
+        offset = r.coordinate(data.get("offset", 0.0), f"{key}.offset", "offset = 0.05")
     if kind in BRANCHES:
         ex_b = EXAMPLES[f"{kind}.branch"]
         word = r.choice(r.required(data, "branch", f"{key}.branch", ex_b), f"{key}.branch", tuple(BRANCHES[kind]), ex_b)
@@ -286,7 +287,7 @@ def _group(r: _Reader, b: _Builder, data, index: int) -> Group:
         b.add_link(Link(a, n2, "block", k, (a, c), (a,)), key)
         b.add_link(Link(a + c, n3, "slotted", k, (a, c), (c,)), key)
         pairs = (Pair(a, "R", (cr[a], n2), k), Pair(a, "P", (n2, n3), k), Pair(c, "R", (cr[c], n3), k))
-    return Group(index, kind, joints, lengths, branch, guide, known, new, names, pairs)
+    return Group(index, kind, joints, lengths, branch, guide, known, new, names, pairs, offset)
 
 
 def _raw_point(r: _Reader, b: _Builder, data, index: int):

@@ -13,7 +13,8 @@ labels of the plans (link numbers as in :mod:`.mechanism`; the crank is link 1):
 - RPR A–C:     the point A3 of the slotted link 3 under the block 2 (A2 = A):
                v_A3 = v_A2 + v_A3A2 (∥ CA) = v_C + v_A3C (⊥ CA);
                a_A3 = a_A2 + aᵏ_A3A2 + aʳ_A3A2 (∥ CA) = a_C + aⁿ_A3C + aτ_A3C,
-               aᵏ_A3A2 = 2·ω3 × v_A3A2 (Coriolis; point k)
+               aᵏ_A3A2 = 2·ω3 × v_A3A2 (Coriolis; point k); a slot offset from C: the
+               relative vectors ∥ the slot (its line 'guide': the block's guide), not ∥ CA
 - a point D of a link: by similarity (v_D = v_B + ω × BD), the vector pd / πd.
 
 The values are the exact ones of :mod:`.chain` (the plans are their drawing); the scales μ_v,
@@ -161,15 +162,16 @@ def plans_at(mech: Mechanism, kin: Kinematics, position: Position, room_mm: floa
             w3 = w[l2]
             vr = v3 - v[ja]  # v_A3A2
             cor = 2j * w3 * vr  # aᵏ_A3A2 = 2·ω3 × v_A3A2
-            V.add(lab[ja][0], _lc(p3), f"v_{p3}{p2}", vr, "∥", jc + ja, False, v3)
+            slot = jc + ja if g.offset == 0.0 else "guide"  # the block's relative motion: along the slot
+            V.add(lab[ja][0], _lc(p3), f"v_{p3}{p2}", vr, "∥", slot, False, v3)
             V.add(lab[jc][0], _lc(p3), f"v_{p3}{jc}", v3 - v[jc], "⊥", jc + ja, False)  # = pa3 if C is fixed
             V.add("p", _lc(p3), f"v_{p3}", v3, "", "", False)
             V.equations.append(Equation(g.index, f"v_{p3}", ((f"v_{p2}", f"v_{p3}{p2}"), (f"v_{jc}", f"v_{p3}{jc}"))))
             kpt = a[ja] + cor
             kl = "k" if one_slot else f"k{n3}"
             nc = a[jc] - w3 ** 2 * (z[ja] - z[jc])
-            A.add(lab[ja][1], kl, f"a^k_{p3}{p2}", cor, "⊥", jc + ja, True, kpt)
-            A.add(kl, _lc(p3), f"a^r_{p3}{p2}", a3 - kpt, "∥", jc + ja, False, a3)
+            A.add(lab[ja][1], kl, f"a^k_{p3}{p2}", cor, "⊥", slot, True, kpt)
+            A.add(kl, _lc(p3), f"a^r_{p3}{p2}", a3 - kpt, "∥", slot, False, a3)
             A.add(lab[jc][1], f"n{n3}", f"a^n_{p3}{jc}", nc - a[jc], "∥", ja + jc, True, nc)
             A.add(f"n{n3}", _lc(p3), f"a^τ_{p3}{jc}", a3 - nc, "⊥", jc + ja, False)
             A.add("π", _lc(p3), f"a_{p3}", a3, "", "", False)

@@ -18,6 +18,7 @@ import re
 
 import numpy as np
 
+from ...linkage.chain import slot_axis
 from ...linkage.sheet1 import Sheet1
 from ...linkage.vector_plans import Plan, Plans
 from .kit import decimal_commas, new_figure, suptitle, title_height
@@ -148,7 +149,14 @@ def draw_mechanism(ax, s: Sheet1, i: int, color="k", lw=1.6, ls="-", labels=True
                           *(abs(z[p] - z[c]) for p in on_link.get(ln.name, []) if p in hang))
             d = (z[a] - z[c]) / abs(z[a] - z[c])
             tip = z[c] + 1.06 * rho_max * d
-            ax.plot([z[c].real, tip.real], [z[c].imag, tip.imag], color=color, lw=lw, ls=ls, zorder=5)
+            if m.groups[ln.group - 1].offset != 0.0:  # an offset slot: the arm from the pivot to it, then the slot
+                foot, d = (complex(x[i]) for x in slot_axis(m, k, ln.name))
+                foot = foot * MM
+                tip = foot + 1.06 * rho_max * d
+                ax.plot([z[c].real, foot.real], [z[c].imag, foot.imag], color=color, lw=lw, ls=ls, zorder=5)
+                ax.plot([foot.real, tip.real], [foot.imag, tip.imag], color=color, lw=lw, ls=ls, zorder=5)
+            else:
+                ax.plot([z[c].real, tip.real], [z[c].imag, tip.imag], color=color, lw=lw, ls=ls, zorder=5)
         elif ln.kind == "block":
             _block(ax, z[ln.name], float(k.angle[ln.name][i]), 0.5 * unit, 0.25 * unit, color, lw * 0.7, ls)
         elif ln.kind == "slider":

@@ -486,6 +486,11 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
         c.p(t("Here $l{l}$ is the distance from the pivot {c} to the block in this position; the block {n2} turns "
               "together with the slotted link {n3}.").format(l=sub(g.joints[1], g.joints[0]), c=jm(g.joints[1]),
                                                              n2=n2, n3=n3))
+    if g.kind == "RPR" and g.offset != 0.0:
+        c.p(t("The slot of link {n3} passes {d} mm from its pivot {c} (not through it): the block's velocity relative "
+              "to the slot, and later its relative and Coriolis accelerations, are along and across the slot, while "
+              "the turning about {c} stays perpendicular to the line from {c} to {a}.").format(
+            n3=n3, d=c.n(abs(g.offset) * 1000.0, sig=4), c=jm(g.joints[1]), a=jm(g.joints[0])))
     c.formula(*lines)
 
 
