@@ -10,6 +10,7 @@ files."""
 
 import math
 import tomllib
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -26,7 +27,7 @@ from tmm_cli.linkage.sheet2_file import parse_sheet2
 from tmm_cli.linkage.vector_plans import plans
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
-NEW = ("shaper_offset",)
+NEW = ("shaper_offset", "rocking_block")
 
 
 def data(name):
@@ -53,7 +54,41 @@ def sheet2(name):
 @pytest.mark.parametrize("name", NEW)
 def test_velocities_and_accelerations_are_derivatives_of_the_positions(name):
     """Central differences of the closed-form positions at h = 0.1° of crank turn."""
-    m = load(name)
+    _check_derivatives(load(name))
+
+
+VARIANTS = [  # a guide off the slotted link's axis, turned from it; an offset slot carrying it; on the crank
+    {"group": {1: {"guide": {"link": ["O2", "A"], "along": 0.1, "across": 0.02, "angle_deg": 8.0}}}},
+    {"group": {0: {"offset": -0.02}, 1: {"guide": {"link": ["O2", "A"], "across": -0.02}}}},
+    {"group": {1: {"guide": {"link": ["O1", "A"], "along": 0.05, "angle_deg": 60.0}, "length": 0.35}},
+     "frame": {"D": [0.0, 0.25]}, "output": "B", "load": {"on": "B", "stroke": [0.0, 1.0], "force": [100.0, 100.0]}},
+]
+
+
+def _variant(change):
+    d = data("rocking_block")
+    for i, g in change.get("group", {}).items():
+        d["group"][i].update(g)
+    d["frame"].update(change.get("frame", {}))
+    for key in ("output", "load"):
+        if key in change:
+            d[key] = change[key]
+    return d
+
+
+@pytest.mark.parametrize("k", range(len(VARIANTS)))
+def test_moving_guides_and_offsets_three_ways(k):
+    m = parse_mechanism(_variant(VARIANTS[k]), "m.toml")
+    cycle(m, "m.toml")  # it can be assembled over the turn
+    _check_derivatives(m)
+    s = analyse_sheet2(analyse_mechanism(m), parse_sheet2(m, "m.toml"))
+    scale = float(np.max(np.abs(s.balancing)))
+    assert np.max(np.abs(s.balancing - s.power_balance)) <= 1e-9 * scale
+    assert np.max(np.abs(s.balancing - s.lever.balancing)) <= 1e-9 * scale
+    assert s.dynamics.dT[-1] == pytest.approx(0.0, abs=1e-9 * abs(s.dynamics.A_r[-1]))
+
+
+def _check_derivatives(m):
     w1 = m.crank.omega
     phi = np.linspace(0.0, 2 * math.pi, 73)[:-1] + 0.01
     h = math.radians(0.1)
@@ -135,9 +170,11 @@ def test_every_plan_adds_up(name):
     k = s1.cycle.kin.at(2)
     if m.groups[0].kind == "RPR":
         cor = next(v for v in pl.acceleration.vectors if v.symbol.startswith("a^k"))
-        u = np.exp(1j * k.angle[m.groups[0].links[1]][0])
-        w3 = k.omega[m.groups[0].links[1]][0]
-        vrel = k.slide[m.groups[0].links[0]][1][0]
+        g = m.groups[0]
+        t = k.slide[g.links[0]][0][0]
+        u = (k.z[g.joints[0]][0] - k.z[g.joints[1]][0]) / (t + 1j * g.offset)  # the slot towards the block
+        w3 = k.omega[g.links[1]][0]
+        vrel = k.slide[g.links[0]][1][0]
         assert cor.value == pytest.approx(-2j * w3 * vrel * u, abs=1e-12)
 
 
@@ -263,3 +300,54 @@ def test_the_notes_chapters_reproduce_every_substitution(name):
                 checked += 1
                 assert c.ok, f"{c.text} {c.relation} {c.target} in: {b.math}"
     assert checked > 50
+
+
+def _moving(change=None, top=None, drop=None):
+    d = data("rocking_block")
+    if change:
+        d["group"][1]["guide"] = change
+    if top:
+        d.update(top)
+    for k in drop or ():
+        d.pop(k)
+    return d
+
+
+@pytest.mark.parametrize("d,fragment", [
+    (_moving({"link": ["D", "B"], "along": 0.0}), "'group[2].guide.link': no link joining D and B is placed before"),
+    (_moving({"link": ["A", "O2"]}), "'group[2].guide.link': measure a guide on the slotted link AO2 from its pivot"),
+    (_moving({"through": [0, 0], "angle_deg": 0, "along": 0.1}), "'group[2].guide.along' places a guide on a moving"),
+    (_moving({"link": ["O2", "A"], "through": [0, 0]}), "unknown key 'group[2].guide.through'"),
+    (_moving(drop=("output", "load")), "'output' is missing: the slider B of the last group slides on a moving guide"),
+    (_moving({"link": ["O2", "A"], "across": 0.5}), "group 2 (RRP D-B) cannot be assembled"),
+])
+def test_hostile_moving_guides(d, fragment):
+    from tmm_cli.i18n.errors import translate_error
+
+    with pytest.raises(TmmError) as err:
+        cycle(parse_mechanism(d, "m.toml"), "m.toml")
+    text = str(err.value)
+    assert "\n" not in text and text.startswith("m.toml: ") and fragment in text, text
+    ru = translate_error(text)
+    assert ru != text and "ошибка" not in ru and any("а" <= ch <= "я" for ch in ru), ru
+
+
+def test_a_slider_on_a_moving_guide_turns_with_it():
+    """The slider's ω, ε are its guide's link's; its J counts in the reduced inertia; B stays on the
+    slotted link's line (the guide along it) — from the exported points."""
+    s = sheet2("rocking_block")
+    k = s.sheet1.cycle.curve.kin
+    assert np.array_equal(k.omega["B"], k.omega["AO2"]) and np.array_equal(k.epsilon["B"], k.epsilon["AO2"])
+    a, b, o2 = k.z["A"], k.z["B"], k.z["O2"]
+    assert np.max(np.abs(cross(a - o2, b - o2)) / np.abs(a - o2)) < 1e-12
+    assert np.allclose(np.abs(b - k.z["D"]), 0.30, atol=1e-12)
+    # the slider's J·ω² is in J_r: drop it and J_r falls by exactly J·(ω/ω1)²
+    from tmm_cli.linkage.power import reduced_inertia
+
+    masses = s.input.masses
+    jb = next(ms for ms in masses if ms.link == "B")
+    assert jb.J == 0.002
+    full = reduced_inertia(k, masses)
+    without = reduced_inertia(k, [replace(ms, J=0.0) if ms.link == "B" else ms for ms in masses])
+    assert np.allclose(full - without, 0.002 * (k.omega["B"] / k.omega1) ** 2, rtol=1e-12, atol=1e-15)
+    assert np.max(full - without) > 1e-6

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..errors import TmmError
 from ..records import record
-from .chain import solve
+from .chain import guide_frame, solve
 from .groups import rpr_margin, rrp_margin, rrr_margin
 from .mechanism import Group, Mechanism
 
@@ -60,6 +60,9 @@ def group_margin(mech: Mechanism, g: Group, phi):
     if g.kind == "RRR":
         return rrr_margin(k.z[g.joints[0]], k.z[g.joints[2]], *g.lengths)
     if g.kind == "RRP":
+        if g.guide.moving:
+            through, unit = guide_frame(mech, g, k)
+            return rrp_margin(k.z[g.joints[0]], through, unit, g.lengths[0])
         return rrp_margin(k.z[g.joints[0]], g.guide.through, g.guide.unit, g.lengths[0])
     if g.offset != 0.0:
         return rpr_margin(k.z[g.joints[0]], k.z[g.joints[1]], g.offset)

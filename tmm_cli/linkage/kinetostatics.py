@@ -29,7 +29,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..records import record
-from .chain import Kinematics
+from .chain import Kinematics, guide_frame
 from .forces import Loading
 from .mechanism import Mechanism, Pair
 from .motion import cross, solve2
@@ -210,7 +210,8 @@ def kinetostatics(mech: Mechanism, loading: Loading, kin: Kinematics) -> Kinetos
             give(pc, z[jc], rn03 + rt03, rn03, rt03)
         elif g.kind == "RRP":
             ja, jb = g.joints
-            rn12, rt12, r03, r23 = rrp_reactions(z[ja], z[jb], g.guide.unit, b2.resultant(shape), b3.resultant(shape),
+            unit = g.guide.unit if not g.guide.moving else guide_frame(mech, g, kin)[1]
+            rn12, rt12, r03, r23 = rrp_reactions(z[ja], z[jb], unit, b2.resultant(shape), b3.resultant(shape),
                                                  b2.moment(z[jb], shape))
             give(pb, z[jb], r23)
             give(pc, z[jb], r03, couple=-b3.moment(z[jb], shape))

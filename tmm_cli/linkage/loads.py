@@ -25,7 +25,7 @@ import math
 import numpy as np
 
 from ..records import record
-from .chain import Kinematics, solve
+from .chain import Kinematics, guide_frame, solve
 from .mechanism import Mechanism
 from .positions import Cycle, output_coordinate
 
@@ -129,8 +129,9 @@ def load_value(load: Load, stroke: Stroke, mech: Mechanism, kin: Kinematics):
     size = np.where(working, table_value(load, fraction), 0.0)
     if load.kind == "moment":
         return -stroke.direction * size
-    guide = mech.groups[mech.link(load.link).group - 1].guide
-    return -stroke.direction * size * guide.unit
+    g = mech.groups[mech.link(load.link).group - 1]
+    unit = g.guide.unit if not g.guide.moving else guide_frame(mech, g, kin)[1]
+    return -stroke.direction * size * unit
 
 
 def _cumulative_work(load: Load, stroke: Stroke, fraction, theta):

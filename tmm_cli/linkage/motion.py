@@ -77,6 +77,25 @@ def rrp_motion(a, b, unit: complex, va, aa):
     return w2, e2, ds, dds, ds * unit, dds * unit
 
 
+def rrp_moving_motion(a, b, unit, va, aa, vg, ag, wg):
+    """RRP (kind 2) whose guide rides on a link turning at ω_g: ω, ε of AB, the slider's ṡ, s̈
+    along the guide (relative to it), v_B, a_B.
+
+    B = P + s·e with e turning at ω_g; B_g the guide's point under the slider (v_Bg, a_Bg):
+    v_B = v_Bg + ṡ·e = v_A + iω2·(B − A), and
+    a_B = a_Bg + s̈·e + 2ω_g·ṡ·ie (Coriolis) = a_A + (iε2 − ω2²)(B − A). With ω_g = 0 and the
+    guide at rest this is :func:`rrp_motion`.
+
+    >>> w2, e2, ds, dds, vb, ab = rrp_moving_motion(0j, 0.1 + 0j, 1 + 0j, 0j, 0j, -0.1j, -0.1 + 0j, -1.0)
+    >>> round(float(ds), 12) + 0.0, round(float(w2), 12)   # the guide along AB turns about A: AB with it, no slide
+    (0.0, -1.0)
+    """
+    r = b - a
+    ds, w2 = solve2(unit + 0 * r, -1j * r, va - vg)
+    dds, e2 = solve2(unit + 0 * r, -1j * r, aa - w2 * w2 * r - ag - 2j * wg * ds * unit)
+    return w2, e2, ds, dds, vg + ds * unit, ag + dds * unit + 2j * wg * ds * unit
+
+
 def rpr_motion(a, c, va, vc, aa, ac, offset: float = 0.0):
     """RPR (kind 3): ω, ε of the slotted link and the block's ṫ, ẗ along its slot (+ away from
     the foot of the perpendicular from C, i.e. from C when the slot passes through it).

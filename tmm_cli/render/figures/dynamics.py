@@ -92,7 +92,8 @@ def _draw_links(ax, s: Sheet2, links, i: int, unit: float) -> list[complex]:
             pts += ends
         elif ln.kind == "slotted":
             a, c = ln.axis
-            far = [z[p.name] for p in m.points if p.link == ln.name] + [z[a]]
+            far = [z[p.name] for p in m.points if p.link == ln.name] + [z[a]] + [
+                z[g.joints[1]] for g in m.groups if g.guide is not None and g.guide.link == ln.name]
             reach = max(abs(e - z[c]) for e in far)
             d = (z[a] - z[c]) / abs(z[a] - z[c])
             tip = z[c] + 1.08 * reach * d
@@ -109,7 +110,8 @@ def _draw_links(ax, s: Sheet2, links, i: int, unit: float) -> list[complex]:
             pts.append(z[ln.name])
         elif ln.kind == "slider":
             g = m.groups[ln.group - 1]
-            _block(ax, z[ln.name], g.guide.angle, 0.7 * unit, 0.35 * unit, "k", 1.2, "-", z=4)
+            angle = g.guide.angle if not g.guide.moving else float(k.angle[ln.name][i])
+            _block(ax, z[ln.name], angle, 0.7 * unit, 0.35 * unit, "k", 1.2, "-", z=4)
             pts.append(z[ln.name])
     names = {n for ln in links for n in ln.pins} | {p.name for p in m.points if any(p.link == ln.name for ln in links)}
     for n in names:
