@@ -210,7 +210,7 @@ def test_a_latin_name_on_a_russian_document_is_warned_about(tmp_path):
 
 # --- links named by their roles ---------------------------------------------------------------------------
 
-ALL_EXAMPLES = ["shaper", "four_bar", "compressor", "whitworth"]
+ALL_EXAMPLES = ["shaper", "four_bar", "compressor", "whitworth", "rocking_block", "shaper_offset"]
 
 
 def _roles_from_file(name: str) -> dict[str, str]:
@@ -227,8 +227,9 @@ def _roles_from_file(name: str) -> dict[str, str]:
             out[j[0] + j[1]] = "коромысло" if j[0] in frame else "шатун"
             out[j[1] + j[2]] = "коромысло" if j[2] in frame else "шатун"
         elif g["kind"] == "RRP":
-            out[j[0] + j[1]] = "шатун"
-            out[j[1]] = "ползун"
+            out[j[0] + j[1]] = "коромысло" if j[0] in frame else "шатун"
+            moving = isinstance(g.get("guide"), dict) and "link" in g["guide"]
+            out[j[1]] = "кулисный камень" if moving else "ползун"  # on a moving guide: a block in a кулиса
         elif g["kind"] == "RPR":
             out[j[0]] = "кулисный камень"
             out[j[0] + j[1]] = "кулиса"

@@ -28,13 +28,24 @@ def link_roles(s1) -> dict[str, str]:
     m = s1.mechanism
     kin = s1.cycle.curve.kin
     out = {}
+    guides = {}  # the links that carry a moving guide: each is a кулиса
+    for g in m.groups:
+        if g.guide is not None and g.guide.moving:
+            slider = next(ln for ln in m.links if ln.group == g.index and ln.kind == "slider")
+            guides[slider.name] = g.guide.link
     for ln in m.links:
+        if ln.kind == "slider" and ln.name in guides:
+            out[ln.name] = "block"  # a block sliding along a moving link: a кулисный камень
+            continue
         if ln.kind in ("crank", "slider", "slotted", "block"):
             out[ln.name] = ln.kind
             continue
         ends = ln.axis or ()
         if not any(j in m.frame for j in ends):
             out[ln.name] = "coupler"  # both of its joints move
+            continue
+        if ln.name in guides.values():
+            out[ln.name] = "slotted"  # its guide carries a block: a кулиса
             continue
         angle = np.unwrap(np.asarray(kin.angle[ln.name], dtype=float))
         turns = abs(float(angle[-1] - angle[0])) >= 2.0 * math.pi * 0.99 or float(np.ptp(angle)) >= 2.0 * math.pi * 0.99

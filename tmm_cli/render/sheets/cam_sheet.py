@@ -825,9 +825,9 @@ def _results(sh: Sheet, r, lang: str, box, prof_scale: str) -> None:
          f"{_n(p.psi_rise_deg, lang, 1)}°; {_n(p.psi_far_deg, lang, 1)}°; {_n(p.psi_return_deg, lang, 1)}°"),
         (tr(lang, "Scales k_{S}, k_{V}, k_{a}") if not z.rocker
          else tr(lang, "Scales k_{γ}, k_{ω}, k_{ε}"),
-         "; ".join(f"{_g(x, lang)} {tr(lang, u)}" for x, u in zip(
-             (sc.k_s, sc.k_v, sc.k_a), ("rad/mm", "(rad/s)/mm", "(rad/s²)/mm") if z.rocker else
-             ("m/mm", "(m/s)/mm", "(m/s²)/mm")))),
+         "; ".join(_g(x, lang) + " " + u for x, u in zip(
+             (sc.k_s, sc.k_v, sc.k_a), (tr(lang, "rad/mm"), tr(lang, "(rad/s)/mm"), tr(lang, "(rad/s²)/mm")) if z.rocker
+             else (tr(lang, "m/mm"), tr(lang, "(m/s)/mm"), tr(lang, "(m/s²)/mm"))))),
         (tr(lang, "Profile scale (k_{Sk})"), _m(lang, prof_scale)),
         (tr(lang, "Closure, follower"),
          (tr(lang, "force closure") if z.closure == "force" else tr(lang, "form closure")) + ", "
