@@ -17,6 +17,7 @@ import re
 import tomllib
 from pathlib import Path
 
+import numpy as np
 import pytest
 from click.testing import CliRunner
 
@@ -543,3 +544,66 @@ def test_every_force_of_a_polygons_equation_is_named_on_sheet2(name):
             assert "не подписанные на плане" in text
         for v in short + [v for v in pg.vectors if v.kind == "unknown"]:
             assert f"= {num(abs(v.value), 'ru', decimals=1)}" in text, (pg.group, v.symbol)
+
+
+@pytest.mark.parametrize("number", ALL_VARIANTS)
+def test_sheet3s_centre_stands_on_the_hatched_zone(number):
+    """The chosen centre O is a corner of the feasible zone; a hatch line runs from it into the zone
+    (the hatching used to begin up to 2,4 mm from O, which looked outside it), on every variant's
+    own zone polygon."""
+    from tmm_cli.render.sheets.cam_sheet import _hatch
+
+    r, _ = variant_doc(number)
+    z = r.cam.sizing
+    poly = np.asarray(z.zone.polygon, float) * 1000.0
+    O = np.asarray(z.centre, float) * 1000.0
+    lines = []
+
+    class Field:  # the drawing field _hatch draws in (real mm = drawing units), a window round O as on the sheet
+        origin, scale = np.zeros(2), 1.0
+        cut = (O[0] - 60.0, O[1] - 60.0, O[0] + 60.0, O[1] + 60.0)
+
+        def line(self, a, b, layer):
+            lines.append((np.asarray(a, float), np.asarray(b, float)))
+
+    _hatch(Field(), poly, spacing=3.0, through=O)
+    assert lines
+
+    def dist(p, a, b):
+        t = np.clip(np.dot(p - a, b - a) / max(np.dot(b - a, b - a), 1e-30), 0.0, 1.0)
+        return float(np.hypot(*(a + t * (b - a) - p)))
+
+    assert min(dist(O, a, b) for a, b in lines) < 0.05, number
+    # and the hatching stays inside the zone (every line's midpoint)
+    from matplotlib.path import Path as MPath
+
+    zone = MPath(poly)  # the whole zone contains the window's part
+    assert all(zone.contains_point((a + b) / 2, radius=1e-6) or zone.contains_point((a + b) / 2, radius=-1e-6)
+               for a, b in lines)
+
+
+@pytest.mark.parametrize("number", ALL_VARIANTS[::3])
+def test_sheet4_draws_the_reducer_with_a_chosen_module(number):
+    """Sheet 4's reducer: the module is chosen as the drawing needs — the largest standard module at
+    which the scheme fits its field at 1:1 — and k_l, the scale label and the drawn size follow from it
+    (no more «M 2:1, m = 1 мм»)."""
+    from sheet_check import all_texts, field_boxes
+
+    from tmm_cli.inputs.titleblock import TitleFields
+    from tmm_cli.render.sheets import sheet4
+    from tmm_cli.render.sheets.gears_sheet import MODULES
+
+    r, _ = variant_doc(number)
+    sh = sheet4(r.gears, number, "ru", TitleFields())
+    text = "\n".join(all_texts(sh.doc))
+    m = re.search(r"kl = ([\d,]+) м/мм \(М (\d+(?:,\d+)?):(\d+(?:,\d+)?), m = ([\d,]+) мм", text)
+    assert m, text[:400]
+    k_l, a, b, mod = (float(x.replace(",", ".")) for x in m.groups())
+    assert mod in MODULES
+    assert abs(k_l - 0.001 * b / a) < 1e-9 * k_l  # k_l [m/mm]: the stated scale of the true (module) size
+    if mod > 1.0:
+        assert (a, b) == (1.0, 1.0) and "наибольший стандартный модуль" in text
+    d = r.gears.planetary
+    z_max = max(max(s.z_ring, s.z_sun + 2 * s.z_planet) for s in d.stages)
+    box = field_boxes(sh.doc)["scheme"]
+    assert z_max * mod * a / b <= box[3] - box[1]  # the reducer's largest diameter, drawn, fits the field's height

@@ -300,7 +300,7 @@ def _zone_field(sh: Sheet, r, lang: str, box):
     # the feasible zone the wedges cut: outline (thin) and a 45° hatch
     poly = zn.polygon * k
     f.poly(poly, "Тонкие", closed=True)
-    _hatch(f, poly, spacing=3.0 / fac)
+    _hatch(f, poly, spacing=3.0 / fac, through=O)  # a hatch line through O: the centre stands on the hatching
     rise = zn.phase == 0
     ret = zn.phase == 2
     # B path and D-curves
@@ -430,8 +430,11 @@ def _field_scale_text(sh, f, lang, lab):
     f.inner = (x0, y0, x1, y1 - 1.0 - H_LABEL - 1.5 - 2.0)
 
 
-def _hatch(f, poly, spacing):
-    """45° thin hatch lines across a convex polygon (drawing units), clipped by the field."""
+def _hatch(f, poly, spacing, through=None):
+    """45° thin hatch lines across a convex polygon (drawing units), clipped by the field; with
+    `through` (a point of the polygon, the chosen centre O at its corner), the lines run at 45° or
+    135°, whichever enters the polygon from that point (else along the corner's bisector: ГОСТ 2.306
+    turns the hatching when 45° does not suit), and one of them passes through it."""
     # only the part inside the field's window (drawing units): a few dozen lines, not thousands
     x0, y0, x1, y1 = f.cut
     lo = (np.array([x0, y0]) - f.origin) / f.scale
@@ -441,19 +444,53 @@ def _hatch(f, poly, spacing):
         if len(poly) < 3:
             return
     d = np.array([1.0, 1.0]) / math.sqrt(2)
+    start = None
+    if through is not None:
+        p = np.asarray(through, float)
+        centroid = poly.mean(axis=0)
+        # the third choice, for a wedge narrower than the 45° lines: its bisector at the corner nearest p
+        j = int(np.argmin(np.hypot(*(poly - p).T)))
+        e1, e2 = poly[j - 1] - poly[j], poly[(j + 1) % len(poly)] - poly[j]
+        bis = e1 / max(np.hypot(*e1), 1e-300) + e2 / max(np.hypot(*e2), 1e-300)
+        bis = bis / max(float(np.hypot(*bis)), 1e-300)
+        for cand in (d, np.array([-1.0, 1.0]) / math.sqrt(2), bis):
+            # the line through p along cand enters the polygon: a short step either way lands inside
+            step = 1e-3 * float(np.ptp(poly, axis=0).max())
+            if any(_inside(poly, p + sgn * step * cand + 1e-9 * (centroid - p)) for sgn in (1.0, -1.0)):
+                d = cand
+                break
+        start = float(p @ np.array([-d[1], d[0]]))
     n = np.array([-d[1], d[0]])
     proj = poly @ n
-    for c in np.arange(proj.min() + spacing / 2, proj.max(), spacing):
+    if start is None:
+        offsets = np.arange(proj.min() + spacing / 2, proj.max(), spacing)
+    else:  # the line through the point and every `spacing` either side of it
+        k0 = math.floor((proj.min() - start) / spacing)
+        offsets = start + spacing * np.arange(k0, math.ceil((proj.max() - start) / spacing) + 1)
+        offsets = offsets[(offsets >= proj.min() - 1e-12) & (offsets <= proj.max() + 1e-12)]
+    for c in offsets:
         # intersect the line {x: x·n = c} with the polygon's edges
         hits = []
+        tol = 1e-6 * float(np.ptp(poly, axis=0).max())
         for a, b in zip(poly, np.roll(poly, -1, axis=0)):
             pa, pb = a @ n - c, b @ n - c
-            if pa * pb < 0:
+            if abs(pa) <= tol:
+                hits.append(a)  # through a corner (the line through O)
+            elif pa * pb < 0 and abs(pb) > tol:
                 t = pa / (pa - pb)
                 hits.append(a + t * (b - a))
         if len(hits) >= 2:
             hits = sorted(hits, key=lambda h: h @ d)
-            f.line(hits[0], hits[-1], "Тонкие")
+            if float(np.hypot(*(hits[-1] - hits[0]))) > tol:
+                f.line(hits[0], hits[-1], "Тонкие")
+
+
+def _inside(poly: np.ndarray, q: np.ndarray) -> bool:
+    """Whether q is inside the convex polygon (either orientation)."""
+    e = np.roll(poly, -1, axis=0) - poly
+    w = q - poly
+    cr = e[:, 0] * w[:, 1] - e[:, 1] * w[:, 0]
+    return bool(np.all(cr >= -1e-12) or np.all(cr <= 1e-12))
 
 
 def _clip_half(poly: np.ndarray, a: np.ndarray, c: float) -> np.ndarray:
@@ -783,7 +820,7 @@ def table(sh: Sheet, box, title: str, rows: list[tuple[str, str]], col1: float =
         sh.text(x0 + 2.0, y + row_h / 2 - 0.3, a, hh, valign="middle", width=xm - x0 - 4.0, height_max=row_h - 2.0,
                 max_lines=2, min_h=min(hh, 3.5) if hh >= 3.5 else hh)
         sh.text((xm + x1) / 2, y + row_h / 2 - 0.3, b, hh, align="center", valign="middle", width=x1 - xm - 4.0,
-                min_h=min(hh, 3.5) if hh >= 3.5 else hh)
+                height_max=row_h - 2.0, max_lines=2, min_h=min(hh, 3.5) if hh >= 3.5 else hh)
     return bottom
 
 
