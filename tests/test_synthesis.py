@@ -324,3 +324,26 @@ def test_no_synthesis_section_without_the_record():
 
     doc = _note_of((EXAMPLES / "four_bar.toml").read_text(encoding="utf-8"), "en")
     assert not any(isinstance(b, Heading) and b.text == "Synthesis of the mechanism" for b in doc.blocks)
+
+
+# ---------------------------------------------------------------------------------------------------
+# sheet 1 draws the construction
+
+@pytest.mark.parametrize("name,angle", [("synth_slider.toml", "θ = 16,36°"), ("synth_rocker.toml", "θ = 16,36°"),
+                                        ("synth_shaper.toml", "ψ = θ = 36,00°")])
+def test_sheet1_draws_the_construction(name, angle, tmp_path):
+    from test_sheets import TITLE, check_layout, reopen
+
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+    from tmm_cli.render.sheets.linkage_sheet import sheet1
+
+    s = analyse_mechanism(parse_mechanism(tomllib.loads(_synth_text(name)), "m.toml"))
+    doc = reopen(sheet1(s, "ru", TITLE), tmp_path, "sheet1")
+    check_layout(doc)
+    texts = [e.dxf.text for e in doc.modelspace().query("TEXT")]
+    assert angle in texts
+    plain = analyse_mechanism(parse_mechanism({k: v for k, v in tomllib.loads(_synth_text(name)).items()
+                                               if k != "synthesis"}, "m.toml"))
+    (tmp_path / "plain").mkdir()
+    doc2 = reopen(sheet1(plain, "ru", TITLE), tmp_path / "plain", "sheet1")
+    assert angle not in [e.dxf.text for e in doc2.modelspace().query("TEXT")]
