@@ -88,7 +88,10 @@ def _reach(s: Sheet1) -> dict[str, float]:
     for ln in m.links:
         if ln.kind == "slotted":
             block = m.links[ln.number - 2].name
-            out[ln.name] = float(np.max(s.cycle.curve.kin.slide[block][0])) * MM
+            k = s.cycle.curve.kin
+            riders = [g.joints[1] for g in m.groups if g.guide is not None and g.guide.link == ln.name]
+            out[ln.name] = max([float(np.max(k.slide[block][0]))] +
+                               [float(np.max(np.abs(k.z[j] - k.z[ln.axis[1]]))) for j in riders]) * MM
     return out
 
 
@@ -267,7 +270,7 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
     reach = _reach(s)
     # the guides: their axes over the sliders' travel, the guide's surface hatched under it
     for g in m.groups:
-        if g.guide is None:
+        if g.guide is None or g.guide.moving:  # a moving guide is drawn with its link
             continue
         slider = next(ln.name for ln in m.links if ln.group == g.index and ln.kind == "slider")
         zs = c.curve.kin.z[slider] * MM
