@@ -143,6 +143,7 @@ def test_exact_card_gives_the_bores_back(z, with_e):
     assert np.allclose([b.radial_prime for b in fit.bores], r_r, atol=1e-9)
     assert np.allclose([b.tangential_prime for b in fit.bores], t_r, atol=1e-9)
     assert fit.unknowns == 4 * z - 1 and fit.used == (6 if with_e else 5) * z
+    assert [b.bore for b in fit.bores] == list(range(1, z + 1))  # the card's numbering: bore 1 is the first row
 
 
 @settings(max_examples=30, deadline=None)
