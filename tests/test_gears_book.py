@@ -90,6 +90,37 @@ def test_overlap_angles_by_the_roll_of_the_base_circles(z1, z2, x1, x2):
         assert (round(g.phi_alpha1_deg, 1), round(g.phi_alpha2_deg, 1)) == (32.5, 27.6)
 
 
+def test_single_and_double_pair_zones_on_the_line_of_action():
+    """Fig. 2.3: on the active line P1P2 (length g_α = ε_α·p_b) the two end zones of length
+    g_α − p_b carry two pairs, the middle U2U1 of length 2·p_b − g_α one pair. The book's example
+    17/20: p_b = 59.04 mm, g_α = 1.5358·p_b = 90.68 mm: 27.41 mm single, 31.64 mm double."""
+    for z1, z2, x1, x2 in ((17, 20, 0, 0), (17, 43, 0, 0), (13, 31, 0.5, -0.2), (24, 17, 0.3, 0.3)):
+        g = spur_geometry(z1, z2, x1=x1, x2=x2)
+        assert g.single_zone_mm == pytest.approx(g.u1_mm - g.u2_mm, rel=1e-12)
+        assert g.double_zone_mm == pytest.approx(g.u2_mm - g.p1_mm, rel=1e-12)
+        assert g.single_zone_mm + 2 * g.double_zone_mm == pytest.approx(g.p2_mm - g.p1_mm, rel=1e-12)
+    g = spur_geometry(17, 20)
+    assert (round(g.single_zone_mm, 2), round(g.double_zone_mm, 2)) == (27.41, 31.64)
+
+
+def test_a_pointed_shift_names_the_limit_in_mm():
+    """m = 20 mm: the limit the message offers is 0.25·m = 5 mm."""
+    from tmm_cli.errors import TmmError
+
+    with pytest.raises(TmmError, match=r"s_a ≥ 0\.25·m = 5 mm is the limit"):
+        spur_geometry(17, 20, x1=2.5, x2=0.0)
+
+
+def test_no_single_row_scheme_below_a_ratio_of_2():
+    """§2.4: z_n/z_k = i − 1 and z_c = (z_n − z_k)/2, so i ≤ 2 leaves the planet no teeth."""
+    from fractions import Fraction
+
+    from tmm_cli.gears.planetary.book import book_scheme1
+
+    assert book_scheme1(Fraction(3, 2)) is None and book_scheme1(Fraction(2)) is None
+    assert book_scheme1(Fraction(13, 4)).chosen.teeth == (40, 25, 90)
+
+
 def test_spur_rounding_exact_half_goes_up():
     # variants 24 and 44 have n_k = −1800: 17·1800/720 = 42.5 → 43 (a float could round it either way)
     assert spur_teeth(720, -1800) == (43, 17)
