@@ -121,6 +121,15 @@ def test_no_single_row_scheme_below_a_ratio_of_2():
     assert book_scheme1(Fraction(13, 4)).chosen.teeth == (40, 25, 90)
 
 
+@pytest.mark.parametrize("value", [1e-12, 1e-6, 0.0149, 0.5, 3.0, 50.0, 1e3, 1e5])
+def test_inverse_involute_round_trip_up_to_the_asymptote(value):
+    """inv α = tg α − α grows without bound as α → 90°: its inverse must stay below 90° and give
+    the value back for every value, also where Newton's first step would jump past the asymptote."""
+    a = inv_inverse(value)
+    assert 0 < a < math.pi / 2
+    assert inv(a) == pytest.approx(value, rel=1e-9)  # near 90° a step of α's last bit moves inv α by 1e-11
+
+
 def test_spur_rounding_exact_half_goes_up():
     # variants 24 and 44 have n_k = −1800: 17·1800/720 = 42.5 → 43 (a float could round it either way)
     assert spur_teeth(720, -1800) == (43, 17)

@@ -154,7 +154,7 @@ def test_units_and_scaling():
 
 
 def test_bad_inputs():
-    for kw in ({"torque1_nm": 0.0}, {"b_w_m": -1e-3}, {"m_m": 0.0}, {"nu": 0.5}):
+    for kw in ({"torque1_nm": 0.0}, {"b_w_m": -1e-3}, {"b_w_m": 0.0}, {"m_m": 0.0}, {"nu": 0.5}):
         with pytest.raises(ValueError):
             st.mesh_stiffness(**{**EX, **kw})
     with pytest.raises(ValueError):
