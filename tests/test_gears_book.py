@@ -130,6 +130,18 @@ def test_inverse_involute_round_trip_up_to_the_asymptote(value):
     assert inv(a) == pytest.approx(value, rel=1e-9)  # near 90° a step of α's last bit moves inv α by 1e-11
 
 
+@pytest.mark.parametrize("n_cr, rule", [(40, "exact"), (37, "simple"), (33, "simple")])
+def test_two_stage_book_derivation_within_the_tolerance(n_cr, rule):
+    """§2.4 applied twice (i > 16: scheme 1+1): the book's procedure finds two stages whose product
+    is i_pl within ±5 % (720/40 = 18 exactly; 720/37 = 19.46 through simple fractions near √i)."""
+    r = design_gears(1000, n_cr)
+    i = r.motor_rpm / n_cr
+    d = r.derivation
+    assert r.planetary.scheme == "1+1" and d is not None and d.scheme == "1+1" and len(d.stages) == 2
+    assert d.fraction_rule == rule
+    assert abs(float(d.ratio_fraction) / i - 1) <= 0.05 + 1e-12
+
+
 def test_spur_rounding_exact_half_goes_up():
     # variants 24 and 44 have n_k = −1800: 17·1800/720 = 42.5 → 43 (a float could round it either way)
     assert spur_teeth(720, -1800) == (43, 17)
