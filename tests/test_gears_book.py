@@ -107,8 +107,9 @@ def test_a_pointed_shift_names_the_limit_in_mm():
     """m = 20 mm: the limit the message offers is 0.25·m = 5 mm."""
     from tmm_cli.errors import TmmError
 
-    with pytest.raises(TmmError, match=r"s_a ≥ 0\.25·m = 5 mm is the limit"):
+    with pytest.raises(TmmError, match=r"s_a ≥ 0\.25·m = 5 mm is the limit") as info:
         spur_geometry(17, 20, x1=2.5, x2=0.0)
+    assert str(info.value).startswith("the shift x1 = 2.5 makes gear 1 (z = 17) pointed")
 
 
 def test_no_single_row_scheme_below_a_ratio_of_2():
