@@ -25,7 +25,7 @@ import math
 import numpy as np
 
 from ..records import record
-from .chain import Kinematics, guide_frame, solve
+from .chain import Kinematics, slider_unit, solve
 from .mechanism import Mechanism
 from .positions import Cycle, output_coordinate
 
@@ -130,8 +130,9 @@ def load_value(load: Load, stroke: Stroke, mech: Mechanism, kin: Kinematics):
     if load.kind == "moment":
         return -stroke.direction * size
     g = mech.groups[mech.link(load.link).group - 1]
-    unit = g.guide.unit if not g.guide.moving else guide_frame(mech, g, kin)[1]
-    return -stroke.direction * size * unit
+    if g.kind == "RRP" and not g.guide.moving:
+        return -stroke.direction * size * g.guide.unit
+    return -stroke.direction * size * slider_unit(mech, load.link, kin)
 
 
 def _cumulative_work(load: Load, stroke: Stroke, fraction, theta):

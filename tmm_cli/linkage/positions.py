@@ -165,6 +165,12 @@ def pressure_angle(mech: Mechanism, g: Group, k: Kinematics):
         unit = g.guide.unit if not g.guide.moving else guide_frame(mech, g, k)[1]
         c = (np.conj(u1) * unit).real / np.abs(u1)
         return np.arccos(np.minimum(np.abs(c), 1.0))
+    if g.kind == "PRP":  # block B′ pushes across G1, block B moves along G2
+        e1 = np.exp(1j * k.angle[g.links[0]])
+        e2 = np.exp(1j * k.angle[g.links[1]])
+        return np.arccos(np.minimum(np.abs((np.conj(1j * e1) * e2).real), 1.0))
+    if g.kind == "RPP":  # the block pushes across the slot, the yoke moves along its guide
+        return np.full(k.phi.shape, math.acos(min(abs(math.sin(g.slot)), 1.0)))
     if g.kind == "RPR" and g.offset != 0.0:
         return np.arctan2(abs(g.offset), np.abs(k.slide[g.links[0]][0]))
     return np.zeros(k.phi.shape)

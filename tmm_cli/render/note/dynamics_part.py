@@ -19,7 +19,7 @@ from .ctx import Ctx, V
 from .model import Heading
 
 # the kinds of Assur groups as the book writes them (В — a turning pair, П — a sliding pair)
-_KIND = {"RRR": N_("RRR"), "RRP": N_("RRP"), "RPR": N_("RPR")}
+_KIND = {"RRR": N_("RRR"), "RRP": N_("RRP"), "RPR": N_("RPR"), "PRP": N_("PRP"), "RPP": N_("RPP")}
 
 
 def dynamics_chapter(c: Ctx) -> None:
@@ -261,7 +261,26 @@ def _groups(c: Ctx, s) -> None:
                                                                         n3=n3)
         c.p(head + (t(" is solved first.") if first else t(" is solved next.")), indent=True)
         first = False
-        if g.kind in ("RRR", "RRP"):
+        if g.kind == "PRP":
+            (jb,) = g.joints
+            c.p(t("Unknown are the two guides' reactions ${a}$ and ${c}$, each across its guide, the slides' couples "
+                  "(each block's own moment about ${B}$: a block cannot turn on its guide) and the inner reaction ${b}$ "
+                  "of the pin ${B}$. The force polygon of the group gives the two guides' reactions, the polygon of "
+                  "block {n3} the pin's:").format(a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label),
+                                                  B=pt(jb), n3=n3))
+            c.formula(f"{fsym(c, ra.label)} + Σ F^(({n2})) + Σ F^(({n3})) + {fsym(c, rc.label)} = 0; quad "
+                      f"{fsym(c, rb.label)} = -({fsym(c, rc.label)} + Σ F^(({n3})))", numbered=False)
+        elif g.kind == "RPP":
+            ja, jy = g.joints
+            c.p(t("Unknown are the reaction ${a}$ of the pin ${A}$ on the block, the block's pressure ${b}$ on the yoke "
+                  "across its slot and the guide's reaction ${c}$ across the guide, with the slides' couples. The "
+                  "polygon of the yoke {n3} gives ${b}$ and ${c}$ (their directions are known), the polygon of the "
+                  "block {n2} gives ${a}$; the couples follow from the moments of the block about ${A}$ and of the "
+                  "yoke about ${Y}$:").format(a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label), A=pt(ja),
+                                              Y=pt(jy), n2=n2, n3=n3))
+            c.formula(f"{fsym(c, rb.label)} + Σ F^(({n3})) + {fsym(c, rc.label)} = 0; quad "
+                      f"{fsym(c, ra.label)} = {fsym(c, rb.label)} - Σ F^(({n2}))", numbered=False)
+        elif g.kind in ("RRR", "RRP"):
             ja, jb = g.joints[0], g.joints[1]
             l2 = abs(z[jb] - z[ja])
             m2 = known_moment(s, n2, z[jb], i)
