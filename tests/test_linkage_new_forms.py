@@ -27,7 +27,7 @@ from tmm_cli.linkage.sheet2_file import parse_sheet2
 from tmm_cli.linkage.vector_plans import plans
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
-NEW = ("shaper_offset", "rocking_block", "tangent", "scotch_yoke")
+NEW = ("shaper_offset", "rocking_block", "tangent", "scotch_yoke", "v_compressor")
 
 
 def data(name):
@@ -406,3 +406,89 @@ def test_the_tangent_and_the_sine_laws():
     assert np.allclose(k.a["Y"], -0.05 * w * w * np.cos(phi), atol=1e-9)
     assert np.allclose(k.slide["A"][0], 0.05 * np.sin(phi), atol=1e-12)  # the block up the slot
     assert structure(y).groups[1].kind == 5
+
+
+# --- gas forces from indicator diagrams ([[load]] with head) -----------------------------------
+
+
+def _gas_sheet2(d):
+    m = parse_mechanism(d, "m.toml")
+    return m, analyse_sheet2(analyse_mechanism(m, source="m.toml"), parse_sheet2(m, "m.toml"), "m.toml")
+
+
+@pytest.mark.parametrize("start", [None, 100.0])
+def test_gas_forces_from_the_indicator_diagrams(start):
+    """Independently of tmm's gas module: the piston's distance from its head from the kinematics, its
+    stroke H from a dense grid, the row from the sign of its velocity, the pressure by numpy's
+    interpolation; the cycle's work = −Σ A·H·(area under the back row − under the away row); the mean
+    M_b over the turn equals M_d; position 0 at piston B's dead centre nearest its head."""
+    from scipy.integrate import trapezoid
+
+    d = data("v_compressor")
+    if start is not None:
+        d["crank"]["start_deg"] = start
+    m, s = _gas_sheet2(d)
+    phi = np.linspace(0.0, 2 * math.pi, 36001)[:-1]
+    k = solve(m, phi)
+    work = 0.0
+    for ld in d["load"]:
+        head = complex(*ld["head"])
+        q = np.abs(k.z[ld["on"]] - head)
+        H = q.max() - q.min()
+        assert H == pytest.approx(0.1, rel=1e-6)
+        t, p = np.array(ld["travel"]), np.array(ld["pressure"])
+        work += ld["area"] * H * 1e6 * (trapezoid(p[0], t) - trapezoid(p[1], t))
+        # the force at the sheet's positions: p·A along the cylinder, away from the head
+        kp = s.sheet1.cycle.kin
+        qp = np.abs(kp.z[ld["on"]] - head)
+        away = (kp.z[ld["on"]] - head) / qp
+        qdot = (np.conj(away) * kp.v[ld["on"]]).real
+        x = (qp - q.min()) / H
+        moving = np.abs(qdot) > 1e-6
+        want = np.where(qdot > 0, np.interp(x, t, p[0]), np.interp(x, t, p[1])) * 1e6 * ld["area"]
+        f = next(f for f in s.loading.forces if f.kind == "load" and f.point == ld["on"]).f
+        assert np.allclose(f[moving], (want * away)[moving], rtol=1e-9, atol=1e-6)
+    assert s.dynamics.A_r[-1] == pytest.approx(work, rel=1e-9)
+    assert s.dynamics.M_d == pytest.approx(-work / (2 * math.pi), rel=1e-9)
+    n = 72000
+    c = s.sheet1.cycle
+    ph = c.start + m.crank.sense * (np.arange(n) + 0.5) * 2 * math.pi / n
+    kk = solve(m, ph)
+    from tmm_cli.linkage.forces import applied
+    from tmm_cli.linkage.power import balancing_moment_by_power
+
+    mb = balancing_moment_by_power(kk, applied(m, s.input, s.stroke, kk))
+    assert float(np.mean(mb)) == pytest.approx(s.dynamics.drive_moment_ccw, rel=1e-4)
+    if start is None:
+        assert c.start_rule == "gas" and math.degrees(c.start) == pytest.approx(45.0, abs=1e-6)
+        b = k.z["B"]
+        assert abs(complex(solve(m, [c.start]).z["B"][0]) - complex(*d["load"][0]["head"])) == pytest.approx(
+            np.min(np.abs(b - complex(*d["load"][0]["head"]))), abs=1e-9)
+
+
+def _gas(change, i=0):
+    d = data("v_compressor")
+    d["load"][i].update(change)
+    return d
+
+
+@pytest.mark.parametrize("d,fragment", [
+    (_gas({"pressure": [[0.0] * 8] * 3}), "'load[1].pressure' has 3 rows; give 2"),
+    (_gas({"pressure": [[0.0] * 8] * 4}), "'load[1].pressure' has 4 rows, a four-stroke engine's cycle"),
+    (_gas({"pressure": [[0.0] * 8, [0.0] * 7]}), "'load[1].pressure' row 2 has 7 values but 'load[1].travel' has 8"),
+    (_gas({"head": [0.3, 0.2]}), "'load[1].head' is"),
+    (_gas({"head": [0.15, 0.15]}), "'load[1].head' is reached by the piston B"),
+    (_gas({"on": "A"}), "'load[1].on' is 'A': a gas force acts on a piston"),
+    (_gas({"travel": [0.0, 0.5, 0.4, 1.0, 1.0, 1.0, 1.0, 1.0]}), "'load[1].travel' must run from 0 to 1"),
+    (_gas({"area": 0.0}), "'load[1].area' is 0; the piston's area must lie in"),
+    (_gas({"on": "B", "head": [0.2333452, 0.2333452]}, 1), "'load': two gas loads on one piston"),
+])
+def test_hostile_gas_loads(d, fragment):
+    from tmm_cli.i18n.errors import translate_error
+
+    with pytest.raises(TmmError) as err:
+        _gas_sheet2(d)
+    text = str(err.value)
+    assert "\n" not in text and text.startswith("m.toml: ") and fragment in text, text
+    ru = translate_error(text)
+    assert ru != text and any("а" <= ch <= "я" for ch in ru), ru

@@ -135,7 +135,7 @@ def slider_pose(mech: Mechanism, kin: Kinematics, link: str, i: int):
     if g.kind == "RPP" and link == g.links[1]:
         es = complex(np.exp(1j * kin.angle[g.links[0]][i]))
         t = float(kin.slide[g.links[0]][0][i])
-        half = 1.15 * (abs(t) + mech.crank.length)
+        half = 1.15 * max(abs(t), mech.crank.length)  # the slot covers the block's travel (±r in a Scotch yoke)
         segs.append((centre - half * es, centre + half * es))
     return centre, angle, segs
 

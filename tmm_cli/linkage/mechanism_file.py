@@ -418,8 +418,22 @@ def _output(r: _Reader, b: _Builder, groups: tuple[Group, ...], value) -> Output
     r.fail(bad)
 
 
+def _gas_head(r: _Reader, b: _Builder, load) -> tuple[str, complex] | None:
+    """The first [[load]]'s piston and cylinder head when it is a gas load (position 0 is its dead
+    centre nearest the head); checked in full by :func:`.gas.parse_gas`."""
+    if not isinstance(load, list) or not load or not isinstance(load[0], dict) or "head" not in load[0]:
+        return None
+    on = load[0].get("on")
+    if not isinstance(on, str) or not any(x.kind == "slider" and x.name == on.strip() for x in b.links):
+        r.fail(f"'load[1].on' is {on!r}: a gas force acts on a piston, a slider of an RRP group or the yoke of an RPP "
+               "group; give its joint, e.g. on = \"B\"")
+    return on.strip(), r.xy(load[0]["head"], "load[1].head", "head = [0.0, 0.45]")
+
+
 def _working(r: _Reader, extra: dict) -> str | None:
     load = extra.get("load")
+    if isinstance(load, list):  # [[load]]: the table load's (gas loads have both strokes)
+        load = next((x for x in load if isinstance(x, dict) and "head" not in x), None)
     if isinstance(load, dict) and "working" in load:
         return r.choice(load["working"], "load.working", ("away", "towards"), 'working = "away"')
     return None
@@ -486,7 +500,12 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
             r.fail(f"'{key}.link': no moving link joins {j1} and {j2}; name a link by two of its joints, "
                    "e.g. [\"A\", \"B\"]")
     groups = tuple(groups)
-    output = _output(r, b, groups, data.get("output"))
+    gas_head = _gas_head(r, b, data.get("load"))
+    if gas_head is not None and data.get("output") is None:  # the first gas load's piston is the output
+        ln = next(x for x in b.links if x.name == gas_head[0])
+        output = Output("slider", ln.name, ln.pins[0], ln.group)
+    else:
+        output = _output(r, b, groups, data.get("output"))
     plan = data.get("plan")
     if plan is not None:
         if isinstance(plan, bool) or not isinstance(plan, (int, str)):
@@ -495,4 +514,4 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
     extra = {k: data[k] for k in SHEET2_KEYS if k in data}
     points = tuple(done[point] for _, point, _, _, _ in raw)
     return Mechanism(name, positions, frame, crank, groups, points, tuple(b.links), tuple(b.pairs + [
-        p for g in groups for p in g.pairs]), dict(b.carrier), output, _working(r, extra), plan, extra)
+        p for g in groups for p in g.pairs]), dict(b.carrier), output, _working(r, extra), plan, extra, gas_head)

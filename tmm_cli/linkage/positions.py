@@ -226,7 +226,12 @@ def _start(mech: Mechanism, roots: np.ndarray):
     phi_max, phi_min = float(roots[i_max]), float(roots[i_min])
     rising = float(np.remainder(sense * (phi_max - phi_min), TWO_PI))  # crank travel while q grows
     falling = TWO_PI - rising
-    if mech.working is not None:
+    if mech.gas_head is not None and mech.gas_head[0] == mech.output.link:  # a piston: its dead centre nearest the head
+        head = mech.gas_head[1]
+        k = solve(mech, [phi_min, phi_max])
+        z = k.z[mech.output.joint]
+        up, rule = abs(z[0] - head) < abs(z[1] - head), "gas"
+    elif mech.working is not None:
         near_min = _distance_from_pivot(mech, phi_min) < _distance_from_pivot(mech, phi_max)
         up = near_min == (mech.working == "away")  # the working stroke goes from min to max
         rule = "load"

@@ -159,6 +159,7 @@ def _loads(c: Ctx, s) -> None:
                                 [V(ms.J, exact=True), V(eps, sig=4)], V(abs(float(m.m[i])), sig=4), t("N·m")))
         c.formula(*lines)
     _load(c, s)
+    _gas(c, s)
     # all the applied forces of the position
     rows = []
     for f in forces:
@@ -218,6 +219,40 @@ def _load(c: Ctx, s) -> None:
     else:
         c.p(t("In position {label} the crank is on the return stroke: ${sym} = 0$.").format(
             label=_position(s).label, sym=sym))
+
+
+def _gas(c: Ctx, s) -> None:
+    """The gas forces from the indicator diagrams ([[load]] with head)."""
+    from ...linkage.gas import gas_pressure, piston, state
+
+    t, n = c.t, c.n
+    gas = s.input.gas
+    if not gas:
+        return
+    mech = s.sheet1.mechanism
+    i = s.force_position
+    kin = s.sheet1.cycle.kin.at(i)
+    c.p(t("The gas force on a piston is $P = p A$ along its cylinder, away from the cylinder head, on both strokes: "
+          "$p$ the gauge pressure of the indicator diagram against the piston's travel $s/H$ from the dead centre "
+          "nearest the head (the first row while the piston moves away from the head, the second while it comes back), "
+          "$A$ the piston's area. It drives the crank where the piston moves away from the head and resists where it "
+          "comes back."))
+    for gl in gas:
+        ln = mech.link(gl.link)
+        sym = fsym(c, f"P{ln.number}")
+        pst = piston(gl, mech)
+        c.table(f"dyn_gas_{ln.number}", t("Indicator diagram of the piston {p} (gauge pressure, MPa; area {a} m²)").format(
+            p=gl.link, a=n(gl.area, sig=4)), ["$s/H$"] + [n(x, sig=3) for x in gl.travel],
+            [[t("away from the head")] + [n(y, sig=4) for y in gl.pressure[0]],
+             [t("towards the head")] + [n(y, sig=4) for y in gl.pressure[1]]],
+            align=["left"] + ["center"] * len(gl.travel), widths=[2.2] + [0.9] * len(gl.travel))
+        x, row, _ = state(gl, pst, mech, kin)
+        p = float(gas_pressure(gl, pst, mech, kin)[0]) / 1.0e6
+        c.p(t("In position {label} the piston {p} is at $s/H$ = {x}, moving {way}: $p$ = {pr} MPa,").format(
+            label=_position(s).label, p=gl.link, x=n(float(x[0]), decimals=3), pr=n(p, sig=4),
+            way=t("away from the head") if int(row[0]) == 0 else t("towards the head")))
+        c.formula(c.calc(f"{sym} = p A", "{0} dot 10^6 dot {1}", [V(p, sig=6), V(gl.area, exact=True)],
+                         V(p * 1.0e6 * gl.area, sig=4), t("N")), numbered=False)
 
 
 # --- 2. the groups ----------------------------------------------------------------------------------
@@ -554,6 +589,19 @@ def _reduction(c: Ctx, s) -> None:
                       where=['A_"с"', ("ψ", t("the swing of the output rocker, rad")),
                              ("S_M", t("the area under the diagram of the resistance moment against the share of the "
                                        "swing, N·m"))])
+    if s.input.gas:
+        from ...linkage.gas import _row_integral, piston
+
+        for gl in s.input.gas:
+            ln = s.sheet1.mechanism.link(gl.link)
+            h = piston(gl, s.sheet1.mechanism).stroke
+            s1, s2 = (float(_row_integral(gl.travel, row, 1.0)) for row in gl.pressure)
+            c.p(t("The gas force on the piston {p} does over a cycle the work of its indicator diagram: the area between "
+                  "its rows times the piston's area and stroke (positive where the expansion's row lies higher):")
+                .format(p=gl.link))
+            c.formula(c.calc(f'A_(P {ln.number}) = A H (S_1 - S_2) dot 10^6', "{0} dot {1} dot ({2} - {3}) dot 10^6",
+                             [V(gl.area, exact=True), V(h, sig=6), V(s1, sig=6), V(s2, sig=6)],
+                             V(gl.area * h * (s1 - s2) * 1.0e6, sig=5), t("J")), numbered=False)
     c.p(t("Over a steady cycle the driving work equals the resistance work, so the constant driving moment of the "
           "motor reduced to the crank is"))
     m = abs(d.M_d)
