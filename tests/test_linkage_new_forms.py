@@ -492,3 +492,47 @@ def test_hostile_gas_loads(d, fragment):
     assert "\n" not in text and text.startswith("m.toml: ") and fragment in text, text
     ru = translate_error(text)
     assert ru != text and any("а" <= ch <= "я" for ch in ru), ru
+
+
+# --- a load of its own direction (direction_deg) -----------------------------------------------
+
+
+def test_a_cutting_force_of_its_own_direction():
+    """shaper_offset's cutting force points at 160°: on the working stroke it is the table's size
+    along e^{i·160°} (zero on the return), only its part along the guide works (cos 160° of the area
+    times the stroke), and the mean M_b over the turn is M_d."""
+    from tmm_cli.linkage.forces import applied
+    from tmm_cli.linkage.power import balancing_moment_by_power
+
+    s = sheet2("shaper_offset")
+    m = s.sheet1.mechanism
+    c = s.sheet1.cycle
+    f = next(f for f in s.loading.forces if f.kind == "load").f
+    e = complex(math.cos(math.radians(160.0)), math.sin(math.radians(160.0)))
+    on = np.abs(f) > 0
+    assert on.any() and np.allclose(f[on] / np.abs(f[on]), e, atol=1e-12)
+    vx = c.kin.v["C"].real  # the ram's working motion is +x here
+    assert np.all(vx[on] >= -1e-9)
+    area = (0.95 - 0.05) * 1500.0  # the table: 1500 N from 5 % to 95 % of the stroke
+    assert s.dynamics.A_r[-1] == pytest.approx(c.stroke * area * math.cos(math.radians(160.0)), rel=1e-9)
+    n = 72000
+    ph = c.start + m.crank.sense * (np.arange(n) + 0.5) * 2 * math.pi / n
+    k = solve(m, ph)
+    mb = balancing_moment_by_power(k, applied(m, s.input, s.stroke, k))
+    assert float(np.mean(mb)) == pytest.approx(s.dynamics.drive_moment_ccw, rel=2e-4)
+
+
+@pytest.mark.parametrize("name,change,fragment", [
+    ("rocking_block", {"direction_deg": 90.0}, "'load.direction_deg' gives a force its own direction"),
+    ("shaper_offset", {"direction_deg": 90.0}, "'load.direction_deg' is across the slider's guide"),
+])
+def test_hostile_directions(name, change, fragment):
+    from tmm_cli.i18n.errors import translate_error
+
+    d = data(name)
+    d["load"].update(change)
+    with pytest.raises(TmmError) as err:
+        parse_sheet2(parse_mechanism(d, "m.toml"), "m.toml")
+    text = str(err.value)
+    assert "\n" not in text and fragment in text, text
+    assert any("а" <= ch <= "я" for ch in translate_error(text))

@@ -123,6 +123,8 @@ def add_sheet2(doc: dict, s: Sheet2) -> dict:
                      "load": None if s.input.load is None else {"link": s.input.load.link, "kind": s.input.load.kind,
                                                                  "stroke": list(s.input.load.stroke),
                                                                  "values": list(s.input.load.values)}}
+    if s.input.load is not None and s.input.load.direction is not None:  # a force of its own direction
+        doc["forces"]["load"]["direction_deg"] = math.degrees(s.input.load.direction)
     if s.input.gas:  # the gas loads: each piston's indicator diagram and dead centres
         from ...linkage.gas import piston
 

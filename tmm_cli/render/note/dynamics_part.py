@@ -207,6 +207,9 @@ def _load(c: Ctx, s) -> None:
               "(Table {{tab:dyn_load}}) gives it against the share of the swing covered; it is linear between these "
               "points and zero on the return stroke."))
     c.p(what.format(sym=sym))
+    if ld.direction is not None:
+        c.p(t("Its direction is its own, fixed at {deg}° from the $x$ axis (not along the guide): its part across the "
+              "guide does no work but loads the pairs.").format(deg=n(math.degrees(ld.direction), decimals=1)))
     share = t("Share of the working stroke") if ld.kind == "force" else t("Share of the working swing")
     c.table("dyn_load", t("Diagram of the useful resistance"), [share] + [n(x, sig=3) for x in ld.stroke],
             [[f"${sym}$, {unit}"] + [n(y, sig=5) for y in ld.values]],
@@ -573,7 +576,20 @@ def _reduction(c: Ctx, s) -> None:
     a_c = float(d.A_r[-1])
     if ld is not None and st is not None:
         area = float(table_integral(ld, 1.0))
-        if ld.kind == "force":
+        if ld.kind == "force" and ld.direction is not None:
+            from ...linkage.loads import _along
+
+            k = _along(ld, st)
+            c.p(t("The work of the resistances over a cycle: the weights do none (their centres come back), the useful "
+                  "resistance of its own direction does work by its part along the guide, $cos α$ of it ($α$ the "
+                  "angle between the force and the working motion), over the area $S_F$ under its diagram times the "
+                  "stroke $H$:"))
+            c.formula(c.calc('A_"с" = H S_F cos α', "{0} dot {1} dot ({2})", [V(st.length, sig=5), V(area, sig=6),
+                                                                             V(k, sig=6)], V(a_c, sig=5), t("J")),
+                      where=['A_"с"', ("H", t("the stroke of the output slider, m")),
+                             ("S_F", t("the area under the diagram of the useful resistance against the share of the "
+                                       "stroke, N"))])
+        elif ld.kind == "force":
             c.p(t("The work of the resistances over a cycle: the weights do none (their centres come back), the useful "
                   "resistance takes the area $S_F$ under its diagram times the stroke $H$:"))
             c.formula(c.calc('A_"с" = -H S_F', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)], V(a_c, sig=5),
