@@ -176,7 +176,7 @@ class Mechanism:
     output: Output
     working: str | None  # 'away' | 'towards' (from [load] working), else None
     plan: str | None  # label of the position of the plans (file key `plan`), else None
-    extra: dict  # the sheet-2 tables as read ('gravity', 'mass', 'load', 'dynamics'), unchecked
+    extra: dict  # the sheet-2 tables as read ('gravity', 'mass', 'load', 'dynamics') and 'synthesis', unchecked
     gas_head: tuple[str, complex] | None = None  # the first [[load]]'s piston and head, if a gas load
 
     def link(self, name: str) -> Link:

@@ -27,8 +27,8 @@ The form (issue 24; SI units, angles in degrees from +x counter-clockwise)::
 
 Optional: ``output`` (a slider's joint, or a link by two joints; default: the last group's
 output link) and ``plan`` (the label of the position of the plans). The sheet-2 tables
-(``gravity``, ``[[mass]]``, ``[load]``, ``[dynamics]``) are kept as read, unchecked, in
-``Mechanism.extra``; only ``load.working`` ("away" | "towards") is read here, because it says
+(``gravity``, ``[[mass]]``, ``[load]``, ``[dynamics]``) and ``[synthesis]`` (the task of `tmm synth`,
+docs/synthesis.md) are kept as read, unchecked, in ``Mechanism.extra``; only ``load.working`` ("away" | "towards") is read here, because it says
 which stroke is the working one (position 0 is its start).
 
 Errors: one :class:`TmmError` line that names the key as a path (``crank.length``,
@@ -51,6 +51,7 @@ MAX_FRAME = 50
 NAME_MAX = 12
 TOP_KEYS = ("name", "positions", "frame", "crank", "group", "point", "output", "plan")
 SHEET2_KEYS = ("gravity", "mass", "load", "dynamics")
+RECORD_KEYS = ("synthesis",)  # the task `tmm synth` found the mechanism from (kept as read, for the note)
 CRANK_KEYS = ("pivot", "joint", "length", "rpm", "omega", "sense", "start_deg")
 GROUP_KEYS = {
     "RRR": ("kind", "joints", "lengths", "branch"),
@@ -460,8 +461,8 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
     if not isinstance(data, dict):
         r.fail("the file must hold TOML tables")
     for k in data:
-        if k not in TOP_KEYS and k not in SHEET2_KEYS:
-            r.fail(f"unknown key '{k}'; known keys here: {', '.join(TOP_KEYS + SHEET2_KEYS)}")
+        if k not in TOP_KEYS and k not in SHEET2_KEYS and k not in RECORD_KEYS:
+            r.fail(f"unknown key '{k}'; known keys here: {', '.join(TOP_KEYS + SHEET2_KEYS + RECORD_KEYS)}")
     name = r.text(data.get("name", ""), "name", EXAMPLES["name"])[:200]
     positions = data.get("positions", 12)
     if isinstance(positions, bool) or not isinstance(positions, int) or not 2 <= positions <= 360:
@@ -511,7 +512,7 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
         if isinstance(plan, bool) or not isinstance(plan, (int, str)):
             r.fail(f"'plan' is {plan!r}; give the label of a position, e.g. plan = 3")
         plan = str(plan).strip().replace("'", "′")
-    extra = {k: data[k] for k in SHEET2_KEYS if k in data}
+    extra = {k: data[k] for k in SHEET2_KEYS + RECORD_KEYS if k in data}
     points = tuple(done[point] for _, point, _, _, _ in raw)
     return Mechanism(name, positions, frame, crank, groups, points, tuple(b.links), tuple(b.pairs + [
         p for g in groups for p in g.pairs]), dict(b.carrier), output, _working(r, extra), plan, extra, gas_head)

@@ -20,6 +20,7 @@ from ...linkage.scales import PLAN_MM, SCHEME_MM
 from ..terminal.mechanism import pattern
 from .ctx import Ctx, V, sheet1_of
 from .model import Heading
+from .synthesis_part import synthesis_section
 
 _KIND = {"crank": N_("crank"), "bar": N_("bar"), "slider": N_("slider"), "block": N_("block"),
          "slotted": N_("slotted link")}
@@ -32,6 +33,7 @@ def linkage_chapter(c: Ctx) -> None:
     if s is None:
         return
     c.doc.add(Heading(1, c.t("Structural and kinematic analysis of the lever mechanism"), "chapter", "linkage"))
+    synthesis_section(c, s)  # «Синтез механизма» when the file records its task (tmm synth, issue 33)
     _structure(c, s)
     _positions(c, s)
     if s.plans:
@@ -431,7 +433,7 @@ def _omega_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l
     if P.tiny(P.w[link]):
         return f"ω_{num} = 0"
     return c.calc(f"ω_{num} = {P.sym.mag(vec.symbol)}/{l_sym}", "{0}/{1}",
-                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=5)], V(abs(P.w[link]), sig=5), c.t("rad/s"))
+                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=9 if exact else 5)], V(abs(P.w[link]), sig=5), c.t("rad/s"))
 
 
 def _eps_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l_sym: str) -> str:
@@ -439,7 +441,7 @@ def _eps_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l_s
     if P.tiny(P.e[link], P.pl.acceleration):
         return f"ε_{num} = 0"
     return c.calc(f"ε_{num} = {P.sym.mag(vec.symbol)}/{l_sym}", "{0}/{1}",
-                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=5)], V(abs(P.e[link]), sig=5), c.t("rad/s²"))
+                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=9 if exact else 5)], V(abs(P.e[link]), sig=5), c.t("rad/s²"))
 
 
 def _group_velocity(c: Ctx, P: _Plans, g) -> None:

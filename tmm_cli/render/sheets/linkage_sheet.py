@@ -54,6 +54,7 @@ from .lever_parts import (
     wrap_items,
 )
 from .paper import FRAME, H_LABEL, H_MIN_LABEL, TB_BOX, TB_H, Sheet, thin_out
+from .synthesis_overlay import draw_construction
 
 SCHEME_PAD = (16.0, 16.0, 16.0, 12.0)  # [mm] around the scheme: pivots, sliders, labels
 PLAN_PAD = (12.0, 10.0, 12.0, 8.0)  # around a plan: its labels
@@ -297,6 +298,7 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
         draw_links(f, link_segments(m, c.kin, p.index, unit=unit, reach=reach),
                    "Штриховые" if p.index in ends else "Тонкие", None, unit, 0.8)
     draw_links(f, link_segments(m, c.kin, 0, unit=unit, reach=reach), "Основные", None, unit, 1.0)
+    draw_construction(sh, f, s, lang, within)  # the synthesis' θ, locus, sagitta (tmm synth, issue 33)
     for n in pins(m):
         q = f.p(*(_xy(c.kin.z[n][0])))
         sh.circle(q, 1.2, "Основные")
