@@ -457,6 +457,9 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
         zero.insert(0, f"arrow(v){sub(g.joints[0] + str(n2))} = arrow(v){sub(g.joints[0])}")
     c.formula(*(_eq(P, vp, g.index) + zero))
     lines = []
+    if g.kind in ("PRP", "RPP"):
+        _sliding_group(c, P, g, vp, ms, "μ_v")
+        return
     if g.kind == "RRR":
         ja, jb, jc = g.joints
         v1, v2 = P.vel[f"v_{jb}{ja}"], P.vel[f"v_{jb}{jc}"]
@@ -503,6 +506,57 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
     c.formula(*lines)
 
 
+def _sliding_group(c: Ctx, P: _Plans, g, plan, unit: str, mu: str) -> None:
+    """The plan of a PRP or an RPP group (kinds 4, 5): its blocks only slide, so the plan gives the
+    relative velocities (accelerations) along the guides and slots; the Coriolis accelerations, where a
+    guide or the yoke turns, are known beforehand, 2·ω·v_rel. The blocks turn with their guides' links."""
+    t = c.t
+    n2, n3 = g.numbers
+    symbols = [x for eq in plan.equations if eq.group == g.index for side in eq.sides for x in side]
+    symbols += [eq.lhs for eq in plan.equations if eq.group == g.index]
+    vecs = [v for v in plan.vectors if v.symbol in dict.fromkeys(symbols)]
+    known, lines = [], []
+    turning = {}  # the Coriolis vectors' symbols → the link whose ω makes them
+    if g.kind == "PRP":
+        (jb,) = g.joints
+        for gd in g.guides:
+            if gd.moving:
+                turning[f"a^k_{jb}{jb}{P.m.link(gd.link).number}"] = gd.link
+    else:
+        ja = g.joints[0]
+        p3 = f"{ja}{n3}"
+        turning[f"a^k_{p3}{ja}{n2}"] = g.links[1]
+        if g.guide.moving:
+            turning[f"a^k_{p3}{p3}{P.m.link(g.guide.link).number}"] = g.guide.link
+    for v in dict((v.symbol, v) for v in vecs).values():
+        if v.symbol in turning:
+            rel = P.vel["v_" + v.symbol[4:]]
+            num = P.m.link(turning[v.symbol]).number
+            w = abs(P.w[P.m.links[num - 1].name])
+            known.append(c.calc(f"{P.sym.mag(v.symbol)} = 2 ω_{num} {P.sym.mag(rel.symbol)}", "2 dot {0} dot {1}",
+                                [V(w, sig=5), V(0.0 if P.tiny(rel.magnitude, P.pl.velocity) else rel.magnitude, sig=4)],
+                                V(0.0 if P.tiny(v.magnitude, plan) else v.magnitude, sig=4), unit))
+            known.append(P.drawn(plan, v))
+        elif v.start == "p" and v.known or v.start == "π" and v.known:
+            continue  # a guide's point found by similarity
+        else:
+            lines.append(P.measured(plan, v, unit, mu))
+    if known:
+        c.p(t("The blocks slide along turning guides, so their accelerations relative to them have Coriolis "
+              "components (the relative velocity turned by 90° in the sense of the guide's ω). The known components "
+              "and their segments on the plan:"))
+        c.formula(*known)
+    if plan.kind == "velocity":
+        same = [f"{q}_{n} = {q}_{P.m.link(gd.link).number}" if gd.moving else f"{q}_{n} = 0"
+                for q in ("ω",) for n, gd in zip((n2, n3), g.guides or (g.guide, g.guide))]
+        c.p(t("The blocks of the group only slide: each turns with the link of its guide."))
+    else:
+        same = [f"{q}_{n} = {q}_{P.m.link(gd.link).number}" if gd.moving else f"{q}_{n} = 0"
+                for q in ("ε",) for n, gd in zip((n2, n3), g.guides or (g.guide, g.guide))]
+        c.p(t("From the plan:"))
+    c.formula(*(lines + same))
+
+
 def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
     t = c.t
     ms2 = t("m/s²")
@@ -515,6 +569,9 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
     if g.kind == "RPR":
         zero.insert(0, f"arrow(a){sub(g.joints[0] + str(n2))} = arrow(a){sub(g.joints[0])}")
     c.formula(*(_eq(P, ap, g.index) + zero))
+    if g.kind in ("PRP", "RPP"):
+        _sliding_group(c, P, g, ap, ms2, "μ_a")
+        return
     known, lines = [], []
     rad = "ω"
     if g.kind in ("RRR", "RRP"):
@@ -588,7 +645,8 @@ def _vector_table(c: Ctx, P: _Plans) -> None:
         for v in plan.vectors:
             if v.magnitude / plan.scale < 0.05 and not v.relation:
                 continue
-            line = t("guide") if v.line == "guide" else " ".join(_split_points(v.line, P.sym.names))
+            line = (t("guide") if v.line == "guide" else t("slot") if v.line == "slot" else
+                    " ".join(_split_points(v.line, P.sym.names)))
             rows.append([f"${P.sym.vec(v.symbol)}$", f"${label_math(v.start)} {label_math(v.end)}$",
                          f"{v.relation} {line}".strip() or "—", c.n(v.magnitude / plan.scale, decimals=1),
                          c.n(v.magnitude, sig=4) + "\u00a0" + unit])

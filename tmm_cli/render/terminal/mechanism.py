@@ -160,7 +160,7 @@ def plans_table(s: Sheet1, lang: str, which: int = 0):
         mu = "μ_v" if plan.kind == "velocity" else "μ_a"
         t.add_row(f"[bold]{mu} = {num(plan.scale, lang, sig=3)} {su}[/]", "", "", "", "")
         for v in plan.vectors:
-            line = tr(lang, "guide") if v.line == "guide" else v.line
+            line = tr(lang, "guide") if v.line == "guide" else tr(lang, "slot") if v.line == "slot" else v.line
             t.add_row(v.symbol, v.start + v.end, f"{v.relation} {line}".strip(),
                       num(v.magnitude / plan.scale, lang, decimals=1), num(v.magnitude, lang, sig=4) + " " + unit)
     return t
