@@ -1,0 +1,161 @@
+"""Issue 30: a student's text is text. A name, a group, a mechanism's name, an answers key or an
+edited folder reaches every document as the characters typed — never as typst code or math, a
+Markdown link, HTML, a terminal escape or a DXF code — and every typst compile is a sandbox
+(no packages, nothing from $HOME, a wall-clock limit). Each case of the issue, driven through the
+CLI or the typesetter, asserting what the reader of the document would see."""
+
+import os
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from tmm_cli.cli import cli
+
+pypdf = pytest.importorskip("pypdf")
+EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
+
+
+def run(*args, **kw):
+    return CliRunner().invoke(cli, [str(a) for a in args], **kw)
+
+
+def one_line_error(res, *words, code=2):
+    assert res.exit_code == code, (res.exit_code, res.output, res.stderr)
+    err = res.stderr.strip()
+    assert "Traceback" not in res.output + err and "internal error" not in err
+    assert len(err.splitlines()) == 1 and err.startswith("tmm: error:"), err
+    for w in words:
+        assert w in err, (w, err)
+    return err
+
+
+def pdf_text(pdf: Path) -> str:
+    text = "\n".join(p.extract_text() for p in pypdf.PdfReader(pdf).pages)
+    return " ".join(text.replace("\xa0", " ").split())
+
+
+def pdf_outline(pdf: Path) -> list[str]:
+    def walk(items):
+        for it in items:
+            if isinstance(it, list):
+                yield from walk(it)
+            else:
+                yield it.title
+    return list(walk(pypdf.PdfReader(pdf).outline))
+
+
+def red_text(pdf: Path) -> bool:
+    """Any text filled red (typst's `red`, 1 0.25 0.21 rg, in a page's content)."""
+    reader = pypdf.PdfReader(pdf)
+    return any(b" rg" in p.get_contents().get_data() and re.search(rb"1 0\.2\d+ 0\.2\d+ rg", p.get_contents().get_data())
+               for p in reader.pages)
+
+
+HOSTILE_STUDENT = 'X $#text(fill: red)[INJ] #read("note-style.typ").slice(0,40)$ Y'
+
+
+# --- typst code through a name -----------------------------------------------------------------------
+
+
+def test_a_name_with_typst_code_is_set_as_typed(tmp_path):
+    res = run("project", "-v", 3, "--student", HOSTILE_STUDENT, "--group", "G_{x}^{2} a///b /*c*/",
+              "--report", "pdf", "--no-plots", "--no-sheets", "--out", tmp_path, "--lang", "en")
+    assert res.exit_code == 0, res.stderr
+    folder = tmp_path / "variant-03"
+    text = pdf_text(folder / "note.pdf")
+    assert HOSTILE_STUDENT in text  # the characters typed, "$", "#", "[" and the quotes included
+    assert "G_{x}^{2} a///b /*c*/" in text  # no comment swallowed the rest
+    style_head = (folder / "note-style.typ").read_text(encoding="utf-8")[:40]
+    assert " ".join(style_head.split()) not in text.replace(HOSTILE_STUDENT, "")  # no file was read into it
+    assert not red_text(folder / "note.pdf")
+
+
+def test_a_mechanism_name_with_lines_and_math_makes_no_chapter(tmp_path):
+    mech = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
+    hostile = r'name = "M\n\n= HEADING $x^$ [/x] #import \"@local/evil:0.1.0\""'
+    mech = re.sub(r'(?m)^name = .*$', lambda m: hostile, mech, count=1)
+    assert "HEADING" in mech
+    (tmp_path / "m.toml").write_text(mech, encoding="utf-8")
+    plain = run("project", "-v", 17, "--mechanism", EXAMPLES / "four_bar.toml", "--report", "pdf,md", "--no-plots",
+                "--no-sheets", "--out", tmp_path / "a", "--lang", "en")
+    assert plain.exit_code == 0, plain.stderr
+    res = run("project", "-v", 17, "--mechanism", tmp_path / "m.toml", "--report", "pdf,md,docx", "--no-plots",
+              "--no-sheets", "--out", tmp_path / "b", "--lang", "en")
+    assert res.exit_code == 0, res.stderr
+    pdf = tmp_path / "b" / "variant-17" / "note.pdf"
+    assert pdf_outline(pdf) == pdf_outline(tmp_path / "a" / "variant-17" / "note.pdf")
+    assert 'M = HEADING $x^$ [/x] #import "@local/evil:0.1.0"' in pdf_text(pdf)  # the line break folded to a space
+
+
+# --- typst's own escape: no comment from "//" or "/*" ---------------------------------------------------
+
+
+def test_escape_leaves_no_comment():
+    from tmm_cli.render.note.typst import escape
+
+    for text in ("a///b", "a//b", "x/", "/*", "a/*b*/c"):
+        out = escape(text)
+        assert "//" not in out and "/*" not in out, out
+
+
+@pytest.mark.parametrize("name", ["Petrov P./", "a///b"])
+def test_assign_with_a_slash_name_writes_every_pdf(tmp_path, name):
+    roster = tmp_path / "r.csv"
+    roster.write_text(f"student,variant,group\n{name},3,G/*\nIvanov I.,4,G1\n", encoding="utf-8")
+    res = run("assign", "--roster", roster, "--out", tmp_path / "o", "--teacher", "T//x", "--lang", "en")
+    assert res.exit_code == 0, res.stderr
+    pdfs = sorted((tmp_path / "o").rglob("*.pdf"))
+    assert len(pdfs) >= 3, pdfs  # two students and the merged file
+    merged = max(pdfs, key=lambda p: len(pypdf.PdfReader(p).pages))
+    text = pdf_text(merged)
+    assert name in text and "G/*" in text and "T//x" in text
+
+
+# --- typst as a sandbox ---------------------------------------------------------------------------------
+
+
+def _evil_package(home: Path) -> None:
+    pkg = home / ".local" / "share" / "typst" / "packages" / "local" / "evil" / "0.1.0"
+    pkg.mkdir(parents=True)
+    (pkg / "typst.toml").write_text('[package]\nname = "evil"\nversion = "0.1.0"\nentrypoint = "lib.typ"\n')
+    (pkg / "secret.txt").write_text("SECRET-FROM-HOME")
+    (pkg / "lib.typ").write_text('#let x = read("secret.txt")\n')
+
+
+def test_typst_loads_no_package_from_home(tmp_path, monkeypatch):
+    from tmm_cli.errors import TmmError
+    from tmm_cli.render.note import typeset
+
+    home = tmp_path / "home"
+    _evil_package(home)
+    monkeypatch.setenv("HOME", str(home))
+    monkeypatch.delenv("XDG_DATA_HOME", raising=False)
+    typeset._close_child()  # a child started before the HOME above would not see it
+    doc = tmp_path / "doc"
+    doc.mkdir()
+    (doc / "a.typ").write_text('#let p = "@local/" + "evil:0.1.0"\n#import p: x\n#x\n')  # past any text scan
+    with pytest.raises(TmmError) as e:
+        typeset.typeset(doc, "a.typ", "a.pdf")
+    assert "evil" in str(e.value) and not (doc / "a.pdf").exists()
+    (doc / "b.typ").write_text('#import "@preview/cetz:0.2.2": *\nx\n')  # no network: fails at once
+    with pytest.raises(TmmError):
+        typeset.typeset(doc, "b.typ", "b.pdf")
+    assert not (home / ".cache").exists()
+
+
+def test_tmm_note_refuses_a_package_import_in_one_line(tmp_path):
+    (tmp_path / "note.typ").write_text('#import "@preview/cetz:0.2.2": *\nHello\n')
+    one_line_error(run("note", tmp_path, "--lang", "en"), "note.typ:1", "@preview/cetz:0.2.2", "packages off")
+    assert not (tmp_path / "note.pdf").exists()
+
+
+def test_a_compile_past_the_time_limit_is_one_line(tmp_path, monkeypatch):
+    from tmm_cli import limits
+
+    monkeypatch.setattr(limits, "TYPST_SECONDS", 3.0)
+    (tmp_path / "note.typ").write_text("#for a in range(100000) {for b in range(100000) {}}\n")
+    err = one_line_error(run("note", tmp_path, "--lang", "en"), "note.typ", "longer than the limit of 3 s")
+    assert "Traceback" not in err and not (tmp_path / "note.pdf").exists()
