@@ -47,6 +47,18 @@ def pdf_outline(pdf: Path) -> list[str]:
     return list(walk(pypdf.PdfReader(pdf).outline))
 
 
+def md_html(body: str) -> str:
+    """Markdown as a CommonMark reader (with raw HTML on, GitHub's tables) renders it."""
+    from markdown_it import MarkdownIt
+
+    return MarkdownIt("commonmark", {"html": True, "linkify": False}).enable("table").render(body)
+
+
+def md_safe(body: str) -> bool:
+    page = md_html(body)
+    return "<img" not in page and "<script" not in page and "<a " not in page
+
+
 def red_text(pdf: Path) -> bool:
     """Any text filled red (typst's `red`, 1 0.25 0.21 rg, in a page's content)."""
     reader = pypdf.PdfReader(pdf)
@@ -159,3 +171,94 @@ def test_a_compile_past_the_time_limit_is_one_line(tmp_path, monkeypatch):
     (tmp_path / "note.typ").write_text("#for a in range(100000) {for b in range(100000) {}}\n")
     err = one_line_error(run("note", tmp_path, "--lang", "en"), "note.typ", "longer than the limit of 3 s")
     assert "Traceback" not in err and not (tmp_path / "note.pdf").exists()
+
+
+# --- Markdown, HTML, the terminal ------------------------------------------------------------------------
+
+XSS_NAME = "<img src=x onerror=alert(1)>[PASSED](javascript:alert(2)) a///b"
+XSS_GROUP = "<script>alert(3)</script>"
+
+
+def _check_folder(tmp_path: Path) -> Path:
+    answers = tmp_path / "answers"
+    answers.mkdir()
+    roster = tmp_path / "roster.csv"
+    roster.write_text(f'student,variant,group\n"{XSS_NAME}",3,{XSS_GROUP}\nIvanov,3,G1\n', encoding="utf-8")
+    from tmm_cli.inputs.names import file_name
+
+    (answers / f"{file_name(XSS_NAME)}.toml").write_text("r0_mm = 40\n", encoding="utf-8")
+    (answers / "Ivanov.toml").write_text('"x///y" = 1\n"<script>k</script>" = 2\nr0_mm = 3\n', encoding="utf-8")
+    (answers / "\x1b[2J\x1b[Hx.toml").write_text("r0_mm = 1\n", encoding="utf-8")
+    return roster
+
+
+def test_check_feedback_pdf_with_hostile_names_and_keys(tmp_path):
+    roster = _check_folder(tmp_path)
+    res = run("check", "--roster", roster, "--answers-dir", tmp_path / "answers", "--out", tmp_path / "o",
+              "--feedback", "pdf", "--lang", "en")
+    assert res.exit_code in (0, 1), res.stderr
+    out = tmp_path / "o"
+    assert {"check.csv", "check.md", "group.html"} <= {p.name for p in out.iterdir()}
+    pdfs = sorted((out / "feedback").glob("*.pdf"))
+    assert len(pdfs) == 2
+    texts = " ".join(pdf_text(p) for p in pdfs)
+    assert XSS_NAME in texts and XSS_GROUP in texts and "x///y" in texts and "<script>k</script>" in texts
+    import html as _html
+
+    for md in (out / "feedback").glob("*.md"):
+        page = md_html(md.read_text(encoding="utf-8"))
+        assert md_safe(md.read_text(encoding="utf-8")), page
+    page = md_html((out / "feedback" / "check-Ivanov.md").read_text(encoding="utf-8"))
+    assert _html.escape("<script>k</script>", quote=False) in page and "x///y" in page
+    html = (out / "group.html").read_text(encoding="utf-8")
+    assert "\x1b" not in html and "<script>alert" not in html
+    assert "\x1b" not in res.output  # the screen is not cleared: the file's name is shown with its codes
+    assert "\\x1b[2J" in res.output
+
+
+def test_report_md_with_a_hostile_mechanism_name(tmp_path):
+    mech = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
+    mech = re.sub(r'(?m)^name = .*$', lambda m: f'name = "{XSS_NAME} A $x^$ B"', mech, count=1)
+    (tmp_path / "m.toml").write_text(mech, encoding="utf-8")
+    res = run("project", "-v", 17, "--mechanism", tmp_path / "m.toml", "--report", "md", "--no-plots", "--no-sheets",
+              "--out", tmp_path, "--lang", "en")
+    assert res.exit_code == 0, res.stderr
+    body = (tmp_path / "variant-17" / "report.md").read_text(encoding="utf-8")
+    assert md_safe(body) and "$x^$" in md_html(body)
+
+
+def test_a_chain_with_markup_names_prints_them(tmp_path):
+    src = (EXAMPLES / "chain-radial-1.toml").read_text(encoding="utf-8")
+    src = re.sub(r'(?m)^name = "([^"]*)"', lambda m: 'name = "[/x] [bold]\\u001b]8;;http://e\\u001b\\\\"', src, count=2)
+    (tmp_path / "c.toml").write_text(src, encoding="utf-8")
+    res = run("chain", tmp_path / "c.toml", "--lang", "en")
+    assert res.exit_code == 0, (res.output, res.stderr)
+    assert "[/x]" in res.output and "\x1b" not in res.output
+
+
+def test_an_error_naming_a_file_shows_its_control_characters(tmp_path):
+    bad = tmp_path / "a\nb\x1b[2J.toml"
+    bad.write_text("= = =\n")
+    res = run("check", "-v", 3, "--answers", bad, "--lang", "en")
+    err = one_line_error(res)
+    assert "\x1b" not in err and "\\x1b[2J" in err and len(err.splitlines()) == 1
+
+
+# --- DXF and Word ------------------------------------------------------------------------------------------
+
+
+def test_title_block_text_is_literal_in_the_dxf_and_the_word_note(tmp_path):
+    ezdxf = pytest.importorskip("ezdxf")
+    docx = pytest.importorskip("docx")
+    student, group = "%%uIvanov A $sqrt(2)+1$ ^J", "G_{x}^{2}"
+    res = run("project", "-v", 3, "--student", student, "--group", group, "--report", "docx", "--no-plots",
+              "--out", tmp_path, "--lang", "en")
+    assert res.exit_code == 0, res.stderr
+    folder = tmp_path / "variant-03"
+    shown = [e.plain_text() for e in ezdxf.readfile(folder / "sheet3.dxf").modelspace().query("TEXT MTEXT")]
+    assert student in shown and any(group in t for t in shown), [t for t in shown if "Ivanov" in t or "G" in t]
+    d = docx.Document(folder / "note.docx")
+    body = "\n".join(p.text for p in d.paragraphs)
+    assert f"Student: {student}, group {group}." in body
+    xml = d.element.xml
+    assert "oMath" not in xml.split("Student:")[1].split("Topic")[0]  # no Word equation in the task's line

@@ -92,9 +92,9 @@ def _title(report, lang: str) -> str:
 
 def student_markdown(report, lang: str) -> str:
     """check-<name>.md."""
-    from ..note.model import escape_all
+    from ..note.model import md_text
 
-    return student_doc(report, lang).to_markdown(escape_all(_title(report, lang)))
+    return student_doc(report, lang).to_markdown(md_text(_title(report, lang)))
 
 
 _TYPST_HEAD = """// Feedback written by `tmm check`.
@@ -120,9 +120,13 @@ def student_typst(report, lang: str) -> str:
     return student_doc(report, lang).to_typst(head)
 
 
-def write_feedback(folder: Path, reports, lang: str, pdf: bool = False) -> list[str]:
+def write_feedback(folder: Path, reports, lang: str, pdf: bool = False, failed: list | None = None) -> list[str]:
     """check-<name>.md (and .pdf) of every report that has a student file name, into `folder`
-    (a staging folder); the names written."""
+    (a staging folder); the names written. A PDF typst cannot set (past its time or memory
+    limit) is left out, its Markdown kept, and (name, error) appended to `failed`: one student's
+    text never stops the others' feedback (without `failed`, the error is raised)."""
+    from ...errors import TmmError
+
     folder = Path(folder)
     written = []
     for rep in reports:
@@ -138,6 +142,11 @@ def write_feedback(folder: Path, reports, lang: str, pdf: bool = False) -> list[
             (folder / src).write_text(student_typst(rep, lang), encoding="utf-8")
             try:
                 compile_note(folder, src, feedback_name(rep.fname, "pdf"))
+            except TmmError as exc:
+                if failed is None:
+                    raise
+                failed.append((feedback_name(rep.fname, "pdf"), str(exc)))
+                continue
             finally:
                 (folder / src).unlink(missing_ok=True)
             written.append(feedback_name(rep.fname, "pdf"))

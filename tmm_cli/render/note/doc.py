@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass, field
 
 from ...i18n import tr
-from .model import escape_all, text_runs
+from .model import md_text, text_runs
 from .typst import escape, inline_math, literal_text, string
 
 _REF = re.compile(r"\{(fig|tab):([a-z0-9_]+)\}")
@@ -208,7 +208,7 @@ class Doc:
             if part.startswith("$") and part.endswith("$") and len(part) >= 2:
                 out.append(math_to_text(part[1:-1]))
             else:
-                out += [escape_all(run) if given else re.sub(r"([*_`\\])", r"\\\1", run)
+                out += [md_text(run) if given else re.sub(r"([*_`\\])", r"\\\1", run)
                         for given, run in text_runs(part)]
         return "".join(out)
 

@@ -21,15 +21,15 @@ from .model import (
     Table,
     TaskSheet,
     TitlePage,
-    escape_all,
+    md_text,
     split_math,
     text_runs,
 )
 
 
 def _inline(doc: Document, text: str, cell: bool = False) -> str:
-    """Markdown of inline markup: math as text, a person's text with every punctuation character
-    escaped (no Markdown, no HTML), the program's text with its emphasis characters escaped; in a
+    """Markdown of inline markup: math as text, a person's text as typed (model.md_text: no
+    Markdown, no HTML), the program's text with its emphasis characters escaped; in a
     table `cell`, every "|" too."""
     special = r"([*_`\\|])" if cell else r"([*_`\\])"
     out = []
@@ -39,7 +39,7 @@ def _inline(doc: Document, text: str, cell: bool = False) -> str:
             out.append(math.replace("|", "\\|") if cell else math)
             continue
         for given, run in text_runs(piece):
-            out.append(escape_all(run) if given else re.sub(special, r"\\\1", run))
+            out.append(md_text(run) if given else re.sub(special, r"\\\1", run))
     return "".join(out).replace("\n", " ") if cell else "".join(out)
 
 

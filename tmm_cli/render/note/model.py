@@ -79,6 +79,32 @@ def escape_all(text: str) -> str:
     return PUNCT.sub(r"\\\1", text)
 
 
+# Markdown (CommonMark, GitHub's): the characters that open emphasis, code, links, images, HTML,
+# entities, math, strikethrough or a table cell anywhere in a line
+_MD_INLINE = re.compile(r"([\\`*_\[\]<>&~|!#$@])")
+
+
+def md_text(text: str) -> str:
+    r"""A person's text for Markdown: set as typed, never as markup — no emphasis, link, image,
+    HTML, entity, math, table cell; no list, heading or quote where it starts; no autolink.
+
+    >>> print(md_text("<img src=x>[PASSED](javascript:alert(2)) a_b*"))
+    \<img src=x\>\[PASSED\](javascript:alert(2)) a\_b\*
+    >>> print(md_text("1. - http://x www.y"))
+    1\. - http\://x www\.y
+    """
+    out = _MD_INLINE.sub(r"\\\1", text)
+    out = re.sub(r"(?i)(https?|ftp|mailto)(:)", r"\1\\\2", out)  # GitHub's autolinks
+    out = re.sub(r"(?i)\b(www)\.", r"\1\\.", out)
+    m = re.match(r"(\s*\d+)([.)])", out)
+    if m:  # "1." would start a numbered list
+        return m.group(1) + "\\" + out[m.end(1):]
+    m = re.match(r"\s*[-+=>]", out)
+    if m:  # a list, a setext heading, a quote
+        return out[:m.end() - 1] + "\\" + out[m.end() - 1:]
+    return out
+
+
 def plain(text: str) -> str:
     """The markup text with a person's text decoded (for a writer that shows text as it is)."""
     return LITERAL.sub(lambda m: bytes.fromhex(m.group(1)).decode("utf-8", "replace"), text)
