@@ -262,3 +262,113 @@ def test_title_block_text_is_literal_in_the_dxf_and_the_word_note(tmp_path):
     assert f"Student: {student}, group {group}." in body
     xml = d.element.xml
     assert "oMath" not in xml.split("Student:")[1].split("Topic")[0]  # no Word equation in the task's line
+
+
+# --- crashes and trust ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("command", ["batch", "check", "assign"])
+def test_a_superscript_variant_is_one_bad_row(tmp_path, command):
+    roster = tmp_path / "r.csv"
+    roster.write_text("student,variant\nA,¹⁷\nB,²\nC,3\n", encoding="utf-8")
+    (tmp_path / "ans").mkdir()
+    args = {"batch": ("batch", "--roster", roster, "--no-plots", "--report", "none", "--jobs", 1),
+            "check": ("check", "--roster", roster, "--answers-dir", tmp_path / "ans"),
+            "assign": ("assign", "--roster", roster)}[command]
+    res = run(*args, "--out", tmp_path / "o", "--lang", "en")
+    assert res.exit_code in (0, 1), (res.output, res.stderr)
+    assert "internal error" not in res.output + res.stderr
+    assert "variant ¹⁷ is not in the table" in res.output + res.stderr
+
+
+def test_a_mechanism_name_that_is_broken_math_draws_and_typesets(tmp_path):
+    mech = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
+    mech = re.sub(r'(?m)^name = .*$', lambda m: r'name = "A $\\undefinedmacro{x}$ $x^$ B"', mech, count=1)
+    (tmp_path / "m.toml").write_text(mech, encoding="utf-8")
+    res = run("linkage", tmp_path / "m.toml", "--out", tmp_path / "l", "--lang", "en")
+    assert res.exit_code == 0, res.stderr
+    res = run("project", "-v", 17, "--mechanism", tmp_path / "m.toml", "--report", "md,docx", "--no-sheets",
+              "--out", tmp_path / "p", "--lang", "en")
+    assert res.exit_code == 0, res.stderr
+    docx = pytest.importorskip("docx")
+    body = "\n".join(p.text for p in docx.Document(tmp_path / "p" / "variant-17" / "note.docx").paragraphs)
+    assert r"A $\undefinedmacro{x}$ $x^$ B" in body
+
+
+def test_docx_with_a_broken_math_name(tmp_path):
+    res = run("project", "-v", 3, "--student", "A $x^$ B", "--report", "docx", "--no-plots", "--no-sheets",
+              "--out", tmp_path, "--lang", "en")
+    assert res.exit_code == 0, res.stderr
+
+
+@pytest.mark.parametrize("content", ["a = " + "[" * 5000 + "]" * 5000 + "\n",
+                                     'name = "x"\n[[link]]\nname = "A"\nnominal = ' + "9" * 50000 + "\n"])
+def test_tmm_chain_on_hostile_toml_is_one_line(tmp_path, content):
+    f = tmp_path / "c.toml"
+    f.write_text(content)
+    one_line_error(run("chain", f, "--lang", "en"), "c.toml")
+
+
+@pytest.mark.skipif(os.name != "posix", reason="symbolic links")
+def test_a_symlinked_figure_never_reaches_the_note(tmp_path):
+    secret = tmp_path / "secret.svg"
+    secret.write_text('<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">'
+                      '<text x="10" y="50">TOPSECRET</text></svg>')
+    res = run("project", "-v", 3, "--out", tmp_path / "o", "--format", "svg", "--no-sheets", "--lang", "en")
+    assert res.exit_code == 0, res.stderr
+    folder = tmp_path / "o" / "variant-03"
+    for f in folder.glob("note_*.svg"):
+        f.unlink()
+        f.symlink_to(secret)
+    run("note", folder, "--lang", "en")
+    run("project", "-v", 3, "--out", tmp_path / "o", "--format", "svg", "--no-sheets", "--force", "--lang", "en")
+    assert "TOPSECRET" not in pdf_text(folder / "note.pdf")
+
+
+@pytest.mark.parametrize("patch, words", [
+    (("options", "step_deg", 0.0001), "step_deg"),
+    (("options", "tolerance_pct", 1e9), "tolerance_pct"),
+    (("options", "cam_choice", {"evil": 1}), "cam_choice"),
+    (("options", "planets", 10**5000 // 10**4990), "planets"),
+    (("input", "n_cam_rpm", 1e12), "n_cam_rpm"),
+])
+def test_note_to_docx_holds_results_json_to_the_options_limits(tmp_path, patch, words):
+    import json
+
+    res = run("project", "-v", 3, "--out", tmp_path, "--no-plots", "--report", "md", "--no-sheets", "--lang", "en")
+    assert res.exit_code == 0, res.stderr
+    src = tmp_path / "variant-03" / "results.json"
+    data = json.loads(src.read_text(encoding="utf-8"))
+    part, key, value = patch
+    data[part][key] = value
+    src.write_text(json.dumps(data), encoding="utf-8")
+    one_line_error(run("note", src.parent, "--to", "docx", "--lang", "en"), "results.json", words)
+    assert not (src.parent / "note.docx").exists()
+
+
+def test_check_does_not_pass_the_right_set_times_ten_thousand(tmp_path):
+    import json
+
+    res = run("project", "-v", 3, "--out", tmp_path, "--no-plots", "--report", "md", "--no-sheets", "--json")
+    st = json.loads(res.stdout)["gears"]["planetary"]["stages"][0]
+    answers = tmp_path / "a.toml"
+    answers.write_text(f"z_sun = {st['z_sun'] * 10000}\nz_planet = {st['z_planet'] * 10000}\n"
+                       f"z_ring = {st['z_ring'] * 10000}\nplanets = {st['planets']}\n")
+    res = run("check", "-v", 3, "--answers", answers, "--json", "--sheet", 4)
+    rows = {r["key"]: r for r in json.loads(res.stdout)["rows"]}
+    assert not rows["z_sun"]["status"].startswith("pass"), rows["z_sun"]
+    assert rows["z_sun"]["cause"]["code"] == "set_too_large"
+
+
+def test_a_failed_rerun_keeps_the_good_note(tmp_path):
+    out = tmp_path / "o"
+    res = run("project", "-v", 3, "--out", out, "--no-plots", "--no-sheets", "--lang", "en")
+    assert res.exit_code == 0, res.stderr
+    folder = out / "variant-03"
+    before = {n: (folder / n).read_bytes() for n in ("note.pdf", "note.typ", "note-style.typ")}
+    bad = tmp_path / "bad.typ"
+    bad.write_text('#let note(meta, body) = { panic("no") }\n')
+    one_line_error(run("project", "-v", 3, "--out", out, "--no-plots", "--no-sheets", "--note-template", bad,
+                       "--lang", "en"), "could not be typeset")
+    assert {n: (folder / n).read_bytes() for n in before} == before
+    assert run("note", folder).exit_code == 0  # and it still compiles

@@ -215,6 +215,9 @@ def parse_chain(text: str, source: str = "chain") -> Chain:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise TmmError(f"{source} is not valid TOML: {exc}") from None
+    except (RecursionError, ValueError, MemoryError):  # nested thousands deep; an integer of thousands of digits
+        raise TmmError(f"{source} is not valid TOML (too deeply nested or a number too long); write [[link]] tables "
+                       f"with name, nominal, es, ei, sign") from None
     for key in data:
         if key not in _TOP:
             raise TmmError(f"{source}: unknown key '{key}'; a chain has name, units and [[link]] tables")
