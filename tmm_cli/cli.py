@@ -23,6 +23,7 @@ from .commands.note import note_cmd
 from .commands.options import CONTEXT, apply_option_limits, lang_option
 from .commands.planetary import planetary_cmd
 from .commands.project import project_cmd
+from .commands.synth import synth_cmd
 from .commands.variants import variants_cmd
 from .errors import TmmError
 from .i18n import N_
@@ -207,7 +208,7 @@ def cli(lang):
     """
 
 
-for _command in (variants_cmd, project_cmd, cam_cmd, gears_cmd, planetary_cmd, linkage_cmd, note_cmd, assign_cmd, batch_cmd,
+for _command in (variants_cmd, project_cmd, cam_cmd, gears_cmd, planetary_cmd, linkage_cmd, synth_cmd, note_cmd, assign_cmd, batch_cmd,
                  check_cmd, carrier_cmd, chain_cmd):
     cli.add_command(_command)
 apply_option_limits(cli)

@@ -29,4 +29,13 @@ MESSAGES: dict[str, str] = {
     "dynamics_methods": N_("The flywheel is Mertsalov's; Wittenbauer's energy–mass diagram gives J_fl = {j_w:.4g} kg·m² (Mertsalov's differs by {diff_pct:+.2f} %: it neglects the change of the second group's energy with the speed)."),
     "dynamics_driving_negative": N_("The driving moment comes out negative (M_d = {moment:.4g} N·m): over a turn the loads give work to the crank; check the load's direction and load.working."),
     "project_mechanism_motor": N_("Sheet 4 takes the mean reduced moment M = {torque:.4g} N·m (the driving moment of sheet 2) and the crank speed n_cr = {rpm:.5g} rpm from the mechanism file {file}."),
+    # tmm synth (issue 33): the synthesis of a lever mechanism from its task
+    "synth_best_pivot": N_("The crank's pivot A is the point of the locus of θ where the smallest transmission angle is largest: γ_min = {gamma_deg:.2f}° (the book leaves the point to the designer; give frame = … to choose another)."),
+    "synth_frame_pivot": N_("The crank's pivot A is where the circle of radius l_AD = {frame_mm:.1f} mm about D meets the locus of θ (of the points there, the one with the larger γ_min = {gamma_deg:.2f}°; the best on the locus is {best_deg:.2f}°)."),
+    "synth_low_transmission": N_("The smallest transmission angle is {gamma_deg:.1f}° (less than {limit_deg:.0f}°): the rocker is driven at a poor angle; give min_transmission_deg = {limit_deg:.0f} or another frame."),
+    "synth_default_rpm": N_("The task gives no crank speed: the mechanism file has rpm = {rpm:g}; put the machine's speed there (the lengths do not depend on it)."),
+    "synth_rod_ratio": N_("The task gives no rod_ratio: l_BC = {ratio:g}·l_O2B (the usual 0.25 … 0.35 of shaper schemes)."),
+    "synth_slot": N_("The block slides up to {slot_mm:.1f} mm from O2, beyond B ({link_mm:.1f} mm): the slotted link must be at least {slot_mm:.1f} mm long."),
+    "synth_mirror": N_("The mechanism is written mirrored, so that the working stroke the task names (load.working) is the slower one."),
+    "synth_fast_working": N_("The task's load.working makes the working stroke the faster one (K = {time_ratio:.4f} as tmm linkage counts it)."),
 }

@@ -14,8 +14,8 @@ import numpy as np
 
 from ..errors import TmmError
 from ..records import record
-from .chain import solve
-from .groups import rrp_margin, rrr_margin
+from .chain import guide_frame, solve
+from .groups import rpr_margin, rrp_margin, rrr_margin
 from .mechanism import Group, Mechanism
 
 GRID = 720  # samples per turn
@@ -60,7 +60,12 @@ def group_margin(mech: Mechanism, g: Group, phi):
     if g.kind == "RRR":
         return rrr_margin(k.z[g.joints[0]], k.z[g.joints[2]], *g.lengths)
     if g.kind == "RRP":
+        if g.guide.moving:
+            through, unit = guide_frame(mech, g, k)
+            return rrp_margin(k.z[g.joints[0]], through, unit, g.lengths[0])
         return rrp_margin(k.z[g.joints[0]], g.guide.through, g.guide.unit, g.lengths[0])
+    if g.offset != 0.0:
+        return rpr_margin(k.z[g.joints[0]], k.z[g.joints[1]], g.offset)
     return np.abs(k.z[g.joints[0]] - k.z[g.joints[1]])
 
 
@@ -95,6 +100,10 @@ def _failure(mech: Mechanism, g: Group, worst: Margin) -> str:
         return (f"{where}: {ja} comes {h:.7g} m from the guide of {jb} but {ja}{jb} = {g.lengths[0]:.7g} m; make "
                 f"{ja}{jb} longer than {h:.7g} m")
     ja, jc = g.joints
+    if g.offset != 0.0:
+        d = abs(g.offset) + worst.margin
+        return (f"{where}: the block's joint {ja} comes {d:.7g} m from the pivot {jc} but the slot passes "
+                f"{abs(g.offset):.7g} m from it; make the offset smaller than {d:.7g} m or move {jc}")
     return (f"{where}: the block's joint {ja} passes through the pivot {jc} of the slotted link (its angle is "
             f"undefined); move {jc} off the path of {ja}")
 

@@ -15,7 +15,7 @@ import numpy as np
 from ..records import record
 from .groups import crank_position, rpr_position, rrp_position, rrr_position
 from .mechanism import Mechanism
-from .motion import rigid, rpr_motion, rrp_motion, rrr_motion
+from .motion import rigid, rpr_motion, rrp_motion, rrp_moving_motion, rrr_motion
 
 
 @record(eq=False)
@@ -59,12 +59,57 @@ class Kinematics:
             self.base)
 
 
-def _points(mech: Mechanism, group: int, z, v, a, omega, eps, link_group):
+def slot_axis(mech: Mechanism, kin: Kinematics, link: str):
+    """(foot, u) of a slotted link over the angles of `kin`: the foot of the perpendicular from
+    its pivot C to its slot [m] and the slot's unit direction towards the block — the slot is
+    foot + t·u (foot = C when the slot passes through the pivot)."""
+    ln = mech.link(link)
+    g = mech.groups[ln.group - 1]
+    ja, jc = g.joints
+    if g.offset == 0.0:
+        r = kin.z[ja] - kin.z[jc]
+        return kin.z[jc], r / np.abs(r)
+    u = np.exp(1j * kin.angle[link])
+    return kin.z[jc] + 1j * g.offset * u, u
+
+
+def _link_direction(mech: Mechanism, z, angle, link: str, base: str, toward: str):
+    """The unit direction of a link's frame for its points and guides: base → toward, or, on a
+    slotted link whose slot is offset from its pivot, the slot's direction u."""
+    ln = mech.link(link)
+    if ln.kind == "slotted" and mech.groups[ln.group - 1].offset != 0.0:
+        return np.exp(1j * angle[link])
+    d = z[toward] - z[base]
+    return d / np.abs(d)
+
+
+def _guide_line(mech: Mechanism, g, z, angle):
+    """(through, unit) of the group's guide with the positions `z` (arrays for a moving guide)."""
+    gd = g.guide
+    if not gd.moving:
+        return gd.through, gd.unit
+    d = _link_direction(mech, z, angle, gd.link, gd.base, gd.toward)
+    return z[gd.base] + complex(gd.along, gd.across) * d, d * np.exp(1j * gd.angle)
+
+
+def guide_frame(mech: Mechanism, g, kin: Kinematics):
+    """(through, unit) of an RRP group's guide over the angles of `kin`: a point of its line [m]
+    and its unit direction — constants broadcast for a fixed guide, turning with its link for a
+    guide on a moving link."""
+    p, e = _guide_line(mech, g, kin.z, kin.angle)
+    shape = kin.phi.shape
+    return np.zeros(shape, dtype=complex) + p, np.zeros(shape, dtype=complex) + e
+
+
+def _points(mech: Mechanism, group: int, z, v, a, omega, eps, link_group, dirs):
     for pt in mech.points:
         if link_group[pt.link] != group:
             continue
-        d = z[pt.toward] - z[pt.base]
-        r = complex(pt.along, pt.across) * d / np.abs(d)
+        if pt.link in dirs:  # an offset slot: along u, across n = iu from the pivot
+            r = complex(pt.along, pt.across) * dirs[pt.link]
+        else:
+            d = z[pt.toward] - z[pt.base]
+            r = complex(pt.along, pt.across) * d / np.abs(d)
         z[pt.name] = z[pt.base] + r
         v[pt.name], a[pt.name] = rigid(r, v[pt.base], a[pt.base], omega[pt.link], eps[pt.link])
 
@@ -88,7 +133,7 @@ def solve(mech: Mechanism, phi, omega1: float | None = None, eps1: float = 0.0, 
     z = {name: zero + p for name, p in mech.frame.items()}
     v = {name: zero.copy() for name in mech.frame}
     a = {name: zero.copy() for name in mech.frame}
-    angle, omega, eps, slide, base = {}, {}, {}, {}, {}
+    angle, omega, eps, slide, base, dirs = {}, {}, {}, {}, {}, {}
     link_group = {ln.name: ln.group for ln in mech.links}
 
     c = mech.crank
@@ -97,7 +142,7 @@ def solve(mech: Mechanism, phi, omega1: float | None = None, eps1: float = 0.0, 
     r = z[c.joint] - z[c.pivot]
     v[c.joint], a[c.joint] = rigid(r, 0j, 0j, w1, e1)
     angle[name], omega[name], eps[name], base[name] = np.angle(r), np.full(phi.shape, w1), np.full(phi.shape, e1), c.pivot
-    _points(mech, 0, z, v, a, omega, eps, link_group)
+    _points(mech, 0, z, v, a, omega, eps, link_group, dirs)
 
     for g in mech.groups:
         if upto is not None and g.index > upto:
@@ -111,21 +156,34 @@ def solve(mech: Mechanism, phi, omega1: float | None = None, eps1: float = 0.0, 
             base[l1], base[l2] = ja, jb
         elif g.kind == "RRP":
             ja, jb = g.joints
-            unit = g.guide.unit
-            z[jb], s = rrp_position(z[ja], g.guide.through, unit, g.lengths[0], g.branch)
-            w2, e2, ds, dds, v[jb], a[jb] = rrp_motion(z[ja], z[jb], unit, v[ja], a[ja])
-            w3, e3 = np.zeros(phi.shape), np.zeros(phi.shape)
-            angle[l1], angle[l2] = np.angle(z[jb] - z[ja]), np.full(phi.shape, math.remainder(g.guide.angle, 2 * math.pi))
+            if g.guide.moving:  # the guide turns with its link k: the slider turns with it
+                through, unit = _guide_line(mech, g, z, angle)
+                z[jb], s = rrp_position(z[ja], through, unit, g.lengths[0], g.branch)
+                gl = g.guide.link
+                w3, e3 = omega[gl], eps[gl]
+                vg, ag = rigid(z[jb] - z[base[gl]], v[base[gl]], a[base[gl]], w3, e3)  # the guide's point under B
+                w2, e2, ds, dds, v[jb], a[jb] = rrp_moving_motion(z[ja], z[jb], unit, v[ja], a[ja], vg, ag, w3)
+                angle[l1], angle[l2] = np.angle(z[jb] - z[ja]), np.angle(unit)
+            else:
+                unit = g.guide.unit
+                z[jb], s = rrp_position(z[ja], g.guide.through, unit, g.lengths[0], g.branch)
+                w2, e2, ds, dds, v[jb], a[jb] = rrp_motion(z[ja], z[jb], unit, v[ja], a[ja])
+                w3, e3 = np.zeros(phi.shape), np.zeros(phi.shape)
+                angle[l1], angle[l2] = np.angle(z[jb] - z[ja]), np.full(phi.shape, math.remainder(g.guide.angle, 2 * math.pi))
             slide[l2] = (s, ds, dds)
             base[l1], base[l2] = ja, jb
         else:
             ja, jc = g.joints
-            rho, theta = rpr_position(z[ja], z[jc])
-            w3, e3, dr, ddr = rpr_motion(z[ja], z[jc], v[ja], v[jc], a[ja], a[jc])
+            rho, theta = rpr_position(z[ja], z[jc], g.offset)
+            w3, e3, dr, ddr = rpr_motion(z[ja], z[jc], v[ja], v[jc], a[ja], a[jc], g.offset)
             w2, e2 = w3, e3
-            angle[l1] = angle[l2] = np.angle(-np.exp(1j * theta))  # named AC: from A towards C
+            if g.offset == 0.0:
+                angle[l1] = angle[l2] = np.angle(-np.exp(1j * theta))  # named AC: from A towards C
+            else:  # an offset slot: the direction u of its slot
+                dirs[l2] = np.exp(1j * theta)
+                angle[l1] = angle[l2] = np.angle(dirs[l2])
             slide[l1] = (rho, dr, ddr)
             base[l1], base[l2] = ja, jc
         omega[l1], omega[l2], eps[l1], eps[l2] = w2, w3, e2, e3
-        _points(mech, g.index, z, v, a, omega, eps, link_group)
+        _points(mech, g.index, z, v, a, omega, eps, link_group, dirs)
     return Kinematics(phi, w1, e1, z, v, a, angle, omega, eps, slide, base)

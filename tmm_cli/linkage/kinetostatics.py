@@ -29,7 +29,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..records import record
-from .chain import Kinematics
+from .chain import Kinematics, guide_frame
 from .forces import Loading
 from .mechanism import Mechanism, Pair
 from .motion import cross, solve2
@@ -143,7 +143,7 @@ def rrp_reactions(a, b, unit, f2, f3, m2_b):
     return n2 * u, 1j * t2 * u, r03, -(r03 + f3)
 
 
-def rpr_reactions(a, c, f2, f3, m2_a, m3_c):
+def rpr_reactions(a, c, f2, f3, m2_a, m3_c, unit=None):
     """An RPR group's reactions: block 2 on the joint A, slotted link 3 turning about C.
 
     Returns (R₁₂, R₂₃, M₂₃, R₀₃): the force on the block at A, the block's force on the slotted
@@ -155,10 +155,21 @@ def rpr_reactions(a, c, f2, f3, m2_a, m3_c):
     >>> r12, r23, m23, r03 = rpr_reactions(0.2j, 0j, 0j, 0j, 0.0, 10.0)
     >>> [(round(float(x.real), 12), round(float(x.imag), 12) + 0.0) for x in (r12, r23, r03)], m23
     ([(50.0, 0.0), (50.0, 0.0), (-50.0, 0.0)], 0.0)
+
+    An offset slot (`unit`: the slot's direction u) takes the pressure along n = i·u with the arm
+    cross(A − C, n) = t about C, the block's place along the slot from the foot of the perpendicular.
+
+    >>> r12, r23, m23, r03 = rpr_reactions(0.3 + 0.4j, 0j, 0j, 0j, 0.0, 10.0, (0.3 + 0.4j) / (0.4 + 0.3j))
+    >>> round(float(abs(r23)), 9)   # t = 0.4: N = 10/0.4
+    25.0
     """
     r = a - c
-    rho = np.abs(r)
-    n = 1j * r / rho
+    if unit is None:
+        rho = np.abs(r)
+        n = 1j * r / rho
+    else:
+        n = 1j * unit
+        rho = cross(r, n)
     m23 = m2_a
     big_n = -(m3_c + m23) / rho  # ρ·N + M₃(C) + M₂₃ = 0
     r23 = big_n * n
@@ -199,15 +210,17 @@ def kinetostatics(mech: Mechanism, loading: Loading, kin: Kinematics) -> Kinetos
             give(pc, z[jc], rn03 + rt03, rn03, rt03)
         elif g.kind == "RRP":
             ja, jb = g.joints
-            rn12, rt12, r03, r23 = rrp_reactions(z[ja], z[jb], g.guide.unit, b2.resultant(shape), b3.resultant(shape),
+            unit = g.guide.unit if not g.guide.moving else guide_frame(mech, g, kin)[1]
+            rn12, rt12, r03, r23 = rrp_reactions(z[ja], z[jb], unit, b2.resultant(shape), b3.resultant(shape),
                                                  b2.moment(z[jb], shape))
             give(pb, z[jb], r23)
             give(pc, z[jb], r03, couple=-b3.moment(z[jb], shape))
             give(pa, z[ja], rn12 + rt12, rn12, rt12)
         else:
             ja, jc = g.joints
+            unit = None if g.offset == 0.0 else np.exp(1j * kin.angle[g.links[1]])
             r12, r23, m23, r03 = rpr_reactions(z[ja], z[jc], b2.resultant(shape), b3.resultant(shape),
-                                               b2.moment(z[ja], shape), b3.moment(z[jc], shape))
+                                               b2.moment(z[ja], shape), b3.moment(z[jc], shape), unit)
             give(pb, z[ja], r23, couple=m23)
             give(pa, z[ja], r12)
             give(pc, z[jc], r03)

@@ -25,7 +25,7 @@ import math
 import numpy as np
 
 from ..records import record
-from .chain import Kinematics
+from .chain import Kinematics, guide_frame, solve
 from .mechanism import Mechanism
 from .positions import Cycle, output_coordinate
 
@@ -54,8 +54,15 @@ class Stroke:
     working: float  # crank travel of the working stroke [rad]
     length: float  # the stroke H [m] or the swing ψ [rad]
     direction: int  # +1: the working stroke increases the output coordinate
-    q0: float  # the output coordinate at position 0 [m or rad]
+    q0: float  # the output coordinate where the working stroke starts [m or rad]
     kind: str  # 'slider' | 'rocker'
+    origin: float  # crank angle where the working stroke starts [rad] (position 0 unless start_deg moves it)
+
+    @property
+    def lead(self) -> float:
+        """The crank's travel from position 0 to the working stroke's start [rad], in [0, 2π)."""
+        t = float(np.remainder(self.sense * (self.origin - self.start), 2.0 * math.pi))
+        return 0.0 if t > 2.0 * math.pi - WORKING_TOLERANCE else t
 
 
 def stroke_of(c: Cycle) -> Stroke | None:
@@ -63,8 +70,9 @@ def stroke_of(c: Cycle) -> Stroke | None:
     if c.stroke is None:
         return None
     mech = c.mechanism
-    q0 = float(output_coordinate(mech, c.curve.kin)[0][0])
-    return Stroke(c.start, mech.crank.sense, c.working, c.stroke, c.direction, q0, mech.output.kind)
+    origin = c.extremes[0]
+    q0 = float(output_coordinate(mech, solve(mech, [origin]))[0][0])
+    return Stroke(c.start, mech.crank.sense, c.working, c.stroke, c.direction, q0, mech.output.kind, origin)
 
 
 def table_value(load: Load, fraction):
@@ -92,12 +100,19 @@ def table_integral(load: Load, fraction):
     return cum[j] + (f - x[j]) * (y[j] + table_value(load, f)) / 2.0
 
 
+def phase(stroke: Stroke, phi):
+    """The crank's travel since the working stroke last began [rad, 0 … 2π) at the crank angles
+    `phi` — measured from the extreme position where the working stroke starts, whatever position 0
+    is (``crank.start_deg`` may put it anywhere in the turn)."""
+    t = np.remainder(stroke.sense * (np.asarray(phi, dtype=float) - stroke.origin), 2.0 * math.pi)
+    return np.where(t > 2.0 * math.pi - WORKING_TOLERANCE, 0.0, t)
+
+
 def progress(stroke: Stroke, mech: Mechanism, kin: Kinematics):
-    """(travel, fraction, working) at the kinematics' angles: the crank's travel since position 0
-    [rad, 0 … 2π), the fraction of the stroke covered since the working stroke began (0 … 1), and
-    whether the crank is on the working stroke (its end included)."""
-    travel = np.remainder(stroke.sense * (kin.phi - stroke.start), 2.0 * math.pi)
-    travel = np.where(travel > 2.0 * math.pi - WORKING_TOLERANCE, 0.0, travel)
+    """(phase, fraction, working) at the kinematics' angles: the crank's travel since the working
+    stroke began [rad, 0 … 2π) (:func:`phase`), the fraction of the stroke covered since then
+    (0 … 1), and whether the crank is on the working stroke (its end included)."""
+    travel = phase(stroke, kin.phi)
     q = output_coordinate(mech, kin)[0]
     dq = q - stroke.q0
     if stroke.kind == "rocker":
@@ -114,23 +129,38 @@ def load_value(load: Load, stroke: Stroke, mech: Mechanism, kin: Kinematics):
     size = np.where(working, table_value(load, fraction), 0.0)
     if load.kind == "moment":
         return -stroke.direction * size
-    guide = mech.groups[mech.link(load.link).group - 1].guide
-    return -stroke.direction * size * guide.unit
+    g = mech.groups[mech.link(load.link).group - 1]
+    unit = g.guide.unit if not g.guide.moving else guide_frame(mech, g, kin)[1]
+    return -stroke.direction * size * unit
+
+
+def _cumulative_work(load: Load, stroke: Stroke, fraction, theta):
+    """The load's work [J] since the working stroke began at crank travel `theta` from that start
+    (unwrapped: every whole turn adds one turn's work −H·∫₀¹F)."""
+    turns = np.floor((theta + WORKING_TOLERANCE) / (2.0 * math.pi))
+    within = theta - turns * 2.0 * math.pi
+    whole = float(table_integral(load, 1.0))
+    done = np.where(within <= stroke.working + WORKING_TOLERANCE, table_integral(load, fraction), whole)
+    return -stroke.length * (done + turns * whole)
 
 
 def load_work(load: Load, stroke: Stroke, mech: Mechanism, kin: Kinematics, travel=None):
-    """The load's work since position 0 [J], exactly: −H·∫₀^f F(x) dx on the working stroke (f the
-    fraction covered), −H·∫₀¹ F(x) dx on the return stroke (H the stroke, or the swing in rad).
-    `travel` (the crank's travel since position 0 [rad], up to 2π) tells a whole turn's end from
-    its start; without it the angles are taken within the first turn.
+    """The load's work since position 0 [J], exactly: the area under the load diagram times the
+    stroke, −H·∫₀^f F(x) dx on the working stroke (f the fraction covered), −H·∫₀¹ F(x) dx over
+    a whole working stroke (H the stroke, or the swing in rad), counted from the working stroke's
+    start and shifted to position 0. `travel` (the crank's travel since position 0 [rad], up to 2π)
+    tells a whole turn's end from its start; without it the angles are taken within the first turn.
 
     The power F·v = −F·H·df/dt (the force opposes the motion that increases f), so the work is
     the area under the load diagram times the stroke, with a minus sign."""
-    _, fraction, working = progress(stroke, mech, kin)
-    if travel is not None:
-        working = np.asarray(travel) <= stroke.working + WORKING_TOLERANCE
-    done = np.where(working, table_integral(load, fraction), table_integral(load, 1.0))
-    return -stroke.length * done
+    _, fraction, _ = progress(stroke, mech, kin)
+    if travel is None:
+        travel = np.remainder(stroke.sense * (kin.phi - stroke.start), 2.0 * math.pi)
+        travel = np.where(travel > 2.0 * math.pi - WORKING_TOLERANCE, 0.0, travel)
+    theta = np.asarray(travel, dtype=float) - stroke.lead
+    _, f0, _ = progress(stroke, mech, solve(mech, [stroke.start]))
+    at_zero = _cumulative_work(load, stroke, f0, np.array([-stroke.lead]))
+    return _cumulative_work(load, stroke, fraction, theta) - at_zero[0]
 
 
 def _numbers(r, value, key: str, example: str) -> tuple[float, ...]:

@@ -142,7 +142,7 @@ def parse_masses(r, mech: Mechanism, raw) -> tuple[Mass, ...]:
         inertia = r.number(t.get("J", 0.0), f"{key}.J", "J = 0.012")
         if not 0.0 <= inertia <= INERTIA_MAX:
             r.fail(f"'{key}.J' is {inertia:g}; a moment of inertia must lie in [0, {INERTIA_MAX:g}] kg·m²")
-        if ln.kind == "slider" and inertia != 0.0:
+        if ln.kind == "slider" and inertia != 0.0 and not mech.groups[ln.group - 1].guide.moving:
             r.fail(f"'{key}.J' is {inertia:g}: the slider {ln.name} does not turn; leave J out")
         centre = _centre(r, mech, ln, t.get("centre"), f"{key}.centre", where)
         ends = tuple(ln.axis) if centre is None else None

@@ -15,7 +15,8 @@ group kind  joints (file order)   links 2k, 2k+1 (k = group's index)
 RRR         A, B, C (B new)       bar AB, bar BC
 RRP         A, B (B new, slider)  bar AB, slider B (a block on a fixed guide)
 RPR         A, C (nothing new)    block A (turns on the pin A), slotted link AC (turns
-                                  about C, the block slides along it)
+                                  about C, the block slides along it; its slot may pass
+                                  the offset d from C)
 ==========  ====================  =======================================================
 
 The angle of a link named XY is the direction from X to Y (the crank's: from its pivot to its
@@ -37,14 +38,28 @@ FRAME = 0  # the frame's link number
 
 @record
 class Guide:
-    """A fixed straight guide: the line through `through` in the direction `angle`."""
+    """A straight guide: fixed — the line through `through` in the direction `angle` — or on a
+    moving link (`link`): the line through the link's point at `along`, `across` from its pin
+    `base` towards `toward` (as a [[point]]), turned `angle` from the link's direction base →
+    toward; it turns with the link (:func:`.chain.guide_frame` gives it at any crank angle)."""
 
-    through: complex  # a point of the line [m]
-    angle: float  # direction from +x, counter-clockwise [rad]
+    through: complex  # a point of the line [m] (a fixed guide)
+    angle: float  # direction from +x, counter-clockwise [rad]; on a link: from the link's direction
+    link: str | None = None  # the link carrying the guide (None: the frame)
+    base: str = ""
+    toward: str = ""
+    along: float = 0.0  # [m]
+    across: float = 0.0  # [m]
+
+    @property
+    def moving(self) -> bool:
+        return self.link is not None
 
     @property
     def unit(self) -> complex:
-        """The guide's direction as a unit vector (complex x + iy)."""
+        """A fixed guide's direction as a unit vector (complex x + iy)."""
+        if self.link is not None:
+            raise ValueError("a moving guide's direction changes with the crank angle: use chain.guide_frame")
         return cmath.exp(1j * self.angle)
 
 
@@ -105,6 +120,7 @@ class Group:
     new: tuple[str, ...]  # the joints it places: RRR, RRP (B,); RPR ()
     links: tuple[str, str]  # its two links' names, numbers 2k and 2k+1
     pairs: tuple[Pair, Pair, Pair]  # its three pairs, from the first known joint along the chain
+    offset: float = 0.0  # RPR: the slot's distance d from the pivot C [m] (the slot is C + d·n + t·u)
 
     @property
     def numbers(self) -> tuple[int, int]:
@@ -154,7 +170,7 @@ class Mechanism:
     output: Output
     working: str | None  # 'away' | 'towards' (from [load] working), else None
     plan: str | None  # label of the position of the plans (file key `plan`), else None
-    extra: dict  # the sheet-2 tables as read ('gravity', 'mass', 'load', 'dynamics'), unchecked
+    extra: dict  # the sheet-2 tables as read ('gravity', 'mass', 'load', 'dynamics') and 'synthesis', unchecked
 
     def link(self, name: str) -> Link:
         for ln in self.links:
@@ -185,8 +201,8 @@ class Mechanism:
         """A size of the mechanism [m]: the largest length or frame coordinate (for tolerances)."""
         sizes = [self.crank.length, *(abs(z) for z in self.frame.values())]
         for g in self.groups:
-            sizes += list(g.lengths)
+            sizes += list(g.lengths) + [abs(g.offset)]
             if g.guide is not None:
-                sizes.append(abs(g.guide.through))
+                sizes.append(abs(g.guide.through) + abs(complex(g.guide.along, g.guide.across)))
         sizes += [abs(complex(p.along, p.across)) for p in self.points]
         return max(sizes)

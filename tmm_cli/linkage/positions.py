@@ -23,7 +23,7 @@ import numpy as np
 from ..notes import Note
 from ..records import record
 from .assembly import GRID, Margin, check_assembly, golden_min
-from .chain import Kinematics, solve
+from .chain import Kinematics, guide_frame, solve
 from .mechanism import Group, Mechanism
 
 TWO_PI = 2.0 * math.pi
@@ -144,7 +144,8 @@ def pressure_angle(mech: Mechanism, g: Group, k: Kinematics):
     """The group's pressure angle [rad]: between the force its first link transmits and the
     velocity of the point it drives. RRR: AB against the normal to BC at B, arcsin|cos∠(AB, BC)|
     (90° minus the transmission angle); RRP: AB against the guide; RPR: 0 (the block presses
-    across the slot and the slot's point moves across it).
+    across the slot and the slot's point moves across it), with a slot offset d from the pivot
+    arctan(|d|/t) (the slot's point under the block moves ⊥ CA, the pressure is ⊥ the slot).
 
     >>> from .mechanism_file import parse_mechanism
     >>> m = parse_mechanism({"frame": {"O": [0, 0]}, "crank": {"pivot": "O", "joint": "A",
@@ -161,8 +162,11 @@ def pressure_angle(mech: Mechanism, g: Group, k: Kinematics):
     if g.kind == "RRP":
         ja, jb = g.joints
         u1 = k.z[jb] - k.z[ja]
-        c = (np.conj(u1) * g.guide.unit).real / np.abs(u1)
+        unit = g.guide.unit if not g.guide.moving else guide_frame(mech, g, k)[1]
+        c = (np.conj(u1) * unit).real / np.abs(u1)
         return np.arccos(np.minimum(np.abs(c), 1.0))
+    if g.kind == "RPR" and g.offset != 0.0:
+        return np.arctan2(abs(g.offset), np.abs(k.slide[g.links[0]][0]))
     return np.zeros(k.phi.shape)
 
 

@@ -26,6 +26,7 @@ from .mechanism_file import _Reader
 
 DYNAMICS_KEYS = ("delta", "J_rotor", "flywheel", "width_ratio", "rim_ratio", "density")
 DELTA_MAX = 0.5
+DELTA_MIN = 1.0e-4  # below it the flywheel is no machine's (and the speed's bounds merge in rounding)
 FLYWHEELS = ("disc", "rim")
 STEEL = 7800.0  # [kg/m³]
 
@@ -73,6 +74,9 @@ def parse_dynamics(r, raw) -> DynamicsSpec | None:
     if not 0.0 < delta <= DELTA_MAX:
         r.fail(f"'dynamics.delta' is {delta:g}; the coefficient of speed fluctuation δ must lie in (0, {DELTA_MAX:g}] "
                "(machines: 0.002 … 0.2), e.g. delta = 0.04")
+    if delta < DELTA_MIN:
+        r.fail(f"'dynamics.delta' is {delta:g}, below {DELTA_MIN:g}: no machine keeps its speed that steady (machines: "
+               "0.002 … 0.2); give e.g. delta = 0.04")
     rotor = r.number(t.get("J_rotor", 0.0), "dynamics.J_rotor", "J_rotor = 0.05")
     if not 0.0 <= rotor <= 1.0e5:
         r.fail(f"'dynamics.J_rotor' is {rotor:g}; a moment of inertia must lie in [0, 100000] kg·m²")

@@ -19,6 +19,7 @@ import numpy as np
 
 from ...i18n import tr
 from ...i18n.numbers import num
+from ...linkage.chain import slot_axis
 from ...linkage.sheet2 import Sheet2
 from ..terminal.dynamics import symbol as book_symbol
 from .kit import decimal_commas, mt, new_figure, suptitle, title_height
@@ -91,18 +92,26 @@ def _draw_links(ax, s: Sheet2, links, i: int, unit: float) -> list[complex]:
             pts += ends
         elif ln.kind == "slotted":
             a, c = ln.axis
-            far = [z[p.name] for p in m.points if p.link == ln.name] + [z[a]]
+            far = [z[p.name] for p in m.points if p.link == ln.name] + [z[a]] + [
+                z[g.joints[1]] for g in m.groups if g.guide is not None and g.guide.link == ln.name]
             reach = max(abs(e - z[c]) for e in far)
             d = (z[a] - z[c]) / abs(z[a] - z[c])
             tip = z[c] + 1.08 * reach * d
-            ax.plot([z[c].real, tip.real], [z[c].imag, tip.imag], color="k", lw=2.0, zorder=3)
+            foot = z[c]
+            if m.groups[ln.group - 1].offset != 0.0:  # an offset slot: the arm from the pivot to it, then the slot
+                foot, d = (complex(x[i]) for x in slot_axis(m, k, ln.name))
+                foot = foot * MM
+                tip = foot + 1.08 * reach * d
+                ax.plot([z[c].real, foot.real], [z[c].imag, foot.imag], color="k", lw=2.0, zorder=3)
+            ax.plot([foot.real, tip.real], [foot.imag, tip.imag], color="k", lw=2.0, zorder=3)
             pts += [z[c], tip]
         elif ln.kind == "block":
             _block(ax, z[ln.name], float(k.angle[ln.name][i]), 0.5 * unit, 0.25 * unit, "k", 1.2, "-", z=4)
             pts.append(z[ln.name])
         elif ln.kind == "slider":
             g = m.groups[ln.group - 1]
-            _block(ax, z[ln.name], g.guide.angle, 0.7 * unit, 0.35 * unit, "k", 1.2, "-", z=4)
+            angle = g.guide.angle if not g.guide.moving else float(k.angle[ln.name][i])
+            _block(ax, z[ln.name], angle, 0.7 * unit, 0.35 * unit, "k", 1.2, "-", z=4)
             pts.append(z[ln.name])
     names = {n for ln in links for n in ln.pins} | {p.name for p in m.points if any(p.link == ln.name for ln in links)}
     for n in names:

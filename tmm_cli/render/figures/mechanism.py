@@ -18,6 +18,11 @@ import re
 
 import numpy as np
 
+from ...linkage.chain import guide_frame as _guide_frame, slot_axis
+
+
+def guide_frame(m, k, g):
+    return _guide_frame(m, g, k)
 from ...linkage.sheet1 import Sheet1
 from ...linkage.vector_plans import Plan, Plans
 from .kit import decimal_commas, literal_text, new_figure, suptitle, title_height
@@ -119,6 +124,11 @@ def span_mm(s: Sheet1) -> float:
     return max(float(np.ptp(z.real)), float(np.ptp(z.imag)))
 
 
+def _riders(m, link: str) -> list[str]:
+    """The sliders whose guide rides on the link (drawn long enough to carry them)."""
+    return [g.joints[1] for g in m.groups if g.guide is not None and g.guide.link == link]
+
+
 def draw_mechanism(ax, s: Sheet1, i: int, color="k", lw=1.6, ls="-", labels=True, size: float = 1.0, kin=None):
     """The mechanism at position `i` of the cycle (or of `kin`) [mm]."""
     m = s.mechanism
@@ -144,16 +154,31 @@ def draw_mechanism(ax, s: Sheet1, i: int, color="k", lw=1.6, ls="-", labels=True
                         zorder=5)
         elif ln.kind == "slotted":
             a, c = ln.axis
-            rho_max = max(float(np.max(s.cycle.curve.kin.slide[m.links[ln.number - 2].name][0])) * MM,
-                          *(abs(z[p] - z[c]) for p in on_link.get(ln.name, []) if p in hang))
+            rho_max = max([float(np.max(s.cycle.curve.kin.slide[m.links[ln.number - 2].name][0])) * MM,
+                           *(abs(z[p] - z[c]) for p in on_link.get(ln.name, []) if p in hang),
+                           *(float(np.max(np.abs(s.cycle.curve.kin.z[j] - s.cycle.curve.kin.z[c]))) * MM
+                             for j in _riders(m, ln.name))])
             d = (z[a] - z[c]) / abs(z[a] - z[c])
             tip = z[c] + 1.06 * rho_max * d
-            ax.plot([z[c].real, tip.real], [z[c].imag, tip.imag], color=color, lw=lw, ls=ls, zorder=5)
+            if m.groups[ln.group - 1].offset != 0.0:  # an offset slot: the arm from the pivot to it, then the slot
+                foot, d = (complex(x[i]) for x in slot_axis(m, k, ln.name))
+                foot = foot * MM
+                tip = foot + 1.06 * rho_max * d
+                ax.plot([z[c].real, foot.real], [z[c].imag, foot.imag], color=color, lw=lw, ls=ls, zorder=5)
+                ax.plot([foot.real, tip.real], [foot.imag, tip.imag], color=color, lw=lw, ls=ls, zorder=5)
+            else:
+                ax.plot([z[c].real, tip.real], [z[c].imag, tip.imag], color=color, lw=lw, ls=ls, zorder=5)
         elif ln.kind == "block":
             _block(ax, z[ln.name], float(k.angle[ln.name][i]), 0.5 * unit, 0.25 * unit, color, lw * 0.7, ls)
         elif ln.kind == "slider":
             g = m.groups[ln.group - 1]
-            _block(ax, z[ln.name], g.guide.angle, 0.7 * unit, 0.35 * unit, color, lw * 0.7, ls)
+            if g.guide.moving:  # the guide on its link: from its point on the link past the slider
+                p, e = (complex(x[i]) for x in guide_frame(m, k, g))
+                p, far = p * MM, z[ln.name] + 1.2 * unit * e
+                ax.plot([p.real, far.real], [p.imag, far.imag], color=color, lw=0.7, ls=(0, (12, 3, 2, 3)), zorder=4)
+                _block(ax, z[ln.name], float(k.angle[ln.name][i]), 0.7 * unit, 0.35 * unit, color, lw * 0.7, ls)
+            else:
+                _block(ax, z[ln.name], g.guide.angle, 0.7 * unit, 0.35 * unit, color, lw * 0.7, ls)
     for n in m.joint_names:
         if n in m.frame or n == m.crank.joint or any(n in g.new for g in m.groups) or n in hang:
             ax.plot(z[n].real, z[n].imag, "o", ms=4 * size, mfc="white", mec=color, zorder=7)
@@ -173,6 +198,8 @@ def _guides(ax, s: Sheet1, lo: complex, hi: complex) -> None:
     """Each slider's guide as a dash-dot line across the drawing [mm]."""
     for g in s.mechanism.groups:
         if g.guide is None:
+            continue
+        if g.guide.moving:  # it turns with its link: drawn with the link in each position
             continue
         p, e = g.guide.through * MM, g.guide.unit
         ts = [((c - p) * e.conjugate()).real for c in (lo, hi, complex(lo.real, hi.imag), complex(hi.real, lo.imag))]
@@ -404,7 +431,7 @@ def plan_figure(s: Sheet1, pl: Plans, kind: str, lang: str):
         if v.magnitude == 0.0 and v.start in ("p", "π"):
             continue
         where = f"  {v.relation} {line_tex(v.line)}" if v.line and v.line != "guide" else (
-            "  ∥ " + tr(lang, "guide") if v.line == "guide" else "")
+            f"  {v.relation or '∥'} " + tr(lang, "guide") if v.line == "guide" else "")
         lines.append(f"{symbol_tex(v.symbol)} = {num(v.magnitude, lang, sig=4)} {unit}"
                      f"  ({num(v.magnitude / plan.scale, lang, decimals=1)} " + tr(lang, "mm") + f"){where}")
     cols = 2 if len(lines) > 11 else 1

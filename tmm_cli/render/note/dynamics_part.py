@@ -309,12 +309,22 @@ def _groups(c: Ctx, s) -> None:
                   "to the block:").format(l=seg(jc, ja), a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label), A=pt(ja),
                                           C=pt(jc), n3=n3))
             mb = float(rb.couple[i]) if rb.couple is not None else 0.0
+            arm_sym = seg(jc, ja)
+            if g.offset != 0.0:  # an offset slot: the pressure's arm about C is the block's place along the slot
+                arm_sym, d = "h", abs(g.offset)
+                arm = math.sqrt(max(rho * rho - d * d, 0.0))
+                c.p(t("The slot passes {d} mm from the pivot ${C}$: the arm $h$ of the pressure about ${C}$ is the "
+                      "block's distance along the slot from the foot of the perpendicular:").format(
+                    d=c.n(d * 1000.0, sig=4), C=pt(jc)))
+                c.formula(c.calc(f"h = sqrt({seg(jc, ja)}^2 - d^2)", "sqrt({0}^2 - {1}^2)", [V(rho, sig=5), V(d, sig=4)],
+                                 V(arm, sig=5), t("m")), numbered=False)
+                rho = arm
             if abs(mb) > 1e-9 * max(1.0, abs(m3)):
-                line = c.calc(f"{fsym(c, rb.label)} = abs(Σ M_({pt(jc)})^(({n3})) + M_({n2} {n3}))/{seg(jc, ja)}",
+                line = c.calc(f"{fsym(c, rb.label)} = abs(Σ M_({pt(jc)})^(({n3})) + M_({n2} {n3}))/{arm_sym}",
                               "abs({0} + {1})/{2}", [V(m3, sig=5), V(mb, sig=5), V(rho, sig=4)],
                               V(abs(complex(rb.force[i])), sig=4), N)
             else:
-                line = c.calc(f"{fsym(c, rb.label)} = abs(Σ M_({pt(jc)})^(({n3})))/{seg(jc, ja)}", "{0}/{1}",
+                line = c.calc(f"{fsym(c, rb.label)} = abs(Σ M_({pt(jc)})^(({n3})))/{arm_sym}", "{0}/{1}",
                               [V(abs(m3), sig=5), V(rho, sig=4)], V(abs(complex(rb.force[i])), sig=4), N)
             c.formula(line, where=[_sum_where(c, jc)])
             c.p(t("The polygons of the block and of the slotted link give the other two:"))

@@ -20,6 +20,7 @@ from ...linkage.scales import PLAN_MM, SCHEME_MM
 from ..terminal.mechanism import pattern
 from .ctx import Ctx, V, sheet1_of
 from .model import Heading, literal
+from .synthesis_part import synthesis_section
 
 _KIND = {"crank": N_("crank"), "bar": N_("bar"), "slider": N_("slider"), "block": N_("block"),
          "slotted": N_("slotted link")}
@@ -32,6 +33,7 @@ def linkage_chapter(c: Ctx) -> None:
     if s is None:
         return
     c.doc.add(Heading(1, c.t("Structural and kinematic analysis of the lever mechanism"), "chapter", "linkage"))
+    synthesis_section(c, s)  # «Синтез механизма» when the file records its task (tmm synth, issue 33)
     _structure(c, s)
     _positions(c, s)
     if s.plans:
@@ -431,7 +433,7 @@ def _omega_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l
     if P.tiny(P.w[link]):
         return f"ω_{num} = 0"
     return c.calc(f"ω_{num} = {P.sym.mag(vec.symbol)}/{l_sym}", "{0}/{1}",
-                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=5)], V(abs(P.w[link]), sig=5), c.t("rad/s"))
+                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=9 if exact else 5)], V(abs(P.w[link]), sig=5), c.t("rad/s"))
 
 
 def _eps_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l_sym: str) -> str:
@@ -439,7 +441,7 @@ def _eps_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l_s
     if P.tiny(P.e[link], P.pl.acceleration):
         return f"ε_{num} = 0"
     return c.calc(f"ε_{num} = {P.sym.mag(vec.symbol)}/{l_sym}", "{0}/{1}",
-                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=5)], V(abs(P.e[link]), sig=5), c.t("rad/s²"))
+                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=9 if exact else 5)], V(abs(P.e[link]), sig=5), c.t("rad/s²"))
 
 
 def _group_velocity(c: Ctx, P: _Plans, g) -> None:
@@ -466,6 +468,13 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
         ja, jb = g.joints
         v1 = P.vel[f"v_{jb}{ja}"]
         lines += [P.measured(vp, v1, ms, "μ_v"), P.measured(vp, P.vel[f"v_{jb}"], ms, "μ_v")]
+        if g.guide.moving:
+            kn = P.m.link(g.guide.link).number
+            lines.append(P.measured(vp, P.vel[f"v_{jb}{jb}{kn}"], ms, "μ_v"))
+            c.p(t("The slider {b} slides along a guide of link {k}, which turns: {bk} is the point of link {k} under the "
+                  "slider (found on the plan by similarity), the slider's velocity relative to it is along the guide, "
+                  "and the slider turns with link {k} ($ω_{n3} = ω_{k}$).").format(
+                b=jm(jb), k=kn, bk=jm(f"{jb}{kn}"), n3=n3))
         lines += [_omega_line(c, P, g.links[0], v1, g.lengths[0], True, "l" + sub(ja, jb))]
     else:
         ja, jc = g.joints
@@ -486,6 +495,11 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
         c.p(t("Here $l{l}$ is the distance from the pivot {c} to the block in this position; the block {n2} turns "
               "together with the slotted link {n3}.").format(l=sub(g.joints[1], g.joints[0]), c=jm(g.joints[1]),
                                                              n2=n2, n3=n3))
+    if g.kind == "RPR" and g.offset != 0.0:
+        c.p(t("The slot of link {n3} passes {d} mm from its pivot {c} (not through it): the block's velocity relative "
+              "to the slot, and later its relative and Coriolis accelerations, are along and across the slot, while "
+              "the turning about {c} stays perpendicular to the line from {c} to {a}.").format(
+            n3=n3, d=c.n(abs(g.offset) * 1000.0, sig=4), c=jm(g.joints[1]), a=jm(g.joints[0])))
     c.formula(*lines)
 
 
@@ -523,6 +537,18 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
             at2 = P.acc[f"a^τ_{jb}{jc}"]
             lines += [P.measured(ap, at2, ms2, "μ_a")]
             eps.append(_eps_line(c, P, g.links[1], at2, g.lengths[1], True, "l" + sub(jb, jc)))
+        if g.kind == "RRP" and g.guide.moving:
+            kn = P.m.link(g.guide.link).number
+            rel, cor = P.vel[f"v_{jb}{jb}{kn}"], P.acc[f"a^k_{jb}{jb}{kn}"]
+            wk = abs(P.w[g.guide.link]) if not P.tiny(P.w[g.guide.link]) else 0.0
+            c.p(t("The slider moves along the turning guide of link {k}: the acceleration of {b} relative to {bk} has a "
+                  "Coriolis component across the guide (the relative velocity turned by 90° in the sense of $ω_{k}$).")
+                .format(k=kn, b=jm(jb), bk=jm(f"{jb}{kn}")))
+            known.append(c.calc(f"{P.sym.mag(cor.symbol)} = 2 ω_{kn} {P.sym.mag(rel.symbol)}", "2 dot {0} dot {1}",
+                                [V(wk, sig=5), V(0.0 if P.tiny(rel.magnitude, P.pl.velocity) else rel.magnitude, sig=4)],
+                                V(0.0 if P.tiny(cor.magnitude, ap) else cor.magnitude, sig=4), ms2))
+            known.append(P.drawn(ap, cor))
+            lines.append(P.measured(ap, P.acc[f"a^r_{jb}{jb}{kn}"], ms2, "μ_a"))
         lines += [P.measured(ap, P.acc[f"a_{jb}"], ms2, "μ_a")] + eps
     else:
         ja, jc = g.joints

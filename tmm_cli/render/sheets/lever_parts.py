@@ -137,12 +137,22 @@ def link_segments(mech, kin, i: int, names=None, unit: float = 1.0, reach: dict 
                     out.append(("poly", [z[a], e, z[b]], ln))
         elif ln.kind == "slotted":
             a, cpin = ln.axis
-            far = max([abs(z[p] - z[cpin]) for p in on_link.get(ln.name, [])] + [abs(z[a] - z[cpin])])
+            riders = [g.joints[1] for g in mech.groups if g.guide is not None and g.guide.link == ln.name]
+            far = max([abs(z[p] - z[cpin]) for p in on_link.get(ln.name, []) + riders] + [abs(z[a] - z[cpin])])
             r = max(far, (reach or {}).get(ln.name, 0.0))
             d = (z[a] - z[cpin]) / abs(z[a] - z[cpin])
-            out.append(("line", z[cpin], z[cpin] + (r + 4.0 * unit) * d, ln))
+            if mech.groups[ln.group - 1].offset != 0.0:  # an offset slot: the arm from the pivot to it, then the slot
+                from ...linkage.chain import slot_axis
+
+                foot, d = (complex(x[i]) for x in slot_axis(mech, kin, ln.name))
+                foot = foot * MM
+                out.append(("poly", [z[cpin], foot], ln))
+                out.append(("line", foot, foot + (r + 4.0 * unit) * d, ln))
+            else:
+                out.append(("line", z[cpin], z[cpin] + (r + 4.0 * unit) * d, ln))
         elif ln.kind in ("block", "slider"):
-            angle = float(kin.angle[ln.name][i]) if ln.kind == "block" else mech.groups[ln.group - 1].guide.angle
+            guide = mech.groups[ln.group - 1].guide
+            angle = float(kin.angle[ln.name][i]) if ln.kind == "block" or guide.moving else guide.angle
             w, h = (7.0, 4.0) if ln.kind == "block" else (10.0, 5.0)
             out.append(("box", z[ln.name], angle, w, h, ln))
     return out
