@@ -19,7 +19,7 @@ from ...linkage.positions import PRESSURE_WARN_DEG, output_coordinate
 from ...linkage.scales import PLAN_MM, SCHEME_MM
 from ..terminal.mechanism import pattern
 from .ctx import Ctx, V, sheet1_of
-from .model import Heading
+from .model import Heading, literal
 from .synthesis_part import synthesis_section
 
 _KIND = {"crank": N_("crank"), "bar": N_("bar"), "slider": N_("slider"), "block": N_("block"),
@@ -131,7 +131,7 @@ def _structure(c: Ctx, s) -> None:
     t, n = c.t, c.n
     m, st = s.mechanism, s.structure
     c.doc.add(Heading(2, t("Structure of the mechanism")))
-    name = m.name or t("Mechanism")
+    name = literal(m.name) if m.name else t("Mechanism")  # a person's text: set as typed
     c.p(t("The mechanism «{name}» consists of the frame 0 and {count} moving links: {links}. The links and the "
           "kinematic pairs are given in Tables {{tab:linkage_links}} and {{tab:linkage_groups}}.").format(
         name=name, count=st.n, links=_link_words(c, m)))

@@ -7,6 +7,7 @@ import math
 
 import numpy as np
 
+from . import escape
 from ...linkage.positions import output_coordinate
 from ...linkage.sheet1 import Sheet1
 from ...i18n import tr
@@ -56,7 +57,7 @@ def links_table(s: Sheet1, lang: str):
     kinds = {"crank": tr(lang, "crank"), "bar": tr(lang, "bar"),
              "slider": tr(lang, "slider"), "block": tr(lang, "block"),
              "slotted": tr(lang, "slotted link")}
-    t = _table(tr(lang, "{name}: links").format(name=m.name or tr(lang, "Mechanism")),
+    t = _table(tr(lang, "{name}: links").format(name=escape(m.name) if m.name else tr(lang, "Mechanism")),
                ("№", "right"), (tr(lang, "Link"), "left"), (tr(lang, "Kind"), "left"),
                (tr(lang, "Size"), "right"))
     t.add_row("0", tr(lang, "frame"), ", ".join(m.frame), "")
