@@ -267,3 +267,83 @@ def test_synthesis_gives_back_the_examples_lengths_from_their_own_h_k_psi():
     psi, k = _linkage_numbers("four_bar.toml")  # OA = 0.08, AB = 0.28, BC = 0.20, OC = 0.30
     s = crank_rocker(0.20, psi, k, frame=0.30)
     assert (s.crank, s.coupler) == pytest.approx((0.08, 0.28), rel=1e-9)
+
+
+# ---------------------------------------------------------------------------------------------------
+# the note: «Синтез механизма» opens chapter 1 when the file records its task
+
+def _note_of(text: str, lang: str = "ru"):
+    from dataclasses import replace
+
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+    from tmm_cli.linkage.sheet2 import analyse_sheet2
+    from tmm_cli.linkage.sheet2_file import parse_sheet2
+    from tmm_cli.project import run_project
+    from tmm_cli.render.note import build_note
+    from tmm_cli.variants import get_variant
+
+    m = parse_mechanism(tomllib.loads(text), "m.toml")
+    r = replace(run_project(get_variant("17")), linkage=analyse_sheet2(analyse_mechanism(m), parse_sheet2(m)))
+    return build_note(r, lang)
+
+
+def _synth_text(name: str) -> str:
+    t = parse_task(tomllib.loads((EXAMPLES / name).read_text(encoding="utf-8")))
+    return synthesised_file(synthesise(t), t, default_name="M").text
+
+
+@pytest.mark.parametrize("name,length_mm", [("synth_slider.toml", "97,24"), ("synth_rocker.toml", "169,75"),
+                                             ("synth_shaper.toml", "647,21")])
+def test_note_opens_chapter_1_with_the_synthesis(name, length_mm):
+    from tmm_cli.render.note.mathsyntax import check_line
+    from tmm_cli.render.note.model import Formula, Heading, all_math
+
+    text = _synth_text(name)
+    doc = _note_of(text)
+    heads = [(b.level, b.text) for b in doc.blocks if isinstance(b, Heading)]
+    i = next(k for k, h in enumerate(heads) if h[0] == 1 and "рычажного" in h[1])
+    assert heads[i + 1] == (2, "Синтез механизма")
+    assert {"kind": "linkage_synthesis", "type": tomllib.loads(text)["synthesis"]["type"], "matches": True} in doc.claims
+    assert all(c.ok for _, src in all_math(doc) for c in check_line(src))
+    formulas = " ".join(b.math for b in doc.blocks if isinstance(b, Formula))
+    assert f'"{length_mm}"' in formulas  # a length the file holds (in mm), derived in the section
+
+
+def test_note_says_when_the_lengths_were_changed_after_synthesis():
+    from tmm_cli.render.note.model import Paragraph
+
+    text = _synth_text("synth_slider.toml").replace("length = 0.0485", "length = 0.0490", 1)
+    assert "length = 0.0490" in text
+    doc = _note_of(text, "en")
+    assert {"kind": "linkage_synthesis", "type": "crank-slider", "matches": False} in doc.claims
+    assert any(isinstance(b, Paragraph) and "changed afterwards" in b.text for b in doc.blocks)
+
+
+def test_no_synthesis_section_without_the_record():
+    from tmm_cli.render.note.model import Heading
+
+    doc = _note_of((EXAMPLES / "four_bar.toml").read_text(encoding="utf-8"), "en")
+    assert not any(isinstance(b, Heading) and b.text == "Synthesis of the mechanism" for b in doc.blocks)
+
+
+# ---------------------------------------------------------------------------------------------------
+# sheet 1 draws the construction
+
+@pytest.mark.parametrize("name,angle", [("synth_slider.toml", "θ = 16,36°"), ("synth_rocker.toml", "θ = 16,36°"),
+                                        ("synth_shaper.toml", "ψ = θ = 36,00°")])
+def test_sheet1_draws_the_construction(name, angle, tmp_path):
+    from test_sheets import TITLE, check_layout, reopen
+
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+    from tmm_cli.render.sheets.linkage_sheet import sheet1
+
+    s = analyse_mechanism(parse_mechanism(tomllib.loads(_synth_text(name)), "m.toml"))
+    doc = reopen(sheet1(s, "ru", TITLE), tmp_path, "sheet1")
+    check_layout(doc)
+    texts = [e.dxf.text for e in doc.modelspace().query("TEXT")]
+    assert angle in texts
+    plain = analyse_mechanism(parse_mechanism({k: v for k, v in tomllib.loads(_synth_text(name)).items()
+                                               if k != "synthesis"}, "m.toml"))
+    (tmp_path / "plain").mkdir()
+    doc2 = reopen(sheet1(plain, "ru", TITLE), tmp_path / "plain", "sheet1")
+    assert angle not in [e.dxf.text for e in doc2.modelspace().query("TEXT")]

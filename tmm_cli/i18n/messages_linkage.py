@@ -13,6 +13,7 @@ MESSAGES: dict[str, str] = {
     "mechanism_position0_working": N_("Position 0 is the extreme position of the output link where the working stroke begins; the working stroke is the slower one (the larger crank angle)."),
     "mechanism_position0_load": N_("Position 0 is the extreme position of the output link where the working stroke begins, the stroke the file's load.working names."),
     "mechanism_position0_far": N_("Both strokes take the same crank angle (K = 1): position 0 is the extreme position of the output link farthest from the crank pivot (the top dead centre); give load.working or crank.start_deg to choose another."),
+    "mechanism_position0_gas": N_("Position 0 is the dead centre of the first gas load's piston nearest its cylinder head (the start of its indicator diagram)."),
     "mechanism_position0_given": N_("Position 0 is at the crank angle the file gives (crank.start_deg)."),
     "mechanism_position0_turning": N_("The output link turns fully and has no extreme positions: there is no stroke and no K; position 0 is at the crank angle 0° (or crank.start_deg)."),
     "mechanism_fast_working": N_("The working stroke is the faster one (K = {time_ratio:.4f} < 1): check load.working."),
@@ -28,6 +29,7 @@ MESSAGES: dict[str, str] = {
     "dynamics_no_table": N_("The file has no [dynamics] table: the flywheel is not computed; give delta = … (and J_rotor) for it."),
     "dynamics_no_flywheel": N_("No flywheel is needed: the mechanism and the rotor alone keep the speed within δ = {delta:.4g} (δ = {delta_actual:.4g} without a flywheel)."),
     "dynamics_methods": N_("The flywheel is Mertsalov's; Wittenbauer's energy–mass diagram gives J_fl = {j_w:.4g} kg·m² (Mertsalov's differs by {diff_pct:+.2f} %: it neglects the change of the second group's energy with the speed)."),
+    "dynamics_motor": N_("Over a cycle the gas forces do more work than they take: the mechanism is a motor; the constant moment it gives the machine is {moment:.4g} N·m (the driving moment M_d is negative: the machine's resistance)."),
     "dynamics_driving_negative": N_("The driving moment comes out negative (M_d = {moment:.4g} N·m): over a turn the loads give work to the crank; check the load's direction and load.working."),
     "project_mechanism_motor": N_("Sheet 4 takes the mean reduced moment M = {torque:.4g} N·m (the driving moment of sheet 2) and the crank speed n_cr = {rpm:.5g} rpm from the mechanism file {file}."),
     # tmm synth (issue 33): the synthesis of a lever mechanism from its task

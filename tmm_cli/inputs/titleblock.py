@@ -61,7 +61,9 @@ def _clean(value, name: str, source: str) -> str:
         return ""
     if not isinstance(value, str):
         raise TmmError(f"{source}: '{name}' must be text in quotes, e.g. {name} = \"...\"")
-    text = " ".join("".join(ch for ch in value if ch.isprintable() or ch == " ").split())
+    from .names import clean_text
+
+    text = clean_text(value)  # one line: breaks and tabs as spaces, control characters dropped
     if len(text) > MAX_FIELD:
         raise TmmError(f"{source}: '{name}' is {len(text)} characters long; shorten it to {MAX_FIELD} or fewer")
     return text

@@ -206,3 +206,57 @@ def synthesised_file(syn, task, source: str = "synthesis", default_name: str = "
         if chk2.time_ratio is not None and chk2.time_ratio > chk.time_ratio:
             text, mech, c, chk, mirrored = text2, mech2, c2, chk2, True
     return Synthesised(task, syn, text, mech, c, chk, mirrored, _notes(task, syn, chk, mirrored))
+
+
+@record(eq=False)
+class Recorded:
+    """The synthesis a mechanism file records (its [synthesis] table), done again from the task."""
+
+    task: object  # synthesis_task.Task
+    synthesis: object  # SliderSynthesis | RockerSynthesis | SlottedSynthesis
+    matches: bool  # the file's lengths are the synthesis's (False: edited after tmm synth)
+
+
+def _file_lengths(mech) -> tuple[float, ...]:
+    g = mech.groups
+    frame = list(mech.frame.values())
+    dist = abs(frame[-1] - frame[0]) if len(frame) > 1 else 0.0
+    along = {p.name: p.along for p in mech.points}
+    return (mech.crank.length, *[x for grp in g for x in grp.lengths], dist, along.get("B", 0.0))
+
+
+def _synthesis_lengths(syn) -> tuple[float, ...]:
+    if isinstance(syn, SliderSynthesis):
+        return (syn.crank, syn.rod, 0.0, 0.0)
+    if isinstance(syn, RockerSynthesis):
+        return (syn.crank, syn.coupler, syn.rocker, syn.frame, 0.0)
+    return (syn.crank, syn.rod, syn.frame, syn.link)
+
+
+def recorded_synthesis(mech) -> Recorded | None:
+    """The synthesis recorded in the mechanism's [synthesis] table, or None (no table, or a table
+    that is not a task tmm synth can do again). `matches` says whether the file still has the
+    lengths the synthesis found (to 1e-9).
+
+    >>> from .mechanism_file import parse_mechanism
+    >>> from .synthesis_task import parse_task, synthesise
+    >>> t = parse_task({"type": "crank-slider", "stroke": 0.12, "lambda": 0.25})
+    >>> mech = parse_mechanism(tomllib.loads(mechanism_toml(synthesise(t), t)))
+    >>> r = recorded_synthesis(mech)
+    >>> r.task.type, round(r.synthesis.rod, 12), r.matches
+    ('crank-slider', 0.24, True)
+    """
+    from ..errors import TmmError
+    from .synthesis_task import parse_task, synthesise
+
+    rec = mech.extra.get("synthesis")
+    if not isinstance(rec, dict):
+        return None
+    try:
+        task = parse_task(dict(rec), "synthesis")
+        syn = synthesise(task)
+    except TmmError:
+        return None
+    have, want = _file_lengths(mech), _synthesis_lengths(syn)
+    matches = len(have) == len(want) and all(abs(a - b) <= 1e-9 * max(abs(b), 1e-3) for a, b in zip(have, want))
+    return Recorded(task, syn, matches)

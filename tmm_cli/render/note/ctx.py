@@ -106,7 +106,9 @@ class Ctx:
         if isinstance(v, (int, str)):
             return mq(str(v)) if isinstance(v, str) else mq(self.n(v))
         if v.exact:
-            text = self.n(v.x) if v.sig is None and v.decimals is None else self.n(v.x, sig=v.sig or 4, decimals=v.decimals)
+            # given data print as given: up to 9 significant digits (a synthesised 0,0646537 m is not 0,06465)
+            text = self.n(v.x, sig=9) if v.sig is None and v.decimals is None else self.n(v.x, sig=v.sig or 4,
+                                                                                             decimals=v.decimals)
         elif v.decimals is not None:
             text = self.n(v.x, decimals=v.decimals + extra)
         else:

@@ -19,7 +19,7 @@ from .ctx import Ctx, V
 from .model import Heading
 
 # the kinds of Assur groups as the book writes them (В — a turning pair, П — a sliding pair)
-_KIND = {"RRR": N_("RRR"), "RRP": N_("RRP"), "RPR": N_("RPR")}
+_KIND = {"RRR": N_("RRR"), "RRP": N_("RRP"), "RPR": N_("RPR"), "PRP": N_("PRP"), "RPP": N_("RPP")}
 
 
 def dynamics_chapter(c: Ctx) -> None:
@@ -167,6 +167,7 @@ def _loads(c: Ctx, s) -> None:
                                 [V(ms.J, exact=True), V(eps, sig=4)], V(abs(float(m.m[i])), sig=4), t("N·m")))
         c.formula(*lines)
     _load(c, s)
+    _gas(c, s)
     # all the applied forces of the position
     rows = []
     for f in forces:
@@ -216,6 +217,9 @@ def _load(c: Ctx, s) -> None:
               "(Table {{tab:dyn_load}}) gives it against the share of the swing covered; it is linear between these "
               "points and zero on the return stroke."))
     c.p(what.format(sym=sym))
+    if ld.direction is not None:
+        c.p(t("Its direction is its own, fixed at {deg}° from the $x$ axis (not along the guide): its part across the "
+              "guide does no work but loads the pairs.").format(deg=n(math.degrees(ld.direction), decimals=1)))
     share = t("Share of the working stroke") if ld.kind == "force" else t("Share of the working swing")
     c.table("dyn_load", t("Diagram of the useful resistance"), [share] + [n(x, sig=3) for x in ld.stroke],
             [[f"${sym}$, {unit}"] + [n(y, sig=5) for y in ld.values]],
@@ -228,6 +232,40 @@ def _load(c: Ctx, s) -> None:
     else:
         c.p(t("In position {label} the crank is on the return stroke: ${sym} = 0$.").format(
             label=_position(s).label, sym=sym))
+
+
+def _gas(c: Ctx, s) -> None:
+    """The gas forces from the indicator diagrams ([[load]] with head)."""
+    from ...linkage.gas import gas_pressure, piston, state
+
+    t, n = c.t, c.n
+    gas = s.input.gas
+    if not gas:
+        return
+    mech = s.sheet1.mechanism
+    i = s.force_position
+    kin = s.sheet1.cycle.kin.at(i)
+    c.p(t("The gas force on a piston is $P = p A$ along its cylinder, away from the cylinder head, on both strokes: "
+          "$p$ the gauge pressure of the indicator diagram against the piston's travel $s/H$ from the dead centre "
+          "nearest the head (the first row while the piston moves away from the head, the second while it comes back), "
+          "$A$ the piston's area. It drives the crank where the piston moves away from the head and resists where it "
+          "comes back."))
+    for gl in gas:
+        ln = mech.link(gl.link)
+        sym = fsym(c, f"P{ln.number}")
+        pst = piston(gl, mech)
+        c.table(f"dyn_gas_{ln.number}", t("Indicator diagram of the piston {p} (gauge pressure, MPa; area {a} m²)").format(
+            p=gl.link, a=n(gl.area, sig=4)), ["$s/H$"] + [n(x, sig=3) for x in gl.travel],
+            [[t("away from the head")] + [n(y, sig=4) for y in gl.pressure[0]],
+             [t("towards the head")] + [n(y, sig=4) for y in gl.pressure[1]]],
+            align=["left"] + ["center"] * len(gl.travel), widths=[2.2] + [0.9] * len(gl.travel))
+        x, row, _ = state(gl, pst, mech, kin)
+        p = float(gas_pressure(gl, pst, mech, kin)[0]) / 1.0e6
+        c.p(t("In position {label} the piston {p} is at $s/H$ = {x}, moving {way}: $p$ = {pr} MPa,").format(
+            label=_position(s).label, p=gl.link, x=n(float(x[0]), decimals=3), pr=n(p, sig=4),
+            way=t("away from the head") if int(row[0]) == 0 else t("towards the head")))
+        c.formula(c.calc(f"{sym} = p A", "{0} dot 10^6 dot {1}", [V(p, sig=6), V(gl.area, exact=True)],
+                         V(p * 1.0e6 * gl.area, sig=4), t("N")), numbered=False)
 
 
 # --- 2. the groups ----------------------------------------------------------------------------------
@@ -271,7 +309,26 @@ def _groups(c: Ctx, s) -> None:
                                                                         n3=n3)
         c.p(head + (t(" is solved first.") if first else t(" is solved next.")), indent=True)
         first = False
-        if g.kind in ("RRR", "RRP"):
+        if g.kind == "PRP":
+            (jb,) = g.joints
+            c.p(t("Unknown are the two guides' reactions ${a}$ and ${c}$, each across its guide, the slides' couples "
+                  "(each block's own moment about ${B}$: a block cannot turn on its guide) and the inner reaction ${b}$ "
+                  "of the pin ${B}$. The force polygon of the group gives the two guides' reactions, the polygon of "
+                  "block {n3} the pin's:").format(a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label),
+                                                  B=pt(jb), n3=n3))
+            c.formula(f"{fsym(c, ra.label)} + Σ F^(({n2})) + Σ F^(({n3})) + {fsym(c, rc.label)} = 0; quad "
+                      f"{fsym(c, rb.label)} = -({fsym(c, rc.label)} + Σ F^(({n3})))", numbered=False)
+        elif g.kind == "RPP":
+            ja, jy = g.joints
+            c.p(t("Unknown are the reaction ${a}$ of the pin ${A}$ on the block, the block's pressure ${b}$ on the yoke "
+                  "across its slot and the guide's reaction ${c}$ across the guide, with the slides' couples. The "
+                  "polygon of the yoke {n3} gives ${b}$ and ${c}$ (their directions are known), the polygon of the "
+                  "block {n2} gives ${a}$; the couples follow from the moments of the block about ${A}$ and of the "
+                  "yoke about ${Y}$:").format(a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label), A=pt(ja),
+                                              Y=pt(jy), n2=n2, n3=n3))
+            c.formula(f"{fsym(c, rb.label)} + Σ F^(({n3})) + {fsym(c, rc.label)} = 0; quad "
+                      f"{fsym(c, ra.label)} = {fsym(c, rb.label)} - Σ F^(({n2}))", numbered=False)
+        elif g.kind in ("RRR", "RRP"):
             ja, jb = g.joints[0], g.joints[1]
             l2 = abs(z[jb] - z[ja])
             m2 = known_moment(s, n2, z[jb], i)
@@ -531,7 +588,20 @@ def _reduction(c: Ctx, s) -> None:
     a_c = float(d.A_r[-1])
     if ld is not None and st is not None:
         area = float(table_integral(ld, 1.0))
-        if ld.kind == "force":
+        if ld.kind == "force" and ld.direction is not None:
+            from ...linkage.loads import _along
+
+            k = _along(ld, st)
+            c.p(t("The work of the resistances over a cycle: the weights do none (their centres come back), the useful "
+                  "resistance of its own direction does work by its part along the guide, $cos α$ of it ($α$ the "
+                  "angle between the force and the working motion), over the area $S_F$ under its diagram times the "
+                  "stroke $H$:"))
+            c.formula(c.calc('A_"с" = H S_F cos α', "{0} dot {1} dot ({2})", [V(st.length, sig=5), V(area, sig=6),
+                                                                             V(k, sig=6)], V(a_c, sig=5), t("J")),
+                      where=['A_"с"', ("H", t("the stroke of the output slider, m")),
+                             ("S_F", t("the area under the diagram of the useful resistance against the share of the "
+                                       "stroke, N"))])
+        elif ld.kind == "force":
             c.p(t("The work of the resistances over a cycle: the weights do none (their centres come back), the useful "
                   "resistance takes the area $S_F$ under its diagram times the stroke $H$:"))
             c.formula(c.calc('A_"с" = -H S_F', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)], V(a_c, sig=5),
@@ -547,6 +617,19 @@ def _reduction(c: Ctx, s) -> None:
                       where=['A_"с"', ("ψ", t("the swing of the output rocker, rad")),
                              ("S_M", t("the area under the diagram of the resistance moment against the share of the "
                                        "swing, N·m"))])
+    if s.input.gas:
+        from ...linkage.gas import _row_integral, piston
+
+        for gl in s.input.gas:
+            ln = s.sheet1.mechanism.link(gl.link)
+            h = piston(gl, s.sheet1.mechanism).stroke
+            s1, s2 = (float(_row_integral(gl.travel, row, 1.0)) for row in gl.pressure)
+            c.p(t("The gas force on the piston {p} does over a cycle the work of its indicator diagram: the area between "
+                  "its rows times the piston's area and stroke (positive where the expansion's row lies higher):")
+                .format(p=gl.link))
+            c.formula(c.calc(f'A_(P {ln.number}) = A H (S_1 - S_2) dot 10^6', "{0} dot {1} dot ({2} - {3}) dot 10^6",
+                             [V(gl.area, exact=True), V(h, sig=6), V(s1, sig=6), V(s2, sig=6)],
+                             V(gl.area * h * (s1 - s2) * 1.0e6, sig=5), t("J")), numbered=False)
     c.p(t("Over a steady cycle the driving work equals the resistance work, so the constant driving moment of the "
           "motor reduced to the crank is"))
     m = abs(d.M_d)

@@ -7,7 +7,7 @@ import math
 
 from ..terminal.variants import law_words
 from .ctx import Ctx, sheet1_of
-from .model import Abstract, Contents, Heading, ListBlock, ReferenceList, TaskSheet, TitlePage
+from .model import Abstract, Contents, Heading, ListBlock, ReferenceList, TaskSheet, TitlePage, literal
 
 from .sources import source_text
 
@@ -76,8 +76,8 @@ def _task(c: Ctx, title) -> None:
     s1 = _sheet1(c)
     torque = ("; " + t("mean reduced moment M = {torque}").format(torque=c.qty(g.torque_nm, t("N·m")))
               if g.torque_nm is not None and s1 is None else "")  # with a mechanism, M is a result of sheet 2
-    who = title.student or "_" * 24
-    group = title.group or "_" * 10
+    who = literal(title.student) if title.student else "_" * 24  # a person's text: set as typed
+    group = literal(title.group) if title.group else "_" * 10
     lines = [
         t("Student: {who}, group {group}.").format(who=who, group=group),
         (t("Topic: analysis of the lever mechanism, synthesis of the cam mechanism and of the gear drive, variant "
@@ -260,7 +260,7 @@ def _mechanism_line(c: Ctx, s1) -> str:
     groups = ", ".join(f"{pattern(g.kind, c.lang)} ({'–'.join(g.joints)})" for g in m.groups)
     return c.t("Lever mechanism: «{name}»; the crank {crank} of length {length} turns {sense} at {rpm}; the groups "
                "{groups}; {count} positions per turn.").format(
-        name=m.name or c.t("Mechanism"), crank=m.links[0].name, length=c.qty(cr.length * 1000, c.t("mm")),
+        name=literal(m.name) if m.name else c.t("Mechanism"), crank=m.links[0].name, length=c.qty(cr.length * 1000, c.t("mm")),
         sense=sense, rpm=c.qty(cr.rpm, c.t("rpm"), sig=6), groups=groups, count=m.positions)
 
 

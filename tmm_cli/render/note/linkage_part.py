@@ -20,7 +20,8 @@ from ...linkage.scales import PLAN_MM, SCHEME_MM
 from ...linkage.roles import link_roles
 from ..terminal.mechanism import ROLE_WORDS, pattern
 from .ctx import Ctx, V, sheet1_of
-from .model import Heading
+from .model import Heading, literal
+from .synthesis_part import synthesis_section
 
 _PAIR = {"R": N_("revolute"), "P": N_("prismatic")}
 _NAME = re.compile(r"[^\W\d_]\d*['′]*")
@@ -31,6 +32,7 @@ def linkage_chapter(c: Ctx) -> None:
     if s is None:
         return
     c.doc.add(Heading(1, c.t("Structural and kinematic analysis of the lever mechanism"), "chapter", "linkage"))
+    synthesis_section(c, s)  # «Синтез механизма» when the file records its task (tmm synth, issue 33)
     _structure(c, s)
     _positions(c, s)
     if s.plans:
@@ -129,7 +131,7 @@ def _structure(c: Ctx, s) -> None:
     t, n = c.t, c.n
     m, st = s.mechanism, s.structure
     c.doc.add(Heading(2, t("Structure of the mechanism")))
-    name = m.name or t("Mechanism")
+    name = literal(m.name) if m.name else t("Mechanism")  # a person's text: set as typed
     c.p(t("The mechanism «{name}» consists of the frame 0 and {count} moving links: {links}. The links and the "
           "kinematic pairs are given in Tables {{tab:linkage_links}} and {{tab:linkage_groups}}.").format(
         name=name, count=st.n, links=_link_words(c, s)))
@@ -433,7 +435,7 @@ def _omega_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l
     if P.tiny(P.w[link]):
         return f"ω_{num} = 0"
     return c.calc(f"ω_{num} = {P.sym.mag(vec.symbol)}/{l_sym}", "{0}/{1}",
-                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=5)], V(abs(P.w[link]), sig=5), c.t("rad/s"))
+                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=9 if exact else 5)], V(abs(P.w[link]), sig=5), c.t("rad/s"))
 
 
 def _eps_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l_sym: str) -> str:
@@ -441,7 +443,7 @@ def _eps_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l_s
     if P.tiny(P.e[link], P.pl.acceleration):
         return f"ε_{num} = 0"
     return c.calc(f"ε_{num} = {P.sym.mag(vec.symbol)}/{l_sym}", "{0}/{1}",
-                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=5)], V(abs(P.e[link]), sig=5), c.t("rad/s²"))
+                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=9 if exact else 5)], V(abs(P.e[link]), sig=5), c.t("rad/s²"))
 
 
 def _group_velocity(c: Ctx, P: _Plans, g) -> None:
@@ -457,6 +459,9 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
         zero.insert(0, f"arrow(v){sub(g.joints[0] + str(n2))} = arrow(v){sub(g.joints[0])}")
     c.formula(*(_eq(P, vp, g.index) + zero))
     lines = []
+    if g.kind in ("PRP", "RPP"):
+        _sliding_group(c, P, g, vp, ms, "μ_v")
+        return
     if g.kind == "RRR":
         ja, jb, jc = g.joints
         v1, v2 = P.vel[f"v_{jb}{ja}"], P.vel[f"v_{jb}{jc}"]
@@ -503,6 +508,57 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
     c.formula(*lines)
 
 
+def _sliding_group(c: Ctx, P: _Plans, g, plan, unit: str, mu: str) -> None:
+    """The plan of a PRP or an RPP group (kinds 4, 5): its blocks only slide, so the plan gives the
+    relative velocities (accelerations) along the guides and slots; the Coriolis accelerations, where a
+    guide or the yoke turns, are known beforehand, 2·ω·v_rel. The blocks turn with their guides' links."""
+    t = c.t
+    n2, n3 = g.numbers
+    symbols = [x for eq in plan.equations if eq.group == g.index for side in eq.sides for x in side]
+    symbols += [eq.lhs for eq in plan.equations if eq.group == g.index]
+    vecs = [v for v in plan.vectors if v.symbol in dict.fromkeys(symbols)]
+    known, lines = [], []
+    turning = {}  # the Coriolis vectors' symbols → the link whose ω makes them
+    if g.kind == "PRP":
+        (jb,) = g.joints
+        for gd in g.guides:
+            if gd.moving:
+                turning[f"a^k_{jb}{jb}{P.m.link(gd.link).number}"] = gd.link
+    else:
+        ja = g.joints[0]
+        p3 = f"{ja}{n3}"
+        turning[f"a^k_{p3}{ja}{n2}"] = g.links[1]
+        if g.guide.moving:
+            turning[f"a^k_{p3}{p3}{P.m.link(g.guide.link).number}"] = g.guide.link
+    for v in dict((v.symbol, v) for v in vecs).values():
+        if v.symbol in turning:
+            rel = P.vel["v_" + v.symbol[4:]]
+            num = P.m.link(turning[v.symbol]).number
+            w = abs(P.w[P.m.links[num - 1].name])
+            known.append(c.calc(f"{P.sym.mag(v.symbol)} = 2 ω_{num} {P.sym.mag(rel.symbol)}", "2 dot {0} dot {1}",
+                                [V(w, sig=5), V(0.0 if P.tiny(rel.magnitude, P.pl.velocity) else rel.magnitude, sig=4)],
+                                V(0.0 if P.tiny(v.magnitude, plan) else v.magnitude, sig=4), unit))
+            known.append(P.drawn(plan, v))
+        elif v.start == "p" and v.known or v.start == "π" and v.known:
+            continue  # a guide's point found by similarity
+        else:
+            lines.append(P.measured(plan, v, unit, mu))
+    if known:
+        c.p(t("The blocks slide along turning guides, so their accelerations relative to them have Coriolis "
+              "components (the relative velocity turned by 90° in the sense of the guide's ω). The known components "
+              "and their segments on the plan:"))
+        c.formula(*known)
+    if plan.kind == "velocity":
+        same = [f"{q}_{n} = {q}_{P.m.link(gd.link).number}" if gd.moving else f"{q}_{n} = 0"
+                for q in ("ω",) for n, gd in zip((n2, n3), g.guides or (g.guide, g.guide))]
+        c.p(t("The blocks of the group only slide: each turns with the link of its guide."))
+    else:
+        same = [f"{q}_{n} = {q}_{P.m.link(gd.link).number}" if gd.moving else f"{q}_{n} = 0"
+                for q in ("ε",) for n, gd in zip((n2, n3), g.guides or (g.guide, g.guide))]
+        c.p(t("From the plan:"))
+    c.formula(*(lines + same))
+
+
 def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
     t = c.t
     ms2 = t("m/s²")
@@ -515,6 +571,9 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
     if g.kind == "RPR":
         zero.insert(0, f"arrow(a){sub(g.joints[0] + str(n2))} = arrow(a){sub(g.joints[0])}")
     c.formula(*(_eq(P, ap, g.index) + zero))
+    if g.kind in ("PRP", "RPP"):
+        _sliding_group(c, P, g, ap, ms2, "μ_a")
+        return
     known, lines = [], []
     rad = "ω"
     if g.kind in ("RRR", "RRP"):
@@ -588,7 +647,8 @@ def _vector_table(c: Ctx, P: _Plans) -> None:
         for v in plan.vectors:
             if v.magnitude / plan.scale < 0.05 and not v.relation:
                 continue
-            line = t("guide") if v.line == "guide" else " ".join(_split_points(v.line, P.sym.names))
+            line = (t("guide") if v.line == "guide" else t("slot") if v.line == "slot" else
+                    " ".join(_split_points(v.line, P.sym.names)))
             rows.append([f"${P.sym.vec(v.symbol)}$", f"${label_math(v.start)} {label_math(v.end)}$",
                          f"{v.relation} {line}".strip() or "—", c.n(v.magnitude / plan.scale, decimals=1),
                          c.n(v.magnitude, sig=4) + "\u00a0" + unit])

@@ -159,11 +159,15 @@ def link_segments(mech, kin, i: int, names=None, unit: float = 1.0, reach: dict 
                 out.append(("line", foot, foot + (r + 4.0 * unit) * d, ln))
             else:
                 out.append(("line", z[cpin], z[cpin] + (r + 4.0 * unit) * d, ln))
-        elif ln.kind in ("block", "slider"):
-            guide = mech.groups[ln.group - 1].guide
-            angle = float(kin.angle[ln.name][i]) if ln.kind == "block" or guide.moving else guide.angle
-            w, h = (7.0, 4.0) if ln.kind == "block" else (10.0, 5.0)
-            out.append(("box", z[ln.name], angle, w, h, ln))
+        elif ln.kind == "block":
+            out.append(("box", z[ln.name], float(kin.angle[ln.name][i]), 7.0, 4.0, ln))
+        elif ln.kind == "slider":
+            from ...linkage.chain import slider_pose
+
+            centre, angle, segs = slider_pose(mech, kin, ln.name, i)
+            for p0, p1 in segs:
+                out.append(("line", p0 * MM, p1 * MM, ln))
+            out.append(("box", centre * MM, angle, 10.0, 5.0, ln))
     return out
 
 

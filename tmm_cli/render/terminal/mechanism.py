@@ -7,6 +7,7 @@ import math
 
 import numpy as np
 
+from . import escape
 from ...linkage.positions import output_coordinate
 from ...linkage.sheet1 import Sheet1
 from ...i18n import N_, tr
@@ -66,7 +67,7 @@ def role_words(s: Sheet1, lang: str) -> dict[str, str]:
 def links_table(s: Sheet1, lang: str):
     m = s.mechanism
     kinds = role_words(s, lang)
-    t = _table(tr(lang, "{name}: links").format(name=m.name or tr(lang, "Mechanism")),
+    t = _table(tr(lang, "{name}: links").format(name=escape(m.name) if m.name else tr(lang, "Mechanism")),
                ("№", "right"), (tr(lang, "Link"), "left"), (tr(lang, "Kind"), "left"),
                (tr(lang, "Size"), "right"))
     t.add_row("0", tr(lang, "frame"), ", ".join(m.frame), "")
@@ -170,7 +171,7 @@ def plans_table(s: Sheet1, lang: str, which: int = 0):
         mu = "μ_v" if plan.kind == "velocity" else "μ_a"
         t.add_row(f"[bold]{mu} = {num(plan.scale, lang, sig=3)} {su}[/]", "", "", "", "")
         for v in plan.vectors:
-            line = tr(lang, "guide") if v.line == "guide" else v.line
+            line = tr(lang, "guide") if v.line == "guide" else tr(lang, "slot") if v.line == "slot" else v.line
             t.add_row(v.symbol, v.start + v.end, f"{v.relation} {line}".strip(),
                       num(v.magnitude / plan.scale, lang, decimals=1), num(v.magnitude, lang, sig=4) + " " + unit)
     return t
