@@ -25,7 +25,7 @@ from tmm_cli.cli import cli
 from tmm_cli.i18n.lang import name_script_notes
 from tmm_cli.project import analyse_linkage, run_project
 from tmm_cli.render.note import build_note
-from tmm_cli.render.note.model import Abstract, Heading, ListBlock, Paragraph
+from tmm_cli.render.note.model import Abstract, Heading, ListBlock, Paragraph, plain
 from tmm_cli.variants import get_variant
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
@@ -84,7 +84,7 @@ def conclusion_text(doc) -> str:
             out.append(b.text)
         elif inside and isinstance(b, ListBlock):
             out.extend(b.items)
-    return "\n".join(out)
+    return plain("\n".join(out))
 
 
 @pytest.mark.parametrize("name", WITH_SHEET2)
@@ -94,7 +94,7 @@ def test_the_abstract_tells_sheets_1_and_2(name, exported):
     words = [w.upper() for w in a.keywords]
     assert {"КИНЕТОСТАТИКА", "РЫЧАГ ЖУКОВСКОГО", "МАХОВИК", "РЫЧАЖНЫЙ МЕХАНИЗМ"} <= set(words), words
     assert 5 <= len(words) <= 15, len(words)  # ГОСТ 7.32-2017 §5.4: from five to fifteen key words
-    text = "\n".join(a.text)
+    text = plain("\n".join(a.text))
     data = exported[name]
     assert "рычажный механизм «" + data.get("name", r.linkage.sheet1.mechanism.name) in text
     assert "маховик" in text
