@@ -78,7 +78,7 @@ def _zone_room_fit(r, width: float, height: float):
 
 
 ZONE_HEAD = 16.0 + 8.0  # heading and its scale
-ZONE_CAPS = 2.5 + LINE * 3 + 2.0
+ZONE_CAPS = 2.5 + LINE * 4 + 2.0  # four caption lines: the data, the hatching, the book's lines, O_b
 ZONE_MARGIN = (12.0, 10.0, 12.0, 8.0)
 
 
@@ -407,6 +407,9 @@ def _zone_field(sh: Sheet, r, lang: str, box):
         tr(lang, "Hatched: the centres with ν ≤ ν_{max} at every position (the wedges at D_{i})"),
         tr(lang, "O_b — the book's vertex: r_0 = {v} mm").format(v=_n(z.book_r0_m * k, lang, 2)),
     ]
+    if zn.lines:  # the letters on the drawing said (a norm-controller marks a letter never defined)
+        txt.insert(2, tr(lang, "{names} — the textbook's bounding lines of the zone, at ν_{{max}} to the follower "
+                               "(§1.3); their meeting point is O_b").format(names=", ".join(L.name for L in zn.lines)))
     if not fit.fits:
         txt[-1] += tr(lang, " (the construction is cut at the field's edge)")
     sh.caption(box[0], box[2], box[1] + 2.5, txt, H_NOTE, LINE)
