@@ -607,3 +607,17 @@ def test_sheet4_draws_the_reducer_with_a_chosen_module(number):
     z_max = max(max(s.z_ring, s.z_sun + 2 * s.z_planet) for s in d.stages)
     box = field_boxes(sh.doc)["scheme"]
     assert z_max * mod * a / b <= box[3] - box[1]  # the reducer's largest diameter, drawn, fits the field's height
+
+
+@pytest.mark.parametrize("name", WITH_SHEET2)
+def test_the_crank_speed_of_the_analysis_and_of_the_drive_are_both_said(name):
+    """v8 of the issue: the reducer turns the crank at 97,1 об/мин while sheets 1–2 use the file's speed —
+    the assumptions say which is which whenever the two differ."""
+    r, doc = case(name)
+    g = r.gears
+    items = [plain(i) for b in doc.blocks if isinstance(b, ListBlock) for i in b.items]
+    said = [i for i in items if "листы 1 и 2" in i and "привод вращает кривошип" in i]
+    if abs(g.crank_rpm_actual - r.linkage.sheet1.mechanism.crank.rpm) > 1e-9:
+        assert said and ru(g.crank_rpm_actual, 1) in said[0], items
+    else:
+        assert not said
