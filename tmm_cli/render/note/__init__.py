@@ -182,8 +182,12 @@ def finish_note(folder: Path, doc, title, pdf: bool = True, docx: bool = False) 
             compile_note(folder)
         if docx:
             from .docx import write_docx
+            from .typeset import page_numbers
 
-            write_docx(doc, folder / DOCX_FILE, folder, title or TitleFields())
+            # the contents' page numbers and the page count as typst lays the note out (when note.typ
+            # is here: the PDF is written too), the DOCX's fields' results before any update
+            pages = page_numbers(folder) if (folder / "note.typ").is_file() else None
+            write_docx(doc, folder / DOCX_FILE, folder, title or TitleFields(), pages=pages)
     except BaseException:
         _remove_note(folder)
         raise
