@@ -42,6 +42,32 @@ def test_the_catalogue_is_current_and_complete(capsys):
     assert status == 0, capsys.readouterr().out
 
 
+def test_the_extraction_reads_calls_not_names():
+    """What Babel 2.19's tokenizer got wrong (issue 35) is no message here: a dict named `t` indexed
+    by a string, a local function `t` given a number, two docstrings one after the other; while a
+    method call `c.t("…")`, a context and a plural are."""
+    source = (
+        'def f(t, c, lang, n):\n'
+        '    """First docstring."""\n'
+        '    x = t["link"] + t["joint"]\n'
+        '    y = t(1)\n'
+        '    return c.t("Stroke {h}").format(h=1), trc(lang, "column, short", "Scheme"), ntr(lang, "{n} tooth", "{n} teeth", n)\n'
+        'def g():\n'
+        '    """Second docstring."""\n'
+        '    return N_("rise")\n')
+    assert [(m, c) for _, m, c in build.calls_in(source)] == [
+        ("Stroke {h}", None), ("Scheme", "column, short"), (("{n} tooth", "{n} teeth"), None), ("rise", None)]
+
+
+def test_the_catalogue_holds_no_name_babel_219_mistook_for_a_message():
+    from babel.messages.pofile import read_po
+
+    with open(build.po_path("ru"), "rb") as f:
+        ids = {m.id for m in read_po(f) if m.id}
+    assert not ids & {"link", "joint", "omega", "start_deg", "1"}
+    assert not [i for i in ids if isinstance(i, str) and ("Split markup into" in i or "The synthesis result" in i)]
+
+
 def test_the_catalogue_translates():
     assert tr("ru", "Value") == "Значение" and tr("en", "Value") == "Value"
     assert trc("ru", "column, short", "Scheme") == "№ сх." and tr("ru", "Scheme") == "Схема"

@@ -3,14 +3,23 @@
     python tools/catalog.py            # extract the msgids, merge them into tmm.po, compile tmm.mo
     python tools/catalog.py --check    # exit 1 if tmm.po or tmm.mo is not current or incomplete
 
-The msgids come from the code (Babel's Python extractor: ``tr(lang, MSGID)``, ``trc(lang, CTX,
-MSGID)``, ``ntr(lang, SINGULAR, PLURAL, n)``, ``N_(MSGID)``; the note's ``t``, ``tc``, ``nt``) and from the command line itself (every command's help and every option's help, read from the
-click tree). A translator edits only ``tmm.po``; new msgids arrive in it untranslated and the check
-(run by the tests) names them.
+The msgids come from the code (``tr(lang, MSGID)``, ``trc(lang, CTX, MSGID)``, ``ntr(lang,
+SINGULAR, PLURAL, n)``, ``N_(MSGID)``; the note's ``t``, ``tc``, ``nt``) and from the command line
+itself (every command's help and every option's help, read from the click tree). A translator edits
+only ``tmm.po``; new msgids arrive in it untranslated and the check (run by the tests) names them.
+
+The code's msgids are read by our own walk over Python's syntax tree (``calls_in``), not by Babel's
+extractor: Babel's is a tokenizer that guesses calls, and its guesses change between releases (2.19
+took the subscript ``t["link"]`` for a call of ``t`` and glued two docstrings into one msgid), so
+the same code gave two catalogues. The syntax tree says exactly which calls there are, on every
+Python and every Babel. Babel still reads, merges, writes and compiles the catalogue. The .po is
+written sorted by msgid with file-only locations, so a change of code moves no other message (and
+two branches that add messages rarely touch the same lines).
 """
 
 from __future__ import annotations
 
+import ast
 import io
 import sys
 from pathlib import Path
@@ -38,17 +47,57 @@ def mo_path(lang: str) -> Path:
     return po_path(lang).with_suffix(".mo")
 
 
+def _literal(node) -> str | None:
+    """The text of a string literal (implicit concatenation included; an f-string only when it has no
+    substitution, as gettext would see it), else None."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return node.value
+    if isinstance(node, ast.JoinedStr) and all(isinstance(v, ast.Constant) for v in node.values):
+        return "".join(v.value for v in node.values)
+    return None
+
+
+def calls_in(source: str):
+    r"""(line, message, context) of every translation call in a module's source: a call — a name or
+    an attribute (``c.t``) — named as a key of KEYWORDS, whose message arguments are string literals.
+    A subscript (``t["link"]``), a call with a variable for its msgid, a docstring are not messages.
+
+    >>> src = 'tr(lang, "Value")\nt["link"]\nc.t("Stroke")\ntrc(lang, "column", "Scheme")\n'
+    >>> src += 'ntr(lang, "{n} tooth", "{n} teeth", n)\ntr(lang, name)\n"a docstring"\nt(1)\n'
+    >>> list(calls_in(src))
+    [(1, 'Value', None), (3, 'Stroke', None), (4, 'Scheme', 'column'), (5, ('{n} tooth', '{n} teeth'), None)]
+    """
+    found = []
+    for node in ast.walk(ast.parse(source)):
+        if not isinstance(node, ast.Call):
+            continue
+        func = node.func
+        name = func.id if isinstance(func, ast.Name) else func.attr if isinstance(func, ast.Attribute) else None
+        if name not in KEYWORDS:
+            continue
+        context, messages = None, []
+        for spec in KEYWORDS[name] or (1,):
+            position, is_context = (spec[0], True) if isinstance(spec, tuple) else (spec, False)
+            text = _literal(node.args[position - 1]) if len(node.args) >= position else None
+            if is_context:
+                context = text if text is not None else False
+            else:
+                messages.append(text)
+        if context is False or not messages or any(m is None for m in messages) or not messages[0]:
+            continue
+        found.append((node.lineno, node.col_offset, messages[0] if len(messages) == 1 else tuple(messages), context))
+    return [(line, message, context) for line, _, message, context in sorted(found, key=lambda f: f[:2])]
+
+
 def extracted():
     """The template catalogue: every msgid the code and the command line use, with their places."""
     from babel.messages.catalog import Catalog
-    from babel.messages.extract import extract_from_dir
 
     template = Catalog(domain=DOMAIN)
-    for filename, lineno, message, comments, context in extract_from_dir(
-            str(PACKAGE), method_map=[("**.py", "python")], keywords=KEYWORDS, comment_tags=("TRANSLATORS:",),
-            strip_comment_tags=True):
-        if message and (message[0] if isinstance(message, tuple) else message):
-            template.add(message, locations=[(f"tmm_cli/{filename}", lineno)], auto_comments=comments, context=context)
+    for path in sorted(PACKAGE.rglob("*.py")):
+        where = f"tmm_cli/{path.relative_to(PACKAGE).as_posix()}"
+        for line, message, context in calls_in(path.read_text(encoding="utf-8")):
+            template.add(message, locations=[(where, line)], context=context)
     for msgid, where in click_texts():
         template.add(msgid, locations=[(where, 0)])
     return template
@@ -103,7 +152,8 @@ def po_bytes(catalog) -> bytes:
     from babel.messages.pofile import write_po
 
     buf = io.BytesIO()
-    write_po(buf, catalog, width=100, omit_header=False, sort_output=False, include_previous=False)
+    write_po(buf, catalog, width=100, omit_header=False, sort_output=True, include_previous=False,
+             include_lineno=False)
     return buf.getvalue()
 
 
