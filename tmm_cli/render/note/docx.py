@@ -387,7 +387,8 @@ class DocxWriter:
                 if b.outlined:
                     out.append((1, b.text.upper()))
             elif b.kind == "appendix":
-                out.append((1, f"{tr(self.doc.lang, 'Appendix').upper()} {b.number}"))
+                word = tr(self.doc.lang, "Appendix").upper()
+                out.append((1, word + " " + b.number))
             elif b.level <= 2:
                 out.append((b.level, f"{b.number} {b.text}"))
         return out
