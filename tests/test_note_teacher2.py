@@ -94,7 +94,9 @@ def test_the_abstract_tells_sheets_1_and_2(name, exported):
     words = [w.upper() for w in a.keywords]
     assert {"КИНЕТОСТАТИКА", "РЫЧАГ ЖУКОВСКОГО", "МАХОВИК", "РЫЧАЖНЫЙ МЕХАНИЗМ"} <= set(words), words
     assert 5 <= len(words) <= 15, len(words)  # ГОСТ 7.32-2017 §5.4: from five to fifteen key words
-    text = plain("\n".join(a.text))
+    from tmm_cli.render.note.model import text_runs
+
+    text = "".join(t for _, t in text_runs("\n".join(a.text)))  # the mechanism's name as the reader sees it
     data = exported[name]
     assert "рычажный механизм «" + data.get("name", r.linkage.sheet1.mechanism.name) in text
     assert "маховик" in text
@@ -541,7 +543,7 @@ def test_every_force_of_a_polygons_equation_is_named_on_sheet2(name):
         assert len(pg.vectors) >= 3, pg.group  # the applied forces and the reactions, not one line
         short = [v for v in pg.vectors if v.kind != "unknown" and abs(v.value) / pg.scale < SHORT_MM]
         if short:
-            assert "не подписанные на плане" in text
+            assert "не подписаны" in text
         for v in short + [v for v in pg.vectors if v.kind == "unknown"]:
             assert f"= {num(abs(v.value), 'ru', decimals=1)}" in text, (pg.group, v.symbol)
 
@@ -550,23 +552,18 @@ def test_every_force_of_a_polygons_equation_is_named_on_sheet2(name):
 def test_sheet3s_centre_stands_on_the_hatched_zone(number):
     """The chosen centre O is a corner of the feasible zone; a hatch line runs from it into the zone
     (the hatching used to begin up to 2,4 mm from O, which looked outside it), on every variant's
-    own zone polygon."""
-    from tmm_cli.render.sheets.cam_sheet import _hatch
+    own zone polygon cut to a window round O as the sheet cuts it."""
+    from tmm_cli.render.sheets.cam_sheet import _clip_half, _hatch_direction, hatch_chords
 
     r, _ = variant_doc(number)
     z = r.cam.sizing
     poly = np.asarray(z.zone.polygon, float) * 1000.0
     O = np.asarray(z.centre, float) * 1000.0
-    lines = []
-
-    class Field:  # the drawing field _hatch draws in (real mm = drawing units), a window round O as on the sheet
-        origin, scale = np.zeros(2), 1.0
-        cut = (O[0] - 60.0, O[1] - 60.0, O[0] + 60.0, O[1] + 60.0)
-
-        def line(self, a, b, layer):
-            lines.append((np.asarray(a, float), np.asarray(b, float)))
-
-    _hatch(Field(), poly, spacing=3.0, through=O)
+    for a, c in (((-1.0, 0.0), -(O[0] - 60.0)), ((1.0, 0.0), O[0] + 60.0), ((0.0, -1.0), -(O[1] - 60.0)),
+                 ((0.0, 1.0), O[1] + 60.0)):
+        poly = _clip_half(poly, np.array(a), c)
+    d = _hatch_direction(poly, O, np.array([1.0, 1.0]) / np.sqrt(2.0))
+    lines = hatch_chords(poly, d, 3.0, float(O @ np.array([-d[1], d[0]])))
     assert lines
 
     def dist(p, a, b):
@@ -574,12 +571,32 @@ def test_sheet3s_centre_stands_on_the_hatched_zone(number):
         return float(np.hypot(*(a + t * (b - a) - p)))
 
     assert min(dist(O, a, b) for a, b in lines) < 0.05, number
-    # and the hatching stays inside the zone (every line's midpoint)
     from matplotlib.path import Path as MPath
 
-    zone = MPath(poly)  # the whole zone contains the window's part
+    zone = MPath(poly)
     assert all(zone.contains_point((a + b) / 2, radius=1e-6) or zone.contains_point((a + b) / 2, radius=-1e-6)
                for a, b in lines)
+
+
+def test_sheet3s_hatch_is_one_hatch_entity_from_o():
+    """The hatching stays one HATCH entity a CAD user can edit (i31), its pattern's base point O."""
+    from tmm_cli.inputs.titleblock import TitleFields
+    from tmm_cli.render.sheets import sheet3
+
+    r, _ = variant_doc(8)
+    sh = sheet3(r.cam, "ru", TitleFields())
+    hatches = [e for e in sh.doc.modelspace() if e.dxftype() == "HATCH" and e.dxf.pattern_name == "TMM_ZONE"]
+    assert len(hatches) == 1
+    line = hatches[0].pattern.lines[0]
+    field = {}
+    for e in sh.doc.modelspace():
+        if e.has_xdata("TMM_FIELD"):
+            tags = [t.value for t in e.get_xdata("TMM_FIELD")]
+            field[tags[0]] = tags
+    tags = next(v for k, v in field.items() if "zone" in k)
+    ox, oy, scale = float(tags[5]), float(tags[6]), float(tags[7])
+    O = np.asarray(r.cam.sizing.centre, float) * 1000.0
+    assert np.hypot(line.base_point[0] - (ox + scale * O[0]), line.base_point[1] - (oy + scale * O[1])) < 1e-6
 
 
 @pytest.mark.parametrize("number", ALL_VARIANTS[::3])

@@ -434,11 +434,15 @@ def _field_scale_text(sh, f, lang, lab):
 
 
 def _hatch(f, poly, spacing, through=None):
-    """45° thin hatch lines across a convex polygon (drawing units), clipped by the field; with
-    `through` (a point of the polygon, the chosen centre O at its corner), the lines run at 45° or
-    135°, whichever enters the polygon from that point (else along the corner's bisector: ГОСТ 2.306
-    turns the hatching when 45° does not suit), and one of them passes through it."""
-    # only the part inside the field's window (drawing units): a few dozen lines, not thousands
+    """The zone hatched at 45° in thin lines `spacing` (drawing units) apart, cut to the field's
+    window: one HATCH entity of the standard pattern ANSI31 (a CAD user can edit or re-scale it;
+    LINEs before) at the pattern scale that gives the drawn spacing, its boundary the cut polygon.
+    The lines it draws go into the sheet's index of lines, so labels keep clear of them.
+
+    With `through` (the chosen centre O, a corner of the zone) the lines run at 45° or 135°, whichever
+    enters the zone from O (else along the corner's bisector: ГОСТ 2.306 turns the hatching when 45°
+    does not suit), and one of them starts at O: the pattern's own definition, its base point O (the
+    hatching used to begin up to 2,4 mm from O, which looked outside the zone)."""
     x0, y0, x1, y1 = f.cut
     lo = (np.array([x0, y0]) - f.origin) / f.scale
     hi = (np.array([x1, y1]) - f.origin) / f.scale
@@ -446,46 +450,70 @@ def _hatch(f, poly, spacing, through=None):
         poly = _clip_half(poly, np.array(a), c)
         if len(poly) < 3:
             return
+    sh = f.sheet
+    pts = [(float(x), float(y)) for x, y in f.to_sheet(poly)]
+    step = spacing * f.scale  # [sheet mm]
+    hatch = sh.msp.add_hatch(color=256, dxfattribs={"layer": "Тонкие"})
+    hatch.paths.add_polyline_path(pts, is_closed=True)
     d = np.array([1.0, 1.0]) / math.sqrt(2)
+    q = np.asarray(pts)
     start = None
     if through is not None:
-        p = np.asarray(through, float)
-        centroid = poly.mean(axis=0)
-        # the third choice, for a wedge narrower than the 45° lines: its bisector at the corner nearest p
-        j = int(np.argmin(np.hypot(*(poly - p).T)))
-        e1, e2 = poly[j - 1] - poly[j], poly[(j + 1) % len(poly)] - poly[j]
-        bis = e1 / max(np.hypot(*e1), 1e-300) + e2 / max(np.hypot(*e2), 1e-300)
-        bis = bis / max(float(np.hypot(*bis)), 1e-300)
-        for cand in (d, np.array([-1.0, 1.0]) / math.sqrt(2), bis):
-            # the line through p along cand enters the polygon: a short step either way lands inside
-            step = 1e-3 * float(np.ptp(poly, axis=0).max())
-            if any(_inside(poly, p + sgn * step * cand + 1e-9 * (centroid - p)) for sgn in (1.0, -1.0)):
-                d = cand
-                break
+        p = np.asarray(f.to_sheet(np.asarray([through], float))[0], float)
+        d = _hatch_direction(q, p, d)
         start = float(p @ np.array([-d[1], d[0]]))
+        angle = math.degrees(math.atan2(d[1], d[0]))
+        off = step * np.array([-d[1], d[0]])
+        hatch.set_pattern_fill("TMM_ZONE", scale=1.0, definition=[
+            [angle, (float(p[0]), float(p[1])), (float(off[0]), float(off[1])), []]])
+    else:
+        hatch.set_pattern_fill("ANSI31", scale=step / ANSI31_SPACING)
+    # the pattern's lines, for the index of what is drawn (labels avoid them)
+    for a_, b_ in hatch_chords(q, d, step, start):
+        sh.obstacles.add_polyline(np.array([a_, b_]))
+
+
+def _hatch_direction(q: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """45°, 135° or the bisector of the corner of polygon `q` nearest `p`: the first whose line
+    through p enters the polygon."""
+    centroid = q.mean(axis=0)
+    j = int(np.argmin(np.hypot(*(q - p).T)))
+    e1, e2 = q[j - 1] - q[j], q[(j + 1) % len(q)] - q[j]
+    bis = e1 / max(float(np.hypot(*e1)), 1e-300) + e2 / max(float(np.hypot(*e2)), 1e-300)
+    bis = bis / max(float(np.hypot(*bis)), 1e-300)
+    h = 1e-3 * float(np.ptp(q, axis=0).max())
+    for cand in (d, np.array([-1.0, 1.0]) / math.sqrt(2), bis):
+        if any(_inside(q, p + sgn * h * cand + 1e-9 * (centroid - p)) for sgn in (1.0, -1.0)):
+            return cand
+    return d
+
+
+def hatch_chords(q: np.ndarray, d: np.ndarray, step: float, start: float | None = None):
+    """The chords of polygon `q` cut by the lines along `d`, `step` apart: from half a step in, or
+    through the offset `start` (a line through a corner counts)."""
     n = np.array([-d[1], d[0]])
-    proj = poly @ n
+    proj = q @ n
     if start is None:
-        offsets = np.arange(proj.min() + spacing / 2, proj.max(), spacing)
-    else:  # the line through the point and every `spacing` either side of it
-        k0 = math.floor((proj.min() - start) / spacing)
-        offsets = start + spacing * np.arange(k0, math.ceil((proj.max() - start) / spacing) + 1)
+        offsets = np.arange(proj.min() + step / 2, proj.max(), step)
+    else:
+        k0 = math.floor((proj.min() - start) / step)
+        offsets = start + step * np.arange(k0, math.ceil((proj.max() - start) / step) + 1)
         offsets = offsets[(offsets >= proj.min() - 1e-12) & (offsets <= proj.max() + 1e-12)]
+    tol = 1e-6 * float(np.ptp(q, axis=0).max())
+    out = []
     for c in offsets:
-        # intersect the line {x: x·n = c} with the polygon's edges
         hits = []
-        tol = 1e-6 * float(np.ptp(poly, axis=0).max())
-        for a, b in zip(poly, np.roll(poly, -1, axis=0)):
+        for a, b in zip(q, np.roll(q, -1, axis=0)):
             pa, pb = a @ n - c, b @ n - c
             if abs(pa) <= tol:
-                hits.append(a)  # through a corner (the line through O)
+                hits.append(a)
             elif pa * pb < 0 and abs(pb) > tol:
-                t = pa / (pa - pb)
-                hits.append(a + t * (b - a))
+                hits.append(a + pa / (pa - pb) * (b - a))
         if len(hits) >= 2:
             hits = sorted(hits, key=lambda h: h @ d)
             if float(np.hypot(*(hits[-1] - hits[0]))) > tol:
-                f.line(hits[0], hits[-1], "Тонкие")
+                out.append((hits[0], hits[-1]))
+    return out
 
 
 def _inside(poly: np.ndarray, q: np.ndarray) -> bool:
@@ -494,6 +522,9 @@ def _inside(poly: np.ndarray, q: np.ndarray) -> bool:
     w = q - poly
     cr = e[:, 0] * w[:, 1] - e[:, 1] * w[:, 0]
     return bool(np.all(cr >= -1e-12) or np.all(cr <= 1e-12))
+
+
+ANSI31_SPACING = 3.175  # mm between the lines of ANSI31 at pattern scale 1 (1/8")
 
 
 def _clip_half(poly: np.ndarray, a: np.ndarray, c: float) -> np.ndarray:
