@@ -204,24 +204,24 @@ def _scales(c: Ctx, r) -> None:
         c.formula(c.calc('k_γ = k_(γ "°") π/180', "{0} dot π/180", [V(s.k_gamma_deg_mm, sig=4)],
                          V(s.k_s, sig=4), t("rad/mm")), where=["k_γ"])
         c.formula(c.calc("k_ω = k_γ/(k_t H_V)", "{0}/({1} dot {2})", [V(s.k_s, sig=4), V(s.k_t_s_mm, sig=4), V(s.h_v_mm, exact=True)],
-                         V(s.k_v, sig=4), t("rad/(s·mm)")), where=["k_ω", "H_V"])
+                         V(s.k_v, sig=4), t("(rad/s)/mm")), where=["k_ω", "H_V"])
         c.formula(c.calc("k_ε = k_ω/(k_t H_a)", "{0}/({1} dot {2})", [V(s.k_v, sig=4), V(s.k_t_s_mm, sig=4), V(s.h_a_mm, exact=True)],
-                         V(s.k_a, sig=4), t("rad/(s²·mm)")), where=["k_ε", "H_a"])
+                         V(s.k_a, sig=4), t("(rad/s²)/mm")), where=["k_ε", "H_a"])
         c.p(t("The scales of the roller centre's displacement, velocity and acceleration {cite:book:formula (1.18)}:"))
         lb = v.l_bc_m
         c.formula(c.calc("k_S = k_γ l_(B C)", "{0} dot {1}", [V(s.k_s, sig=4), V(lb, exact=True)], V(s.k_s_b, sig=4),
                          t("m/mm")),
                   c.calc("k_V = k_ω l_(B C)", "{0} dot {1}", [V(s.k_v, sig=4), V(lb, exact=True)], V(s.k_v_b, sig=4),
-                         t("m/(s·mm)")), where=["k_S", "k_V"])
+                         t("(m/s)/mm")), where=["k_S", "k_V"])
         c.formula(c.calc("k_a = k_ε l_(B C)", "{0} dot {1}", [V(s.k_a, sig=4), V(lb, exact=True)], V(s.k_a_b, sig=4),
-                         t("m/(s²·mm)")), where=["k_a"])
+                         t("(m/s²)/mm")), where=["k_a"])
     else:
         c.formula(c.calc("k_S = S_max/Y_(S max)", "{0}/{1}", [V(v.stroke, exact=True), V(s.y_s_max_mm, exact=True)],
                          V(s.k_s, sig=4), t("m/mm")), where=["k_S", "S_max", "Y_(S max)"])
         c.formula(c.calc("k_V = k_S/(k_t H_V)", "{0}/({1} dot {2})", [V(s.k_s, sig=4), V(s.k_t_s_mm, sig=4), V(s.h_v_mm, exact=True)],
-                         V(s.k_v, sig=4), t("m/(s·mm)")), where=["k_V", "H_V"])
+                         V(s.k_v, sig=4), t("(m/s)/mm")), where=["k_V", "H_V"])
         c.formula(c.calc("k_a = k_V/(k_t H_a)", "{0}/({1} dot {2})", [V(s.k_v, sig=4), V(s.k_t_s_mm, sig=4), V(s.h_a_mm, exact=True)],
-                         V(s.k_a, sig=4), t("m/(s²·mm)")), where=["k_a", "H_a"])
+                         V(s.k_a, sig=4), t("(m/s²)/mm")), where=["k_a", "H_a"])
     c.p(t("The largest ordinate of the acceleration diagram on the return follows from that on the rise {cite:book:formula (1.8)}:"))
     c.formula(c.calc('Y_(a "в" max) = Y_(a "у" max) (φ_"у"/φ_"в")^2', "{0} dot ({1}/{2})^2",
                      [V(s.y_a_rise_max_mm, sig=4), V(v.phi_rise_deg, exact=True), V(v.phi_return_deg, exact=True)],

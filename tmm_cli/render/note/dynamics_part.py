@@ -498,7 +498,7 @@ def _lever(c: Ctx, s) -> None:
     mu = plan.velocity.scale
     c.doc.add(Heading(2, t("Balancing moment by Zhukovsky's lever")))
     c.p(t("The balancing moment is checked by N. E. Zhukovsky's theorem {{cite:artobolevsky}}: the velocity plan of "
-          "position {label} ($μ_v = {mu}$ m/(s·mm)) is turned through 90°, every force is applied at the image of "
+          "position {label} ($μ_v = {mu}$ (m/s)/mm) is turned through 90°, every force is applied at the image of "
           "its point, parallel to itself (an inertia moment as two forces $M_Φ/l$ across its link at the link's "
           "ends), and the plan, a rigid lever pivoted at the pole $p$, is in equilibrium with the balancing force "
           "$F_\"ур\"$ at the image $a$ of the crank pin, across the crank. The arms $h$ on the turned plan are found "

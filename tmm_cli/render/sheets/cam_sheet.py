@@ -408,8 +408,8 @@ def _zone_field(sh: Sheet, r, lang: str, box):
         tr(lang, "O_b — the book's vertex: r_0 = {v} mm").format(v=_n(z.book_r0_m * k, lang, 2)),
     ]
     if zn.lines:  # the letters on the drawing said (a norm-controller marks a letter never defined)
-        txt.insert(2, tr(lang, "{names} — the textbook's bounding lines of the zone, at ν_{{max}} to the follower "
-                               "(§1.3); their meeting point is O_b").format(names=", ".join(L.name for L in zn.lines)))
+        txt.insert(2, tr(lang, "{names} — the textbook's lines at ν_{{max}} (§1.3), meeting at O_b").format(
+            names=", ".join(L.name for L in zn.lines)))
     if not fit.fits:
         txt[-1] += tr(lang, " (the construction is cut at the field's edge)")
     sh.caption(box[0], box[2], box[1] + 2.5, txt, H_NOTE, LINE)
