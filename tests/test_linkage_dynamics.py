@@ -346,3 +346,13 @@ def test_random_four_bars_three_ways(a, b, c, m2, m3, j3, across, moment, sense)
     assert np.max(np.abs(s.lever.balancing - s.balancing)) <= 1e-9 * scale
     k = s1.cycle.kin
     assert np.allclose(lever(m, s.loading, k).balancing, balancing_moment_by_power(k, s.loading), atol=1e-9 * scale)
+
+
+@pytest.mark.parametrize("name, couples", [("compressor", ["MΦ2"]), ("four_bar", ["MΦ2", "MΦ3", "Mc"]),
+                                           ("shaper", ["MΦ3", "MΦ4"])])
+def test_a_uniform_crank_has_no_inertia_moment(name, couples):
+    """The crank turns at its mean speed (ε₁ = 0), so its inertia moment −J₁·ε₁ is zero and the
+    loading (the tables, the plans of forces) leaves it out; every other link with J swings."""
+    s = sheet2(name)
+    assert [c.symbol for c in s.loading.couples] == couples
+    assert all(np.max(np.abs(c.m)) > 0 for c in s.loading.couples)
