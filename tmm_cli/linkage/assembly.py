@@ -64,9 +64,20 @@ def group_margin(mech: Mechanism, g: Group, phi):
             through, unit = guide_frame(mech, g, k)
             return rrp_margin(k.z[g.joints[0]], through, unit, g.lengths[0])
         return rrp_margin(k.z[g.joints[0]], g.guide.through, g.guide.unit, g.lengths[0])
+    if g.kind == "PRP":  # the guides must cross: the sine of their angle, times the mechanism's size
+        e1, e2 = (np.exp(1j * np.angle(_guide_unit(mech, g, k, gd))) for gd in g.guides)
+        return np.abs((np.conj(e1) * e2).imag) * mech.scale_m
+    if g.kind == "RPP":  # the slot crosses the guide at slot_deg, checked when read
+        return np.full(k.phi.shape, abs(math.sin(g.slot)) * mech.scale_m)
     if g.offset != 0.0:
         return rpr_margin(k.z[g.joints[0]], k.z[g.joints[1]], g.offset)
     return np.abs(k.z[g.joints[0]] - k.z[g.joints[1]])
+
+
+def _guide_unit(mech, g, k, gd):
+    from .chain import _guide_line
+
+    return np.zeros(k.phi.shape, dtype=complex) + _guide_line(mech, g, k.z, k.angle, gd)[1]
 
 
 def smallest_margin(mech: Mechanism, g: Group) -> Margin:
@@ -99,6 +110,9 @@ def _failure(mech: Mechanism, g: Group, worst: Margin) -> str:
         h = g.lengths[0] - worst.margin
         return (f"{where}: {ja} comes {h:.7g} m from the guide of {jb} but {ja}{jb} = {g.lengths[0]:.7g} m; make "
                 f"{ja}{jb} longer than {h:.7g} m")
+    if g.kind in ("PRP", "RPP"):
+        return (f"{where}: the guides of {g.joints[0]} run parallel there (they do not cross); turn one of "
+                "them")
     ja, jc = g.joints
     if g.offset != 0.0:
         d = abs(g.offset) + worst.margin

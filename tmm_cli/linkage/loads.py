@@ -25,11 +25,11 @@ import math
 import numpy as np
 
 from ..records import record
-from .chain import Kinematics, guide_frame, solve
+from .chain import Kinematics, slider_unit, solve
 from .mechanism import Mechanism
 from .positions import Cycle, output_coordinate
 
-LOAD_KEYS = ("on", "stroke", "force", "moment", "working")
+LOAD_KEYS = ("on", "stroke", "force", "moment", "working", "direction_deg")
 TABLE_MAX = 1000  # entries of the load table
 FORCE_MAX = 1.0e9  # [N] or [N·m]
 WORKING_TOLERANCE = 1e-9  # [rad] of crank travel: the end of the working stroke still belongs to it
@@ -43,6 +43,7 @@ class Load:
     kind: str  # 'force' (a slider, [N]) | 'moment' (a turning link, [N·m])
     stroke: tuple[float, ...]  # fractions of the stroke, 0 … 1, non-decreasing
     values: tuple[float, ...]  # magnitudes at those fractions, ≥ 0
+    direction: float | None = None  # a force's own direction from +x [rad] (None: against the working motion)
 
 
 @record
@@ -57,6 +58,7 @@ class Stroke:
     q0: float  # the output coordinate where the working stroke starts [m or rad]
     kind: str  # 'slider' | 'rocker'
     origin: float  # crank angle where the working stroke starts [rad] (position 0 unless start_deg moves it)
+    unit: complex | None = None  # a slider output's fixed guide direction (None: a rocker or a moving guide)
 
     @property
     def lead(self) -> float:
@@ -72,7 +74,9 @@ def stroke_of(c: Cycle) -> Stroke | None:
     mech = c.mechanism
     origin = c.extremes[0]
     q0 = float(output_coordinate(mech, solve(mech, [origin]))[0][0])
-    return Stroke(c.start, mech.crank.sense, c.working, c.stroke, c.direction, q0, mech.output.kind, origin)
+    gd = dict(mech.guided()).get(mech.output.link) if mech.output.kind == "slider" else None
+    unit = gd.unit if gd is not None and not gd.moving else None
+    return Stroke(c.start, mech.crank.sense, c.working, c.stroke, c.direction, q0, mech.output.kind, origin, unit)
 
 
 def table_value(load: Load, fraction):
@@ -129,9 +133,21 @@ def load_value(load: Load, stroke: Stroke, mech: Mechanism, kin: Kinematics):
     size = np.where(working, table_value(load, fraction), 0.0)
     if load.kind == "moment":
         return -stroke.direction * size
+    if load.direction is not None:  # its own fixed direction (a cutting force with a vertical part)
+        return size * complex(math.cos(load.direction), math.sin(load.direction))
     g = mech.groups[mech.link(load.link).group - 1]
-    unit = g.guide.unit if not g.guide.moving else guide_frame(mech, g, kin)[1]
-    return -stroke.direction * size * unit
+    if g.kind == "RRP" and not g.guide.moving:
+        return -stroke.direction * size * g.guide.unit
+    return -stroke.direction * size * slider_unit(mech, load.link, kin)
+
+
+def _along(load: Load, stroke: Stroke) -> float:
+    """The force's component along the working motion per unit of its size: −1 for a load against
+    it; cos of the angle to the guide (signed) for a force of its own direction — only that part works."""
+    if load.direction is None or stroke.unit is None:
+        return -1.0
+    w = stroke.direction * stroke.unit
+    return math.cos(load.direction) * w.real + math.sin(load.direction) * w.imag
 
 
 def _cumulative_work(load: Load, stroke: Stroke, fraction, theta):
@@ -141,7 +157,7 @@ def _cumulative_work(load: Load, stroke: Stroke, fraction, theta):
     within = theta - turns * 2.0 * math.pi
     whole = float(table_integral(load, 1.0))
     done = np.where(within <= stroke.working + WORKING_TOLERANCE, table_integral(load, fraction), whole)
-    return -stroke.length * (done + turns * whole)
+    return _along(load, stroke) * stroke.length * (done + turns * whole)
 
 
 def load_work(load: Load, stroke: Stroke, mech: Mechanism, kin: Kinematics, travel=None):
@@ -209,12 +225,22 @@ def parse_load(r, mech: Mechanism, raw) -> Load | None:
     if stroke[0] != 0.0 or stroke[-1] != 1.0 or any(b < a for a, b in zip(stroke, stroke[1:])):
         r.fail("'load.stroke' must run from 0 to 1 without decreasing (fractions of the stroke; repeat a fraction "
                "for a jump), e.g. stroke = [0.0, 0.5, 0.5, 1.0]")
+    direction = None
+    if "direction_deg" in t:
+        gd = dict(mech.guided()).get(ln.name)
+        if kind != "force" or gd is None or gd.moving:
+            r.fail("'load.direction_deg' gives a force its own direction: it acts on a slider on a fixed guide; leave it "
+                   "out here (the load then opposes the working motion)")
+        direction = math.radians(r.number(t["direction_deg"], "load.direction_deg", "direction_deg = 170") % 360.0)
+        if abs(math.cos(direction - gd.angle)) < 1e-6:
+            r.fail("'load.direction_deg' is across the slider's guide: such a force does no work and is no useful "
+                   "resistance; give a direction with a part along the guide")
     unit = "N" if kind == "force" else "N·m"
     for v in values:
         if not 0.0 <= v <= FORCE_MAX:
             r.fail(f"'load.{values_key}' has {v:g}; give magnitudes in [0, {FORCE_MAX:g}] {unit} (the load always "
                    "opposes the working motion)")
-    return Load(ln.name, kind, stroke, values)
+    return Load(ln.name, kind, stroke, values, direction)
 
 
 def _output_key(ln) -> str:

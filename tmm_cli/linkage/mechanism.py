@@ -17,6 +17,10 @@ RRP         A, B (B new, slider)  bar AB, slider B (a block on a fixed guide)
 RPR         A, C (nothing new)    block A (turns on the pin A), slotted link AC (turns
                                   about C, the block slides along it; its slot may pass
                                   the offset d from C)
+PRP         B (new)               block B′ on the guide G1, block B on the guide G2, hinged
+                                  together at B (where the guides' lines cross)
+RPP         A, Y (Y new)          block A (hinged at A, slides in the yoke's slot), yoke Y
+                                  (slides along its guide; Y: where the slot crosses it)
 ==========  ====================  =======================================================
 
 The angle of a link named XY is the direction from X to Y (the crank's: from its pivot to its
@@ -32,7 +36,7 @@ import math
 
 from ..records import record
 
-KINDS = ("RRR", "RRP", "RPR")
+KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
 FRAME = 0  # the frame's link number
 
 
@@ -121,6 +125,8 @@ class Group:
     links: tuple[str, str]  # its two links' names, numbers 2k and 2k+1
     pairs: tuple[Pair, Pair, Pair]  # its three pairs, from the first known joint along the chain
     offset: float = 0.0  # RPR: the slot's distance d from the pivot C [m] (the slot is C + d·n + t·u)
+    guides: tuple[Guide, ...] = ()  # PRP: (G1, G2), the guides of its blocks B′ and B
+    slot: float = 0.0  # RPP: the yoke's slot from its guide's direction [rad]
 
     @property
     def numbers(self) -> tuple[int, int]:
@@ -171,12 +177,37 @@ class Mechanism:
     working: str | None  # 'away' | 'towards' (from [load] working), else None
     plan: str | None  # label of the position of the plans (file key `plan`), else None
     extra: dict  # the sheet-2 tables as read ('gravity', 'mass', 'load', 'dynamics') and 'synthesis', unchecked
+    gas_head: tuple[str, complex] | None = None  # the first [[load]]'s piston and head, if a gas load
 
     def link(self, name: str) -> Link:
         for ln in self.links:
             if ln.name == name:
                 return ln
         raise KeyError(name)
+
+    def guided(self) -> tuple[tuple[str, Guide], ...]:
+        """Every slider or block that slides along a Guide, with it: an RRP's slider, a PRP's two
+        blocks, an RPP's yoke (an RPP's block slides in the yoke's slot, not on a Guide)."""
+        out = []
+        for g in self.groups:
+            if g.kind == "RRP":
+                out.append((g.links[1], g.guide))
+            elif g.kind == "PRP":
+                out += [(g.links[0], g.guides[0]), (g.links[1], g.guides[1])]
+            elif g.kind == "RPP":
+                out.append((g.links[1], g.guide))
+        return tuple(out)
+
+    def slider_turns(self, name: str) -> bool:
+        """Whether the slider or block link `name` turns (it rides on a moving guide or in a turning
+        yoke); a slider on a fixed guide only translates."""
+        ln = self.link(name)
+        g = self.groups[ln.group - 1]
+        if ln.kind == "block":
+            return True
+        if g.kind == "PRP":
+            return g.guides[0 if ln.number == 2 * g.index else 1].moving
+        return g.guide is not None and g.guide.moving
 
     def link_between(self, j1: str, j2: str) -> Link | None:
         """The moving link whose axis joins j1 and j2 (either order), or None."""
@@ -202,7 +233,7 @@ class Mechanism:
         sizes = [self.crank.length, *(abs(z) for z in self.frame.values())]
         for g in self.groups:
             sizes += list(g.lengths) + [abs(g.offset)]
-            if g.guide is not None:
-                sizes.append(abs(g.guide.through) + abs(complex(g.guide.along, g.guide.across)))
+            for gd in ((g.guide,) if g.guide is not None else ()) + g.guides:
+                sizes.append(abs(gd.through) + abs(complex(gd.along, gd.across)))
         sizes += [abs(complex(p.along, p.across)) for p in self.points]
         return max(sizes)

@@ -57,13 +57,16 @@ GROUP_KEYS = {
     "RRR": ("kind", "joints", "lengths", "branch"),
     "RRP": ("kind", "joints", "length", "guide", "branch"),
     "RPR": ("kind", "joints", "offset"),
+    "PRP": ("kind", "joints", "guides"),
+    "RPP": ("kind", "joints", "guide", "slot_deg"),
 }
 POINT_KEYS = ("name", "link", "along", "across")
 BRANCHES = {"RRR": {"left": 1, "right": -1}, "RRP": {"ahead": 1, "behind": -1}}
 EXAMPLES = {
     "crank.pivot": 'pivot = "O"', "crank.joint": 'joint = "A"', "crank.length": "length = 0.06",
     "crank.rpm": "rpm = 1500", "crank.sense": 'sense = "ccw"', "RRR.joints": 'joints = ["A", "B", "C"]',
-    "RRP.joints": 'joints = ["A", "B"]', "RPR.joints": 'joints = ["A", "C"]', "lengths": "lengths = [0.20, 0.15]",
+    "RRP.joints": 'joints = ["A", "B"]', "RPR.joints": 'joints = ["A", "C"]', "PRP.joints": 'joints = ["B"]',
+    "RPP.joints": 'joints = ["A", "Y"]', "lengths": "lengths = [0.20, 0.15]",
     "length": "length = 0.25", "guide": "guide = { through = [0.0, 0.0], angle_deg = 0.0 }",
     "RRR.branch": 'branch = "left"', "RRP.branch": 'branch = "ahead"', "kind": 'kind = "RRR"',
     "point.name": 'name = "S2"', "point.link": 'link = ["A", "B"]', "point.along": "along = 0.1",
@@ -258,12 +261,14 @@ def _group(r: _Reader, b: _Builder, data, index: int) -> Group:
     raw_kind = r.text(r.required(data, "kind", f"{key}.kind", EXAMPLES["kind"]), f"{key}.kind", EXAMPLES["kind"])
     kind = raw_kind.upper()
     if kind not in KINDS:
-        r.fail(f"'{key}.kind' is {raw_kind!r}; the kinds are RRR, RRP and RPR (class II groups of kinds 1–3)")
+        r.fail(f"'{key}.kind' is {raw_kind!r}; the kinds are RRR, RRP, RPR, PRP and RPP (class II groups of kinds 1–5; "
+               "class III groups and two inputs are not supported)")
     r.table(data, key, GROUP_KEYS[kind])
     ex = EXAMPLES[f"{kind}.joints"]
-    joints = r.names(r.required(data, "joints", f"{key}.joints", ex), f"{key}.joints", 3 if kind == "RRR" else 2, ex)
+    joints = r.names(r.required(data, "joints", f"{key}.joints", ex), f"{key}.joints",
+                     {"RRR": 3, "PRP": 1}.get(kind, 2), ex)
     k, n2, n3 = index, 2 * index, 2 * index + 1
-    guide, branch, lengths, offset = None, 0, (), 0.0
+    guide, branch, lengths, offset, guides, slot = None, 0, (), 0.0, (), 0.0
     if kind == "RRR":
         a, bj, c = joints
         known, new = (a, c), (bj,)
@@ -278,6 +283,26 @@ def _group(r: _Reader, b: _Builder, data, index: int) -> Group:
         lengths = (r.length(r.required(data, "length", f"{key}.length", EXAMPLES["length"]), f"{key}.length",
                             EXAMPLES["length"]),)
         guide = _guide(r, r.required(data, "guide", f"{key}.guide", EXAMPLES["guide"]), f"{key}.guide", b)
+    elif kind == "PRP":
+        (bj,) = joints
+        known, new = (), (bj,)
+        ex_g = 'guides = [{ link = ["O", "A"], angle_deg = 0.0 }, { through = [0.0, 0.3], angle_deg = 0.0 }]'
+        raw = r.required(data, "guides", f"{key}.guides", ex_g)
+        if not isinstance(raw, list) or len(raw) != 2:
+            r.fail(f"'{key}.guides' must be a list of the two blocks' guides [G1, G2], e.g. {ex_g}")
+        guides = tuple(_guide(r, x, f"{key}.guides[{i + 1}]", b) for i, x in enumerate(raw))
+        if not any(gd.moving for gd in guides):
+            r.fail(f"group {index} (PRP {bj}) has both guides fixed; it would not move: put a guide on the crank or a "
+                   "moving link (link = [\"O\", \"A\"] in the guide's table)")
+    elif kind == "RPP":
+        a, bj = joints
+        known, new = (a,), (bj,)
+        guide = _guide(r, r.required(data, "guide", f"{key}.guide", EXAMPLES["guide"]), f"{key}.guide", b)
+        slot_deg = r.number(data.get("slot_deg", 90.0), f"{key}.slot_deg", "slot_deg = 90")
+        if abs(math.remainder(slot_deg, 180.0)) < 1.0:
+            r.fail(f"'{key}.slot_deg' is {slot_deg:g}: the yoke's slot would run along its guide (the yoke could not "
+                   "be driven); give an angle at least 1° away from it, e.g. slot_deg = 90")
+        slot = math.radians(slot_deg % 360.0)
     else:
         a, c = joints
         known, new = (a, c), ()
@@ -288,7 +313,7 @@ def _group(r: _Reader, b: _Builder, data, index: int) -> Group:
         branch = BRANCHES[kind][word]
     for j in known:
         b.known(j, f"{key}.joints")
-    if all(b.carrier[j] == FRAME for j in known) and (guide is None or not guide.moving):
+    if known and all(b.carrier[j] == FRAME for j in known) and (guide is None or not guide.moving):
         r.fail(f"group {index} ({kind} {'-'.join(joints)}) hangs on fixed joints only ({', '.join(known)}); it would "
                "not move: hang it on the crank or a moving link")
     for j in new:
@@ -307,12 +332,28 @@ def _group(r: _Reader, b: _Builder, data, index: int) -> Group:
         carrier = FRAME if not guide.moving else next(x.number for x in b.links if x.name == guide.link)
         pairs = (Pair(a, "R", (cr[a], n2), k), Pair(bj, "R", (n2, n3), k), Pair(bj, "P", (carrier, n3), k))
         cr[bj] = n3
+    elif kind == "PRP":
+        first = bj + "′"  # the block on G1 (the block on G2 is named by the joint)
+        b.claim(first, f"{key}.joints")
+        names = (first, bj)
+        b.add_link(Link(first, n2, "slider", k, None, (bj,)), key)
+        b.add_link(Link(bj, n3, "slider", k, None, (bj,)), key)
+        c1, c2 = (FRAME if not gd.moving else next(x.number for x in b.links if x.name == gd.link) for gd in guides)
+        pairs = (Pair(bj, "P", (c1, n2), k), Pair(bj, "R", (n2, n3), k), Pair(bj, "P", (c2, n3), k))
+        cr[bj] = n3
+    elif kind == "RPP":
+        names = (a, bj)
+        b.add_link(Link(a, n2, "slider", k, None, (a,)), key)
+        b.add_link(Link(bj, n3, "slider", k, None, (bj,)), key)
+        carrier = FRAME if not guide.moving else next(x.number for x in b.links if x.name == guide.link)
+        pairs = (Pair(a, "R", (cr[a], n2), k), Pair(a, "P", (n2, n3), k), Pair(bj, "P", (carrier, n3), k))
+        cr[bj] = n3
     else:
         names = (a, a + c)
         b.add_link(Link(a, n2, "block", k, (a, c), (a,)), key)
         b.add_link(Link(a + c, n3, "slotted", k, (a, c), (c,)), key)
         pairs = (Pair(a, "R", (cr[a], n2), k), Pair(a, "P", (n2, n3), k), Pair(c, "R", (cr[c], n3), k))
-    return Group(index, kind, joints, lengths, branch, guide, known, new, names, pairs, offset)
+    return Group(index, kind, joints, lengths, branch, guide, known, new, names, pairs, offset, guides, slot)
 
 
 def _raw_point(r: _Reader, b: _Builder, data, index: int):
@@ -355,6 +396,13 @@ def _output(r: _Reader, b: _Builder, groups: tuple[Group, ...], value) -> Output
                        f"(on the link {last.guide.link}), which has no default stroke; give the output link at the top "
                        "of the file, e.g. output = [\"D\", \"B\"] (a turning link) or output = \"B\" (a slider)")
             return Output("slider", last.links[1], last.joints[1], last.index)
+        if last.kind in ("PRP", "RPP"):  # B along G2; the yoke Y along its guide
+            gd = last.guides[1] if last.kind == "PRP" else last.guide
+            if gd.moving:
+                r.fail(f"'output' is missing: the block {last.links[1]} of the last group slides on a moving guide (on "
+                       f"the link {gd.link}), which has no default stroke; give the output link at the top of the file, "
+                       f"e.g. output = \"{last.links[1]}\"")
+            return Output("slider", last.links[1], last.links[1], last.index)
         return Output("rocker", last.links[1], last.joints[0], last.index)
     bad = (f"'output' is {value!r}; give a slider's joint (e.g. \"B\") or a moving link by two joints "
            "(e.g. [\"C\", \"B\"])")
@@ -371,8 +419,22 @@ def _output(r: _Reader, b: _Builder, groups: tuple[Group, ...], value) -> Output
     r.fail(bad)
 
 
+def _gas_head(r: _Reader, b: _Builder, load) -> tuple[str, complex] | None:
+    """The first [[load]]'s piston and cylinder head when it is a gas load (position 0 is its dead
+    centre nearest the head); checked in full by :func:`.gas.parse_gas`."""
+    if not isinstance(load, list) or not load or not isinstance(load[0], dict) or "head" not in load[0]:
+        return None
+    on = load[0].get("on")
+    if not isinstance(on, str) or not any(x.kind == "slider" and x.name == on.strip() for x in b.links):
+        r.fail(f"'load[1].on' is {on!r}: a gas force acts on a piston, a slider of an RRP group or the yoke of an RPP "
+               "group; give its joint, e.g. on = \"B\"")
+    return on.strip(), r.xy(load[0]["head"], "load[1].head", "head = [0.0, 0.45]")
+
+
 def _working(r: _Reader, extra: dict) -> str | None:
     load = extra.get("load")
+    if isinstance(load, list):  # [[load]]: the table load's (gas loads have both strokes)
+        load = next((x for x in load if isinstance(x, dict) and "head" not in x), None)
     if isinstance(load, dict) and "working" in load:
         return r.choice(load["working"], "load.working", ("away", "towards"), 'working = "away"')
     return None
@@ -439,7 +501,12 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
             r.fail(f"'{key}.link': no moving link joins {j1} and {j2}; name a link by two of its joints, "
                    "e.g. [\"A\", \"B\"]")
     groups = tuple(groups)
-    output = _output(r, b, groups, data.get("output"))
+    gas_head = _gas_head(r, b, data.get("load"))
+    if gas_head is not None and data.get("output") is None:  # the first gas load's piston is the output
+        ln = next(x for x in b.links if x.name == gas_head[0])
+        output = Output("slider", ln.name, ln.pins[0], ln.group)
+    else:
+        output = _output(r, b, groups, data.get("output"))
     plan = data.get("plan")
     if plan is not None:
         if isinstance(plan, bool) or not isinstance(plan, (int, str)):
@@ -448,4 +515,4 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
     extra = {k: data[k] for k in SHEET2_KEYS + RECORD_KEYS if k in data}
     points = tuple(done[point] for _, point, _, _, _ in raw)
     return Mechanism(name, positions, frame, crank, groups, points, tuple(b.links), tuple(b.pairs + [
-        p for g in groups for p in g.pairs]), dict(b.carrier), output, _working(r, extra), plan, extra)
+        p for g in groups for p in g.pairs]), dict(b.carrier), output, _working(r, extra), plan, extra, gas_head)

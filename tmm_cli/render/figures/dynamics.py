@@ -19,11 +19,12 @@ import numpy as np
 
 from ...i18n import tr
 from ...i18n.numbers import num
-from ...linkage.chain import slot_axis
+from ...linkage.chain import slider_pose, slot_axis
 from ...linkage.sheet2 import Sheet2
 from ..terminal.dynamics import symbol as book_symbol
 from .kit import decimal_commas, mt, new_figure, suptitle, title_height
 from .mechanism import _block, joint_tex, label_tex, span_mm
+from ..terminal.mechanism import pattern
 
 MM = 1000.0
 C_APPLIED = "#1f77b4"
@@ -109,10 +110,11 @@ def _draw_links(ax, s: Sheet2, links, i: int, unit: float) -> list[complex]:
             _block(ax, z[ln.name], float(k.angle[ln.name][i]), 0.5 * unit, 0.25 * unit, "k", 1.2, "-", z=4)
             pts.append(z[ln.name])
         elif ln.kind == "slider":
-            g = m.groups[ln.group - 1]
-            angle = g.guide.angle if not g.guide.moving else float(k.angle[ln.name][i])
-            _block(ax, z[ln.name], angle, 0.7 * unit, 0.35 * unit, "k", 1.2, "-", z=4)
-            pts.append(z[ln.name])
+            centre, angle, segs = slider_pose(m, k, ln.name, i)
+            for p0, p1 in segs:
+                ax.plot([p0.real * MM, p1.real * MM], [p0.imag * MM, p1.imag * MM], color="k", lw=1.6, zorder=3)
+            _block(ax, centre * MM, angle, 0.7 * unit, 0.35 * unit, "k", 1.2, "-", z=4)
+            pts.append(centre * MM)
     names = {n for ln in links for n in ln.pins} | {p.name for p in m.points if any(p.link == ln.name for ln in links)}
     for n in names:
         ax.plot(z[n].real, z[n].imag, "o", ms=3.5, mfc="white", mec="k", zorder=6)
@@ -225,7 +227,7 @@ def forces_figure(s: Sheet2, lang: str):
         ax.set_ylim(xy.imag.min() - pad, xy.imag.max() + pad)
         ax.set_aspect("equal", adjustable="box")
         ax.axis("off")
-        name = tr(lang, "the crank with the frame") if group == 0 else tr(lang, "group {group} ({kind})").format(group=group, kind=s.sheet1.mechanism.groups[group - 1].kind)
+        name = tr(lang, "the crank with the frame") if group == 0 else tr(lang, "group {group} ({kind})").format(group=group, kind=pattern(s.sheet1.mechanism.groups[group - 1].kind, lang))
         ax.set_title(name, fontsize=10)
         _polygon(bx, pg, lang)
     phi = num(math.degrees(p.phi) % 360.0, lang, decimals=1)

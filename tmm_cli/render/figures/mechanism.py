@@ -18,11 +18,7 @@ import re
 
 import numpy as np
 
-from ...linkage.chain import guide_frame as _guide_frame, slot_axis
-
-
-def guide_frame(m, k, g):
-    return _guide_frame(m, g, k)
+from ...linkage.chain import slider_pose, slot_axis
 from ...linkage.sheet1 import Sheet1
 from ...linkage.vector_plans import Plan, Plans
 from .kit import decimal_commas, literal_text, new_figure, suptitle, title_height
@@ -172,13 +168,14 @@ def draw_mechanism(ax, s: Sheet1, i: int, color="k", lw=1.6, ls="-", labels=True
             _block(ax, z[ln.name], float(k.angle[ln.name][i]), 0.5 * unit, 0.25 * unit, color, lw * 0.7, ls)
         elif ln.kind == "slider":
             g = m.groups[ln.group - 1]
-            if g.guide.moving:  # the guide on its link: from its point on the link past the slider
-                p, e = (complex(x[i]) for x in guide_frame(m, k, g))
-                p, far = p * MM, z[ln.name] + 1.2 * unit * e
-                ax.plot([p.real, far.real], [p.imag, far.imag], color=color, lw=0.7, ls=(0, (12, 3, 2, 3)), zorder=4)
-                _block(ax, z[ln.name], float(k.angle[ln.name][i]), 0.7 * unit, 0.35 * unit, color, lw * 0.7, ls)
-            else:
+            if g.kind == "RRP" and not g.guide.moving:
                 _block(ax, z[ln.name], g.guide.angle, 0.7 * unit, 0.35 * unit, color, lw * 0.7, ls)
+            else:  # on a moving guide (drawn from its point on the link), a PRP's block, an RPP's block or yoke
+                centre, angle, segs = slider_pose(m, k, ln.name, i)
+                for p0, p1 in segs:
+                    ax.plot([p0.real * MM, p1.real * MM], [p0.imag * MM, p1.imag * MM], color=color, lw=lw * 0.8,
+                            ls=ls, zorder=4)
+                _block(ax, centre * MM, angle, 0.7 * unit, 0.35 * unit, color, lw * 0.7, ls)
     for n in m.joint_names:
         if n in m.frame or n == m.crank.joint or any(n in g.new for g in m.groups) or n in hang:
             ax.plot(z[n].real, z[n].imag, "o", ms=4 * size, mfc="white", mec=color, zorder=7)
@@ -196,12 +193,10 @@ def draw_mechanism(ax, s: Sheet1, i: int, color="k", lw=1.6, ls="-", labels=True
 
 def _guides(ax, s: Sheet1, lo: complex, hi: complex) -> None:
     """Each slider's guide as a dash-dot line across the drawing [mm]."""
-    for g in s.mechanism.groups:
-        if g.guide is None:
+    for _, gd in s.mechanism.guided():
+        if gd.moving:  # it turns with its link: drawn with the link in each position
             continue
-        if g.guide.moving:  # it turns with its link: drawn with the link in each position
-            continue
-        p, e = g.guide.through * MM, g.guide.unit
+        p, e = gd.through * MM, gd.unit
         ts = [((c - p) * e.conjugate()).real for c in (lo, hi, complex(lo.real, hi.imag), complex(hi.real, lo.imag))]
         a, b = p + min(ts) * e, p + max(ts) * e
         ax.plot([a.real, b.real], [a.imag, b.imag], color="k", lw=0.7, ls=(0, (12, 3, 2, 3)), zorder=1)
@@ -430,8 +425,8 @@ def plan_figure(s: Sheet1, pl: Plans, kind: str, lang: str):
     for v in plan.vectors:
         if v.magnitude == 0.0 and v.start in ("p", "π"):
             continue
-        where = f"  {v.relation} {line_tex(v.line)}" if v.line and v.line != "guide" else (
-            f"  {v.relation or '∥'} " + tr(lang, "guide") if v.line == "guide" else "")
+        where = f"  {v.relation} {line_tex(v.line)}" if v.line and v.line not in ("guide", "slot") else (
+            f"  {v.relation or '∥'} " + tr(lang, v.line) if v.line in ("guide", "slot") else "")
         lines.append(f"{symbol_tex(v.symbol)} = {num(v.magnitude, lang, sig=4)} {unit}"
                      f"  ({num(v.magnitude / plan.scale, lang, decimals=1)} " + tr(lang, "mm") + f"){where}")
     cols = 2 if len(lines) > 11 else 1

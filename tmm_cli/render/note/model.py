@@ -358,6 +358,11 @@ SCI_EXPONENT = re.compile(r"(?<=·10)([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)")
 SUPER_DIGITS = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "−0123456789")
 
 
+# a unit right after an inline formula («$b = 240$ мм»): the space before it does not break
+UNIT_AFTER_MATH = re.compile(r"^ (?=(?:мм|м|Н|кН|об/мин|рад|кг|кВт|Вт|Дж|мин|°|%|mm|m|N|kN|rpm|rad|kg|kW|W|J|min)"
+                             r"(?![^\W\d_]))")
+
+
 def split_math(text: str) -> list[tuple[bool, str]]:
     """[(is_math, piece)] of an inline markup text.
 
@@ -366,6 +371,8 @@ def split_math(text: str) -> list[tuple[bool, str]]:
 
     >>> split_math("угол $ν_max$ = 25°")
     [(False, 'угол '), (True, 'ν_max'), (False, '\xa0=\xa025°')]
+    >>> split_math("$b = 240$ мм, $k$ мало")
+    [(True, 'b = 240'), (False, '\xa0мм, '), (True, 'k'), (False, ' мало')]
     """
     out = []
     for part in MATH.split(text):
@@ -376,6 +383,7 @@ def split_math(text: str) -> list[tuple[bool, str]]:
         else:
             if out and out[-1][0]:
                 part = re.sub(r"^ ([=≤≥<>≈≠]) ", "\u00a0\\1\u00a0", part)
+                part = UNIT_AFTER_MATH.sub("\u00a0", part)  # «$b = 240$ мм»: the unit stays with its formula
             out.append((False, part))
     return out
 

@@ -269,12 +269,11 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
     unit = 1.0 / factor  # one paper millimetre in real millimetres
     reach = _reach(s)
     # the guides: their axes over the sliders' travel, the guide's surface hatched under it
-    for g in m.groups:
-        if g.guide is None or g.guide.moving:  # a moving guide is drawn with its link
+    for slider, gd in m.guided():
+        if gd.moving:  # a moving guide is drawn with its link
             continue
-        slider = next(ln.name for ln in m.links if ln.group == g.index and ln.kind == "slider")
-        zs = c.curve.kin.z[slider] * MM
-        e = g.guide.unit
+        zs = c.curve.kin.z[m.link(slider).pins[0]] * MM
+        e = gd.unit
         t = ((zs - zs[0]) * e.conjugate()).real
         a = zs[0] + (t.min() - 8.0 * unit) * e
         b = zs[0] + (t.max() + 8.0 * unit) * e
