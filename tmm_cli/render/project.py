@@ -195,7 +195,7 @@ def _prepare_note(tmp: Path, result, lang: str, title, template: str | None, rep
 
     try:
         return prepare_note(tmp, result, lang, title, _note_files(result, note_figs), template,
-                            pdf="pdf" in reports), None
+                            pdf="pdf" in reports, docx="docx" in reports), None
     except TmmError as exc:
         return None, exc
 

@@ -25,6 +25,8 @@ def textbook(lang: str) -> str:
 
 STYLE_FILE = "note-style.typ"
 NOTE_FILES = ("note.typ", STYLE_FILE, "note.pdf")
+# the typst source of a DOCX-only run, kept only to ask typst for the contents' pages
+PAGES_FILES = (".tmm-note.typ", ".tmm-note-style.typ")
 DOCX_FILE = "note.docx"
 # the note's own figures (drawn at the note's size, render/figures/note.py), in their order
 NOTE_FIGURES = ("cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle",
@@ -148,9 +150,11 @@ def recompile(path: Path) -> Path:
 
 
 def prepare_note(folder: Path, result, lang: str, title, figures: dict, template: str | None = None,
-                 pdf: bool = True):
+                 pdf: bool = True, docx: bool = False):
     """Build the document and (for the PDF) write note.typ and note-style.typ; the figures need not
-    be drawn yet. Returns the document for :func:`finish_note`."""
+    be drawn yet. For the DOCX alone the same source goes to hidden files (:data:`PAGES_FILES`),
+    which :func:`finish_note` lays out for the contents' pages and removes. Returns the document for
+    :func:`finish_note`."""
     from ...inputs.titleblock import TitleFields
     from .front import title_meta
     from .typst import note_source
@@ -159,12 +163,13 @@ def prepare_note(folder: Path, result, lang: str, title, figures: dict, template
     title = title or TitleFields()
     doc = build_note(result, lang, figures, title)
     try:
-        if pdf:
+        if pdf or docx:
             from .ctx import Ctx
 
             meta = title_meta(Ctx(result, lang), title)
-            (folder / STYLE_FILE).write_text(template if template is not None else default_template(), encoding="utf-8")
-            (folder / "note.typ").write_text(note_source(doc, meta, STYLE_FILE), encoding="utf-8")
+            source, style = ("note.typ", STYLE_FILE) if pdf else PAGES_FILES
+            (folder / style).write_text(template if template is not None else default_template(), encoding="utf-8")
+            (folder / source).write_text(note_source(doc, meta, style), encoding="utf-8")
     except BaseException:
         _remove_note(folder)
         raise
@@ -182,8 +187,17 @@ def finish_note(folder: Path, doc, title, pdf: bool = True, docx: bool = False) 
             compile_note(folder)
         if docx:
             from .docx import write_docx
+            from .typeset import page_numbers
 
-            write_docx(doc, folder / DOCX_FILE, folder, title or TitleFields())
+            # the contents' page numbers and the page count as typst lays the note out (when note.typ
+            # is here: the PDF is written too), the DOCX's fields' results before any update
+            source = next((n for n in ("note.typ", PAGES_FILES[0]) if (folder / n).is_file()), None)
+            try:
+                pages = page_numbers(folder, source) if source else None
+            finally:
+                for name in PAGES_FILES:
+                    (folder / name).unlink(missing_ok=True)
+            write_docx(doc, folder / DOCX_FILE, folder, title or TitleFields(), pages=pages)
     except BaseException:
         _remove_note(folder)
         raise
@@ -191,7 +205,7 @@ def finish_note(folder: Path, doc, title, pdf: bool = True, docx: bool = False) 
 
 
 def _remove_note(folder: Path) -> None:
-    for name in (*NOTE_FILES, DOCX_FILE):
+    for name in (*NOTE_FILES, DOCX_FILE, *PAGES_FILES):
         (folder / name).unlink(missing_ok=True)
 
 
@@ -204,7 +218,7 @@ def write_note(folder: Path, result, lang: str, title, figures: dict, template: 
     `folder`; `template` is the style's text (default: the package's). On a typst error the
     note's files are removed and TmmError raised.
     """
-    doc = prepare_note(folder, result, lang, title, figures, template, pdf=pdf)
+    doc = prepare_note(folder, result, lang, title, figures, template, pdf=pdf, docx=docx)
     return finish_note(folder, doc, title, pdf=pdf, docx=docx)
 
 

@@ -110,9 +110,9 @@ def _motion(c: Ctx, r) -> None:
         c.formula(line.replace('"  for "', '"  ' + t("for") + ' "'),
                   where=["t", "f(t)"] if j == len(_LAW_F[v.law]) - 1 else ())
     if rocker:  # the rocker's angle, its angular velocity and acceleration (§1.2)
-        c.p(t("The rocker's angle on the rise is $γ = γ_max f(φ/φ_\"у\")$, on the return $γ = γ_max (1 - f((φ - φ_\"у\" - φ_\"дс\")/φ_\"в\"))$. The cam turns at a constant speed, so $ω = ω_k d γ/d φ$ and $ε = ω_k^2 d^2 γ/d φ^2$; the largest values on the rise are"))
+        c.p(t("The rocker's angle on the rise is $γ = γ_max f(φ/φ_\"у\")$, on the return $γ = γ_max (1 - f((φ - φ_\"у\" - φ_\"дс\")/φ_\"в\"))$. The cam turns at a constant speed, so $ω = ω_k (d γ)/(d φ)$ and $ε = ω_k^2 (d^2 γ)/(d φ^2)$; the largest values on the rise are"))
     else:
-        c.p(t("The follower's displacement on the rise is $s = S_max f(φ/φ_\"у\")$, on the return $s = S_max (1 - f((φ - φ_\"у\" - φ_\"дс\")/φ_\"в\"))$. The cam turns at a constant speed, so $V = ω_k d s/d φ$ and $a = ω_k^2 d^2 s/d φ^2$; the largest values on the rise are"))
+        c.p(t("The follower's displacement on the rise is $s = S_max f(φ/φ_\"у\")$, on the return $s = S_max (1 - f((φ - φ_\"у\" - φ_\"дс\")/φ_\"в\"))$. The cam turns at a constant speed, so $V = ω_k (d s)/(d φ)$ and $a = ω_k^2 (d^2 s)/(d φ^2)$; the largest values on the rise are"))
     f1, f2, _ = law_max(v.law)
     mx = m.maxima
     h_num = math.radians(v.stroke) if rocker else v.stroke

@@ -207,6 +207,41 @@ def typeset(root: Path, source: str, output: str, shown: Path | None = None) -> 
     raise TmmError(f"the note could not be typeset ({why}); check the note template or {source}")
 
 
+PAGES_LABEL = "tmm-pages"
+PAGES_SOURCE = """#include "{source}"
+#context [#metadata((pages: query(heading.where(outlined: true)).filter(h => h.level <= 2).map(h => counter(page).at(h.location()).first()), total: counter(page).final().first())) <tmm-pages>]
+"""
+
+
+def page_numbers(root: Path, source: str = "note.typ") -> dict | None:
+    """The pages of the note as typst lays it out: {"pages": the page of each heading of the
+    contents (levels 1–2, in order), "total": the number of pages}, or None when it cannot be had
+    (the DOCX then goes without them). A private source beside `source` includes it and asks typst
+    (one more layout, in the same child)."""
+    root = Path(root)
+    probe = root / ".tmm-pages.typ"
+    child = None
+    try:
+        probe.write_text(PAGES_SOURCE.format(source=source), encoding="utf-8")
+        child = _child()
+        answer = child.ask({"root": os.path.abspath(root), "source": probe.name, "query": "<" + PAGES_LABEL + ">"})
+    except OSError:
+        return None
+    except BaseException:  # Ctrl-C, SIGTERM: the child ends now
+        _CHILDREN.clear()
+        if child is not None:
+            child.kill()
+        raise
+    finally:
+        probe.unlink(missing_ok=True)
+    if "died" in answer:
+        _CHILDREN.clear()
+    value = answer.get("value") if answer.get("ok") else None
+    if not isinstance(value, dict) or not isinstance(value.get("pages"), list):
+        return None
+    return value
+
+
 def _reason(code: int, err: bytes, memory: int) -> str:
     """Why the child died, in a few words (never its output).
 
@@ -293,6 +328,16 @@ def _child_main(argv: list[str]) -> None:
             answer({"message": "the typst package is missing; reinstall tmm (pip install tmm)"})
             continue
         base = Path(request["root"])
+        if request.get("query"):
+            try:
+                value = typst.query(str(base / request["source"]), request["query"], field="value", one=True,
+                                    root=str(base), font_paths=[str(FONTS_DIR)], ignore_system_fonts=True)
+                answer({"ok": True, "value": json.loads(value) if isinstance(value, str) else value})
+            except MemoryError:
+                answer({"message": "memory"})
+            except Exception as exc:  # typst.TypstError and its relatives
+                answer({"message": _typst_error(exc)})
+            continue
         try:
             _, warnings = _compile(typst, str(base / request["source"]), output=str(base / request["output"]),
                                    root=str(base), font_paths=[str(FONTS_DIR)], ignore_system_fonts=True,

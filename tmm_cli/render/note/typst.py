@@ -103,13 +103,21 @@ def literal_text(text: str) -> str:
     return escape_all(text)
 
 
+# a derivative written (d γ)/(d φ) (one fraction in the tree: Word's stacked dγ/dφ) reads dγ/dφ on the line
+DIFFERENTIAL = re.compile(r"\((d(?:\^\d)? [^()/\"]+)\)/\((d [^()/\"]+)\)")
+
+
 def inline_math(math: str) -> str:
-    """Inline math keeps a/b on the line: every / outside strings becomes \\/.
+    """Inline math keeps a/b on the line: every / outside strings becomes \\/; a derivative's
+    parentheses go, as typst drops them from a fraction.
+
+    >>> print(inline_math("ω = ω_k (d γ)/(d φ)"), inline_math("ε = ω_k^2 (d^2 γ)/(d φ^2)"))
+    ω = ω_k d γ\\/d φ ε = ω_k^2 d^2 γ\\/d φ^2
 
     >>> print(inline_math('a/b + "°/мм"'))
     a\\/b + "°/мм"
     """
-    math = sci_math(math)
+    math = DIFFERENTIAL.sub(r"\1/\2", sci_math(math))
     out, quoted = [], False
     for i, ch in enumerate(math):
         if ch == '"' and (i == 0 or math[i - 1] != "\\"):

@@ -13,7 +13,7 @@ import math
 import numpy as np
 
 from .layout import DESCENT, SUB_DESCENT
-from .paper import H_LABEL, H_MIN_LABEL, Sheet, _dirs_towards, rich_parts
+from .paper import H_LABEL, H_MIN_LABEL, ROOM, Sheet, _dirs_towards, rich_parts
 
 MM = 1000.0  # real millimetres per metre
 GAP = 2.0  # between fields
@@ -53,11 +53,12 @@ def scale_line(sh: Sheet, f, text: str, h: float = H_LABEL) -> None:
 
 
 def wrap_items(sh: Sheet, items: list[str], width: float, h: float = H_NOTE, sep: str = ";  ") -> list[str]:
-    """Items joined by `sep` into lines no wider than `width` [mm] (an item is never split)."""
+    """Items joined by `sep` into lines no wider than `width` [mm] (an item is never split), with
+    room for a CAD program's wider font (paper.ROOM)."""
     lines, cur = [], ""
     for it in items:
         cand = f"{cur}{sep}{it}" if cur else it
-        if cur and sh.text_width(cand, h) > width:
+        if cur and sh.text_width(cand, h) * ROOM > width:
             lines.append(cur)
             cur = it
         else:
