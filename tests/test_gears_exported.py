@@ -4,6 +4,7 @@ the independent checker of tests/reference_gears.py — nothing of tmm_cli.gears
 producing the JSON. The cam does not depend on the crank speed (Table 1.2 gives n_k); its checks
 from the exported curve are in test_cam_exported.py (all 68 variants)."""
 
+import math
 from fractions import Fraction
 
 import pytest
@@ -54,6 +55,18 @@ def check_exported(g, n_cr):
     assert p["size"] <= p["smallest"]["size"] + 1
     assert abs(p["ratio_error_pct"]) <= min(abs(a["ratio_error_pct"]) for a in near) + 1e-9
     assert g["checks"]["ok"] is True
+    check_overlap_angles(g["spur"])
+
+
+def check_overlap_angles(sp):
+    """φ_α1, φ_α2 (the turn of each gear while one tooth pair is in contact, §2.3) from the JSON's
+    own diameters and α_w: each base circle rolls off the active line, so with t_j = tg α_aj − tg α_w
+    (cos α_aj = d_bj/d_aj), φ_α1 = t1 + (z2/z1)·t2 and φ_α2 = t2 + (z1/z2)·t1 [rad]."""
+    z1, z2 = sp["z1"], sp["z2"]
+    tw = math.tan(math.radians(sp["alpha_w_deg"]))
+    t1, t2 = (math.sqrt(da * da - db * db) / db - tw for da, db in zip(sp["da_mm"], sp["db_mm"]))
+    assert sp["phi_alpha_deg"][0] == pytest.approx(math.degrees(t1 + z2 / z1 * t2), abs=2e-4)
+    assert sp["phi_alpha_deg"][1] == pytest.approx(math.degrees(t2 + z1 / z2 * t1), abs=2e-4)
 
 
 @pytest.mark.parametrize("n_cr", range(30, 961, 10))

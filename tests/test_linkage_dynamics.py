@@ -6,6 +6,7 @@ the reactions; the crank-slider's and the four-bar's statics by hand; the work o
 area of the load diagram; the reduced inertia against the inertia forces' power; the speed with the
 flywheel keeping δ; random four-bars (hypothesis)."""
 
+import dataclasses
 import math
 import tomllib
 from pathlib import Path
@@ -232,6 +233,60 @@ def test_flywheel_keeps_the_speed_within_delta(name):
     assert fw.delta_actual == pytest.approx(fw.delta, rel=0.05)
     assert fw.mertsalov.J_fl == pytest.approx(fw.wittenbauer.J_fl, rel=0.05)
     assert fw.size.J == fw.J == fw.mertsalov.J_fl > 0
+
+
+def _speed_from_energy(dT, J_r, J, omega_m):
+    """ω(φ) of the machine with a flywheel J, from its energy alone: T₀ + ΔT(φ) = (J + J_r(φ))·ω²/2,
+    T₀ such that (ω_max + ω_min)/2 = ω_m (scipy's root finder; not :func:`flywheel.speed`)."""
+    from scipy.optimize import brentq
+
+    total = J + np.asarray(J_r)
+
+    def omega(t0):
+        return np.sqrt(2 * (t0 + np.asarray(dT)) / total)
+
+    def off(t0):
+        w = omega(t0)
+        return (w.max() + w.min()) / 2 - omega_m
+
+    lo = float(np.max(-np.asarray(dT)))
+    t0 = brentq(off, lo, lo + float(np.max(total)) * omega_m ** 2 * 4 + 1.0, xtol=1e-14, rtol=1e-15)
+    return omega(t0)
+
+
+@pytest.mark.parametrize("name", WITH_MASSES)
+def test_mertsalov_is_exact_as_delta_goes_to_zero(name):
+    """Mertsalov takes T_II = J_II·ω²/2 at ω_m; the speed really swings by ±δ/2, so his flywheel is
+    right to first order in δ: at δ = 0.002 the machine's speed with it, from its energy, swings by
+    δ within 0.5 % (at the file's δ it is 0.5–2 % off, which is why the test above allows 5 %),
+    and Wittenbauer's exact construction gives the same J within 0.5 %. (T_II = J_II·ω² would be
+    1–40 % off here, whatever δ.)"""
+    from tmm_cli.linkage.flywheel import flywheel
+
+    s = sheet2(name)
+    d = s.dynamics
+    delta = 0.002
+    fw = flywheel(d, dataclasses.replace(s.input.dynamics, delta=delta))
+    assert fw.mertsalov.J_fl > 0
+    w = _speed_from_energy(d.dT, d.J_r, fw.mertsalov.J_fl, d.omega_mean)
+    assert (w.max() - w.min()) / d.omega_mean == pytest.approx(delta, rel=5e-3)
+    assert fw.mertsalov.J_fl == pytest.approx(fw.wittenbauer.J_fl, rel=5e-3)
+
+
+def test_mertsalov_by_hand_for_a_machine_that_does_no_work():
+    """No work is done (ΔT = 0) but the second group's inertia swings, J_II = J₀ + a·cos φ: the
+    first group's energy is ΔT_I = −a·cos φ·ω_m²/2, its swing a·ω_m², so J_I = a/δ. Check: the
+    energy (J_I + J_II)·ω²/2 is constant, so ω ∝ (J_I + J_II)^(−1/2) swings by ≈ a/J_I = δ."""
+    from tmm_cli.linkage.flywheel import mertsalov
+
+    a, j0, w_m, delta = 0.3, 0.5, 12.0, 0.01
+    phi = np.linspace(0, 2 * np.pi, 721)
+    j_ii = j0 + a * np.cos(phi)
+    me = mertsalov(np.zeros_like(phi), j_ii, w_m, delta, 1.0)
+    assert me.J_I == pytest.approx(a / delta, rel=1e-12)
+    assert me.J_fl == pytest.approx(a / delta - 1.0, rel=1e-12)
+    w = _speed_from_energy(np.zeros_like(phi), me.J_I + j_ii, 0.0, w_m)
+    assert (w.max() - w.min()) / w_m == pytest.approx(delta, rel=0.02)  # O(δ) + O(J₀/J_I)
 
 
 def test_no_flywheel_needed_when_the_machine_is_heavy_enough():

@@ -72,7 +72,7 @@ CASES = [
     (("crank", "positions"), 12, "'positions' is read as 'crank.positions': a top-level key must come before"),
     (("group",), [], "the mechanism has no [[group]]"),
     (("group",), [{}] * 21, "'group' has 21 entries; at most 20 are read"),
-    (("group", 0, "kind"), "RPP", "'group[1].kind' is 'RPP'; the kinds are RRR, RRP and RPR"),
+    (("group", 0, "kind"), "RRRR", "'group[1].kind' is 'RRRR'; the kinds are RRR, RRP, RPR, PRP and RPP"),
     (("group", 0, "kind"), 3, "'group[1].kind' must be text in quotes"),
     (("group", 0, "joints"), ["A", "B"], "'group[1].joints' must be a list of 3 joint names"),
     (("group", 0, "joints"), ["A", "A", "C"], "'group[1].joints' names a joint twice"),

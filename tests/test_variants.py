@@ -28,11 +28,14 @@ def test_schemes_cycle_and_rockers_have_lengths(table):
             assert 0.01 <= v.stroke <= 0.3  # S_max in metres
 
 
-@pytest.mark.skipif(not SEED.exists(), reason="the textbook seed is not beside the repo")
-def test_every_row_matches_the_seed_text(table):
-    """Independent re-reading of Table 1.2 from the OCR text of the book."""
+BOOK = ROOT / "tests" / "data" / "table_1_2_book.md"  # the book's Table 1.2, verbatim, with its source
+
+
+def test_every_row_matches_the_book(table):
+    """Independent re-reading of Table 1.2 from the OCR text of the book (kept in the repo, so
+    that it runs on every clone)."""
     rows = {}
-    for line in SEED.read_text(encoding="utf-8").splitlines():
+    for line in BOOK.read_text(encoding="utf-8").splitlines():
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
         if len(cells) == 10 and cells[0].isdigit() and cells[1] in ("1", "2", "3", "4"):
             rows[int(cells[0])] = cells
@@ -47,6 +50,17 @@ def test_every_row_matches_the_seed_text(table):
         assert v.stroke == num(c[5])
         assert v.law == int(c[6])
         assert (v.phi_rise_deg, v.phi_far_dwell_deg, v.phi_return_deg) == (num(c[7]), num(c[8]), num(c[9]))
+
+
+@pytest.mark.skipif(not SEED.exists(), reason="the seeds are not beside the repo (only the project's own machine)")
+def test_the_books_table_in_the_repo_is_the_seeds():
+    """tests/data/table_1_2_book.md holds the seed's lines unchanged (from 'Таблица 1.2' to row 68)."""
+    seed = SEED.read_text(encoding="utf-8").splitlines()
+    start = seed.index("Таблица 1.2")
+    end = next(i for i, ln in enumerate(seed) if ln.startswith("| 68 |"))
+    kept = BOOK.read_text(encoding="utf-8").splitlines()
+    kept = kept[kept.index("Таблица 1.2"):]
+    assert kept == seed[start:end + 1]
 
 
 def _row(**over):

@@ -23,6 +23,7 @@ from .commands.note import note_cmd
 from .commands.options import CONTEXT, apply_option_limits, lang_option
 from .commands.planetary import planetary_cmd
 from .commands.project import project_cmd
+from .commands.synth import synth_cmd
 from .commands.variants import variants_cmd
 from .errors import TmmError
 from .i18n import N_
@@ -189,7 +190,9 @@ _WORDS = (N_("error"), N_("internal error"), N_("aborted"), N_("interrupted"), N
 def _fail(message: str, lang: str = "en") -> None:
     from .i18n.errors import translate_error
 
-    line = translate_error(message, lang)
+    from .inputs.names import visible
+
+    line = visible(translate_error(message, lang))  # a path or a name in it: its control characters as codes
     click.echo(f"tmm: {_words(lang)('error')}: {line}", err=True)
     sys.exit(2)
 
@@ -205,7 +208,7 @@ def cli(lang):
     """
 
 
-for _command in (variants_cmd, project_cmd, cam_cmd, gears_cmd, planetary_cmd, linkage_cmd, note_cmd, assign_cmd, batch_cmd,
+for _command in (variants_cmd, project_cmd, cam_cmd, gears_cmd, planetary_cmd, linkage_cmd, synth_cmd, note_cmd, assign_cmd, batch_cmd,
                  check_cmd, carrier_cmd, chain_cmd):
     cli.add_command(_command)
 apply_option_limits(cli)

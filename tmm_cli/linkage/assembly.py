@@ -14,8 +14,8 @@ import numpy as np
 
 from ..errors import TmmError
 from ..records import record
-from .chain import solve
-from .groups import rrp_margin, rrr_margin
+from .chain import guide_frame, solve
+from .groups import rpr_margin, rrp_margin, rrr_margin
 from .mechanism import Group, Mechanism
 
 GRID = 720  # samples per turn
@@ -60,8 +60,24 @@ def group_margin(mech: Mechanism, g: Group, phi):
     if g.kind == "RRR":
         return rrr_margin(k.z[g.joints[0]], k.z[g.joints[2]], *g.lengths)
     if g.kind == "RRP":
+        if g.guide.moving:
+            through, unit = guide_frame(mech, g, k)
+            return rrp_margin(k.z[g.joints[0]], through, unit, g.lengths[0])
         return rrp_margin(k.z[g.joints[0]], g.guide.through, g.guide.unit, g.lengths[0])
+    if g.kind == "PRP":  # the guides must cross: the sine of their angle, times the mechanism's size
+        e1, e2 = (np.exp(1j * np.angle(_guide_unit(mech, g, k, gd))) for gd in g.guides)
+        return np.abs((np.conj(e1) * e2).imag) * mech.scale_m
+    if g.kind == "RPP":  # the slot crosses the guide at slot_deg, checked when read
+        return np.full(k.phi.shape, abs(math.sin(g.slot)) * mech.scale_m)
+    if g.offset != 0.0:
+        return rpr_margin(k.z[g.joints[0]], k.z[g.joints[1]], g.offset)
     return np.abs(k.z[g.joints[0]] - k.z[g.joints[1]])
+
+
+def _guide_unit(mech, g, k, gd):
+    from .chain import _guide_line
+
+    return np.zeros(k.phi.shape, dtype=complex) + _guide_line(mech, g, k.z, k.angle, gd)[1]
 
 
 def smallest_margin(mech: Mechanism, g: Group) -> Margin:
@@ -94,7 +110,14 @@ def _failure(mech: Mechanism, g: Group, worst: Margin) -> str:
         h = g.lengths[0] - worst.margin
         return (f"{where}: {ja} comes {h:.7g} m from the guide of {jb} but {ja}{jb} = {g.lengths[0]:.7g} m; make "
                 f"{ja}{jb} longer than {h:.7g} m")
+    if g.kind in ("PRP", "RPP"):
+        return (f"{where}: the guides of {g.joints[0]} run parallel there (they do not cross); turn one of "
+                "them")
     ja, jc = g.joints
+    if g.offset != 0.0:
+        d = abs(g.offset) + worst.margin
+        return (f"{where}: the block's joint {ja} comes {d:.7g} m from the pivot {jc} but the slot passes "
+                f"{abs(g.offset):.7g} m from it; make the offset smaller than {d:.7g} m or move {jc}")
     return (f"{where}: the block's joint {ja} passes through the pivot {jc} of the slotted link (its angle is "
             f"undefined); move {jc} off the path of {ja}")
 

@@ -111,6 +111,10 @@ def dynamics(mech: Mechanism, inp: Sheet2Input, stroke: Stroke | None, kin: Kine
     a_r = np.zeros(travel.shape)
     if inp.load is not None and stroke is not None:
         a_r = a_r + load_work(inp.load, stroke, mech, kin, travel)
+    for gl in inp.gas:
+        from .gas import gas_work, piston
+
+        a_r = a_r + gas_work(gl, piston(gl, mech), mech, kin)
     if inp.gravity:
         a_r = a_r + weights_work(kin, inp.masses)
     rotor = inp.dynamics.J_rotor if inp.dynamics is not None else 0.0

@@ -109,6 +109,13 @@ def applied(mech: Mechanism, inp: Sheet2Input, stroke: Stroke | None, kin: Kinem
             mom = inertia_moment(ms.J, kin.epsilon[ms.link])
             if np.any(mom != 0.0):
                 couples.append(AppliedCouple(ms.link, n, "inertia", f"MΦ{n}", mom))
+    for gl in inp.gas:
+        from .gas import gas_force, piston
+
+        ln = mech.link(gl.link)
+        pin = ln.pins[0]
+        forces.append(AppliedForce(ln.name, ln.number, "load", f"P{ln.number}", pin, kin.z[pin],
+                                   gas_force(gl, piston(gl, mech), mech, kin)))
     if inp.load is not None and stroke is not None:
         ld = inp.load
         ln = mech.link(ld.link)

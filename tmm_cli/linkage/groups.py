@@ -97,15 +97,36 @@ def rrp_position(a, through: complex, unit: complex, length: float, branch: int)
     return through + s * unit, s
 
 
-def rpr_position(a, c):
-    """The slotted link of an RPR group: ρ = |CA| [m] and its direction θ from +x [rad] (kind 3).
+def rpr_position(a, c, offset: float = 0.0):
+    """The slotted link of an RPR group: the block's place t along the slot [m] and the slot's
+    direction θ from +x [rad] (kind 3).
 
-    The link turns about C and the block on the joint A slides along it, so the link points from
-    C at A: A − C = ρ·e^{iθ}. The link's angle as named AC (from A towards C) is θ + π.
+    The link turns about C and the block on the joint A slides along its slot, the line
+    C + d·n + t·u at the distance d (`offset`) from C, u = e^{iθ} pointing from the foot of the
+    perpendicular from C towards the block and n = i·u: A − C = (t + i·d)·u, so
+    t = √(|CA|² − d²) and θ = arg(A − C) − arctan(d/t). With d = 0 the link points from C at A
+    (t = ρ = |CA|); its angle as named AC (from A towards C) is then θ + π.
 
     >>> rho, theta = rpr_position(0.1j, -0.04j)
     >>> round(float(rho), 12), round(float(np.degrees(theta)), 12)
     (0.14, 90.0)
+    >>> t, theta = rpr_position(0.3 + 0.4j, 0j, 0.3)   # |CA| = 0.5, d = 0.3: t = 0.4
+    >>> round(float(t), 12), round(float(np.degrees(theta)), 9)   # u = (0.3 + 0.4i)/(0.4 + 0.3i)
+    (0.4, 16.260204708)
     """
     r = np.asarray(a) - np.asarray(c)
-    return np.abs(r), np.angle(r)
+    if offset == 0.0:
+        return np.abs(r), np.angle(r)
+    with np.errstate(invalid="ignore"):
+        t = np.sqrt(np.abs(r) ** 2 - offset * offset)
+    return t, np.angle(r / (t + 1j * offset))
+
+
+def rpr_margin(a, c, offset: float = 0.0):
+    """Assembly margin of an RPR group [m]: |CA| − |d| (the block's joint cannot come nearer the
+    pivot than the slot's offset; at |CA| = |d| the slot's direction is undefined).
+
+    >>> float(rpr_margin(0.5j, 0j, 0.3))
+    0.2
+    """
+    return np.abs(np.asarray(a) - np.asarray(c)) - abs(offset)

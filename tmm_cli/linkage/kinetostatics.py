@@ -29,7 +29,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..records import record
-from .chain import Kinematics
+from .chain import Kinematics, guide_frame
 from .forces import Loading
 from .mechanism import Mechanism, Pair
 from .motion import cross, solve2
@@ -143,7 +143,7 @@ def rrp_reactions(a, b, unit, f2, f3, m2_b):
     return n2 * u, 1j * t2 * u, r03, -(r03 + f3)
 
 
-def rpr_reactions(a, c, f2, f3, m2_a, m3_c):
+def rpr_reactions(a, c, f2, f3, m2_a, m3_c, unit=None):
     """An RPR group's reactions: block 2 on the joint A, slotted link 3 turning about C.
 
     Returns (R₁₂, R₂₃, M₂₃, R₀₃): the force on the block at A, the block's force on the slotted
@@ -155,14 +155,67 @@ def rpr_reactions(a, c, f2, f3, m2_a, m3_c):
     >>> r12, r23, m23, r03 = rpr_reactions(0.2j, 0j, 0j, 0j, 0.0, 10.0)
     >>> [(round(float(x.real), 12), round(float(x.imag), 12) + 0.0) for x in (r12, r23, r03)], m23
     ([(50.0, 0.0), (50.0, 0.0), (-50.0, 0.0)], 0.0)
+
+    An offset slot (`unit`: the slot's direction u) takes the pressure along n = i·u with the arm
+    cross(A − C, n) = t about C, the block's place along the slot from the foot of the perpendicular.
+
+    >>> r12, r23, m23, r03 = rpr_reactions(0.3 + 0.4j, 0j, 0j, 0j, 0.0, 10.0, (0.3 + 0.4j) / (0.4 + 0.3j))
+    >>> round(float(abs(r23)), 9)   # t = 0.4: N = 10/0.4
+    25.0
     """
     r = a - c
-    rho = np.abs(r)
-    n = 1j * r / rho
+    if unit is None:
+        rho = np.abs(r)
+        n = 1j * r / rho
+    else:
+        n = 1j * unit
+        rho = cross(r, n)
     m23 = m2_a
     big_n = -(m3_c + m23) / rho  # ρ·N + M₃(C) + M₂₃ = 0
     r23 = big_n * n
     return r23 - f2, r23, m23, -(f3 + r23)
+
+
+def prp_reactions(e1, e2, f2, f3):
+    """A PRP group's reactions: block 2 on the guide G1 (along e1), block 3 on G2 (along e2), pinned
+    together at B. The guides press across themselves, N1·n1 and N2·n2 (n = i·e), with the slides'
+    couples (each block's own moment about B); the polygon of the group gives N1, N2, block 3's
+    the pin's R₂₃ = −(N2·n2 + F₃).
+
+    Two blocks on perpendicular guides (x and y) carrying 10 N along +x on block 3 only: the
+    guide of block 2 (along y) takes it, R₂₃ passes it on.
+
+    >>> r12, r23, r03 = prp_reactions(1j, 1 + 0j, 0j, 10 + 0j)
+    >>> [complex(round(x.real, 12) + 0.0, round(x.imag, 12) + 0.0) for x in (r12, r23, r03)]
+    [(-10+0j), (-10+0j), 0j]
+    """
+    n1, n2 = 1j * e1, 1j * e2
+    a, b = solve2(n1 + 0 * f2, n2 + 0 * f2, -(f2 + f3))
+    r03 = b * n2
+    return a * n1, -(r03 + f3), r03
+
+
+def rpp_reactions(a, y, es, eg, f2, f3, m2_a, m3_y):
+    """An RPP group's reactions: block 2 hinged at A in the slot (along es) of the yoke 3, which
+    slides on its guide (along eg) at Y.
+
+    Returns (R₁₂, R₂₃, M₂₃, R₀₃, M₀₃): the pin's force on the block at A; the block's pressure on
+    the yoke, across the slot, with the slide's couple M₂₃ (the block's moment about A); the guide's
+    force on the yoke, across the guide, at Y with its couple M₀₃ (the yoke's moments about Y).
+
+    A Scotch yoke (slot ⊥ guide along x) with 100 N against +x on the yoke: the block pushes it
+    with 100 N along +x; the guide takes the moment of that push about Y:
+
+    >>> r12, r23, m23, r03, m03 = rpp_reactions(0.05 + 0.05j, 0.05 + 0j, 1j, 1 + 0j, 0j, -100 + 0j, 0.0, 0.0)
+    >>> round(float(r23.real), 12), round(float(abs(r23.imag)), 12), round(float(abs(r03)), 12), round(float(m03), 12)
+    (100.0, 0.0, 0.0, 5.0)
+    """
+    ns, ng = 1j * es, 1j * eg
+    m23 = m2_a
+    p, q = solve2(ns + 0 * f3, ng + 0 * f3, -f3)
+    r23, r03 = p * ns, q * ng
+    m03 = -(m3_y + cross(a - y, r23) + m23)
+    return r23 - f2, r23, m23, r03, m03
 
 
 def kinetostatics(mech: Mechanism, loading: Loading, kin: Kinematics) -> Kinetostatics:
@@ -199,15 +252,32 @@ def kinetostatics(mech: Mechanism, loading: Loading, kin: Kinematics) -> Kinetos
             give(pc, z[jc], rn03 + rt03, rn03, rt03)
         elif g.kind == "RRP":
             ja, jb = g.joints
-            rn12, rt12, r03, r23 = rrp_reactions(z[ja], z[jb], g.guide.unit, b2.resultant(shape), b3.resultant(shape),
+            unit = g.guide.unit if not g.guide.moving else guide_frame(mech, g, kin)[1]
+            rn12, rt12, r03, r23 = rrp_reactions(z[ja], z[jb], unit, b2.resultant(shape), b3.resultant(shape),
                                                  b2.moment(z[jb], shape))
             give(pb, z[jb], r23)
             give(pc, z[jb], r03, couple=-b3.moment(z[jb], shape))
             give(pa, z[ja], rn12 + rt12, rn12, rt12)
+        elif g.kind == "PRP":
+            (jb,) = g.joints
+            e1, e2 = np.exp(1j * kin.angle[g.links[0]]), np.exp(1j * kin.angle[g.links[1]])
+            r12, r23, r03 = prp_reactions(e1, e2, b2.resultant(shape), b3.resultant(shape))
+            give(pb, z[jb], r23)
+            give(pc, z[jb], r03, couple=-b3.moment(z[jb], shape))
+            give(pa, z[jb], r12, couple=-b2.moment(z[jb], shape))
+        elif g.kind == "RPP":
+            ja, jy = g.joints
+            es, eg = np.exp(1j * kin.angle[g.links[0]]), np.exp(1j * kin.angle[g.links[1]])
+            r12, r23, m23, r03, m03 = rpp_reactions(z[ja], z[jy], es, eg, b2.resultant(shape), b3.resultant(shape),
+                                                    b2.moment(z[ja], shape), b3.moment(z[jy], shape))
+            give(pb, z[ja], r23, couple=m23)
+            give(pc, z[jy], r03, couple=m03)
+            give(pa, z[ja], r12)
         else:
             ja, jc = g.joints
+            unit = None if g.offset == 0.0 else np.exp(1j * kin.angle[g.links[1]])
             r12, r23, m23, r03 = rpr_reactions(z[ja], z[jc], b2.resultant(shape), b3.resultant(shape),
-                                               b2.moment(z[ja], shape), b3.moment(z[jc], shape))
+                                               b2.moment(z[ja], shape), b3.moment(z[jc], shape), unit)
             give(pb, z[ja], r23, couple=m23)
             give(pa, z[ja], r12)
             give(pc, z[jc], r03)

@@ -25,11 +25,11 @@ import math
 import numpy as np
 
 from ..records import record
-from .chain import Kinematics
+from .chain import Kinematics, slider_unit, solve
 from .mechanism import Mechanism
 from .positions import Cycle, output_coordinate
 
-LOAD_KEYS = ("on", "stroke", "force", "moment", "working")
+LOAD_KEYS = ("on", "stroke", "force", "moment", "working", "direction_deg")
 TABLE_MAX = 1000  # entries of the load table
 FORCE_MAX = 1.0e9  # [N] or [N·m]
 WORKING_TOLERANCE = 1e-9  # [rad] of crank travel: the end of the working stroke still belongs to it
@@ -43,6 +43,7 @@ class Load:
     kind: str  # 'force' (a slider, [N]) | 'moment' (a turning link, [N·m])
     stroke: tuple[float, ...]  # fractions of the stroke, 0 … 1, non-decreasing
     values: tuple[float, ...]  # magnitudes at those fractions, ≥ 0
+    direction: float | None = None  # a force's own direction from +x [rad] (None: against the working motion)
 
 
 @record
@@ -54,8 +55,16 @@ class Stroke:
     working: float  # crank travel of the working stroke [rad]
     length: float  # the stroke H [m] or the swing ψ [rad]
     direction: int  # +1: the working stroke increases the output coordinate
-    q0: float  # the output coordinate at position 0 [m or rad]
+    q0: float  # the output coordinate where the working stroke starts [m or rad]
     kind: str  # 'slider' | 'rocker'
+    origin: float  # crank angle where the working stroke starts [rad] (position 0 unless start_deg moves it)
+    unit: complex | None = None  # a slider output's fixed guide direction (None: a rocker or a moving guide)
+
+    @property
+    def lead(self) -> float:
+        """The crank's travel from position 0 to the working stroke's start [rad], in [0, 2π)."""
+        t = float(np.remainder(self.sense * (self.origin - self.start), 2.0 * math.pi))
+        return 0.0 if t > 2.0 * math.pi - WORKING_TOLERANCE else t
 
 
 def stroke_of(c: Cycle) -> Stroke | None:
@@ -63,8 +72,11 @@ def stroke_of(c: Cycle) -> Stroke | None:
     if c.stroke is None:
         return None
     mech = c.mechanism
-    q0 = float(output_coordinate(mech, c.curve.kin)[0][0])
-    return Stroke(c.start, mech.crank.sense, c.working, c.stroke, c.direction, q0, mech.output.kind)
+    origin = c.extremes[0]
+    q0 = float(output_coordinate(mech, solve(mech, [origin]))[0][0])
+    gd = dict(mech.guided()).get(mech.output.link) if mech.output.kind == "slider" else None
+    unit = gd.unit if gd is not None and not gd.moving else None
+    return Stroke(c.start, mech.crank.sense, c.working, c.stroke, c.direction, q0, mech.output.kind, origin, unit)
 
 
 def table_value(load: Load, fraction):
@@ -92,12 +104,19 @@ def table_integral(load: Load, fraction):
     return cum[j] + (f - x[j]) * (y[j] + table_value(load, f)) / 2.0
 
 
+def phase(stroke: Stroke, phi):
+    """The crank's travel since the working stroke last began [rad, 0 … 2π) at the crank angles
+    `phi` — measured from the extreme position where the working stroke starts, whatever position 0
+    is (``crank.start_deg`` may put it anywhere in the turn)."""
+    t = np.remainder(stroke.sense * (np.asarray(phi, dtype=float) - stroke.origin), 2.0 * math.pi)
+    return np.where(t > 2.0 * math.pi - WORKING_TOLERANCE, 0.0, t)
+
+
 def progress(stroke: Stroke, mech: Mechanism, kin: Kinematics):
-    """(travel, fraction, working) at the kinematics' angles: the crank's travel since position 0
-    [rad, 0 … 2π), the fraction of the stroke covered since the working stroke began (0 … 1), and
-    whether the crank is on the working stroke (its end included)."""
-    travel = np.remainder(stroke.sense * (kin.phi - stroke.start), 2.0 * math.pi)
-    travel = np.where(travel > 2.0 * math.pi - WORKING_TOLERANCE, 0.0, travel)
+    """(phase, fraction, working) at the kinematics' angles: the crank's travel since the working
+    stroke began [rad, 0 … 2π) (:func:`phase`), the fraction of the stroke covered since then
+    (0 … 1), and whether the crank is on the working stroke (its end included)."""
+    travel = phase(stroke, kin.phi)
     q = output_coordinate(mech, kin)[0]
     dq = q - stroke.q0
     if stroke.kind == "rocker":
@@ -114,23 +133,50 @@ def load_value(load: Load, stroke: Stroke, mech: Mechanism, kin: Kinematics):
     size = np.where(working, table_value(load, fraction), 0.0)
     if load.kind == "moment":
         return -stroke.direction * size
-    guide = mech.groups[mech.link(load.link).group - 1].guide
-    return -stroke.direction * size * guide.unit
+    if load.direction is not None:  # its own fixed direction (a cutting force with a vertical part)
+        return size * complex(math.cos(load.direction), math.sin(load.direction))
+    g = mech.groups[mech.link(load.link).group - 1]
+    if g.kind == "RRP" and not g.guide.moving:
+        return -stroke.direction * size * g.guide.unit
+    return -stroke.direction * size * slider_unit(mech, load.link, kin)
+
+
+def _along(load: Load, stroke: Stroke) -> float:
+    """The force's component along the working motion per unit of its size: −1 for a load against
+    it; cos of the angle to the guide (signed) for a force of its own direction — only that part works."""
+    if load.direction is None or stroke.unit is None:
+        return -1.0
+    w = stroke.direction * stroke.unit
+    return math.cos(load.direction) * w.real + math.sin(load.direction) * w.imag
+
+
+def _cumulative_work(load: Load, stroke: Stroke, fraction, theta):
+    """The load's work [J] since the working stroke began at crank travel `theta` from that start
+    (unwrapped: every whole turn adds one turn's work −H·∫₀¹F)."""
+    turns = np.floor((theta + WORKING_TOLERANCE) / (2.0 * math.pi))
+    within = theta - turns * 2.0 * math.pi
+    whole = float(table_integral(load, 1.0))
+    done = np.where(within <= stroke.working + WORKING_TOLERANCE, table_integral(load, fraction), whole)
+    return _along(load, stroke) * stroke.length * (done + turns * whole)
 
 
 def load_work(load: Load, stroke: Stroke, mech: Mechanism, kin: Kinematics, travel=None):
-    """The load's work since position 0 [J], exactly: −H·∫₀^f F(x) dx on the working stroke (f the
-    fraction covered), −H·∫₀¹ F(x) dx on the return stroke (H the stroke, or the swing in rad).
-    `travel` (the crank's travel since position 0 [rad], up to 2π) tells a whole turn's end from
-    its start; without it the angles are taken within the first turn.
+    """The load's work since position 0 [J], exactly: the area under the load diagram times the
+    stroke, −H·∫₀^f F(x) dx on the working stroke (f the fraction covered), −H·∫₀¹ F(x) dx over
+    a whole working stroke (H the stroke, or the swing in rad), counted from the working stroke's
+    start and shifted to position 0. `travel` (the crank's travel since position 0 [rad], up to 2π)
+    tells a whole turn's end from its start; without it the angles are taken within the first turn.
 
     The power F·v = −F·H·df/dt (the force opposes the motion that increases f), so the work is
     the area under the load diagram times the stroke, with a minus sign."""
-    _, fraction, working = progress(stroke, mech, kin)
-    if travel is not None:
-        working = np.asarray(travel) <= stroke.working + WORKING_TOLERANCE
-    done = np.where(working, table_integral(load, fraction), table_integral(load, 1.0))
-    return -stroke.length * done
+    _, fraction, _ = progress(stroke, mech, kin)
+    if travel is None:
+        travel = np.remainder(stroke.sense * (kin.phi - stroke.start), 2.0 * math.pi)
+        travel = np.where(travel > 2.0 * math.pi - WORKING_TOLERANCE, 0.0, travel)
+    theta = np.asarray(travel, dtype=float) - stroke.lead
+    _, f0, _ = progress(stroke, mech, solve(mech, [stroke.start]))
+    at_zero = _cumulative_work(load, stroke, f0, np.array([-stroke.lead]))
+    return _cumulative_work(load, stroke, fraction, theta) - at_zero[0]
 
 
 def _numbers(r, value, key: str, example: str) -> tuple[float, ...]:
@@ -179,12 +225,22 @@ def parse_load(r, mech: Mechanism, raw) -> Load | None:
     if stroke[0] != 0.0 or stroke[-1] != 1.0 or any(b < a for a, b in zip(stroke, stroke[1:])):
         r.fail("'load.stroke' must run from 0 to 1 without decreasing (fractions of the stroke; repeat a fraction "
                "for a jump), e.g. stroke = [0.0, 0.5, 0.5, 1.0]")
+    direction = None
+    if "direction_deg" in t:
+        gd = dict(mech.guided()).get(ln.name)
+        if kind != "force" or gd is None or gd.moving:
+            r.fail("'load.direction_deg' gives a force its own direction: it acts on a slider on a fixed guide; leave it "
+                   "out here (the load then opposes the working motion)")
+        direction = math.radians(r.number(t["direction_deg"], "load.direction_deg", "direction_deg = 170") % 360.0)
+        if abs(math.cos(direction - gd.angle)) < 1e-6:
+            r.fail("'load.direction_deg' is across the slider's guide: such a force does no work and is no useful "
+                   "resistance; give a direction with a part along the guide")
     unit = "N" if kind == "force" else "N·m"
     for v in values:
         if not 0.0 <= v <= FORCE_MAX:
             r.fail(f"'load.{values_key}' has {v:g}; give magnitudes in [0, {FORCE_MAX:g}] {unit} (the load always "
                    "opposes the working motion)")
-    return Load(ln.name, kind, stroke, values)
+    return Load(ln.name, kind, stroke, values, direction)
 
 
 def _output_key(ln) -> str:

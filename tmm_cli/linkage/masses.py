@@ -88,14 +88,14 @@ def _centre(r, mech: Mechanism, ln: Link, value, key: str, where: str):
     on_link = set(ln.pins) | {p.name for p in mech.points if p.link == ln.name}
     if value is None:
         if ln.kind in ("slider", "block"):
-            return ln.name
+            return ln.pins[0]  # its joint (a PRP's block B′: the pin B)
         if ln.kind == "slotted":
             r.fail(f"'{key}' is missing: the slotted link {ln.name} has no fixed middle (the block slides along it); "
                    f"give its centre of mass as a [[point]] of the link, e.g. centre = \"S{ln.number}\"")
         return None
     name = r.name(value, key, 'centre = "S2"')
     if ln.kind in ("slider", "block"):
-        if name != ln.name:
+        if name != ln.pins[0]:
             r.fail(f"'{key}' is {name!r}: the centre of mass of the {ln.kind} {ln.name} is its joint {ln.name}; "
                    "leave centre out")
         return name
@@ -142,7 +142,7 @@ def parse_masses(r, mech: Mechanism, raw) -> tuple[Mass, ...]:
         inertia = r.number(t.get("J", 0.0), f"{key}.J", "J = 0.012")
         if not 0.0 <= inertia <= INERTIA_MAX:
             r.fail(f"'{key}.J' is {inertia:g}; a moment of inertia must lie in [0, {INERTIA_MAX:g}] kg·m²")
-        if ln.kind == "slider" and inertia != 0.0:
+        if ln.kind == "slider" and inertia != 0.0 and not mech.slider_turns(ln.name):
             r.fail(f"'{key}.J' is {inertia:g}: the slider {ln.name} does not turn; leave J out")
         centre = _centre(r, mech, ln, t.get("centre"), f"{key}.centre", where)
         ends = tuple(ln.axis) if centre is None else None

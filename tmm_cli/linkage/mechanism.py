@@ -15,7 +15,12 @@ group kind  joints (file order)   links 2k, 2k+1 (k = group's index)
 RRR         A, B, C (B new)       bar AB, bar BC
 RRP         A, B (B new, slider)  bar AB, slider B (a block on a fixed guide)
 RPR         A, C (nothing new)    block A (turns on the pin A), slotted link AC (turns
-                                  about C, the block slides along it)
+                                  about C, the block slides along it; its slot may pass
+                                  the offset d from C)
+PRP         B (new)               block B′ on the guide G1, block B on the guide G2, hinged
+                                  together at B (where the guides' lines cross)
+RPP         A, Y (Y new)          block A (hinged at A, slides in the yoke's slot), yoke Y
+                                  (slides along its guide; Y: where the slot crosses it)
 ==========  ====================  =======================================================
 
 The angle of a link named XY is the direction from X to Y (the crank's: from its pivot to its
@@ -31,20 +36,34 @@ import math
 
 from ..records import record
 
-KINDS = ("RRR", "RRP", "RPR")
+KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
 FRAME = 0  # the frame's link number
 
 
 @record
 class Guide:
-    """A fixed straight guide: the line through `through` in the direction `angle`."""
+    """A straight guide: fixed — the line through `through` in the direction `angle` — or on a
+    moving link (`link`): the line through the link's point at `along`, `across` from its pin
+    `base` towards `toward` (as a [[point]]), turned `angle` from the link's direction base →
+    toward; it turns with the link (:func:`.chain.guide_frame` gives it at any crank angle)."""
 
-    through: complex  # a point of the line [m]
-    angle: float  # direction from +x, counter-clockwise [rad]
+    through: complex  # a point of the line [m] (a fixed guide)
+    angle: float  # direction from +x, counter-clockwise [rad]; on a link: from the link's direction
+    link: str | None = None  # the link carrying the guide (None: the frame)
+    base: str = ""
+    toward: str = ""
+    along: float = 0.0  # [m]
+    across: float = 0.0  # [m]
+
+    @property
+    def moving(self) -> bool:
+        return self.link is not None
 
     @property
     def unit(self) -> complex:
-        """The guide's direction as a unit vector (complex x + iy)."""
+        """A fixed guide's direction as a unit vector (complex x + iy)."""
+        if self.link is not None:
+            raise ValueError("a moving guide's direction changes with the crank angle: use chain.guide_frame")
         return cmath.exp(1j * self.angle)
 
 
@@ -105,6 +124,9 @@ class Group:
     new: tuple[str, ...]  # the joints it places: RRR, RRP (B,); RPR ()
     links: tuple[str, str]  # its two links' names, numbers 2k and 2k+1
     pairs: tuple[Pair, Pair, Pair]  # its three pairs, from the first known joint along the chain
+    offset: float = 0.0  # RPR: the slot's distance d from the pivot C [m] (the slot is C + d·n + t·u)
+    guides: tuple[Guide, ...] = ()  # PRP: (G1, G2), the guides of its blocks B′ and B
+    slot: float = 0.0  # RPP: the yoke's slot from its guide's direction [rad]
 
     @property
     def numbers(self) -> tuple[int, int]:
@@ -154,13 +176,38 @@ class Mechanism:
     output: Output
     working: str | None  # 'away' | 'towards' (from [load] working), else None
     plan: str | None  # label of the position of the plans (file key `plan`), else None
-    extra: dict  # the sheet-2 tables as read ('gravity', 'mass', 'load', 'dynamics'), unchecked
+    extra: dict  # the sheet-2 tables as read ('gravity', 'mass', 'load', 'dynamics') and 'synthesis', unchecked
+    gas_head: tuple[str, complex] | None = None  # the first [[load]]'s piston and head, if a gas load
 
     def link(self, name: str) -> Link:
         for ln in self.links:
             if ln.name == name:
                 return ln
         raise KeyError(name)
+
+    def guided(self) -> tuple[tuple[str, Guide], ...]:
+        """Every slider or block that slides along a Guide, with it: an RRP's slider, a PRP's two
+        blocks, an RPP's yoke (an RPP's block slides in the yoke's slot, not on a Guide)."""
+        out = []
+        for g in self.groups:
+            if g.kind == "RRP":
+                out.append((g.links[1], g.guide))
+            elif g.kind == "PRP":
+                out += [(g.links[0], g.guides[0]), (g.links[1], g.guides[1])]
+            elif g.kind == "RPP":
+                out.append((g.links[1], g.guide))
+        return tuple(out)
+
+    def slider_turns(self, name: str) -> bool:
+        """Whether the slider or block link `name` turns (it rides on a moving guide or in a turning
+        yoke); a slider on a fixed guide only translates."""
+        ln = self.link(name)
+        g = self.groups[ln.group - 1]
+        if ln.kind == "block":
+            return True
+        if g.kind == "PRP":
+            return g.guides[0 if ln.number == 2 * g.index else 1].moving
+        return g.guide is not None and g.guide.moving
 
     def link_between(self, j1: str, j2: str) -> Link | None:
         """The moving link whose axis joins j1 and j2 (either order), or None."""
@@ -185,8 +232,8 @@ class Mechanism:
         """A size of the mechanism [m]: the largest length or frame coordinate (for tolerances)."""
         sizes = [self.crank.length, *(abs(z) for z in self.frame.values())]
         for g in self.groups:
-            sizes += list(g.lengths)
-            if g.guide is not None:
-                sizes.append(abs(g.guide.through))
+            sizes += list(g.lengths) + [abs(g.offset)]
+            for gd in ((g.guide,) if g.guide is not None else ()) + g.guides:
+                sizes.append(abs(gd.through) + abs(complex(gd.along, gd.across)))
         sizes += [abs(complex(p.along, p.across)) for p in self.points]
         return max(sizes)

@@ -27,8 +27,8 @@ The form (issue 24; SI units, angles in degrees from +x counter-clockwise)::
 
 Optional: ``output`` (a slider's joint, or a link by two joints; default: the last group's
 output link) and ``plan`` (the label of the position of the plans). The sheet-2 tables
-(``gravity``, ``[[mass]]``, ``[load]``, ``[dynamics]``) are kept as read, unchecked, in
-``Mechanism.extra``; only ``load.working`` ("away" | "towards") is read here, because it says
+(``gravity``, ``[[mass]]``, ``[load]``, ``[dynamics]``) and ``[synthesis]`` (the task of `tmm synth`,
+docs/synthesis.md) are kept as read, unchecked, in ``Mechanism.extra``; only ``load.working`` ("away" | "towards") is read here, because it says
 which stroke is the working one (position 0 is its start).
 
 Errors: one :class:`TmmError` line that names the key as a path (``crank.length``,
@@ -40,9 +40,11 @@ from __future__ import annotations
 import math
 
 from ..errors import TmmError
+from ..inputs.names import clean_text
 from .mechanism import FRAME, KINDS, Crank, Group, Guide, Link, Mechanism, Output, Pair, Point
 
 LENGTH_MAX = 100.0  # [m]: any length or coordinate
+LENGTH_MIN = 1.0e-4  # [m]: a link shorter than 0.1 mm is no machine's (and divides by nearly zero)
 RPM_MAX = 100_000.0
 MAX_GROUPS = 20
 MAX_POINTS = 100
@@ -50,18 +52,22 @@ MAX_FRAME = 50
 NAME_MAX = 12
 TOP_KEYS = ("name", "positions", "frame", "crank", "group", "point", "output", "plan")
 SHEET2_KEYS = ("gravity", "mass", "load", "dynamics")
+RECORD_KEYS = ("synthesis",)  # the task `tmm synth` found the mechanism from (kept as read, for the note)
 CRANK_KEYS = ("pivot", "joint", "length", "rpm", "omega", "sense", "start_deg")
 GROUP_KEYS = {
     "RRR": ("kind", "joints", "lengths", "branch"),
     "RRP": ("kind", "joints", "length", "guide", "branch"),
-    "RPR": ("kind", "joints"),
+    "RPR": ("kind", "joints", "offset"),
+    "PRP": ("kind", "joints", "guides"),
+    "RPP": ("kind", "joints", "guide", "slot_deg"),
 }
 POINT_KEYS = ("name", "link", "along", "across")
 BRANCHES = {"RRR": {"left": 1, "right": -1}, "RRP": {"ahead": 1, "behind": -1}}
 EXAMPLES = {
     "crank.pivot": 'pivot = "O"', "crank.joint": 'joint = "A"', "crank.length": "length = 0.06",
     "crank.rpm": "rpm = 1500", "crank.sense": 'sense = "ccw"', "RRR.joints": 'joints = ["A", "B", "C"]',
-    "RRP.joints": 'joints = ["A", "B"]', "RPR.joints": 'joints = ["A", "C"]', "lengths": "lengths = [0.20, 0.15]",
+    "RRP.joints": 'joints = ["A", "B"]', "RPR.joints": 'joints = ["A", "C"]', "PRP.joints": 'joints = ["B"]',
+    "RPP.joints": 'joints = ["A", "Y"]', "lengths": "lengths = [0.20, 0.15]",
     "length": "length = 0.25", "guide": "guide = { through = [0.0, 0.0], angle_deg = 0.0 }",
     "RRR.branch": 'branch = "left"', "RRP.branch": 'branch = "ahead"', "kind": 'kind = "RRR"',
     "point.name": 'name = "S2"', "point.link": 'link = ["A", "B"]', "point.along": "along = 0.1",
@@ -101,6 +107,9 @@ class _Reader:
         x = self.number(value, key, example)
         if not 0.0 < x <= LENGTH_MAX:
             self.fail(f"'{key}' is {x:g}; a length must lie in (0, {LENGTH_MAX:g}] m")
+        if x < LENGTH_MIN:
+            self.fail(f"'{key}' is {x:g} m, shorter than {LENGTH_MIN:g} m (0.1 mm): no link of a machine is; give "
+                      f"lengths in metres, e.g. {example}")
         return x
 
     def coordinate(self, value, key: str, example: str) -> float:
@@ -215,8 +224,31 @@ def _crank(r: _Reader, b: _Builder, data) -> Crank:
     return Crank(pivot, joint, length, omega if sense == "ccw" else -omega, start)
 
 
-def _guide(r: _Reader, value, key: str) -> Guide:
-    t = r.table(value, key, ("through", "angle_deg"))
+def _moving_guide(r: _Reader, b: "_Builder", t: dict, key: str) -> Guide:
+    """A guide on a link placed before the group: ``{ link = [j1, j2], along, across, angle_deg }``."""
+    ex = 'guide = { link = ["O2", "B"], along = 0.0, across = 0.0, angle_deg = 0.0 }'
+    j1, j2 = r.names(t["link"], f"{key}.link", 2, ex)
+    ln = next((x for x in b.links if x.axis is not None and x.kind != "block" and set(x.axis) == {j1, j2}), None)
+    if ln is None:
+        r.fail(f"'{key}.link': no link joining {j1} and {j2} is placed before this group; a guide rides on the crank "
+               "or on a bar or slotted link of an earlier group, named by two of its joints")
+    if j1 not in ln.pins:
+        r.fail(f"'{key}.link': measure a guide on the slotted link {ln.name} from its pivot {j2}: "
+               f"link = [\"{j2}\", \"{j1}\"]")
+    along = r.coordinate(t.get("along", 0.0), f"{key}.along", "along = 0.0")
+    across = r.coordinate(t.get("across", 0.0), f"{key}.across", "across = 0.0")
+    angle = r.number(t.get("angle_deg", 0.0), f"{key}.angle_deg", "angle_deg = 0.0")
+    return Guide(0j, math.radians(angle % 360.0), ln.name, j1, j2, along, across)
+
+
+def _guide(r: _Reader, value, key: str, b: "_Builder | None" = None) -> Guide:
+    if isinstance(value, dict) and "link" in value and b is not None:
+        return _moving_guide(r, b, r.table(value, key, ("link", "along", "across", "angle_deg")), key)
+    t = r.table(value, key, ("through", "angle_deg", "link", "along", "across"))
+    for k in ("along", "across"):
+        if k in t:
+            r.fail(f"'{key}.{k}' places a guide on a moving link; give link = [\"O2\", \"B\"] with it, or a fixed "
+                   "guide by through = [x, y] and angle_deg")
     through = r.xy(r.required(t, "through", f"{key}.through", EXAMPLES["guide"]), f"{key}.through", EXAMPLES["guide"])
     angle = r.number(r.required(t, "angle_deg", f"{key}.angle_deg", EXAMPLES["guide"]), f"{key}.angle_deg",
                      EXAMPLES["guide"])
@@ -230,12 +262,14 @@ def _group(r: _Reader, b: _Builder, data, index: int) -> Group:
     raw_kind = r.text(r.required(data, "kind", f"{key}.kind", EXAMPLES["kind"]), f"{key}.kind", EXAMPLES["kind"])
     kind = raw_kind.upper()
     if kind not in KINDS:
-        r.fail(f"'{key}.kind' is {raw_kind!r}; the kinds are RRR, RRP and RPR (class II groups of kinds 1–3)")
+        r.fail(f"'{key}.kind' is {raw_kind!r}; the kinds are RRR, RRP, RPR, PRP and RPP (class II groups of kinds 1–5; "
+               "class III groups and two inputs are not supported)")
     r.table(data, key, GROUP_KEYS[kind])
     ex = EXAMPLES[f"{kind}.joints"]
-    joints = r.names(r.required(data, "joints", f"{key}.joints", ex), f"{key}.joints", 3 if kind == "RRR" else 2, ex)
+    joints = r.names(r.required(data, "joints", f"{key}.joints", ex), f"{key}.joints",
+                     {"RRR": 3, "PRP": 1}.get(kind, 2), ex)
     k, n2, n3 = index, 2 * index, 2 * index + 1
-    guide, branch, lengths = None, 0, ()
+    guide, branch, lengths, offset, guides, slot = None, 0, (), 0.0, (), 0.0
     if kind == "RRR":
         a, bj, c = joints
         known, new = (a, c), (bj,)
@@ -249,17 +283,38 @@ def _group(r: _Reader, b: _Builder, data, index: int) -> Group:
         known, new = (a,), (bj,)
         lengths = (r.length(r.required(data, "length", f"{key}.length", EXAMPLES["length"]), f"{key}.length",
                             EXAMPLES["length"]),)
-        guide = _guide(r, r.required(data, "guide", f"{key}.guide", EXAMPLES["guide"]), f"{key}.guide")
+        guide = _guide(r, r.required(data, "guide", f"{key}.guide", EXAMPLES["guide"]), f"{key}.guide", b)
+    elif kind == "PRP":
+        (bj,) = joints
+        known, new = (), (bj,)
+        ex_g = 'guides = [{ link = ["O", "A"], angle_deg = 0.0 }, { through = [0.0, 0.3], angle_deg = 0.0 }]'
+        raw = r.required(data, "guides", f"{key}.guides", ex_g)
+        if not isinstance(raw, list) or len(raw) != 2:
+            r.fail(f"'{key}.guides' must be a list of the two blocks' guides [G1, G2], e.g. {ex_g}")
+        guides = tuple(_guide(r, x, f"{key}.guides[{i + 1}]", b) for i, x in enumerate(raw))
+        if not any(gd.moving for gd in guides):
+            r.fail(f"group {index} (PRP {bj}) has both guides fixed; it would not move: put a guide on the crank or a "
+                   "moving link (link = [\"O\", \"A\"] in the guide's table)")
+    elif kind == "RPP":
+        a, bj = joints
+        known, new = (a,), (bj,)
+        guide = _guide(r, r.required(data, "guide", f"{key}.guide", EXAMPLES["guide"]), f"{key}.guide", b)
+        slot_deg = r.number(data.get("slot_deg", 90.0), f"{key}.slot_deg", "slot_deg = 90")
+        if abs(math.remainder(slot_deg, 180.0)) < 1.0:
+            r.fail(f"'{key}.slot_deg' is {slot_deg:g}: the yoke's slot would run along its guide (the yoke could not "
+                   "be driven); give an angle at least 1° away from it, e.g. slot_deg = 90")
+        slot = math.radians(slot_deg % 360.0)
     else:
         a, c = joints
         known, new = (a, c), ()
+        offset = r.coordinate(data.get("offset", 0.0), f"{key}.offset", "offset = 0.05")
     if kind in BRANCHES:
         ex_b = EXAMPLES[f"{kind}.branch"]
         word = r.choice(r.required(data, "branch", f"{key}.branch", ex_b), f"{key}.branch", tuple(BRANCHES[kind]), ex_b)
         branch = BRANCHES[kind][word]
     for j in known:
         b.known(j, f"{key}.joints")
-    if all(b.carrier[j] == FRAME for j in known):
+    if known and all(b.carrier[j] == FRAME for j in known) and (guide is None or not guide.moving):
         r.fail(f"group {index} ({kind} {'-'.join(joints)}) hangs on fixed joints only ({', '.join(known)}); it would "
                "not move: hang it on the crank or a moving link")
     for j in new:
@@ -275,14 +330,31 @@ def _group(r: _Reader, b: _Builder, data, index: int) -> Group:
         names = (a + bj, bj)
         b.add_link(Link(names[0], n2, "bar", k, (a, bj), (a, bj)), key)
         b.add_link(Link(bj, n3, "slider", k, None, (bj,)), key)
-        pairs = (Pair(a, "R", (cr[a], n2), k), Pair(bj, "R", (n2, n3), k), Pair(bj, "P", (FRAME, n3), k))
+        carrier = FRAME if not guide.moving else next(x.number for x in b.links if x.name == guide.link)
+        pairs = (Pair(a, "R", (cr[a], n2), k), Pair(bj, "R", (n2, n3), k), Pair(bj, "P", (carrier, n3), k))
+        cr[bj] = n3
+    elif kind == "PRP":
+        first = bj + "′"  # the block on G1 (the block on G2 is named by the joint)
+        b.claim(first, f"{key}.joints")
+        names = (first, bj)
+        b.add_link(Link(first, n2, "slider", k, None, (bj,)), key)
+        b.add_link(Link(bj, n3, "slider", k, None, (bj,)), key)
+        c1, c2 = (FRAME if not gd.moving else next(x.number for x in b.links if x.name == gd.link) for gd in guides)
+        pairs = (Pair(bj, "P", (c1, n2), k), Pair(bj, "R", (n2, n3), k), Pair(bj, "P", (c2, n3), k))
+        cr[bj] = n3
+    elif kind == "RPP":
+        names = (a, bj)
+        b.add_link(Link(a, n2, "slider", k, None, (a,)), key)
+        b.add_link(Link(bj, n3, "slider", k, None, (bj,)), key)
+        carrier = FRAME if not guide.moving else next(x.number for x in b.links if x.name == guide.link)
+        pairs = (Pair(a, "R", (cr[a], n2), k), Pair(a, "P", (n2, n3), k), Pair(bj, "P", (carrier, n3), k))
         cr[bj] = n3
     else:
         names = (a, a + c)
         b.add_link(Link(a, n2, "block", k, (a, c), (a,)), key)
         b.add_link(Link(a + c, n3, "slotted", k, (a, c), (c,)), key)
         pairs = (Pair(a, "R", (cr[a], n2), k), Pair(a, "P", (n2, n3), k), Pair(c, "R", (cr[c], n3), k))
-    return Group(index, kind, joints, lengths, branch, guide, known, new, names, pairs)
+    return Group(index, kind, joints, lengths, branch, guide, known, new, names, pairs, offset, guides, slot)
 
 
 def _raw_point(r: _Reader, b: _Builder, data, index: int):
@@ -320,7 +392,18 @@ def _output(r: _Reader, b: _Builder, groups: tuple[Group, ...], value) -> Output
         if last.kind == "RRR":
             return Output("rocker", last.links[1], last.joints[1], last.index)
         if last.kind == "RRP":
+            if last.guide.moving:
+                r.fail(f"'output' is missing: the slider {last.joints[1]} of the last group slides on a moving guide "
+                       f"(on the link {last.guide.link}), which has no default stroke; give the output link at the top "
+                       "of the file, e.g. output = [\"D\", \"B\"] (a turning link) or output = \"B\" (a slider)")
             return Output("slider", last.links[1], last.joints[1], last.index)
+        if last.kind in ("PRP", "RPP"):  # B along G2; the yoke Y along its guide
+            gd = last.guides[1] if last.kind == "PRP" else last.guide
+            if gd.moving:
+                r.fail(f"'output' is missing: the block {last.links[1]} of the last group slides on a moving guide (on "
+                       f"the link {gd.link}), which has no default stroke; give the output link at the top of the file, "
+                       f"e.g. output = \"{last.links[1]}\"")
+            return Output("slider", last.links[1], last.links[1], last.index)
         return Output("rocker", last.links[1], last.joints[0], last.index)
     bad = (f"'output' is {value!r}; give a slider's joint (e.g. \"B\") or a moving link by two joints "
            "(e.g. [\"C\", \"B\"])")
@@ -337,8 +420,22 @@ def _output(r: _Reader, b: _Builder, groups: tuple[Group, ...], value) -> Output
     r.fail(bad)
 
 
+def _gas_head(r: _Reader, b: _Builder, load) -> tuple[str, complex] | None:
+    """The first [[load]]'s piston and cylinder head when it is a gas load (position 0 is its dead
+    centre nearest the head); checked in full by :func:`.gas.parse_gas`."""
+    if not isinstance(load, list) or not load or not isinstance(load[0], dict) or "head" not in load[0]:
+        return None
+    on = load[0].get("on")
+    if not isinstance(on, str) or not any(x.kind == "slider" and x.name == on.strip() for x in b.links):
+        r.fail(f"'load[1].on' is {on!r}: a gas force acts on a piston, a slider of an RRP group or the yoke of an RPP "
+               "group; give its joint, e.g. on = \"B\"")
+    return on.strip(), r.xy(load[0]["head"], "load[1].head", "head = [0.0, 0.45]")
+
+
 def _working(r: _Reader, extra: dict) -> str | None:
     load = extra.get("load")
+    if isinstance(load, list):  # [[load]]: the table load's (gas loads have both strokes)
+        load = next((x for x in load if isinstance(x, dict) and "head" not in x), None)
     if isinstance(load, dict) and "working" in load:
         return r.choice(load["working"], "load.working", ("away", "towards"), 'working = "away"')
     return None
@@ -365,9 +462,9 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
     if not isinstance(data, dict):
         r.fail("the file must hold TOML tables")
     for k in data:
-        if k not in TOP_KEYS and k not in SHEET2_KEYS:
-            r.fail(f"unknown key '{k}'; known keys here: {', '.join(TOP_KEYS + SHEET2_KEYS)}")
-    name = r.text(data.get("name", ""), "name", EXAMPLES["name"])[:200]
+        if k not in TOP_KEYS and k not in SHEET2_KEYS and k not in RECORD_KEYS:
+            r.fail(f"unknown key '{k}'; known keys here: {', '.join(TOP_KEYS + SHEET2_KEYS + RECORD_KEYS)}")
+    name = clean_text(r.text(data.get("name", ""), "name", EXAMPLES["name"]), 200)  # one line (inputs/names.py)
     positions = data.get("positions", 12)
     if isinstance(positions, bool) or not isinstance(positions, int) or not 2 <= positions <= 360:
         r.fail(f"'positions' is {positions!r}; give a whole number of crank positions from 2 to 360, e.g. positions = 12")
@@ -405,13 +502,18 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
             r.fail(f"'{key}.link': no moving link joins {j1} and {j2}; name a link by two of its joints, "
                    "e.g. [\"A\", \"B\"]")
     groups = tuple(groups)
-    output = _output(r, b, groups, data.get("output"))
+    gas_head = _gas_head(r, b, data.get("load"))
+    if gas_head is not None and data.get("output") is None:  # the first gas load's piston is the output
+        ln = next(x for x in b.links if x.name == gas_head[0])
+        output = Output("slider", ln.name, ln.pins[0], ln.group)
+    else:
+        output = _output(r, b, groups, data.get("output"))
     plan = data.get("plan")
     if plan is not None:
         if isinstance(plan, bool) or not isinstance(plan, (int, str)):
             r.fail(f"'plan' is {plan!r}; give the label of a position, e.g. plan = 3")
         plan = str(plan).strip().replace("'", "′")
-    extra = {k: data[k] for k in SHEET2_KEYS if k in data}
+    extra = {k: data[k] for k in SHEET2_KEYS + RECORD_KEYS if k in data}
     points = tuple(done[point] for _, point, _, _, _ in raw)
     return Mechanism(name, positions, frame, crank, groups, points, tuple(b.links), tuple(b.pairs + [
-        p for g in groups for p in g.pairs]), dict(b.carrier), output, _working(r, extra), plan, extra)
+        p for g in groups for p in g.pairs]), dict(b.carrier), output, _working(r, extra), plan, extra, gas_head)

@@ -77,22 +77,52 @@ def rrp_motion(a, b, unit: complex, va, aa):
     return w2, e2, ds, dds, ds * unit, dds * unit
 
 
-def rpr_motion(a, c, va, vc, aa, ac):
-    """RPR (kind 3): ω, ε of the slotted link and the block's ρ̇, ρ̈ along it (+ away from C).
+def rrp_moving_motion(a, b, unit, va, aa, vg, ag, wg):
+    """RRP (kind 2) whose guide rides on a link turning at ω_g: ω, ε of AB, the slider's ṡ, s̈
+    along the guide (relative to it), v_B, a_B.
 
-    A − C = ρ·u, u = e^{iθ}: v_A − v_C = ρ̇·u + ρω·iu and
-    a_A − a_C = (ρ̈ − ρω²)·u + (ρε + 2ρ̇ω)·iu, where 2ρ̇ω is the Coriolis acceleration
-    2ω × v_rel. So ρ̇ = Re(ū·Δv), ω = Im(ū·Δv)/ρ, ρ̈ = Re(ū·Δa) + ρω², ε = (Im(ū·Δa) − 2ρ̇ω)/ρ.
+    B = P + s·e with e turning at ω_g; B_g the guide's point under the slider (v_Bg, a_Bg):
+    v_B = v_Bg + ṡ·e = v_A + iω2·(B − A), and
+    a_B = a_Bg + s̈·e + 2ω_g·ṡ·ie (Coriolis) = a_A + (iε2 − ω2²)(B − A). With ω_g = 0 and the
+    guide at rest this is :func:`rrp_motion`.
+
+    >>> w2, e2, ds, dds, vb, ab = rrp_moving_motion(0j, 0.1 + 0j, 1 + 0j, 0j, 0j, -0.1j, -0.1 + 0j, -1.0)
+    >>> round(float(ds), 12) + 0.0, round(float(w2), 12)   # the guide along AB turns about A: AB with it, no slide
+    (0.0, -1.0)
+    """
+    r = b - a
+    ds, w2 = solve2(unit + 0 * r, -1j * r, va - vg)
+    dds, e2 = solve2(unit + 0 * r, -1j * r, aa - w2 * w2 * r - ag - 2j * wg * ds * unit)
+    return w2, e2, ds, dds, vg + ds * unit, ag + dds * unit + 2j * wg * ds * unit
+
+
+def rpr_motion(a, c, va, vc, aa, ac, offset: float = 0.0):
+    """RPR (kind 3): ω, ε of the slotted link and the block's ṫ, ẗ along its slot (+ away from
+    the foot of the perpendicular from C, i.e. from C when the slot passes through it).
+
+    A − C = (t + i·d)·u, u = e^{iθ} (:func:`.groups.rpr_position`), differentiated:
+    v_A − v_C = (ṫ − dω)·u + tω·iu and
+    a_A − a_C = (ẗ − dε − tω²)·u + (tε + 2ṫω − dω²)·iu, where 2ṫω is the Coriolis acceleration
+    2ω × v_rel (v_rel = ṫ·u, the block relative to the slot). So ω = Im(ū·Δv)/t,
+    ṫ = Re(ū·Δv) + dω, ε = (Im(ū·Δa) − 2ṫω + dω²)/t, ẗ = Re(ū·Δa) + dε + tω². With d = 0 this
+    is the slotted link through its pivot: t = ρ, ρ̈ = Re(ū·Δa) + ρω², ε = (Im(ū·Δa) − 2ρ̇ω)/ρ.
 
     >>> w, e, dr, ddr = rpr_motion(0.14j, 0j, -1 + 0j, 0j, -7.142857j, 0j)
     >>> round(float(w), 9), round(float(dr), 9)   # A at the top, moving left: the link turns ccw
     (7.142857143, 0.0)
     """
     r = a - c
-    rho = np.abs(r)
-    u = r / rho
+    if offset == 0.0:
+        t = np.abs(r)
+        u = r / t
+    else:
+        t = np.sqrt(np.abs(r) ** 2 - offset * offset)
+        u = r / (t + 1j * offset)
     dv = (va - vc) * np.conj(u)
     da = (aa - ac) * np.conj(u)
-    w = dv.imag / rho
-    dr = dv.real
-    return w, (da.imag - 2.0 * dr * w) / rho, dr, da.real + rho * w * w
+    w = dv.imag / t
+    if offset == 0.0:
+        return w, (da.imag - 2.0 * dv.real * w) / t, dv.real, da.real + t * w * w
+    dt = dv.real + offset * w
+    e = (da.imag - 2.0 * dt * w + offset * w * w) / t
+    return w, e, dt, da.real + offset * e + t * w * w

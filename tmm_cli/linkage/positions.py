@@ -23,7 +23,7 @@ import numpy as np
 from ..notes import Note
 from ..records import record
 from .assembly import GRID, Margin, check_assembly, golden_min
-from .chain import Kinematics, solve
+from .chain import Kinematics, guide_frame, solve
 from .mechanism import Group, Mechanism
 
 TWO_PI = 2.0 * math.pi
@@ -144,7 +144,8 @@ def pressure_angle(mech: Mechanism, g: Group, k: Kinematics):
     """The group's pressure angle [rad]: between the force its first link transmits and the
     velocity of the point it drives. RRR: AB against the normal to BC at B, arcsin|cos∠(AB, BC)|
     (90° minus the transmission angle); RRP: AB against the guide; RPR: 0 (the block presses
-    across the slot and the slot's point moves across it).
+    across the slot and the slot's point moves across it), with a slot offset d from the pivot
+    arctan(|d|/t) (the slot's point under the block moves ⊥ CA, the pressure is ⊥ the slot).
 
     >>> from .mechanism_file import parse_mechanism
     >>> m = parse_mechanism({"frame": {"O": [0, 0]}, "crank": {"pivot": "O", "joint": "A",
@@ -161,8 +162,17 @@ def pressure_angle(mech: Mechanism, g: Group, k: Kinematics):
     if g.kind == "RRP":
         ja, jb = g.joints
         u1 = k.z[jb] - k.z[ja]
-        c = (np.conj(u1) * g.guide.unit).real / np.abs(u1)
+        unit = g.guide.unit if not g.guide.moving else guide_frame(mech, g, k)[1]
+        c = (np.conj(u1) * unit).real / np.abs(u1)
         return np.arccos(np.minimum(np.abs(c), 1.0))
+    if g.kind == "PRP":  # block B′ pushes across G1, block B moves along G2
+        e1 = np.exp(1j * k.angle[g.links[0]])
+        e2 = np.exp(1j * k.angle[g.links[1]])
+        return np.arccos(np.minimum(np.abs((np.conj(1j * e1) * e2).real), 1.0))
+    if g.kind == "RPP":  # the block pushes across the slot, the yoke moves along its guide
+        return np.full(k.phi.shape, math.acos(min(abs(math.sin(g.slot)), 1.0)))
+    if g.kind == "RPR" and g.offset != 0.0:
+        return np.arctan2(abs(g.offset), np.abs(k.slide[g.links[0]][0]))
     return np.zeros(k.phi.shape)
 
 
@@ -216,7 +226,12 @@ def _start(mech: Mechanism, roots: np.ndarray):
     phi_max, phi_min = float(roots[i_max]), float(roots[i_min])
     rising = float(np.remainder(sense * (phi_max - phi_min), TWO_PI))  # crank travel while q grows
     falling = TWO_PI - rising
-    if mech.working is not None:
+    if mech.gas_head is not None and mech.gas_head[0] == mech.output.link:  # a piston: its dead centre nearest the head
+        head = mech.gas_head[1]
+        k = solve(mech, [phi_min, phi_max])
+        z = k.z[mech.output.joint]
+        up, rule = abs(z[0] - head) < abs(z[1] - head), "gas"
+    elif mech.working is not None:
         near_min = _distance_from_pivot(mech, phi_min) < _distance_from_pivot(mech, phi_max)
         up = near_min == (mech.working == "away")  # the working stroke goes from min to max
         rule = "load"

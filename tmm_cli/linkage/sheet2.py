@@ -100,7 +100,7 @@ def _notes(s1: Sheet1, inp: Sheet2Input, fw: Flywheel | None, dyn: Dynamics) -> 
     notes.append(Note.make("dynamics_gravity" if inp.gravity else "dynamics_no_gravity", "assumption"))
     if not inp.masses:
         notes.append(Note.make("dynamics_massless", "assumption"))
-    if inp.load is None:
+    if inp.load is None and not inp.gas:
         notes.append(Note.make("dynamics_no_load", "assumption"))
     if fw is None:
         notes.append(Note.make("dynamics_no_table", "assumption"))
@@ -111,7 +111,9 @@ def _notes(s1: Sheet1, inp: Sheet2Input, fw: Flywheel | None, dyn: Dynamics) -> 
         if fw.wittenbauer.J_fl > 0.0 and fw.mertsalov.J_fl > 0.0:
             diff = 100.0 * (fw.mertsalov.J_fl - fw.wittenbauer.J_fl) / fw.wittenbauer.J_fl
             notes.append(Note.make("dynamics_methods", "assumption", diff_pct=diff, j_w=fw.wittenbauer.J_fl))
-    if dyn.M_d < 0.0:
+    if dyn.M_d < 0.0 and inp.gas:  # an engine: the gas drives, the machine's resistance takes M_d
+        notes.append(Note.make("dynamics_motor", "assumption", moment=-dyn.M_d))
+    elif dyn.M_d < 0.0:
         notes.append(Note.make("dynamics_driving_negative", "warning", moment=dyn.M_d))
     return tuple(notes)
 
@@ -136,6 +138,13 @@ def analyse_sheet2(s1: Sheet1, inp: Sheet2Input, source: str = "mechanism") -> S
     if inp.load is not None and stroke is None:
         raise TmmError(f"{source}: the load needs an output link that moves back and forth (it has no working "
                        f"stroke: {mech.output.link} turns fully); drop [load] or choose another output")
+    for i, gl in enumerate(inp.gas, start=1):
+        from .gas import piston
+
+        if piston(gl, mech).q_near <= 0.0:
+            raise TmmError(f"{source}: 'load[{i}].head' is reached by the piston {gl.link} (it comes "
+                           f"{-piston(gl, mech).q_near:.6g} m past it); put the cylinder head beyond the piston's "
+                           "dead centre")
     kin = c.kin
     loading = applied(mech, inp, stroke, kin)
     ks = kinetostatics(mech, loading, kin)

@@ -26,6 +26,7 @@ from .mechanism_file import _Reader
 
 DYNAMICS_KEYS = ("delta", "J_rotor", "flywheel", "width_ratio", "rim_ratio", "density")
 DELTA_MAX = 0.5
+DELTA_MIN = 1.0e-4  # below it the flywheel is no machine's (and the speed's bounds merge in rounding)
 FLYWHEELS = ("disc", "rim")
 STEEL = 7800.0  # [kg/m³]
 
@@ -50,11 +51,12 @@ class Sheet2Input:
     masses: tuple[Mass, ...]
     load: Load | None
     dynamics: DynamicsSpec | None
+    gas: tuple = ()  # GasLoad: the gas forces from indicator diagrams ([[load]] with head)
 
     @property
     def has_forces(self) -> bool:
         """The file asks for sheet 2: it gives masses or a load."""
-        return bool(self.masses) or self.load is not None
+        return bool(self.masses) or self.load is not None or bool(self.gas)
 
 
 def _ratio(r, t: dict, key: str, default: float, lo: float, hi: float) -> float:
@@ -73,6 +75,9 @@ def parse_dynamics(r, raw) -> DynamicsSpec | None:
     if not 0.0 < delta <= DELTA_MAX:
         r.fail(f"'dynamics.delta' is {delta:g}; the coefficient of speed fluctuation δ must lie in (0, {DELTA_MAX:g}] "
                "(machines: 0.002 … 0.2), e.g. delta = 0.04")
+    if delta < DELTA_MIN:
+        r.fail(f"'dynamics.delta' is {delta:g}, below {DELTA_MIN:g}: no machine keeps its speed that steady (machines: "
+               "0.002 … 0.2); give e.g. delta = 0.04")
     rotor = r.number(t.get("J_rotor", 0.0), "dynamics.J_rotor", "J_rotor = 0.05")
     if not 0.0 <= rotor <= 1.0e5:
         r.fail(f"'dynamics.J_rotor' is {rotor:g}; a moment of inertia must lie in [0, 100000] kg·m²")
@@ -102,5 +107,24 @@ def parse_sheet2(mech: Mechanism, source: str = "mechanism") -> Sheet2Input:
     if not isinstance(gravity, bool):
         r.fail(f"'gravity' is {gravity!r}; write gravity = true (the links' weights count) or false")
     masses = parse_masses(r, mech, extra.get("mass"))
-    load = parse_load(r, mech, extra.get("load"))
-    return Sheet2Input(gravity, masses, load, parse_dynamics(r, extra.get("dynamics")))
+    raw = extra.get("load")
+    gas = []
+    if isinstance(raw, list):  # [[load]]: gas loads (with head) and at most one table load
+        from .gas import parse_gas
+
+        if not raw or len(raw) > 20:
+            r.fail("'load' must be 1 to 20 tables [[load]]")
+        tables = []
+        for i, t in enumerate(raw, start=1):
+            if isinstance(t, dict) and "head" in t:
+                gas.append(parse_gas(r, mech, t, f"load[{i}]"))
+            else:
+                tables.append(t)
+        if len(tables) > 1:
+            r.fail("'load' has several tables of stroke and force (or moment); one is read, on the output link: give "
+                   "the others as gas loads (with head) or drop them")
+        if len({g.link for g in gas}) != len(gas):
+            r.fail("'load': two gas loads on one piston; give each piston one [[load]]")
+        raw = tables[0] if tables else None
+    load = parse_load(r, mech, raw)
+    return Sheet2Input(gravity, masses, load, parse_dynamics(r, extra.get("dynamics")), tuple(gas))

@@ -4,7 +4,7 @@ their class, order and kind, the kinematic pairs, the structural formula.
 Standard TMM (Artobolevsky; Frolov; Pozhbelko, part 1; METHOD.md "Sheets 1 and 2"): the degrees
 of freedom of a planar mechanism W = 3n − 2p5 − p4 (n moving links, p5 lower pairs of class 5,
 p4 higher pairs of class 4). The crank with the frame is the class I mechanism I(0,1); each dyad
-is a group of class II, order 2, of kind 1 (RRR), 2 (RRP), 3 (RPR), 4 (RPP) or 5 (PRP). The
+is a group of class II, order 2, of kind 1 (RRR), 2 (RRP), 3 (RPR), 4 (PRP) or 5 (RPP). The
 structural formula lists them in the order of attachment: I(0,1) → II(2,3) → II(4,5). The
 mechanism's class is the highest class of its groups.
 """
@@ -14,7 +14,7 @@ from __future__ import annotations
 from ..records import record
 from .mechanism import Mechanism, Pair
 
-KIND_NUMBER = {"RRR": 1, "RRP": 2, "RPR": 3, "RPP": 4, "PRP": 5}
+KIND_NUMBER = {"RRR": 1, "RRP": 2, "RPR": 3, "PRP": 4, "RPP": 5}  # Artobolevsky: ВВВ, ВВП, ВПВ, ПВП, ВПП
 ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV"}
 
 

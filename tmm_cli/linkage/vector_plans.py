@@ -9,11 +9,14 @@ labels of the plans (link numbers as in :mod:`.mechanism`; the crank is link 1):
 - crank O–A:   v_A = ω1 × OA (⊥ OA);  a_A = aⁿ_A (∥ AO, ω1²·l_OA) [+ aτ_A ⊥ OA if ε1 ≠ 0]
 - RRR A–B–C:   v_B = v_A + v_BA (⊥ AB) = v_C + v_BC (⊥ BC);
                a_B = a_A + aⁿ_BA + aτ_BA = a_C + aⁿ_BC + aτ_BC  (points n2, n3: aⁿ = v²/l)
-- RRP A–B:     v_B = v_A + v_BA (⊥ AB), v_B ∥ guide;  a_B = a_A + aⁿ_BA + aτ_BA ∥ guide
+- RRP A–B:     v_B = v_A + v_BA (⊥ AB), v_B ∥ guide;  a_B = a_A + aⁿ_BA + aτ_BA ∥ guide; on a guide of
+               a moving link k, Bk its point under the slider: v_B = v_A + v_BA = v_Bk + v_BBk (∥ guide),
+               a_B = a_A + aⁿ_BA + aτ_BA = a_Bk + aᵏ_BBk + aʳ_BBk, aᵏ_BBk = 2·ω_k × v_BBk
 - RPR A–C:     the point A3 of the slotted link 3 under the block 2 (A2 = A):
                v_A3 = v_A2 + v_A3A2 (∥ CA) = v_C + v_A3C (⊥ CA);
                a_A3 = a_A2 + aᵏ_A3A2 + aʳ_A3A2 (∥ CA) = a_C + aⁿ_A3C + aτ_A3C,
-               aᵏ_A3A2 = 2·ω3 × v_A3A2 (Coriolis; point k)
+               aᵏ_A3A2 = 2·ω3 × v_A3A2 (Coriolis; point k); a slot offset from C: the
+               relative vectors ∥ the slot (its line 'guide': the block's guide), not ∥ CA
 - a point D of a link: by similarity (v_D = v_B + ω × BD), the vector pd / πd.
 
 The values are the exact ones of :mod:`.chain` (the plans are their drawing); the scales μ_v,
@@ -111,7 +114,8 @@ def plans_at(mech: Mechanism, kin: Kinematics, position: Position, room_mm: floa
     fixed = set(mech.frame)  # their plan points are the poles
     lab = {n: (("p", "π") if n in fixed else (_lc(n), _lc(n))) for n in z}
     V, A = _Draft("velocity", "p"), _Draft("acceleration", "π")
-    one_slot = sum(g.kind == "RPR" for g in mech.groups) == 1  # its Coriolis point is plain k
+    one_slot = sum((g.kind == "RPR") + sum(gd.moving for gd in g.guides) +
+                   (g.kind in ("RRP", "RPP") and g.guide.moving) for g in mech.groups) == 1  # its Coriolis point is k
     c = mech.crank
     o, ja = c.pivot, c.joint
     V.add("p", _lc(ja), f"v_{ja}", v[ja], "⊥", o + ja, True, v[ja])
@@ -143,6 +147,33 @@ def plans_at(mech: Mechanism, kin: Kinematics, position: Position, room_mm: floa
             A.add("π", _lc(jb), f"a_{jb}", a[jb], "", "", False)
             A.equations.append(Equation(g.index, f"a_{jb}", ((f"a_{ja}", f"a^n_{jb}{ja}", f"a^τ_{jb}{ja}"),
                                                             (f"a_{jc}", f"a^n_{jb}{jc}", f"a^τ_{jb}{jc}"))))
+        elif g.kind == "PRP":
+            _prp_plans(mech, kin, g, z, v, a, w, lab, V, A, one_slot)
+        elif g.kind == "RPP":
+            _rpp_plans(mech, kin, g, z, v, a, w, lab, V, A, one_slot)
+        elif g.kind == "RRP" and g.guide.moving:
+            ja, jb = g.joints
+            gl = g.guide.link
+            pg = f"{jb}{mech.link(gl).number}"  # the guide's point under the slider
+            vg, ag = (complex(x[0]) for x in kin.body_point(gl, kin.z[jb]))
+            wg = w[gl]
+            vr = v[jb] - vg  # v_BBk: the slider along the guide
+            cor = 2j * wg * vr  # aᵏ_BBk = 2·ω_k × v_BBk
+            V.add("p", _lc(pg), f"v_{pg}", vg, "", "", True, vg)
+            V.add(lab[ja][0], _lc(jb), f"v_{jb}{ja}", v[jb] - v[ja], "⊥", ja + jb, False, v[jb])
+            V.add(_lc(pg), _lc(jb), f"v_{jb}{pg}", vr, "∥", "guide", False)
+            V.add("p", _lc(jb), f"v_{jb}", v[jb], "", "", False)
+            V.equations.append(Equation(g.index, f"v_{jb}", ((f"v_{ja}", f"v_{jb}{ja}"), (f"v_{pg}", f"v_{jb}{pg}"))))
+            na = a[ja] - w[l1] ** 2 * (z[jb] - z[ja])
+            kl = "k" if one_slot else f"k{n3}"
+            A.add("π", _lc(pg), f"a_{pg}", ag, "", "", True, ag)
+            A.add(lab[ja][1], f"n{n2}", f"a^n_{jb}{ja}", na - a[ja], "∥", jb + ja, True, na)
+            A.add(f"n{n2}", _lc(jb), f"a^τ_{jb}{ja}", a[jb] - na, "⊥", ja + jb, False, a[jb])
+            A.add(_lc(pg), kl, f"a^k_{jb}{pg}", cor, "⊥", "guide", True, ag + cor)
+            A.add(kl, _lc(jb), f"a^r_{jb}{pg}", a[jb] - ag - cor, "∥", "guide", False)
+            A.add("π", _lc(jb), f"a_{jb}", a[jb], "", "", False)
+            A.equations.append(Equation(g.index, f"a_{jb}", ((f"a_{ja}", f"a^n_{jb}{ja}", f"a^τ_{jb}{ja}"),
+                                                            (f"a_{pg}", f"a^k_{jb}{pg}", f"a^r_{jb}{pg}"))))
         elif g.kind == "RRP":
             ja, jb = g.joints
             V.add(lab[ja][0], _lc(jb), f"v_{jb}{ja}", v[jb] - v[ja], "⊥", ja + jb, False, v[jb])
@@ -161,15 +192,16 @@ def plans_at(mech: Mechanism, kin: Kinematics, position: Position, room_mm: floa
             w3 = w[l2]
             vr = v3 - v[ja]  # v_A3A2
             cor = 2j * w3 * vr  # aᵏ_A3A2 = 2·ω3 × v_A3A2
-            V.add(lab[ja][0], _lc(p3), f"v_{p3}{p2}", vr, "∥", jc + ja, False, v3)
+            slot = jc + ja if g.offset == 0.0 else "guide"  # the block's relative motion: along the slot
+            V.add(lab[ja][0], _lc(p3), f"v_{p3}{p2}", vr, "∥", slot, False, v3)
             V.add(lab[jc][0], _lc(p3), f"v_{p3}{jc}", v3 - v[jc], "⊥", jc + ja, False)  # = pa3 if C is fixed
             V.add("p", _lc(p3), f"v_{p3}", v3, "", "", False)
             V.equations.append(Equation(g.index, f"v_{p3}", ((f"v_{p2}", f"v_{p3}{p2}"), (f"v_{jc}", f"v_{p3}{jc}"))))
             kpt = a[ja] + cor
             kl = "k" if one_slot else f"k{n3}"
             nc = a[jc] - w3 ** 2 * (z[ja] - z[jc])
-            A.add(lab[ja][1], kl, f"a^k_{p3}{p2}", cor, "⊥", jc + ja, True, kpt)
-            A.add(kl, _lc(p3), f"a^r_{p3}{p2}", a3 - kpt, "∥", jc + ja, False, a3)
+            A.add(lab[ja][1], kl, f"a^k_{p3}{p2}", cor, "⊥", slot, True, kpt)
+            A.add(kl, _lc(p3), f"a^r_{p3}{p2}", a3 - kpt, "∥", slot, False, a3)
             A.add(lab[jc][1], f"n{n3}", f"a^n_{p3}{jc}", nc - a[jc], "∥", ja + jc, True, nc)
             A.add(f"n{n3}", _lc(p3), f"a^τ_{p3}{jc}", a3 - nc, "⊥", jc + ja, False)
             A.add("π", _lc(p3), f"a_{p3}", a3, "", "", False)
@@ -180,6 +212,82 @@ def plans_at(mech: Mechanism, kin: Kinematics, position: Position, room_mm: floa
     vel = Plan("velocity", "p", V.points, at_pole, tuple(V.vectors), tuple(V.equations), _scale(V.points, room_mm))
     acc = Plan("acceleration", "π", A.points, at_pole, tuple(A.vectors), tuple(A.equations), _scale(A.points, room_mm))
     return Plans(position, vel, acc)
+
+
+def _slide_plans(kin, link, num: int, point: str, zp: complex, vp: complex, ap: complex, V: _Draft, A: _Draft,
+                 kl: str, first: bool):
+    """The point `point` (at zp with vp, ap) sliding along a guide or a slot of the link `link`
+    (numbered `num`; None: a fixed guide): from that link's point under it (its label
+    `point` + num, found by similarity) the relative vector ∥ the guide and, where it turns, the
+    Coriolis one (2ω × v_rel, point `kl`) ⊥ it; from the pole along the guide when it is fixed.
+    `first`: this side draws the point's tip. Returns the equation's sides (velocity, acceleration)."""
+    if link is None:
+        V.add("p", _lc(point), f"v_{point}", vp, "∥", "guide", False, vp if first else None)
+        A.add("π", _lc(point), f"a_{point}", ap, "∥", "guide", False, ap if first else None)
+        return None, None
+    under = f"{point}{num}"
+    vg, ag = (complex(x[0]) for x in kin.body_point(link, np.array([zp])))
+    wg = float(kin.omega[link][0])
+    vr = vp - vg
+    cor = 2j * wg * vr
+    V.add("p", _lc(under), f"v_{under}", vg, "", "", True, vg)
+    V.add(_lc(under), _lc(point), f"v_{point}{under}", vr, "∥", "guide", False, vp if first else None)
+    A.add("π", _lc(under), f"a_{under}", ag, "", "", True, ag)
+    A.add(_lc(under), kl, f"a^k_{point}{under}", cor, "⊥", "guide", True, ag + cor)
+    A.add(kl, _lc(point), f"a^r_{point}{under}", ap - ag - cor, "∥", "guide", False, ap if first else None)
+    return (f"v_{under}", f"v_{point}{under}"), (f"a_{under}", f"a^k_{point}{under}", f"a^r_{point}{under}")
+
+
+def _prp_plans(mech, kin, g, z, v, a, w, lab, V: _Draft, A: _Draft, one_slot: bool):
+    """PRP: v_B = v_B1 + v_BB1 (∥ G1) = v_B2 + v_BB2 (∥ G2), B1, B2 the guides' links' points at B
+    (a fixed guide: v_B ∥ it); the accelerations with the Coriolis terms of the turning guides."""
+    (jb,) = g.joints
+    sides_v, sides_a = [], []
+    for i, gd in enumerate(g.guides):
+        num = mech.link(gd.link).number if gd.moving else 0
+        kl = "k" if one_slot else f"k{g.numbers[i]}"
+        sv, sa = _slide_plans(kin, gd.link, num, jb, z[jb], v[jb], a[jb], V, A, kl, i == 0)
+        if sv is not None:
+            sides_v.append(sv)
+            sides_a.append(sa)
+    if len(sides_v) == 2:
+        V.add("p", _lc(jb), f"v_{jb}", v[jb], "", "", False)
+        A.add("π", _lc(jb), f"a_{jb}", a[jb], "", "", False)
+    V.equations.append(Equation(g.index, f"v_{jb}", tuple(sides_v)))
+    A.equations.append(Equation(g.index, f"a_{jb}", tuple(sides_a)))
+
+
+def _rpp_plans(mech, kin, g, z, v, a, w, lab, V: _Draft, A: _Draft, one_slot: bool):
+    """RPP: the yoke's point A3 under the block: v_A3 = v_A2 + v_A3A2 (∥ slot; A2 = A)
+    = v_Ag + v_A3Ag (∥ guide; Ag the guide's link's point, the pole for a fixed guide), the
+    accelerations with the Coriolis terms where the yoke turns; Y by similarity."""
+    ja, jy = g.joints
+    n2, n3 = g.numbers
+    yoke = g.links[1]
+    p3 = f"{ja}{n3}"
+    v3, a3 = (complex(x[0]) for x in kin.body_point(yoke, kin.z[ja]))
+    wy = float(kin.omega[yoke][0])
+    vr = v3 - v[ja]  # v_A3A2
+    cor = 2j * wy * vr
+    kl = "k" if one_slot else f"k{n2}"
+    V.add(lab[ja][0], _lc(p3), f"v_{p3}{ja}{n2}", vr, "∥", "slot", False, v3)
+    side_a_v = (f"v_{ja}", f"v_{p3}{ja}{n2}")
+    A.add(lab[ja][1], kl, f"a^k_{p3}{ja}{n2}", cor, "⊥", "slot", True, a[ja] + cor)
+    A.add(kl, _lc(p3), f"a^r_{p3}{ja}{n2}", a3 - a[ja] - cor, "∥", "slot", False, a3)
+    side_a_a = (f"a_{ja}", f"a^k_{p3}{ja}{n2}", f"a^r_{p3}{ja}{n2}")
+    gd = g.guide
+    num = mech.link(gd.link).number if gd.moving else 0
+    sv, sa = _slide_plans(kin, gd.link, num, p3, z[ja], v3, a3, V, A, "k" if one_slot else f"k{n3}", False)
+    if sv is None:
+        V.equations.append(Equation(g.index, f"v_{p3}", (side_a_v,)))
+        A.equations.append(Equation(g.index, f"a_{p3}", (side_a_a,)))
+    else:
+        V.add("p", _lc(p3), f"v_{p3}", v3, "", "", False)
+        A.add("π", _lc(p3), f"a_{p3}", a3, "", "", False)
+        V.equations.append(Equation(g.index, f"v_{p3}", (side_a_v, sv)))
+        A.equations.append(Equation(g.index, f"a_{p3}", (side_a_a, sa)))
+    V.add("p", _lc(jy), f"v_{jy}", v[jy], "", "", False, v[jy])  # the yoke's joint by similarity
+    A.add("π", _lc(jy), f"a_{jy}", a[jy], "", "", False, a[jy])
 
 
 def _group_points(mech: Mechanism, group: int, z, v, a, lab, V: _Draft, A: _Draft):

@@ -74,6 +74,10 @@ def _ends(mech: Mechanism, kin: Kinematics, link: str):
     """Two points of a turning link and their names: its axis' ends (the slotted link: its pivot
     and its point under the block; a block: its joint and its point over the slotted link's pivot)."""
     ln = mech.link(link)
+    if ln.axis is None:  # a slider turning with its moving guide: its pin and a point along the guide
+        pin = ln.pins[0]
+        unit = np.exp(1j * kin.angle[link])
+        return (pin, kin.z[pin]), (pin + "″", kin.z[pin] + mech.scale_m * unit)
     a, b = ln.axis
     return (a, kin.z[a]), (b, kin.z[b])
 

@@ -123,6 +123,17 @@ def add_sheet2(doc: dict, s: Sheet2) -> dict:
                      "load": None if s.input.load is None else {"link": s.input.load.link, "kind": s.input.load.kind,
                                                                  "stroke": list(s.input.load.stroke),
                                                                  "values": list(s.input.load.values)}}
+    if s.input.load is not None and s.input.load.direction is not None:  # a force of its own direction
+        doc["forces"]["load"]["direction_deg"] = math.degrees(s.input.load.direction)
+    if s.input.gas:  # the gas loads: each piston's indicator diagram and dead centres
+        from ...linkage.gas import piston
+
+        m = s.sheet1.mechanism
+        doc["forces"]["gas"] = [
+            {"link": g.link, "symbol": f"P{m.link(g.link).number}", "head": [g.head.real, g.head.imag],
+             "area_m2": g.area, "travel": list(g.travel), "pressure_MPa": [list(r) for r in g.pressure],
+             "stroke_m": piston(g, m).stroke, "near_dead_centre_deg": math.degrees(piston(g, m).near) % 360.0,
+             "far_dead_centre_deg": math.degrees(piston(g, m).far) % 360.0} for g in s.input.gas]
     return doc
 
 

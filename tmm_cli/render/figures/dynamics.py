@@ -19,10 +19,12 @@ import numpy as np
 
 from ...i18n import tr
 from ...i18n.numbers import num
+from ...linkage.chain import slider_pose, slot_axis
 from ...linkage.sheet2 import Sheet2
 from ..terminal.dynamics import symbol as book_symbol
 from .kit import decimal_commas, mt, new_figure, suptitle, title_height
 from .mechanism import _block, joint_tex, label_tex, span_mm
+from ..terminal.mechanism import pattern
 
 MM = 1000.0
 C_APPLIED = "#1f77b4"
@@ -91,19 +93,28 @@ def _draw_links(ax, s: Sheet2, links, i: int, unit: float) -> list[complex]:
             pts += ends
         elif ln.kind == "slotted":
             a, c = ln.axis
-            far = [z[p.name] for p in m.points if p.link == ln.name] + [z[a]]
+            far = [z[p.name] for p in m.points if p.link == ln.name] + [z[a]] + [
+                z[g.joints[1]] for g in m.groups if g.guide is not None and g.guide.link == ln.name]
             reach = max(abs(e - z[c]) for e in far)
             d = (z[a] - z[c]) / abs(z[a] - z[c])
             tip = z[c] + 1.08 * reach * d
-            ax.plot([z[c].real, tip.real], [z[c].imag, tip.imag], color="k", lw=2.0, zorder=3)
+            foot = z[c]
+            if m.groups[ln.group - 1].offset != 0.0:  # an offset slot: the arm from the pivot to it, then the slot
+                foot, d = (complex(x[i]) for x in slot_axis(m, k, ln.name))
+                foot = foot * MM
+                tip = foot + 1.08 * reach * d
+                ax.plot([z[c].real, foot.real], [z[c].imag, foot.imag], color="k", lw=2.0, zorder=3)
+            ax.plot([foot.real, tip.real], [foot.imag, tip.imag], color="k", lw=2.0, zorder=3)
             pts += [z[c], tip]
         elif ln.kind == "block":
             _block(ax, z[ln.name], float(k.angle[ln.name][i]), 0.5 * unit, 0.25 * unit, "k", 1.2, "-", z=4)
             pts.append(z[ln.name])
         elif ln.kind == "slider":
-            g = m.groups[ln.group - 1]
-            _block(ax, z[ln.name], g.guide.angle, 0.7 * unit, 0.35 * unit, "k", 1.2, "-", z=4)
-            pts.append(z[ln.name])
+            centre, angle, segs = slider_pose(m, k, ln.name, i)
+            for p0, p1 in segs:
+                ax.plot([p0.real * MM, p1.real * MM], [p0.imag * MM, p1.imag * MM], color="k", lw=1.6, zorder=3)
+            _block(ax, centre * MM, angle, 0.7 * unit, 0.35 * unit, "k", 1.2, "-", z=4)
+            pts.append(centre * MM)
     names = {n for ln in links for n in ln.pins} | {p.name for p in m.points if any(p.link == ln.name for ln in links)}
     for n in names:
         ax.plot(z[n].real, z[n].imag, "o", ms=3.5, mfc="white", mec="k", zorder=6)
@@ -216,7 +227,7 @@ def forces_figure(s: Sheet2, lang: str):
         ax.set_ylim(xy.imag.min() - pad, xy.imag.max() + pad)
         ax.set_aspect("equal", adjustable="box")
         ax.axis("off")
-        name = tr(lang, "the crank with the frame") if group == 0 else tr(lang, "group {group} ({kind})").format(group=group, kind=s.sheet1.mechanism.groups[group - 1].kind)
+        name = tr(lang, "the crank with the frame") if group == 0 else tr(lang, "group {group} ({kind})").format(group=group, kind=pattern(s.sheet1.mechanism.groups[group - 1].kind, lang))
         ax.set_title(name, fontsize=10)
         _polygon(bx, pg, lang)
     phi = num(math.degrees(p.phi) % 360.0, lang, decimals=1)

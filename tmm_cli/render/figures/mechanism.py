@@ -18,9 +18,10 @@ import re
 
 import numpy as np
 
+from ...linkage.chain import slider_pose, slot_axis
 from ...linkage.sheet1 import Sheet1
 from ...linkage.vector_plans import Plan, Plans
-from .kit import decimal_commas, new_figure, suptitle, title_height
+from .kit import decimal_commas, literal_text, new_figure, suptitle, title_height
 from ...i18n import tr
 from ...i18n.numbers import num
 
@@ -119,6 +120,11 @@ def span_mm(s: Sheet1) -> float:
     return max(float(np.ptp(z.real)), float(np.ptp(z.imag)))
 
 
+def _riders(m, link: str) -> list[str]:
+    """The sliders whose guide rides on the link (drawn long enough to carry them)."""
+    return [g.joints[1] for g in m.groups if g.guide is not None and g.guide.link == link]
+
+
 def draw_mechanism(ax, s: Sheet1, i: int, color="k", lw=1.6, ls="-", labels=True, size: float = 1.0, kin=None):
     """The mechanism at position `i` of the cycle (or of `kin`) [mm]."""
     m = s.mechanism
@@ -144,16 +150,32 @@ def draw_mechanism(ax, s: Sheet1, i: int, color="k", lw=1.6, ls="-", labels=True
                         zorder=5)
         elif ln.kind == "slotted":
             a, c = ln.axis
-            rho_max = max(float(np.max(s.cycle.curve.kin.slide[m.links[ln.number - 2].name][0])) * MM,
-                          *(abs(z[p] - z[c]) for p in on_link.get(ln.name, []) if p in hang))
+            rho_max = max([float(np.max(s.cycle.curve.kin.slide[m.links[ln.number - 2].name][0])) * MM,
+                           *(abs(z[p] - z[c]) for p in on_link.get(ln.name, []) if p in hang),
+                           *(float(np.max(np.abs(s.cycle.curve.kin.z[j] - s.cycle.curve.kin.z[c]))) * MM
+                             for j in _riders(m, ln.name))])
             d = (z[a] - z[c]) / abs(z[a] - z[c])
             tip = z[c] + 1.06 * rho_max * d
-            ax.plot([z[c].real, tip.real], [z[c].imag, tip.imag], color=color, lw=lw, ls=ls, zorder=5)
+            if m.groups[ln.group - 1].offset != 0.0:  # an offset slot: the arm from the pivot to it, then the slot
+                foot, d = (complex(x[i]) for x in slot_axis(m, k, ln.name))
+                foot = foot * MM
+                tip = foot + 1.06 * rho_max * d
+                ax.plot([z[c].real, foot.real], [z[c].imag, foot.imag], color=color, lw=lw, ls=ls, zorder=5)
+                ax.plot([foot.real, tip.real], [foot.imag, tip.imag], color=color, lw=lw, ls=ls, zorder=5)
+            else:
+                ax.plot([z[c].real, tip.real], [z[c].imag, tip.imag], color=color, lw=lw, ls=ls, zorder=5)
         elif ln.kind == "block":
             _block(ax, z[ln.name], float(k.angle[ln.name][i]), 0.5 * unit, 0.25 * unit, color, lw * 0.7, ls)
         elif ln.kind == "slider":
             g = m.groups[ln.group - 1]
-            _block(ax, z[ln.name], g.guide.angle, 0.7 * unit, 0.35 * unit, color, lw * 0.7, ls)
+            if g.kind == "RRP" and not g.guide.moving:
+                _block(ax, z[ln.name], g.guide.angle, 0.7 * unit, 0.35 * unit, color, lw * 0.7, ls)
+            else:  # on a moving guide (drawn from its point on the link), a PRP's block, an RPP's block or yoke
+                centre, angle, segs = slider_pose(m, k, ln.name, i)
+                for p0, p1 in segs:
+                    ax.plot([p0.real * MM, p1.real * MM], [p0.imag * MM, p1.imag * MM], color=color, lw=lw * 0.8,
+                            ls=ls, zorder=4)
+                _block(ax, centre * MM, angle, 0.7 * unit, 0.35 * unit, color, lw * 0.7, ls)
     for n in m.joint_names:
         if n in m.frame or n == m.crank.joint or any(n in g.new for g in m.groups) or n in hang:
             ax.plot(z[n].real, z[n].imag, "o", ms=4 * size, mfc="white", mec=color, zorder=7)
@@ -171,10 +193,10 @@ def draw_mechanism(ax, s: Sheet1, i: int, color="k", lw=1.6, ls="-", labels=True
 
 def _guides(ax, s: Sheet1, lo: complex, hi: complex) -> None:
     """Each slider's guide as a dash-dot line across the drawing [mm]."""
-    for g in s.mechanism.groups:
-        if g.guide is None:
+    for _, gd in s.mechanism.guided():
+        if gd.moving:  # it turns with its link: drawn with the link in each position
             continue
-        p, e = g.guide.through * MM, g.guide.unit
+        p, e = gd.through * MM, gd.unit
         ts = [((c - p) * e.conjugate()).real for c in (lo, hi, complex(lo.real, hi.imag), complex(hi.real, lo.imag))]
         a, b = p + min(ts) * e, p + max(ts) * e
         ax.plot([a.real, b.real], [a.imag, b.imag], color="k", lw=0.7, ls=(0, (12, 3, 2, 3)), zorder=1)
@@ -231,9 +253,10 @@ def scheme_figure(s: Sheet1, lang: str):
     extreme = "; " + tr(lang, "the other extreme position {label} — dashed").format(label=label_tex(ends[0].label)) \
         if ends else ""
     title = tr(lang, "{name} in {n} positions (position 0 bold{extreme})\n"
-                     "scale of the sheet μ_l = {mu} m/mm; coloured: the paths of the named points").format(
-        name=m.name or tr(lang, "Mechanism"), n=len(c.positions), extreme=extreme, mu=mu)
-    suptitle(fig, title.replace("μ_l", r"$\mu_l$"), fontsize=11)
+                     "scale of the sheet μ_l = {mu} m/mm; coloured: the paths of the named points")
+    title = title.replace("μ_l", r"$\mu_l$").format(  # the name: a person's text, never mathtext
+        name=literal_text(m.name) if m.name else tr(lang, "Mechanism"), n=len(c.positions), extreme=extreme, mu=mu)
+    suptitle(fig, title, fontsize=11)
     decimal_commas(fig, lang)
     return fig
 
@@ -402,8 +425,8 @@ def plan_figure(s: Sheet1, pl: Plans, kind: str, lang: str):
     for v in plan.vectors:
         if v.magnitude == 0.0 and v.start in ("p", "π"):
             continue
-        where = f"  {v.relation} {line_tex(v.line)}" if v.line and v.line != "guide" else (
-            "  ∥ " + tr(lang, "guide") if v.line == "guide" else "")
+        where = f"  {v.relation} {line_tex(v.line)}" if v.line and v.line not in ("guide", "slot") else (
+            f"  {v.relation or '∥'} " + tr(lang, v.line) if v.line in ("guide", "slot") else "")
         lines.append(f"{symbol_tex(v.symbol)} = {num(v.magnitude, lang, sig=4)} {unit}"
                      f"  ({num(v.magnitude / plan.scale, lang, decimals=1)} " + tr(lang, "mm") + f"){where}")
     cols = 2 if len(lines) > 11 else 1

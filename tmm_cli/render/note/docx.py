@@ -36,6 +36,7 @@ from .model import (
     TaskSheet,
     TitlePage,
     split_math,
+    text_runs,
 )
 from .omml import omath, omath_para
 
@@ -241,17 +242,29 @@ class DocxWriter:
             if is_math:  # in a table at the table's 12 pt, fractions on the line (no tall rows)
                 paragraph._p.append(omath(piece, size=12 if in_table else 14, linear=in_table))
             elif piece:
-                # a power of ten, "1,458·10⁻⁴", as a superscript run
-                parts = SCI_EXPONENT.split(piece)
-                for k, part in enumerate(parts):
-                    if not part:
-                        continue
-                    run = paragraph.add_run(part.translate(SUPER_DIGITS) if k % 2 else part)
-                    run.bold = bold or None
-                    if k % 2:
-                        run.font.superscript = True
-                    if size:
-                        run.font.size = Pt(size)
+                for given, run in text_runs(piece):
+                    if given:  # a person's text: one plain run, as given
+                        r = paragraph.add_run(run)
+                        r.bold = bold or None
+                        if size:
+                            r.font.size = Pt(size)
+                    else:
+                        self._runs(paragraph, run, bold, size)
+
+    def _runs(self, paragraph, piece: str, bold: bool, size: float | None) -> None:
+        """The program's text: a power of ten, "1,458·10⁻⁴", as a superscript run."""
+        from docx.shared import Pt
+
+        parts = SCI_EXPONENT.split(piece)
+        for k, part in enumerate(parts):
+            if not part:
+                continue
+            run = paragraph.add_run(part.translate(SUPER_DIGITS) if k % 2 else part)
+            run.bold = bold or None
+            if k % 2:
+                run.font.superscript = True
+            if size:
+                run.font.size = Pt(size)
 
     STYLE_IDS = {"Structural": "Structural", "Structural Plain": "StructuralPlain", "Caption": "Caption",
                  "Table Text": "TableText", "Heading 1": "Heading1", "Heading 2": "Heading2"}

@@ -19,7 +19,7 @@ from .ctx import Ctx, V
 from .model import Heading
 
 # the kinds of Assur groups as the book writes them (В — a turning pair, П — a sliding pair)
-_KIND = {"RRR": N_("RRR"), "RRP": N_("RRP"), "RPR": N_("RPR")}
+_KIND = {"RRR": N_("RRR"), "RRP": N_("RRP"), "RPR": N_("RPR"), "PRP": N_("PRP"), "RPP": N_("RPP")}
 
 
 def dynamics_chapter(c: Ctx) -> None:
@@ -64,6 +64,14 @@ def fsym(c: Ctx, sym: str) -> str:
     if letters == "R":
         return f"R_({number.replace(',', ' ')})"
     return f"{letters}_{number}" + tick if number else letters + tick
+
+
+def vsym(c: Ctx, sym: str) -> str:
+    """A force as a vector in typst math: 'Rτ12' → arrow(R)_(12)^τ (the letter under the arrow, as the
+    book writes a vector equation)."""
+    text = fsym(c, sym)
+    base, sep, rest = text.partition("_")
+    return f"arrow({base})" + (sep + rest if sep else "")
 
 
 def pt(name: str) -> str:
@@ -159,6 +167,7 @@ def _loads(c: Ctx, s) -> None:
                                 [V(ms.J, exact=True), V(eps, sig=4)], V(abs(float(m.m[i])), sig=4), t("N·m")))
         c.formula(*lines)
     _load(c, s)
+    _gas(c, s)
     # all the applied forces of the position
     rows = []
     for f in forces:
@@ -179,10 +188,12 @@ def _kind(c: Ctx, kind: str) -> str:
 
 
 def _link_name(c: Ctx, ln) -> str:
-    words = {"crank": c.t("crank"), "bar": c.t("bar"), "slider": c.t("slider"), "block": c.t("block"),
-             "slotted": c.t("slotted link")}
+    from ...linkage.roles import link_roles
+    from ..terminal.mechanism import ROLE_WORDS
+
+    role = link_roles(c.r.linkage.sheet1)[ln.name]
     ends = ln.axis if ln.axis is not None and ln.kind not in ("slider", "block") else (ln.name,)
-    return words[ln.kind] + " " + "".join(ends)
+    return c.t(ROLE_WORDS[role]) + " " + "".join(ends)
 
 
 def _load(c: Ctx, s) -> None:
@@ -206,6 +217,9 @@ def _load(c: Ctx, s) -> None:
               "(Table {{tab:dyn_load}}) gives it against the share of the swing covered; it is linear between these "
               "points and zero on the return stroke."))
     c.p(what.format(sym=sym))
+    if ld.direction is not None:
+        c.p(t("Its direction is its own, fixed at {deg}° from the $x$ axis (not along the guide): its part across the "
+              "guide does no work but loads the pairs.").format(deg=n(math.degrees(ld.direction), decimals=1)))
     share = t("Share of the working stroke") if ld.kind == "force" else t("Share of the working swing")
     c.table("dyn_load", t("Diagram of the useful resistance"), [share] + [n(x, sig=3) for x in ld.stroke],
             [[f"${sym}$, {unit}"] + [n(y, sig=5) for y in ld.values]],
@@ -218,6 +232,40 @@ def _load(c: Ctx, s) -> None:
     else:
         c.p(t("In position {label} the crank is on the return stroke: ${sym} = 0$.").format(
             label=_position(s).label, sym=sym))
+
+
+def _gas(c: Ctx, s) -> None:
+    """The gas forces from the indicator diagrams ([[load]] with head)."""
+    from ...linkage.gas import gas_pressure, piston, state
+
+    t, n = c.t, c.n
+    gas = s.input.gas
+    if not gas:
+        return
+    mech = s.sheet1.mechanism
+    i = s.force_position
+    kin = s.sheet1.cycle.kin.at(i)
+    c.p(t("The gas force on a piston is $P = p A$ along its cylinder, away from the cylinder head, on both strokes: "
+          "$p$ the gauge pressure of the indicator diagram against the piston's travel $s/H$ from the dead centre "
+          "nearest the head (the first row while the piston moves away from the head, the second while it comes back), "
+          "$A$ the piston's area. It drives the crank where the piston moves away from the head and resists where it "
+          "comes back."))
+    for gl in gas:
+        ln = mech.link(gl.link)
+        sym = fsym(c, f"P{ln.number}")
+        pst = piston(gl, mech)
+        c.table(f"dyn_gas_{ln.number}", t("Indicator diagram of the piston {p} (gauge pressure, MPa; area {a} m²)").format(
+            p=gl.link, a=n(gl.area, sig=4)), ["$s/H$"] + [n(x, sig=3) for x in gl.travel],
+            [[t("away from the head")] + [n(y, sig=4) for y in gl.pressure[0]],
+             [t("towards the head")] + [n(y, sig=4) for y in gl.pressure[1]]],
+            align=["left"] + ["center"] * len(gl.travel), widths=[2.2] + [0.9] * len(gl.travel))
+        x, row, _ = state(gl, pst, mech, kin)
+        p = float(gas_pressure(gl, pst, mech, kin)[0]) / 1.0e6
+        c.p(t("In position {label} the piston {p} is at $s/H$ = {x}, moving {way}: $p$ = {pr} MPa,").format(
+            label=_position(s).label, p=gl.link, x=n(float(x[0]), decimals=3), pr=n(p, sig=4),
+            way=t("away from the head") if int(row[0]) == 0 else t("towards the head")))
+        c.formula(c.calc(f"{sym} = p A", "{0} dot 10^6 dot {1}", [V(p, sig=6), V(gl.area, exact=True)],
+                         V(p * 1.0e6 * gl.area, sig=4), t("N")), numbered=False)
 
 
 # --- 2. the groups ----------------------------------------------------------------------------------
@@ -261,7 +309,26 @@ def _groups(c: Ctx, s) -> None:
                                                                         n3=n3)
         c.p(head + (t(" is solved first.") if first else t(" is solved next.")), indent=True)
         first = False
-        if g.kind in ("RRR", "RRP"):
+        if g.kind == "PRP":
+            (jb,) = g.joints
+            c.p(t("Unknown are the two guides' reactions ${a}$ and ${c}$, each across its guide, the slides' couples "
+                  "(each block's own moment about ${B}$: a block cannot turn on its guide) and the inner reaction ${b}$ "
+                  "of the pin ${B}$. The force polygon of the group gives the two guides' reactions, the polygon of "
+                  "block {n3} the pin's:").format(a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label),
+                                                  B=pt(jb), n3=n3))
+            c.formula(f"{fsym(c, ra.label)} + Σ F^(({n2})) + Σ F^(({n3})) + {fsym(c, rc.label)} = 0; quad "
+                      f"{fsym(c, rb.label)} = -({fsym(c, rc.label)} + Σ F^(({n3})))", numbered=False)
+        elif g.kind == "RPP":
+            ja, jy = g.joints
+            c.p(t("Unknown are the reaction ${a}$ of the pin ${A}$ on the block, the block's pressure ${b}$ on the yoke "
+                  "across its slot and the guide's reaction ${c}$ across the guide, with the slides' couples. The "
+                  "polygon of the yoke {n3} gives ${b}$ and ${c}$ (their directions are known), the polygon of the "
+                  "block {n2} gives ${a}$; the couples follow from the moments of the block about ${A}$ and of the "
+                  "yoke about ${Y}$:").format(a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label), A=pt(ja),
+                                              Y=pt(jy), n2=n2, n3=n3))
+            c.formula(f"{fsym(c, rb.label)} + Σ F^(({n3})) + {fsym(c, rc.label)} = 0; quad "
+                      f"{fsym(c, ra.label)} = {fsym(c, rb.label)} - Σ F^(({n2}))", numbered=False)
+        elif g.kind in ("RRR", "RRP"):
             ja, jb = g.joints[0], g.joints[1]
             l2 = abs(z[jb] - z[ja])
             m2 = known_moment(s, n2, z[jb], i)
@@ -286,18 +353,18 @@ def _groups(c: Ctx, s) -> None:
                                     V(abs(complex(rc.tangential[i])), sig=4), N))
             c.formula(*lines, where=[_sum_where(c, jb)])
             if g.kind == "RRR":
-                poly = (f"{fsym(c, 'Rτ' + ra.label[1:])} + Σ F^(({n2})) + Σ F^(({n3})) + "
-                        f"{fsym(c, 'Rτ' + rc.label[1:])} + {fsym(c, 'Rn' + rc.label[1:])} + "
-                        f"{fsym(c, 'Rn' + ra.label[1:])} = 0")
+                poly = (f"{vsym(c, 'Rτ' + ra.label[1:])} + Σ arrow(F)^(({n2})) + Σ arrow(F)^(({n3})) + "
+                        f"{vsym(c, 'Rτ' + rc.label[1:])} + {vsym(c, 'Rn' + rc.label[1:])} + "
+                        f"{vsym(c, 'Rn' + ra.label[1:])} = 0")
                 c.p(t("The normal components close the force polygon of the group; the inner reaction follows from "
-                      "the polygon of link {n3}, ${b} = -({c} + Σ F^(({n3})))$:").format(
-                    n3=n3, b=fsym(c, rb.label), c=fsym(c, rc.label)))
+                      "the polygon of link {n3}, ${b} = -({c} + Σ arrow(F)^(({n3})))$:").format(
+                    n3=n3, b=vsym(c, rb.label), c=vsym(c, rc.label)))
             else:
-                poly = (f"{fsym(c, 'Rτ' + ra.label[1:])} + Σ F^(({n2})) + Σ F^(({n3})) + {fsym(c, rc.label)} + "
-                        f"{fsym(c, 'Rn' + ra.label[1:])} = 0")
+                poly = (f"{vsym(c, 'Rτ' + ra.label[1:])} + Σ arrow(F)^(({n2})) + Σ arrow(F)^(({n3})) + "
+                        f"{vsym(c, rc.label)} + {vsym(c, 'Rn' + ra.label[1:])} = 0")
                 c.p(t("The normal component and the guide's reaction close the force polygon of the group; the inner "
-                      "reaction follows from the polygon of the slider, ${b} = -({c} + Σ F^(({n3})))$:").format(
-                    b=fsym(c, rb.label), c=fsym(c, rc.label), n3=n3))
+                      "reaction follows from the polygon of the slider, ${b} = -({c} + Σ arrow(F)^(({n3})))$:").format(
+                    b=vsym(c, rb.label), c=vsym(c, rc.label), n3=n3))
             c.formula(poly, numbered=False)
         else:
             ja, jc = g.joints
@@ -309,17 +376,27 @@ def _groups(c: Ctx, s) -> None:
                   "to the block:").format(l=seg(jc, ja), a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label), A=pt(ja),
                                           C=pt(jc), n3=n3))
             mb = float(rb.couple[i]) if rb.couple is not None else 0.0
+            arm_sym = seg(jc, ja)
+            if g.offset != 0.0:  # an offset slot: the pressure's arm about C is the block's place along the slot
+                arm_sym, d = "h", abs(g.offset)
+                arm = math.sqrt(max(rho * rho - d * d, 0.0))
+                c.p(t("The slot passes {d} mm from the pivot ${C}$: the arm $h$ of the pressure about ${C}$ is the "
+                      "block's distance along the slot from the foot of the perpendicular:").format(
+                    d=c.n(d * 1000.0, sig=4), C=pt(jc)))
+                c.formula(c.calc(f"h = sqrt({seg(jc, ja)}^2 - d^2)", "sqrt({0}^2 - {1}^2)", [V(rho, sig=5), V(d, sig=4)],
+                                 V(arm, sig=5), t("m")), numbered=False)
+                rho = arm
             if abs(mb) > 1e-9 * max(1.0, abs(m3)):
-                line = c.calc(f"{fsym(c, rb.label)} = abs(Σ M_({pt(jc)})^(({n3})) + M_({n2} {n3}))/{seg(jc, ja)}",
+                line = c.calc(f"{fsym(c, rb.label)} = abs(Σ M_({pt(jc)})^(({n3})) + M_({n2} {n3}))/{arm_sym}",
                               "abs({0} + {1})/{2}", [V(m3, sig=5), V(mb, sig=5), V(rho, sig=4)],
                               V(abs(complex(rb.force[i])), sig=4), N)
             else:
-                line = c.calc(f"{fsym(c, rb.label)} = abs(Σ M_({pt(jc)})^(({n3})))/{seg(jc, ja)}", "{0}/{1}",
+                line = c.calc(f"{fsym(c, rb.label)} = abs(Σ M_({pt(jc)})^(({n3})))/{arm_sym}", "{0}/{1}",
                               [V(abs(m3), sig=5), V(rho, sig=4)], V(abs(complex(rb.force[i])), sig=4), N)
             c.formula(line, where=[_sum_where(c, jc)])
             c.p(t("The polygons of the block and of the slotted link give the other two:"))
-            c.formula(f"{fsym(c, ra.label)} = {fsym(c, rb.label)} - Σ F^(({n2})); quad "
-                      f"{fsym(c, rc.label)} = -({fsym(c, rb.label)} + Σ F^(({n3})))", numbered=False)
+            c.formula(f"{vsym(c, ra.label)} = {vsym(c, rb.label)} - Σ arrow(F)^(({n2})); quad "
+                      f"{vsym(c, rc.label)} = -({vsym(c, rb.label)} + Σ arrow(F)^(({n3})))", numbered=False)
         _group_table(c, s, g)
     _crank(c, s)
     _reactions_table(c, s)
@@ -368,7 +445,7 @@ def _crank(c: Ctx, s) -> None:
     r21 = "R_21"
     c.p(t("The crank comes last. On it act the reaction ${r21} = -{r12}$ of link 2, its own loads and the balancing "
           "moment $M_\"ур\"$ of the motor; the frame's reaction ${r01}$ closes its polygon. The moments about "
-          "${O}$:").format(r21=r21, r12=fsym(c, r12.label), r01=fsym(c, r01.label), O=pt(mech.crank.pivot)))
+          "${O}$:").format(r21="arrow(R)_21", r12=vsym(c, r12.label), r01=vsym(c, r01.label), O=pt(mech.crank.pivot)))
     if abs(others) <= 1e-9 * max(1.0, abs(moment_r)):
         c.formula(c.calc(f'abs(M_"ур") = {r21} h_21', "{0} dot {1}", [V(size, sig=5), V(h, sig=4)], V(abs(mb), sig=4),
                          t("N·m")),
@@ -423,8 +500,8 @@ def _lever(c: Ctx, s) -> None:
           "position {label} ($μ_v = {mu}$ m/(s·mm)) is turned through 90°, every force is applied at the image of "
           "its point, parallel to itself (an inertia moment as two forces $M_Φ/l$ across its link at the link's "
           "ends), and the plan, a rigid lever pivoted at the pole $p$, is in equilibrium with the balancing force "
-          "$F_\"ур\"$ at the image $a$ of the crank pin, across the crank. The arms $h$ are measured on the turned "
-          "plan (Table {{tab:dyn_lever}}).").format(label=plan.position.label, mu=c.q(mu, sig=3)))
+          "$F_\"ур\"$ at the image $a$ of the crank pin, across the crank. The arms $h$ on the turned plan are found "
+          "from the plan's coordinates (Table {{tab:dyn_lever}}).").format(label=plan.position.label, mu=c.q(mu, sig=3)))
     rows = []
     total = 0.0
     for f in s.lever.forces:
@@ -457,13 +534,14 @@ def _lever(c: Ctx, s) -> None:
     mb = float(s.balancing[i])
     diff = float(s.difference_pct()[i])
     c.p(t("Its difference from the moment of the force analysis:"))
+    same = c.n(abs(mb), sig=6) == c.n(abs(mz), sig=6)  # equal to the printed digits: Δ is 0 there
     c.formula(c.calc('Δ = (abs(M_"ур") - abs(M_"ур"^"Ж"))/abs(M_"ур") dot 100', "({0} - {1})/{0} dot 100",
-                     [V(abs(mb), sig=6), V(abs(mz), sig=6)], V(abs(diff) if abs(diff) < 5e-3 else diff, decimals=2),
-                     "%"))
+                     [V(abs(mb), sig=6), V(abs(mz), sig=6)],
+                     V(0.0, decimals=0) if same else V(abs(diff) if abs(diff) < 5e-3 else diff, decimals=2), "%"))
     ok = abs(diff) < 1.0
-    c.p((t("The two agree within 1 %, as required: both rest on the same exact velocity and acceleration plans, so "
-           "they differ by rounding only.") if ok else
-         t("The two differ by more than 1 %.")))
+    c.p((t("The two agree within 1 %, as required (unrounded, the difference is {diff}): both rest on the same exact "
+           "velocity and acceleration plans, so they differ by rounding only.") if ok else
+         t("The two differ by more than 1 % ({diff}).")).format(diff=c.pct_digits(abs(diff))))
     c.doc.claim(kind="linkage_zhukovsky", kinetostatic=mb, lever=mz, diff_pct=diff, ok=ok)
 
 
@@ -509,7 +587,20 @@ def _reduction(c: Ctx, s) -> None:
     a_c = float(d.A_r[-1])
     if ld is not None and st is not None:
         area = float(table_integral(ld, 1.0))
-        if ld.kind == "force":
+        if ld.kind == "force" and ld.direction is not None:
+            from ...linkage.loads import _along
+
+            k = _along(ld, st)
+            c.p(t("The work of the resistances over a cycle: the weights do none (their centres come back), the useful "
+                  "resistance of its own direction does work by its part along the guide, $cos α$ of it ($α$ the "
+                  "angle between the force and the working motion), over the area $S_F$ under its diagram times the "
+                  "stroke $H$:"))
+            c.formula(c.calc('A_"с" = H S_F cos α', "{0} dot {1} dot ({2})", [V(st.length, sig=5), V(area, sig=6),
+                                                                             V(k, sig=6)], V(a_c, sig=5), t("J")),
+                      where=['A_"с"', ("H", t("the stroke of the output slider, m")),
+                             ("S_F", t("the area under the diagram of the useful resistance against the share of the "
+                                       "stroke, N"))])
+        elif ld.kind == "force":
             c.p(t("The work of the resistances over a cycle: the weights do none (their centres come back), the useful "
                   "resistance takes the area $S_F$ under its diagram times the stroke $H$:"))
             c.formula(c.calc('A_"с" = -H S_F', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)], V(a_c, sig=5),
@@ -525,6 +616,19 @@ def _reduction(c: Ctx, s) -> None:
                       where=['A_"с"', ("ψ", t("the swing of the output rocker, rad")),
                              ("S_M", t("the area under the diagram of the resistance moment against the share of the "
                                        "swing, N·m"))])
+    if s.input.gas:
+        from ...linkage.gas import _row_integral, piston
+
+        for gl in s.input.gas:
+            ln = s.sheet1.mechanism.link(gl.link)
+            h = piston(gl, s.sheet1.mechanism).stroke
+            s1, s2 = (float(_row_integral(gl.travel, row, 1.0)) for row in gl.pressure)
+            c.p(t("The gas force on the piston {p} does over a cycle the work of its indicator diagram: the area between "
+                  "its rows times the piston's area and stroke (positive where the expansion's row lies higher):")
+                .format(p=gl.link))
+            c.formula(c.calc(f'A_(P {ln.number}) = A H (S_1 - S_2) dot 10^6', "{0} dot {1} dot ({2} - {3}) dot 10^6",
+                             [V(gl.area, exact=True), V(h, sig=6), V(s1, sig=6), V(s2, sig=6)],
+                             V(gl.area * h * (s1 - s2) * 1.0e6, sig=5), t("J")), numbered=False)
     c.p(t("Over a steady cycle the driving work equals the resistance work, so the constant driving moment of the "
           "motor reduced to the crank is"))
     m = abs(d.M_d)

@@ -17,12 +17,12 @@ import re
 from ...i18n import N_
 from ...linkage.positions import PRESSURE_WARN_DEG, output_coordinate
 from ...linkage.scales import PLAN_MM, SCHEME_MM
-from ..terminal.mechanism import pattern
+from ...linkage.roles import link_roles
+from ..terminal.mechanism import ROLE_WORDS, pattern
 from .ctx import Ctx, V, sheet1_of
-from .model import Heading
+from .model import Heading, literal
+from .synthesis_part import synthesis_section
 
-_KIND = {"crank": N_("crank"), "bar": N_("bar"), "slider": N_("slider"), "block": N_("block"),
-         "slotted": N_("slotted link")}
 _PAIR = {"R": N_("revolute"), "P": N_("prismatic")}
 _NAME = re.compile(r"[^\W\d_]\d*['′]*")
 
@@ -32,6 +32,7 @@ def linkage_chapter(c: Ctx) -> None:
     if s is None:
         return
     c.doc.add(Heading(1, c.t("Structural and kinematic analysis of the lever mechanism"), "chapter", "linkage"))
+    synthesis_section(c, s)  # «Синтез механизма» when the file records its task (tmm synth, issue 33)
     _structure(c, s)
     _positions(c, s)
     if s.plans:
@@ -121,23 +122,26 @@ def _lengths(m) -> dict[str, float]:
     return size
 
 
-def _link_words(c: Ctx, m) -> str:
-    return ", ".join(f"{ln.number} — {c.t(_KIND[ln.kind])} {ln.name}" for ln in m.links)
+def _link_words(c: Ctx, s) -> str:
+    roles = link_roles(s)
+    return ", ".join(f"{ln.number} — {c.t(ROLE_WORDS[roles[ln.name]])} {ln.name}" for ln in s.mechanism.links)
 
 
 def _structure(c: Ctx, s) -> None:
     t, n = c.t, c.n
     m, st = s.mechanism, s.structure
     c.doc.add(Heading(2, t("Structure of the mechanism")))
-    name = m.name or t("Mechanism")
+    name = literal(m.name) if m.name else t("Mechanism")  # a person's text: set as typed
     c.p(t("The mechanism «{name}» consists of the frame 0 and {count} moving links: {links}. The links and the "
           "kinematic pairs are given in Tables {{tab:linkage_links}} and {{tab:linkage_groups}}.").format(
-        name=name, count=st.n, links=_link_words(c, m)))
+        name=name, count=st.n, links=_link_words(c, s)))
     mm = t("mm")
     size = _lengths(m)
     rows = [["0", t("frame"), t("fixed joints {joints}").format(joints=", ".join(m.frame)), "—"]]
+    roles = link_roles(s)
     for ln in m.links:
-        rows.append([str(ln.number), ln.name, t(_KIND[ln.kind]), n(size[ln.name] * 1000) if ln.name in size else "—"])
+        rows.append([str(ln.number), ln.name, t(ROLE_WORDS[roles[ln.name]]),
+                     n(size[ln.name] * 1000) if ln.name in size else "—"])
     c.table("linkage_links", t("Links of the mechanism"), ["№", t("Link"), t("Kind"), f"$l$, {mm}"], rows,
             align=["center", "center", "left", "center"], widths=[0.5, 1.0, 2.2, 1.0])
     c.p(t("Every kinematic pair of the mechanism is a lower pair of class 5 (a revolute or a prismatic pair), there are no "
@@ -431,7 +435,7 @@ def _omega_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l
     if P.tiny(P.w[link]):
         return f"ω_{num} = 0"
     return c.calc(f"ω_{num} = {P.sym.mag(vec.symbol)}/{l_sym}", "{0}/{1}",
-                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=5)], V(abs(P.w[link]), sig=5), c.t("rad/s"))
+                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=9 if exact else 5)], V(abs(P.w[link]), sig=5), c.t("rad/s"))
 
 
 def _eps_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l_sym: str) -> str:
@@ -439,7 +443,7 @@ def _eps_line(c: Ctx, P: _Plans, link: str, vec, length: float, exact: bool, l_s
     if P.tiny(P.e[link], P.pl.acceleration):
         return f"ε_{num} = 0"
     return c.calc(f"ε_{num} = {P.sym.mag(vec.symbol)}/{l_sym}", "{0}/{1}",
-                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=5)], V(abs(P.e[link]), sig=5), c.t("rad/s²"))
+                  [V(vec.magnitude, sig=4), V(length, exact=exact, sig=9 if exact else 5)], V(abs(P.e[link]), sig=5), c.t("rad/s²"))
 
 
 def _group_velocity(c: Ctx, P: _Plans, g) -> None:
@@ -455,6 +459,9 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
         zero.insert(0, f"arrow(v){sub(g.joints[0] + str(n2))} = arrow(v){sub(g.joints[0])}")
     c.formula(*(_eq(P, vp, g.index) + zero))
     lines = []
+    if g.kind in ("PRP", "RPP"):
+        _sliding_group(c, P, g, vp, ms, "μ_v")
+        return
     if g.kind == "RRR":
         ja, jb, jc = g.joints
         v1, v2 = P.vel[f"v_{jb}{ja}"], P.vel[f"v_{jb}{jc}"]
@@ -466,6 +473,13 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
         ja, jb = g.joints
         v1 = P.vel[f"v_{jb}{ja}"]
         lines += [P.measured(vp, v1, ms, "μ_v"), P.measured(vp, P.vel[f"v_{jb}"], ms, "μ_v")]
+        if g.guide.moving:
+            kn = P.m.link(g.guide.link).number
+            lines.append(P.measured(vp, P.vel[f"v_{jb}{jb}{kn}"], ms, "μ_v"))
+            c.p(t("The slider {b} slides along a guide of link {k}, which turns: {bk} is the point of link {k} under the "
+                  "slider (found on the plan by similarity), the slider's velocity relative to it is along the guide, "
+                  "and the slider turns with link {k} ($ω_{n3} = ω_{k}$).").format(
+                b=jm(jb), k=kn, bk=jm(f"{jb}{kn}"), n3=n3))
         lines += [_omega_line(c, P, g.links[0], v1, g.lengths[0], True, "l" + sub(ja, jb))]
     else:
         ja, jc = g.joints
@@ -486,7 +500,63 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
         c.p(t("Here $l{l}$ is the distance from the pivot {c} to the block in this position; the block {n2} turns "
               "together with the slotted link {n3}.").format(l=sub(g.joints[1], g.joints[0]), c=jm(g.joints[1]),
                                                              n2=n2, n3=n3))
+    if g.kind == "RPR" and g.offset != 0.0:
+        c.p(t("The slot of link {n3} passes {d} mm from its pivot {c} (not through it): the block's velocity relative "
+              "to the slot, and later its relative and Coriolis accelerations, are along and across the slot, while "
+              "the turning about {c} stays perpendicular to the line from {c} to {a}.").format(
+            n3=n3, d=c.n(abs(g.offset) * 1000.0, sig=4), c=jm(g.joints[1]), a=jm(g.joints[0])))
     c.formula(*lines)
+
+
+def _sliding_group(c: Ctx, P: _Plans, g, plan, unit: str, mu: str) -> None:
+    """The plan of a PRP or an RPP group (kinds 4, 5): its blocks only slide, so the plan gives the
+    relative velocities (accelerations) along the guides and slots; the Coriolis accelerations, where a
+    guide or the yoke turns, are known beforehand, 2·ω·v_rel. The blocks turn with their guides' links."""
+    t = c.t
+    n2, n3 = g.numbers
+    symbols = [x for eq in plan.equations if eq.group == g.index for side in eq.sides for x in side]
+    symbols += [eq.lhs for eq in plan.equations if eq.group == g.index]
+    vecs = [v for v in plan.vectors if v.symbol in dict.fromkeys(symbols)]
+    known, lines = [], []
+    turning = {}  # the Coriolis vectors' symbols → the link whose ω makes them
+    if g.kind == "PRP":
+        (jb,) = g.joints
+        for gd in g.guides:
+            if gd.moving:
+                turning[f"a^k_{jb}{jb}{P.m.link(gd.link).number}"] = gd.link
+    else:
+        ja = g.joints[0]
+        p3 = f"{ja}{n3}"
+        turning[f"a^k_{p3}{ja}{n2}"] = g.links[1]
+        if g.guide.moving:
+            turning[f"a^k_{p3}{p3}{P.m.link(g.guide.link).number}"] = g.guide.link
+    for v in dict((v.symbol, v) for v in vecs).values():
+        if v.symbol in turning:
+            rel = P.vel["v_" + v.symbol[4:]]
+            num = P.m.link(turning[v.symbol]).number
+            w = abs(P.w[P.m.links[num - 1].name])
+            known.append(c.calc(f"{P.sym.mag(v.symbol)} = 2 ω_{num} {P.sym.mag(rel.symbol)}", "2 dot {0} dot {1}",
+                                [V(w, sig=5), V(0.0 if P.tiny(rel.magnitude, P.pl.velocity) else rel.magnitude, sig=4)],
+                                V(0.0 if P.tiny(v.magnitude, plan) else v.magnitude, sig=4), unit))
+            known.append(P.drawn(plan, v))
+        elif v.start == "p" and v.known or v.start == "π" and v.known:
+            continue  # a guide's point found by similarity
+        else:
+            lines.append(P.measured(plan, v, unit, mu))
+    if known:
+        c.p(t("The blocks slide along turning guides, so their accelerations relative to them have Coriolis "
+              "components (the relative velocity turned by 90° in the sense of the guide's ω). The known components "
+              "and their segments on the plan:"))
+        c.formula(*known)
+    if plan.kind == "velocity":
+        same = [f"{q}_{n} = {q}_{P.m.link(gd.link).number}" if gd.moving else f"{q}_{n} = 0"
+                for q in ("ω",) for n, gd in zip((n2, n3), g.guides or (g.guide, g.guide))]
+        c.p(t("The blocks of the group only slide: each turns with the link of its guide."))
+    else:
+        same = [f"{q}_{n} = {q}_{P.m.link(gd.link).number}" if gd.moving else f"{q}_{n} = 0"
+                for q in ("ε",) for n, gd in zip((n2, n3), g.guides or (g.guide, g.guide))]
+        c.p(t("From the plan:"))
+    c.formula(*(lines + same))
 
 
 def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
@@ -501,6 +571,9 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
     if g.kind == "RPR":
         zero.insert(0, f"arrow(a){sub(g.joints[0] + str(n2))} = arrow(a){sub(g.joints[0])}")
     c.formula(*(_eq(P, ap, g.index) + zero))
+    if g.kind in ("PRP", "RPP"):
+        _sliding_group(c, P, g, ap, ms2, "μ_a")
+        return
     known, lines = [], []
     rad = "ω"
     if g.kind in ("RRR", "RRP"):
@@ -523,6 +596,18 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
             at2 = P.acc[f"a^τ_{jb}{jc}"]
             lines += [P.measured(ap, at2, ms2, "μ_a")]
             eps.append(_eps_line(c, P, g.links[1], at2, g.lengths[1], True, "l" + sub(jb, jc)))
+        if g.kind == "RRP" and g.guide.moving:
+            kn = P.m.link(g.guide.link).number
+            rel, cor = P.vel[f"v_{jb}{jb}{kn}"], P.acc[f"a^k_{jb}{jb}{kn}"]
+            wk = abs(P.w[g.guide.link]) if not P.tiny(P.w[g.guide.link]) else 0.0
+            c.p(t("The slider moves along the turning guide of link {k}: the acceleration of {b} relative to {bk} has a "
+                  "Coriolis component across the guide (the relative velocity turned by 90° in the sense of $ω_{k}$).")
+                .format(k=kn, b=jm(jb), bk=jm(f"{jb}{kn}")))
+            known.append(c.calc(f"{P.sym.mag(cor.symbol)} = 2 ω_{kn} {P.sym.mag(rel.symbol)}", "2 dot {0} dot {1}",
+                                [V(wk, sig=5), V(0.0 if P.tiny(rel.magnitude, P.pl.velocity) else rel.magnitude, sig=4)],
+                                V(0.0 if P.tiny(cor.magnitude, ap) else cor.magnitude, sig=4), ms2))
+            known.append(P.drawn(ap, cor))
+            lines.append(P.measured(ap, P.acc[f"a^r_{jb}{jb}{kn}"], ms2, "μ_a"))
         lines += [P.measured(ap, P.acc[f"a_{jb}"], ms2, "μ_a")] + eps
     else:
         ja, jc = g.joints
@@ -562,7 +647,8 @@ def _vector_table(c: Ctx, P: _Plans) -> None:
         for v in plan.vectors:
             if v.magnitude / plan.scale < 0.05 and not v.relation:
                 continue
-            line = t("guide") if v.line == "guide" else " ".join(_split_points(v.line, P.sym.names))
+            line = (t("guide") if v.line == "guide" else t("slot") if v.line == "slot" else
+                    " ".join(_split_points(v.line, P.sym.names)))
             rows.append([f"${P.sym.vec(v.symbol)}$", f"${label_math(v.start)} {label_math(v.end)}$",
                          f"{v.relation} {line}".strip() or "—", c.n(v.magnitude / plan.scale, decimals=1),
                          c.n(v.magnitude, sig=4) + "\u00a0" + unit])

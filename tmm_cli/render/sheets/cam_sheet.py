@@ -236,7 +236,7 @@ def _motion_field(sh: Sheet, r, lang: str, box) -> None:
     ]
     if rocker:
         lines[-1] += (f";  k_{{SB}} = k_{{γ}}·l_{{BC}} = {_g(sc.k_s_b, lang)} " + tr(lang, "m/mm")
-                      + f";  k_{{γ,°}} = {_g(sc.k_gamma_deg_mm, lang)} °/{mm}")
+                      + f";  k_{{γ°}} = {_g(sc.k_gamma_deg_mm, lang)} °/{mm}")
     sh.caption(box[0], box[2], box[1] + 2.5, lines, H_NOTE, LINE)
 
 
@@ -820,7 +820,8 @@ def _results(sh: Sheet, r, lang: str, box, prof_scale: str) -> None:
     k = 1000.0
     mm = tr(lang, "mm")
     rows = [
-        (tr(lang, "Minimum cam radius r_0"), f"{_n(z.r0_m * k, lang)} {mm}"),
+        # r_0 is the base radius of the pitch (theoretical) profile, as the book names it (§1.3)
+        (tr(lang, "Base radius of the pitch profile r_0"), f"{_n(z.r0_m * k, lang)} {mm}"),
     ]
     if z.rocker:
         rows += [(tr(lang, "Centre distance l_{OC}"), f"{_n(z.l_oc_m * k, lang)} {mm}"),
@@ -835,7 +836,9 @@ def _results(sh: Sheet, r, lang: str, box, prof_scale: str) -> None:
          f"{_n(p.psi_rise_deg, lang, 1)}°; {_n(p.psi_far_deg, lang, 1)}°; {_n(p.psi_return_deg, lang, 1)}°"),
         (tr(lang, "Scales k_{S}, k_{V}, k_{a}") if not z.rocker
          else tr(lang, "Scales k_{γ}, k_{ω}, k_{ε}"),
-         f"{_g(sc.k_s, lang)}; {_g(sc.k_v, lang)}; {_g(sc.k_a, lang)}"),
+         "; ".join(_g(x, lang) + " " + u for x, u in zip(
+             (sc.k_s, sc.k_v, sc.k_a), (tr(lang, "rad/mm"), tr(lang, "(rad/s)/mm"), tr(lang, "(rad/s²)/mm")) if z.rocker
+             else (tr(lang, "m/mm"), tr(lang, "(m/s)/mm"), tr(lang, "(m/s²)/mm"))))),
         (tr(lang, "Profile scale (k_{Sk})"), _m(lang, prof_scale)),
         (tr(lang, "Closure, follower"),
          (tr(lang, "force closure") if z.closure == "force" else tr(lang, "form closure")) + ", "

@@ -54,6 +54,7 @@ from .lever_parts import (
     wrap_items,
 )
 from .paper import FRAME, H_LABEL, H_MIN_LABEL, TB_BOX, TB_H, Sheet, thin_out
+from .synthesis_overlay import draw_construction
 
 SCHEME_PAD = (16.0, 16.0, 16.0, 12.0)  # [mm] around the scheme: pivots, sliders, labels
 PLAN_PAD = (12.0, 10.0, 12.0, 8.0)  # around a plan: its labels
@@ -87,7 +88,10 @@ def _reach(s: Sheet1) -> dict[str, float]:
     for ln in m.links:
         if ln.kind == "slotted":
             block = m.links[ln.number - 2].name
-            out[ln.name] = float(np.max(s.cycle.curve.kin.slide[block][0])) * MM
+            k = s.cycle.curve.kin
+            riders = [g.joints[1] for g in m.groups if g.guide is not None and g.guide.link == ln.name]
+            out[ln.name] = max([float(np.max(k.slide[block][0]))] +
+                               [float(np.max(np.abs(k.z[j] - k.z[ln.axis[1]]))) for j in riders]) * MM
     return out
 
 
@@ -265,12 +269,11 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
     unit = 1.0 / factor  # one paper millimetre in real millimetres
     reach = _reach(s)
     # the guides: their axes over the sliders' travel, the guide's surface hatched under it
-    for g in m.groups:
-        if g.guide is None:
+    for slider, gd in m.guided():
+        if gd.moving:  # a moving guide is drawn with its link
             continue
-        slider = next(ln.name for ln in m.links if ln.group == g.index and ln.kind == "slider")
-        zs = c.curve.kin.z[slider] * MM
-        e = g.guide.unit
+        zs = c.curve.kin.z[m.link(slider).pins[0]] * MM
+        e = gd.unit
         t = ((zs - zs[0]) * e.conjugate()).real
         a = zs[0] + (t.min() - 8.0 * unit) * e
         b = zs[0] + (t.max() + 8.0 * unit) * e
@@ -295,6 +298,7 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
         draw_links(f, link_segments(m, c.kin, p.index, unit=unit, reach=reach),
                    "Штриховые" if p.index in ends else "Тонкие", None, unit, 0.8)
     draw_links(f, link_segments(m, c.kin, 0, unit=unit, reach=reach), "Основные", None, unit, 1.0)
+    draw_construction(sh, f, s, lang, within)  # the synthesis' θ, locus, sagitta (tmm synth, issue 33)
     for n in pins(m):
         q = f.p(*(_xy(c.kin.z[n][0])))
         sh.circle(q, 1.2, "Основные")

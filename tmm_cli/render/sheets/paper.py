@@ -253,6 +253,15 @@ SUPERSCRIPTS = str.maketrans({"2": "²", "3": "³"})  # a power written inline (
 SUB_DROP = 0.25  # a subscript's baseline below the text's, in heights
 
 
+def dxf_literal(text: str) -> str:
+    """A person's text as a TEXT entity's string that every reader shows as the characters given.
+
+    >>> dxf_literal("%%uIvanov G^{2}")
+    '%%%%%%uIvanov G^ {2}'
+    """
+    return text.replace("%", "%%%").replace("^", "^ ")
+
+
 def mtext_content(text: str) -> str:
     """The MTEXT string of a marked-up text: an index stacked under nothing (``\\S^ 0;``) is the
     subscript of AutoCAD and LibreCAD, one over nothing (``\\S2^ ;``) the superscript.
@@ -573,9 +582,9 @@ class Sheet:
             w = self._widths[key] = self.font(h, wf).text_width(part)
         return w
 
-    def text_width(self, text: str, h: float, wf: float = 1.0) -> float:
+    def text_width(self, text: str, h: float, wf: float = 1.0, literal: bool = False) -> float:
         w = 0.0
-        for part, lv in rich_parts(glyphs(text)):
+        for part, lv in ([(text, 0)] if literal else rich_parts(glyphs(text))):
             w += self._w(part, h if lv == 0 else h * SUB_RATIO, wf)
         return w
 
@@ -590,16 +599,22 @@ class Sheet:
         return top
 
     def _put(self, x, y, text: str, h: float, wf: float, rot: float, layer: str, register: bool = True,
-             align: str = "left", room: float = ROOM):
+             align: str = "left", room: float = ROOM, literal: bool = False):
         """One line of text, (x, y) the left end, the centre or the right end of its baseline
         (`align`), aligned so in the DXF (a CAD program with a wider font keeps it centred or
         right-aligned in its cell); TEXT when plain (its width factor `wf`), MTEXT when it carries an
         index — MTEXT has no width factor every program reads (LibreCAD prints ``\\W0.8;`` as text),
-        so a narrowed text with an index is a TEXT with its indices written inline (``μv``, ``м²``)."""
+        so a narrowed text with an index is a TEXT with its indices written inline (``μv``, ``м²``).
+        A `literal` text (a person's: a name, a group) is one TEXT of the characters given: no index,
+        no glyph swapped, its "%%" codes written as "%%%" (AutoCAD's percent sign), so «%%u» is not an
+        underline, and a caret as "^ " (not a control character)."""
         from ezdxf.enums import TextEntityAlignment
 
-        text = glyphs(text)
-        parts = rich_parts(text)
+        if literal:
+            parts = [(dxf_literal(text), 0)]
+        else:
+            text = glyphs(text)
+            parts = rich_parts(text)
         sub = any(lv for _, lv in parts)
         if sub and wf < 1.0 - 1e-6:  # narrowed: one TEXT with its width factor, its indices inline
             target = self.text_width(text, h, wf)  # as wide as the fitted text with its indices
@@ -617,7 +632,7 @@ class Sheet:
                 "layer": layer, "style": STYLE, "char_height": h, "insert": (float(x), float(y)),
                 "attachment_point": {"left": 7, "center": 8, "right": 9}[align], "rotation": rot})
         if register:  # the room a wider font takes, about the alignment point
-            w = self.text_width(text, h, wf) * room
+            w = self.text_width(text, h, wf, literal) * room
             c, s_ = math.cos(math.radians(rot)), math.sin(math.radians(rot))
             dx = {"left": 0.0, "center": -w / 2, "right": -w}[align]
             self.obstacles.add_box(text_corners(x + c * dx, y + s_ * dx, w, h, rot, sub=sub))
@@ -626,8 +641,9 @@ class Sheet:
     def text(self, x, y, text: str, h: float = 3.5, *, align: str = "left", valign: str = "base",
              width: float | None = None, rot: float = 0.0, layer: str = "Текст", max_lines: int = 1,
              line_gap: float = 0.5, height_max: float | None = None, min_h: float = MIN_HEIGHT,
-             min_wf: float = MIN_WIDTH_FACTOR) -> list:
-        """Text at (x, y) [sheet mm] with ГОСТ height `h`; markup _{sub}, ^{sup}.
+             min_wf: float = MIN_WIDTH_FACTOR, literal: bool = False) -> list:
+        """Text at (x, y) [sheet mm] with ГОСТ height `h`; markup _{sub}, ^{sup} (none in a
+        `literal` text: a person's, set as the characters given).
 
         A text wider than `width` is first narrowed (width factor down to `min_wf`), then wrapped
         into at most `max_lines` lines, then set a size smaller (never below `min_h`), and at the
@@ -637,7 +653,7 @@ class Sheet:
         """
         if not text:
             return []
-        h, wf, lines = self._fit(text, h, width, max_lines, height_max, line_gap, min_h, min_wf)
+        h, wf, lines = self._fit(text, h, width, max_lines, height_max, line_gap, min_h, min_wf, literal)
         n = len(lines)
         step = h * (1.0 + line_gap + 0.15)
         if valign == "top":
@@ -653,10 +669,10 @@ class Sheet:
         for k, line in enumerate(lines):
             dy = y0 - k * step
             X, Y = x - s * dy, y + c * dy
-            out.append(self._put(X, Y, line, h, wf, rot, layer, align=align))
+            out.append(self._put(X, Y, line, h, wf, rot, layer, align=align, literal=literal))
         return out
 
-    def _fit(self, text, h, width, max_lines, height_max, gap, min_h=MIN_HEIGHT, min_wf=MIN_WIDTH_FACTOR):
+    def _fit(self, text, h, width, max_lines, height_max, gap, min_h=MIN_HEIGHT, min_wf=MIN_WIDTH_FACTOR, literal=False):
         def block_h(hh, n):
             return hh * n + (n - 1) * hh * (gap + 0.15)
 
@@ -672,7 +688,7 @@ class Sheet:
                     continue
                 if width is None:
                     return hh, 1.0, lines
-                w = max(self.text_width(t, hh) for t in lines) * ROOM
+                w = max(self.text_width(t, hh, 1.0, literal) for t in lines) * ROOM
                 if w <= width:
                     return hh, 1.0, lines
                 if w * min_wf <= width:
@@ -684,7 +700,7 @@ class Sheet:
             if height_max is not None and block_h(hh, n) > height_max + 1e-9:
                 break
             best = _wrap(text, n) or best
-        w = max(self.text_width(t, hh) for t in best) * (ROOM if width else 1.0)
+        w = max(self.text_width(t, hh, 1.0, literal) for t in best) * (ROOM if width else 1.0)
         return hh, min(1.0, (width or w) / w * 0.999), best
 
     # ---------------------------------------------------------------------------- labels
@@ -884,21 +900,22 @@ class Sheet:
             if s:
                 T(0.8, 25 - k * 5 + 1.2, s, 2.5, 15.5)
         # a full name: one line of 3.5 or 2.5 mm, condensed as far as needed (never smaller)
-        T(18.0, 26.2, title.student, 3.5, 21.0, height_max=3.6, min_wf=0.6)  # 1 mm clear of the cell's lines
-        T(18.0, 21.2, title.teacher, 3.5, 21.0, height_max=3.6, min_wf=0.6)
+        # a person's text: as typed; 1 mm clear of the cell's lines
+        T(18.0, 26.2, title.student, 3.5, 21.0, height_max=3.6, min_wf=0.6, literal=True)
+        T(18.0, 21.2, title.teacher, 3.5, 21.0, height_max=3.6, min_wf=0.6, literal=True)
         for x, w, s in ((135, 15, "Лит."), (150, 17, "Масса"), (167, 18, "Масштаб")):
             T(x + w / 2, 36.2, s, 2.5, w - (2 if w <= 10 else 3), "center")
         T(176, 27.5, scale, 5.0, 16, "center", valign="middle")
         T(137.5, 27.5, "У", 3.5, 4, "center", valign="middle")  # литера: учебный документ
         T(136, 16.2, "Лист 1", 2.5, 18)
         T(156, 16.2, "Листов 1", 2.5, 28)
-        T(125, 47.5, designation, 7.0, 114, "center", valign="middle")
+        T(125, 47.5, designation, 7.0, 114, "center", valign="middle", literal=True)
         # a long name goes onto two or three lines before it is narrowed far
         T(100, 27.5, name, 5.0, 66, "center", valign="middle", max_lines=3, height_max=23, min_wf=0.75)
         org = ", ".join(s for s in (title.org, ("гр. " + title.group) if title.group else "") if s)
         if org_extra:
             org = f"{org}, {org_extra}" if org else org_extra
-        T(160, 7.5, org, 3.5, 48, "center", valign="middle", max_lines=3, height_max=13.5)
+        T(160, 7.5, org, 3.5, 48, "center", valign="middle", max_lines=3, height_max=13.5, literal=True)
 
     # ---------------------------------------------------------------------------- finish
     def finish(self) -> None:

@@ -1,0 +1,349 @@
+"""`tmm synth` (issue 33): every synthesised mechanism, written as a mechanism file and analysed by
+`tmm linkage`'s own core (parsed from the text, as `tmm linkage` reads it), gives the task's H and K
+to 0.1 %, ψ to 0.05° and γ_min at least the task's — over random feasible tasks of each type; the
+closed forms against independent constructions; hostile and infeasible tasks refused in one line
+naming the key; the chain synth → linkage → project --mechanism."""
+
+import cmath
+import json
+import math
+import tomllib
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+from cli_helpers import assert_one_line_error, run
+from tmm_cli.errors import TmmError
+from tmm_cli.linkage.mechanism_file import parse_mechanism
+from tmm_cli.linkage.positions import cycle
+from tmm_cli.linkage.synthesis import (
+    crank_rocker,
+    crank_slider_offset,
+    offset_limit,
+    theta_of,
+    transmission_min,
+)
+from tmm_cli.linkage.synthesis_file import synthesised_file
+from tmm_cli.linkage.synthesis_task import parse_task, synthesise
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
+PROPS = settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+
+def analysed(task: dict):
+    """The task synthesised, its file's text parsed and analysed as `tmm linkage` does:
+    (synthesis, H or ψ, K, γ_min [deg])."""
+    t = parse_task(task)
+    syn = synthesise(t)
+    text = synthesised_file(syn, t).text
+    c = cycle(parse_mechanism(tomllib.loads(text), "synth"))
+    gamma = 90.0 - max(math.degrees(p.worst) for p in c.pressure)
+    return syn, c.stroke, c.time_ratio, gamma
+
+
+def _close(x, want, rtol):
+    return abs(x - want) <= rtol * abs(want)
+
+
+# ---------------------------------------------------------------------------------------------------
+# properties over random feasible tasks
+
+@PROPS
+@given(h=st.floats(0.02, 1.0), lam=st.floats(0.1, 0.5))
+def test_central_crank_slider(h, lam):
+    syn, stroke, k, _ = analysed({"type": "crank-slider", "stroke": h, "lambda": lam})
+    assert _close(stroke, h, 1e-3) and _close(k, 1.0, 1e-3)
+    assert syn.rod == pytest.approx(syn.crank / lam, rel=1e-12)
+
+
+@PROPS
+@given(h=st.floats(0.02, 1.0), k=st.floats(1.02, 2.6), frac=st.floats(0.02, 0.9))
+def test_offset_crank_slider_by_k(h, k, frac):
+    e = frac * offset_limit(h, theta_of(k))
+    assume(e <= 100.0)
+    _, stroke, k_found, _ = analysed({"type": "crank-slider", "stroke": h, "time_ratio": k, "offset": e})
+    assert _close(stroke, h, 1e-3) and _close(k_found, k, 1e-3)
+
+
+@PROPS
+@given(h=st.floats(0.02, 1.0), lam=st.floats(0.1, 0.45), frac=st.floats(0.0, 0.6))
+def test_offset_crank_slider_by_lambda(h, lam, frac):
+    e = frac * h
+    try:
+        syn, stroke, k, _ = analysed({"type": "crank-slider", "stroke": h, "lambda": lam, "offset": e})
+    except TmmError as exc:  # a large offset with a small stroke: refused, naming the offset
+        assert "'offset'" in str(exc)
+        assume(False)
+    assert _close(stroke, h, 1e-3) and _close(k, syn.time_ratio, 1e-3) and syn.lam == pytest.approx(lam)
+
+
+@PROPS
+@given(c=st.floats(0.05, 1.0), psi=st.floats(10.0, 110.0), k=st.floats(1.02, 1.9), frac=st.floats(0.3, 1.0))
+def test_crank_rocker_by_transmission(c, psi, k, frac):
+    best = math.degrees(crank_rocker(c, math.radians(psi), k).gamma_best)
+    gamma = frac * best
+    assume(gamma > 1.0)
+    syn, swing, k_found, g = analysed({"type": "crank-rocker", "rocker": c, "swing_deg": psi, "time_ratio": k,
+                                        "min_transmission_deg": gamma})
+    assert abs(math.degrees(swing) - psi) <= 0.05 and _close(k_found, k, 1e-3)
+    assert g >= gamma - 1e-6 and g == pytest.approx(math.degrees(syn.gamma_min), abs=1e-6)
+
+
+@PROPS
+@given(c=st.floats(0.05, 1.0), psi=st.floats(10.0, 110.0), k=st.floats(1.02, 1.9), stretch=st.floats(-0.15, 0.15))
+def test_crank_rocker_by_frame(c, psi, k, stretch):
+    frame = crank_rocker(c, math.radians(psi), k).frame * (1.0 + stretch)
+    try:
+        syn, swing, k_found, g = analysed({"type": "crank-rocker", "rocker": c, "swing_deg": psi, "time_ratio": k,
+                                            "frame": frame})
+    except TmmError as exc:
+        assert "'frame'" in str(exc)
+        assume(False)
+    assert syn.frame == pytest.approx(frame, rel=1e-9)
+    assert abs(math.degrees(swing) - psi) <= 0.05 and _close(k_found, k, 1e-3)
+    assert g == pytest.approx(math.degrees(syn.gamma_min), abs=1e-6)
+
+
+@PROPS
+@given(h=st.floats(0.05, 1.0), k=st.floats(1.05, 2.5), frame=st.floats(0.1, 1.0), ratio=st.floats(0.2, 0.6))
+def test_slotted_link(h, k, frame, ratio):
+    syn, stroke, k_found, g = analysed({"type": "slotted-link", "stroke": h, "time_ratio": k, "frame": frame,
+                                        "rod_ratio": ratio})
+    assert _close(stroke, h, 1e-3) and _close(k_found, k, 1e-3)
+    assert g == pytest.approx(90.0 - math.degrees(syn.rod_angle), abs=1e-6)  # the guide through the sagitta's middle
+
+
+# ---------------------------------------------------------------------------------------------------
+# the closed forms against independent constructions
+
+def test_offset_slider_triangle_by_construction():
+    """The triangle O B₁ B₂ drawn from the lengths found: the angle at O is θ, the height is e, B₁B₂ = H."""
+    s = crank_slider_offset(0.10, 1.2, 0.02)
+    b1, b2 = complex(math.sqrt(s.far ** 2 - 0.02 ** 2), -0.02), complex(math.sqrt(s.near ** 2 - 0.02 ** 2), -0.02)
+    assert abs(b1 - b2) == pytest.approx(0.10, rel=1e-12)
+    assert abs(cmath.phase(b2 / b1)) == pytest.approx(math.radians(180.0 * 0.2 / 2.2), rel=1e-12)
+
+
+def test_rocker_pivot_sees_the_chord_at_theta_and_the_transmission_angle_matches_linkage():
+    s = crank_rocker(0.20, math.radians(40.0), 1.2, frame=0.30)
+    assert abs(cmath.phase((s.C2 - s.A) / (s.C1 - s.A))) == pytest.approx(theta_of(1.2), abs=1e-9)
+    assert abs(s.C1 - s.D) == pytest.approx(0.20) and abs(s.C2 - s.D) == pytest.approx(0.20)
+    assert abs(s.A - s.centre) == pytest.approx(s.radius) and abs(s.C1 - s.centre) == pytest.approx(s.radius)
+    # docs/examples/four_bar.toml: γ_min by the closed form = 90° − tmm linkage's worst pressure angle
+    c = cycle(parse_mechanism(tomllib.loads((EXAMPLES / "four_bar.toml").read_text(encoding="utf-8"))))
+    assert math.degrees(transmission_min(0.08, 0.28, 0.20, 0.30)) == pytest.approx(
+        90.0 - math.degrees(c.pressure[0].worst), abs=1e-6)
+
+
+def test_the_best_pivot_beats_every_other_point_of_the_locus():
+    s = crank_rocker(0.20, math.radians(40.0), 1.2)
+    for frame in (0.15, 0.20, 0.25, 0.30, 0.40, 0.60):
+        try:
+            other = crank_rocker(0.20, math.radians(40.0), 1.2, frame=frame)
+        except TmmError:
+            continue
+        assert other.gamma_min <= s.gamma_min + 1e-6
+
+
+def test_the_mechanism_file_records_its_task_and_copies_the_optional_tables():
+    t = parse_task(tomllib.loads((EXAMPLES / "synth_shaper.toml").read_text(encoding="utf-8")))
+    data = tomllib.loads(synthesised_file(synthesise(t), t).text)
+    assert data["synthesis"] == {"type": "slotted-link", "stroke": 0.4, "time_ratio": 1.5, "frame": 0.3, "rod_ratio": 0.3}
+    assert data["crank"]["rpm"] == 60 and data["crank"]["sense"] == "cw" and data["gravity"] is True
+    assert len(data["mass"]) == 5 and data["load"]["working"] == "towards" and data["dynamics"]["delta"] == 0.05
+    assert parse_mechanism(data).extra["synthesis"]["type"] == "slotted-link"
+
+
+def test_a_working_stroke_named_by_the_load_stays_the_slow_one():
+    base = {"type": "crank-slider", "stroke": 0.1, "time_ratio": 1.3, "offset": 0.02, "rpm": 100}
+    for working in ("away", "towards"):
+        _, stroke, k, _ = analysed({**base, "load": {"on": "B", "stroke": [0, 1], "force": [10, 10], "working": working}})
+        assert k == pytest.approx(1.3, rel=1e-3)
+
+
+# ---------------------------------------------------------------------------------------------------
+# the command
+
+def test_command_json_and_files(tmp_path):
+    r = run("synth", EXAMPLES / "synth_rocker.toml", "--out", tmp_path, "--json", "--no-plots", "--lang", "en")
+    assert r.exit_code == 0, r.output
+    doc = json.loads(r.stdout)
+    assert {"lengths", "checks", "mechanism_toml"} <= set(doc)
+    assert all(c["ok"] for c in doc["checks"].values())
+    assert doc["checks"]["swing_deg"]["linkage"] == pytest.approx(40.0, abs=0.05)
+    assert (tmp_path / "synth_rocker.toml").read_text(encoding="utf-8") == doc["mechanism_toml"]
+    data = tomllib.loads(doc["mechanism_toml"])
+    assert data["crank"]["length"] == pytest.approx(doc["lengths"]["l_AB_m"], rel=1e-12)
+    assert data["group"][0]["lengths"] == pytest.approx([doc["lengths"]["l_BC_m"], 0.20])
+
+
+def test_command_terminal_in_russian_with_the_figure(tmp_path):
+    r = run("synth", EXAMPLES / "synth_slider.toml", "--out", tmp_path, "--lang", "ru")
+    assert r.exit_code == 0, r.output
+    assert "l_OA = ½·√(H² − 2·H·e·tg(θ/2))" in r.stdout and "48,54" in r.stdout
+    assert (tmp_path / "synth_slider_construction.png").stat().st_size > 10_000
+
+
+def test_the_task_file_is_never_overwritten(tmp_path):
+    task = tmp_path / "t.toml"
+    task.write_text('type = "crank-slider"\nstroke = 0.1\nlambda = 0.25\n', encoding="utf-8")
+    r = run("synth", task, "--out", tmp_path, "--no-plots", "--lang", "en")
+    assert_one_line_error(r, "--out")
+    assert task.read_text(encoding="utf-8").startswith('type = "crank-slider"')
+
+
+def test_chain_synth_linkage_project(tmp_path):
+    r = run("synth", EXAMPLES / "synth_shaper.toml", "--out", tmp_path / "m", "--no-plots", "--lang", "en")
+    assert r.exit_code == 0, r.output
+    mech = tmp_path / "m" / "synth_shaper.toml"
+    r = run("linkage", mech, "--out", tmp_path, "--json", "--no-plots", "--lang", "en")
+    assert r.exit_code == 0, r.output
+    doc = json.loads(r.stdout)
+    assert doc["stroke_m"] == pytest.approx(0.40, rel=1e-3) and doc["time_ratio"] == pytest.approx(1.5, rel=1e-3)
+    r = run("project", "-v", 17, "--mechanism", mech, "--no-plots", "--report", "md", "--no-sheets", "--out",
+            tmp_path / "p", "--lang", "en")
+    assert r.exit_code == 0, r.output
+    res = json.loads((tmp_path / "p" / "variant-17" / "results.json").read_text(encoding="utf-8"))
+    assert res["gears"]["crank_rpm"] == pytest.approx(60.0)
+    assert res["mechanism"]["dynamics"]["motor_moment_Nm"] > 0
+
+
+HOSTILE = {
+    "K = 1, slotted link": ('type = "slotted-link"\nstroke = 0.4\ntime_ratio = 1.0\nframe = 0.3\n', "'time_ratio'"),
+    "K < 1, rocker": ('type = "crank-rocker"\nrocker = 0.2\nswing_deg = 40\ntime_ratio = 0.8\nframe = 0.3\n', "'time_ratio'"),
+    "ψ = 180": ('type = "crank-rocker"\nrocker = 0.2\nswing_deg = 180\ntime_ratio = 1.2\nframe = 0.3\n', "'swing_deg'"),
+    "ψ > 180": ('type = "crank-rocker"\nrocker = 0.2\nswing_deg = 200\ntime_ratio = 1.2\nframe = 0.3\n', "'swing_deg'"),
+    "NaN": ('type = "slotted-link"\nstroke = nan\ntime_ratio = 1.5\nframe = 0.3\n', "'stroke'"),
+    "inf K": ('type = "slotted-link"\nstroke = 0.4\ntime_ratio = inf\nframe = 0.3\n', "'time_ratio'"),
+    "negative length": ('type = "crank-rocker"\nrocker = -0.2\nswing_deg = 40\ntime_ratio = 1.2\nframe = 0.3\n', "'rocker'"),
+    "negative offset": ('type = "crank-slider"\nstroke = 0.1\ntime_ratio = 1.2\noffset = -0.02\n', "'offset'"),
+    "text": ('type = "crank-slider"\nstroke = "big"\nlambda = 0.25\n', "'stroke'"),
+    "K ≥ 3 slider": ('type = "crank-slider"\nstroke = 0.1\ntime_ratio = 3.5\noffset = 0.02\n', "'time_ratio'"),
+    "offset too large": ('type = "crank-slider"\nstroke = 0.1\ntime_ratio = 2.0\noffset = 0.2\n', "'offset'"),
+    "λ ≥ 1": ('type = "crank-slider"\nstroke = 0.1\nlambda = 1.5\n', "'lambda'"),
+    "γ unreachable": ('type = "crank-rocker"\nrocker = 0.2\nswing_deg = 100\ntime_ratio = 1.8\n'
+                      'min_transmission_deg = 80\n', "'min_transmission_deg'"),
+    "frame off the locus": ('type = "crank-rocker"\nrocker = 0.2\nswing_deg = 40\ntime_ratio = 1.2\nframe = 5.0\n',
+                            "'frame'"),
+    "no frame nor γ": ('type = "crank-rocker"\nrocker = 0.2\nswing_deg = 40\ntime_ratio = 1.2\n', "'frame'"),
+    "unknown type": ('type = "cam"\nstroke = 0.1\n', "'type'"),
+    "unknown key": ('type = "slotted-link"\nstroke = 0.4\ntime_ratio = 1.5\nframe = 0.3\nlamda = 3\n', "'lamda'"),
+    "missing key": ('type = "slotted-link"\nstroke = 0.4\nframe = 0.3\n', "'time_ratio'"),
+    "rod too short": ('type = "slotted-link"\nstroke = 0.4\ntime_ratio = 2.5\nframe = 0.3\nrod_ratio = 0.01\n',
+                      "'rod_ratio'"),
+    "bad load in the task": ('type = "crank-slider"\nstroke = 0.1\nlambda = 0.25\n[load]\non = "Z"\nforce = [1, 1]\n'
+                             'stroke = [0, 1]\n', "load.on"),
+}
+
+
+@pytest.mark.parametrize("case", list(HOSTILE))
+def test_hostile_tasks_one_line_exit_2_no_files(case, tmp_path):
+    text, key = HOSTILE[case]
+    task = tmp_path / "task.toml"
+    task.write_text(text, encoding="utf-8")
+    r = run("synth", task, "--out", tmp_path / "o", "--no-plots", "--lang", "en")
+    assert_one_line_error(r, key)
+    assert not (tmp_path / "o").exists()
+
+
+def _linkage_numbers(name: str):
+    c = cycle(parse_mechanism(tomllib.loads((EXAMPLES / name).read_text(encoding="utf-8"))))
+    return c.stroke, c.time_ratio
+
+
+def test_synthesis_gives_back_the_examples_lengths_from_their_own_h_k_psi():
+    """The examples of docs/examples were drawn by hand; tmm linkage's H, K, ψ of each, synthesised
+    back, give their lengths (docs/synthesis.md's worked examples)."""
+    from tmm_cli.linkage.synthesis import crank_slider_central, slotted_link
+
+    h, k = _linkage_numbers("shaper.toml")  # O1O2 = 0.30, O1A = 0.10, O2B = 0.50, BC = 0.20
+    s = slotted_link(h, k, 0.30, rod_ratio=0.4)
+    assert (s.crank, s.link, s.rod) == pytest.approx((0.10, 0.50, 0.20), rel=1e-9)
+    h, k = _linkage_numbers("compressor.toml")  # r = 0.06, l = 0.24
+    s = crank_slider_central(h, 0.25)
+    assert (s.crank, s.rod, k) == pytest.approx((0.06, 0.24, 1.0), rel=1e-9)
+    psi, k = _linkage_numbers("four_bar.toml")  # OA = 0.08, AB = 0.28, BC = 0.20, OC = 0.30
+    s = crank_rocker(0.20, psi, k, frame=0.30)
+    assert (s.crank, s.coupler) == pytest.approx((0.08, 0.28), rel=1e-9)
+
+
+# ---------------------------------------------------------------------------------------------------
+# the note: «Синтез механизма» opens chapter 1 when the file records its task
+
+def _note_of(text: str, lang: str = "ru"):
+    from dataclasses import replace
+
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+    from tmm_cli.linkage.sheet2 import analyse_sheet2
+    from tmm_cli.linkage.sheet2_file import parse_sheet2
+    from tmm_cli.project import run_project
+    from tmm_cli.render.note import build_note
+    from tmm_cli.variants import get_variant
+
+    m = parse_mechanism(tomllib.loads(text), "m.toml")
+    r = replace(run_project(get_variant("17")), linkage=analyse_sheet2(analyse_mechanism(m), parse_sheet2(m)))
+    return build_note(r, lang)
+
+
+def _synth_text(name: str) -> str:
+    t = parse_task(tomllib.loads((EXAMPLES / name).read_text(encoding="utf-8")))
+    return synthesised_file(synthesise(t), t, default_name="M").text
+
+
+@pytest.mark.parametrize("name,length_mm", [("synth_slider.toml", "97,24"), ("synth_rocker.toml", "169,75"),
+                                             ("synth_shaper.toml", "647,21")])
+def test_note_opens_chapter_1_with_the_synthesis(name, length_mm):
+    from tmm_cli.render.note.mathsyntax import check_line
+    from tmm_cli.render.note.model import Formula, Heading, all_math
+
+    text = _synth_text(name)
+    doc = _note_of(text)
+    heads = [(b.level, b.text) for b in doc.blocks if isinstance(b, Heading)]
+    i = next(k for k, h in enumerate(heads) if h[0] == 1 and "рычажного" in h[1])
+    assert heads[i + 1] == (2, "Синтез механизма")
+    assert {"kind": "linkage_synthesis", "type": tomllib.loads(text)["synthesis"]["type"], "matches": True} in doc.claims
+    assert all(c.ok for _, src in all_math(doc) for c in check_line(src))
+    formulas = " ".join(b.math for b in doc.blocks if isinstance(b, Formula))
+    assert f'"{length_mm}"' in formulas  # a length the file holds (in mm), derived in the section
+
+
+def test_note_says_when_the_lengths_were_changed_after_synthesis():
+    from tmm_cli.render.note.model import Paragraph
+
+    text = _synth_text("synth_slider.toml").replace("length = 0.0485", "length = 0.0490", 1)
+    assert "length = 0.0490" in text
+    doc = _note_of(text, "en")
+    assert {"kind": "linkage_synthesis", "type": "crank-slider", "matches": False} in doc.claims
+    assert any(isinstance(b, Paragraph) and "changed afterwards" in b.text for b in doc.blocks)
+
+
+def test_no_synthesis_section_without_the_record():
+    from tmm_cli.render.note.model import Heading
+
+    doc = _note_of((EXAMPLES / "four_bar.toml").read_text(encoding="utf-8"), "en")
+    assert not any(isinstance(b, Heading) and b.text == "Synthesis of the mechanism" for b in doc.blocks)
+
+
+# ---------------------------------------------------------------------------------------------------
+# sheet 1 draws the construction
+
+@pytest.mark.parametrize("name,angle", [("synth_slider.toml", "θ = 16,36°"), ("synth_rocker.toml", "θ = 16,36°"),
+                                        ("synth_shaper.toml", "ψ = θ = 36,00°")])
+def test_sheet1_draws_the_construction(name, angle, tmp_path):
+    from test_sheets import TITLE, check_layout, reopen
+
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+    from tmm_cli.render.sheets.linkage_sheet import sheet1
+
+    s = analyse_mechanism(parse_mechanism(tomllib.loads(_synth_text(name)), "m.toml"))
+    doc = reopen(sheet1(s, "ru", TITLE), tmp_path, "sheet1")
+    check_layout(doc)
+    texts = [e.dxf.text for e in doc.modelspace().query("TEXT")]
+    assert angle in texts
+    plain = analyse_mechanism(parse_mechanism({k: v for k, v in tomllib.loads(_synth_text(name)).items()
+                                               if k != "synthesis"}, "m.toml"))
+    (tmp_path / "plain").mkdir()
+    doc2 = reopen(sheet1(plain, "ru", TITLE), tmp_path / "plain", "sheet1")
+    assert angle not in [e.dxf.text for e in doc2.modelspace().query("TEXT")]

@@ -1,0 +1,154 @@
+"""The section «Синтез механизма» that opens chapter 1 when the mechanism file records its task
+(`tmm synth`, issue 33): the task, θ from K, the lengths by the construction of the type, each
+formula with its substitution. Called from one line of :func:`.linkage_part.linkage_chapter`.
+
+The numbers are the synthesis the file records, done again from its [synthesis] table
+(:func:`tmm_cli.linkage.synthesis_file.recorded_synthesis`); when the file's lengths are no longer
+the synthesis's (edited after `tmm synth`), the section says so and shows no derivation.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ...linkage.synthesis import RockerSynthesis, SliderSynthesis
+from ...linkage.synthesis_file import recorded_synthesis
+from .ctx import Ctx, V
+from .model import Heading
+
+
+def synthesis_section(c: Ctx, s) -> None:
+    rec = recorded_synthesis(s.mechanism)
+    if rec is None:
+        return
+    t = c.t
+    c.doc.add(Heading(2, t("Synthesis of the mechanism")))
+    c.doc.claim(kind="linkage_synthesis", type=rec.task.type, matches=rec.matches)
+    if not rec.matches:
+        c.p(t("The mechanism was found by `tmm synth` from its task, but its lengths were changed afterwards: the "
+              "synthesis is not repeated here; the analysis below is of the lengths the file gives."))
+        return
+    syn, mm = rec.synthesis, t("mm")
+    if isinstance(syn, SliderSynthesis):
+        _slider(c, syn, mm)
+    elif isinstance(syn, RockerSynthesis):
+        _rocker(c, syn, mm)
+    else:
+        _slotted(c, syn, mm)
+    c.p(t("The mechanism with these lengths is analysed below; the stroke (or swing) and the time ratio found there "
+          "are those of the task."))
+
+
+def _theta(c: Ctx, syn) -> None:
+    c.p(c.t("The angle between the crank's positions at the two extreme positions of the output link follows from "
+            "the time ratio {cite:artobolevsky}:"))
+    c.formula(c.calc("θ = 180 degree dot (K - 1)/(K + 1)", '"180°" dot ({0} - 1)/({0} + 1)',
+                     [_given(syn.time_ratio)], V(math.degrees(syn.theta), decimals=3, deg=True)),
+              where=[("θ", c.t("the angle between the crank's positions at the extreme positions of the output link")),
+                     ("K", c.t("the time ratio of the output link's strokes"))])
+
+
+def _given(x: float) -> V:
+    """A datum of the task, printed as given (up to 9 significant digits)."""
+    return V(x, exact=True, sig=9)
+
+
+def _mm(x: float, **kw) -> V:
+    return V(x * 1000.0, decimals=kw.get("decimals", 2))
+
+
+def _slider(c: Ctx, syn, mm: str) -> None:
+    t = c.t
+    h = syn.stroke * 1000.0
+    if syn.mode == "lambda":
+        c.p(t("The task gives the stroke of the slider $H = {h}$ mm and the ratio $λ = l_(O A)/l_(A B) = {lam}$; the "
+              "mechanism is central (the guide passes through the crank's centre O), so the stroke is twice the crank:"
+              ).format(h=c.q(h, sig=6), lam=c.q(syn.lam, sig=6)))
+        c.formula(c.calc("l_(O A) = H/2", "{0}/2", [_given(h)], _mm(syn.crank), mm),
+                  c.calc("l_(A B) = l_(O A)/λ", "{0}/{1}", [_mm(syn.crank), _given(syn.lam)], _mm(syn.rod), mm))
+        return
+    if syn.mode == "time_ratio":
+        c.p(t("The task gives the stroke of the slider $H = {h}$ mm, the time ratio $K = {k}$ and the offset of the "
+              "guide $e = {e}$ mm.").format(h=c.q(h, sig=6), k=c.q(syn.time_ratio, sig=6),
+                                              e=c.q(syn.offset * 1000, sig=6)))
+        _theta(c, syn)
+        c.p(t("In the extreme positions the crank and the rod lie in line: $O B_1 = l_(A B) + l_(O A)$, "
+              "$O B_2 = l_(A B) - l_(O A)$; the stroke $B_1 B_2 = H$ is seen from O at the angle θ and lies at the "
+              "distance e from O. The law of cosines and the area of the triangle $O B_1 B_2$ give"))
+        half = math.degrees(syn.theta / 2.0)
+        c.formula(c.calc('l_(O A) = 1/2 sqrt(H^2 - 2 H e "tg"(θ/2))', '1/2 sqrt({0}^2 - 2 dot {0} dot {1} dot "tg" {2})',
+                         [_given(h), _given(syn.offset * 1000), V(half, decimals=3, deg=True)],
+                         _mm(syn.crank), mm))
+        c.formula(c.calc('l_(A B) = 1/2 sqrt(H^2 + 2 H e "ctg"(θ/2))', '1/2 sqrt({0}^2 + 2 dot {0} dot {1} dot "ctg" {2})',
+                         [_given(h), _given(syn.offset * 1000), V(half, decimals=3, deg=True)],
+                         _mm(syn.rod), mm))
+        return
+    c.p(t("The task gives the stroke of the slider $H = {h}$ mm, the ratio $λ = {lam}$ and the offset of the guide "
+          "$e = {e}$ mm. The crank is the root of the stroke's equation (the positions of B in the extreme positions, "
+          "$l_(A B) = l_(O A)/λ$):").format(h=c.q(h, sig=6), lam=c.q(syn.lam, sig=6), e=c.q(syn.offset * 1000, sig=6)))
+    c.formula(f"H = sqrt((l_(A B) + l_(O A))^2 - e^2) - sqrt((l_(A B) - l_(O A))^2 - e^2) => l_(O A) = "
+              f"{c.q(syn.crank * 1000, decimals=2)} {c.u(mm)}")
+    c.formula(c.calc("l_(A B) = l_(O A)/λ", "{0}/{1}", [_mm(syn.crank), _given(syn.lam)], _mm(syn.rod), mm))
+    c.p(t("The angle between the crank's positions in the extreme positions is then θ = {theta}°, and the time ratio "
+          "K = {k}.").format(theta=c.n(math.degrees(syn.theta), decimals=3), k=c.n(syn.time_ratio, decimals=4)))
+
+
+def _rocker(c: Ctx, syn, mm: str) -> None:
+    t = c.t
+    psi = math.degrees(syn.swing)
+    c.p(t("The task gives the rocker $l_(C D) = {c}$ mm, its swing $ψ = {psi}$ and the time ratio $K = {k}$.").format(
+        c=c.q(syn.rocker * 1000, sig=6), psi=c.qd(psi, sig=6), k=c.q(syn.time_ratio, sig=6)))
+    _theta(c, syn)
+    chord = 2.0 * syn.rocker * math.sin(syn.swing / 2.0)
+    c.p(t("The rocker is drawn in its extreme positions $C_1 D$ and $C_2 D$; the chord between its ends and the radius "
+          "of the circle through $C_1$, $C_2$ on which the chord subtends the angle θ (the locus of the crank's "
+          "centre A):"))
+    c.formula(c.calc("C_1 C_2 = 2 l_(C D) sin(ψ/2)", "2 dot {0} dot sin {1}",
+                     [_given(syn.rocker * 1000), V(psi / 2.0, decimals=3, deg=True)], _mm(chord), mm),
+              c.calc("R = (C_1 C_2)/(2 sin θ)", "{0}/(2 dot sin {1})",
+                     [_mm(chord), V(math.degrees(syn.theta), decimals=3, deg=True)], _mm(syn.radius), mm))
+    if syn.mode == "frame":
+        where = t("The crank's centre A is where the circle of radius $l_(A D) = {d}$ mm about D meets the locus.").format(
+            d=c.q(syn.frame * 1000, sig=6))
+    else:
+        where = t("The crank's centre A is taken at the point of the locus where the smallest transmission angle over "
+                  "the turn is largest; there $l_(A D) = {d}$ mm.").format(d=c.q(syn.frame * 1000, decimals=2))
+    a1, a2 = abs(syn.A - syn.C1) * 1000, abs(syn.A - syn.C2) * 1000
+    c.p(where + " " + t("Its distances to the rocker's ends are $A C_1 = {a1}$ mm and $A C_2 = {a2}$ mm; in the extreme "
+                        "positions the crank and the coupler lie in line, so").format(
+        a1=c.q(a1, decimals=2), a2=c.q(a2, decimals=2)))
+    c.formula(c.calc("l_(A B) = (A C_2 - A C_1)/2", "({0} - {1})/2", [V(a2, decimals=2), V(a1, decimals=2)],
+                     _mm(syn.crank), mm),
+              c.calc("l_(B C) = (A C_2 + A C_1)/2", "({0} + {1})/2", [V(a2, decimals=2), V(a1, decimals=2)],
+                     _mm(syn.coupler), mm))
+    gamma = math.degrees(syn.gamma_min)
+    if syn.gamma_task is not None:
+        c.p(t("The smallest transmission angle over the turn is $γ_\"min\" = {g}$, not less than the task's {gt}°.").format(
+            g=c.qd(gamma, decimals=2), gt=c.n(math.degrees(syn.gamma_task), sig=6)))
+    else:
+        c.p(t("The smallest transmission angle over the turn is $γ_\"min\" = {g}$.").format(g=c.qd(gamma, decimals=2)))
+
+
+def _slotted(c: Ctx, syn, mm: str) -> None:
+    t = c.t
+    c.p(t("The task gives the stroke of the ram $H = {h}$ mm, the time ratio $K = {k}$ and the distance between the "
+          "crank's centre and the slotted link's pivot $l_(O_1 O_2) = {d}$ mm.").format(
+        h=c.q(syn.stroke * 1000, sig=6), k=c.q(syn.time_ratio, sig=6), d=c.q(syn.frame * 1000, sig=6)))
+    _theta(c, syn)
+    half = math.degrees(syn.theta / 2.0)
+    c.p(t("In its extreme positions the slotted link is tangent to the crank circle: it swings by ψ = θ, and the crank "
+          "is"))
+    c.formula(c.calc("l_(O_1 A) = l_(O_1 O_2) sin(θ/2)", "{0} dot sin {1}",
+                     [_given(syn.frame * 1000), V(half, decimals=3, deg=True)], _mm(syn.crank), mm))
+    c.p(t("The point B of the link moves on an arc whose chord is the stroke of the ram; the arc's sagitta f and the "
+          "height of the ram's guide above $O_2$, through the middle of the sagitta:"))
+    c.formula(c.calc("l_(O_2 B) = H/(2 sin(ψ/2))", "{0}/(2 dot sin {1})",
+                     [_given(syn.stroke * 1000), V(half, decimals=3, deg=True)], _mm(syn.link), mm))
+    c.formula(c.calc("f = l_(O_2 B) (1 - cos(ψ/2))", "{0} dot (1 - cos {1})",
+                     [_mm(syn.link), V(half, decimals=3, deg=True)], _mm(syn.sagitta), mm),
+              c.calc("h = l_(O_2 B) - f/2", "{0} - {1}/2", [_mm(syn.link), _mm(syn.sagitta)], _mm(syn.guide), mm))
+    c.formula(c.calc("l_(B C) = k l_(O_2 B)", "{0} dot {1}", [_given(syn.rod_ratio), _mm(syn.link)],
+                     _mm(syn.rod), mm),
+              where=[("k", t("the ratio of the rod to the slotted link"))])
+    c.p(t("The rod then leans from the guide by at most $α_\"max\" = {a}$, where $sin α_\"max\" = f/(2 l_(B C))$.").format(
+        a=c.qd(math.degrees(syn.rod_angle), decimals=2)))
