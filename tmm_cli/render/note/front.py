@@ -139,7 +139,7 @@ def _abstract(c: Ctx) -> None:
     else:
         obj = t("The object of the project is a machine: the lever mechanism «{name}», the cam mechanism of variant "
                 "{number} and the gear mechanisms between the motor, the cam and the crank of the lever "
-                "mechanism.").format(name=s1.mechanism.name or t("Mechanism"), number=r.variant.number)
+                "mechanism.").format(name=literal(s1.mechanism.name) if s1.mechanism.name else t("Mechanism"), number=r.variant.number)
         aim = (t("The aim is to analyse the structure, the motion and the forces of the lever mechanism, to find the "
                  "balancing moment, the driving moment and the flywheel that keeps the crank's speed within the "
                  "allowed fluctuation, and to find the main dimensions and the profile of the cam and the tooth "
@@ -312,7 +312,7 @@ def conclusion(c: Ctx) -> None:
     if lk:
         s1 = _sheet1(c)
         c.p(t("The lever mechanism «{name}» is analysed (sheets 1 and 2): {items}.").format(
-            name=s1.mechanism.name or t("Mechanism"), items="; ".join(lk)))
+            name=literal(s1.mechanism.name) if s1.mechanism.name else t("Mechanism"), items="; ".join(lk)))
         lreqs = linkage_requirements(c)
         if lreqs:
             c.doc.add(ListBlock([f"{txt} — {verdict(ok)};" for txt, ok in lreqs[:-1]] +

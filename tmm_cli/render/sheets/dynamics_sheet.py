@@ -253,7 +253,7 @@ def _polygon_items(pg, lang: str) -> list[str]:
         found[0] = tr(lang, "found:") + " " + found[0]
         found[-1] += f" {unit}"
     if short:  # every force of the equation is a side of the polygon: the short ones are named here
-        short[0] = tr(lang, "sides shorter than {mm} mm, not named on the polygon:").format(
+        short[0] = tr(lang, "short sides (< {mm} mm), unnamed above:").format(
             mm=num(SHORT_MM, lang)) + " " + short[0]
         short[-1] += f" {unit}"
     return found + short

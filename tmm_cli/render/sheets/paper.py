@@ -606,8 +606,8 @@ class Sheet:
         index — MTEXT has no width factor every program reads (LibreCAD prints ``\\W0.8;`` as text),
         so a narrowed text with an index is a TEXT with its indices written inline (``μv``, ``м²``).
         A `literal` text (a person's: a name, a group) is one TEXT of the characters given: no index,
-        no glyph swapped, its "%%" codes written as "%%%" (AutoCAD's percent sign), so «%%u» is not an
-        underline, and a caret as "^ " (not a control character)."""
+        no glyph swapped, its "%%" codes written as "%%%" (AutoCAD's percent sign), so «%%u» is not
+        an underline, and a caret as "^ " (not a control character)."""
         from ezdxf.enums import TextEntityAlignment
 
         if literal:
@@ -900,8 +900,7 @@ class Sheet:
             if s:
                 T(0.8, 25 - k * 5 + 1.2, s, 2.5, 15.5)
         # a full name: one line of 3.5 or 2.5 mm, condensed as far as needed (never smaller)
-        # a person's text: as typed; 1 mm clear of the cell's lines
-        T(18.0, 26.2, title.student, 3.5, 21.0, height_max=3.6, min_wf=0.6, literal=True)
+        T(18.0, 26.2, title.student, 3.5, 21.0, height_max=3.6, min_wf=0.6, literal=True)  # a person's text, as typed; 1 mm clear of the cell's lines
         T(18.0, 21.2, title.teacher, 3.5, 21.0, height_max=3.6, min_wf=0.6, literal=True)
         for x, w, s in ((135, 15, "Лит."), (150, 17, "Масса"), (167, 18, "Масштаб")):
             T(x + w / 2, 36.2, s, 2.5, w - (2 if w <= 10 else 3), "center")
