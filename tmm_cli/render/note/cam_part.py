@@ -371,7 +371,8 @@ def _profile(c: Ctx, r) -> None:
           "{field} × {field} of the sheet. The sizing construction is built in the scale of the displacement "
           "diagram, $k'_S = k_S$ (§1.3.1 {{cite:book}}: its segments are laid off from the diagram's ordinates); "
           "sheet 3 shows it at the standard scale stated in its field. The lengths are carried over to the "
-          "drawing of the profile {{cite:book:formulas (1.26), (1.27)}}:").format(
+          "drawing of the profile {{cite:book:formulas (1.26), (1.27)}}, the first for the largest displacement, the "
+          "second for the base radius $r_0$:").format(
         scale=d.scale, k_sk=c.q(d.k_sk, sig=4), width=c.qty(w, mm, decimals=1), height=c.qty(h, mm, decimals=1),
         field=c.qty(d.field_mm, mm, decimals=0)))
     c.doc.claim(kind="cam_drawing_scale", scale=d.scale, fits=d.fits, width_mm=w, height_mm=h, field_mm=d.field_mm)
@@ -383,7 +384,6 @@ def _profile(c: Ctx, r) -> None:
     c.formula(c.calc("x_(i k) = (k'_S)/k_(S k) x_i", "{0} dot {1}",
                      [V(d.k_s_prime / d.k_sk, sig=4), V(r0s.at_k_s_mm, sig=4)], V(r0s.drawn_mm, sig=4), mm),
               where=["x_(i k)", "k'_S", "x_i"])
-    c.p(t("(in the first, the largest displacement; in the second, the base radius $r_0$)."), indent=False)
     c.p(t("The profile angles differ from the phase angles when the follower axis is offset and for a rocker; they are measured on the profile and checked {cite:book:formulas (1.1), (1.2), (1.4)}:"))
     c.formula(c.calc('ψ_"у" + ψ_"дс" + ψ_"в" + ψ_"бс"', "{0} + {1} + {2} + {3}",
                      [V(p.psi_rise_deg, decimals=2, deg=True), V(abs(p.psi_far_deg), decimals=2, deg=True),
@@ -392,7 +392,7 @@ def _profile(c: Ctx, r) -> None:
     c.formula(c.calc('ψ_"р" = ψ_"у" + ψ_"дс" + ψ_"в"', "{0} + {1} + {2}",
                      [V(p.psi_rise_deg, decimals=2, deg=True), V(abs(p.psi_far_deg), decimals=2, deg=True),
                       V(p.psi_return_deg, decimals=2, deg=True)], V(p.psi_working_deg, decimals=2, deg=True))
-              + f' = φ_"р" = {c.qd(v.phi_working_deg)}', where=['ψ_"р"'])
+              + ' = φ_"р"', where=['ψ_"р"'])  # φ_р is the task's, given above: no second value of it
     _roller(c, r)
     if c.has("cam_profile"):
         c.p(t("The profile with the pitch curve, the base circle and the positions of the follower in the inverted motion is shown in Figure {fig:cam_profile}."))

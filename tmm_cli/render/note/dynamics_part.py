@@ -476,12 +476,13 @@ def _reactions_table(c: Ctx, s) -> None:
     for r in s.forces.reactions:
         what = t("pin") if r.pair.kind == "R" else t("slide")
         rows.append([f"${fsym(c, r.label)}$", f"${pt(r.pair.joint)}$", what,
-                     n(abs(complex(r.force[i])), decimals=1)])
-    rows.append(['$M_"ур"$, ' + t("N·m"), "—", "—", n(float(s.balancing[i]), decimals=2)])
+                     c.qty(abs(complex(r.force[i])), t("N"), decimals=1)])
+    # the balancing moment in the same table, each value with its own unit (the column holds N and N·m)
+    rows.append(['$M_"ур"$', "—", "—", c.qty(float(s.balancing[i]), t("N·m"), decimals=2)])
     c.p(t("The reactions of the pairs in position {label} are given in Table {{tab:dyn_reactions}}.").format(
         label=_position(s).label))
     c.table("dyn_reactions", t("Reactions in the kinematic pairs and the balancing moment, position {label}").format(
-        label=_position(s).label), [t("Pair"), t("Joint"), t("Kind"), t("Magnitude, N")], rows,
+        label=_position(s).label), [t("Pair"), t("Joint"), t("Kind"), t("Magnitude")], rows,
         align=["center", "center", "left", "right"], widths=[1, 0.8, 1.2, 1.3])
 
 
