@@ -5,16 +5,15 @@ import pytest
 
 os.environ.setdefault("MPLBACKEND", "Agg")
 
-# hypothesis 6.80 (the test extra's floor) now and then overruns its buffer drawing large examples
-# and fails the test on a health check, not on tmm (a 1-in-3 flake seen in `pytest -m floors`):
-# that one health check is off for every property test; the others stay on
-try:
-    from hypothesis import HealthCheck, settings
+# hypothesis is part of the test extra (pip install -e '.[test]'); the suite needs it — the property
+# tests import it at the top of their files, so without it they would not even be collected.
+# hypothesis 6.80 (the extra's floor) now and then overruns its buffer drawing large examples and
+# fails the test on a health check, not on tmm (a 1-in-3 flake seen in `pytest -m floors`): that one
+# health check is off for every property test; the others stay on
+from hypothesis import HealthCheck, settings
 
-    settings.register_profile("tmm", suppress_health_check=[HealthCheck.data_too_large])
-    settings.load_profile("tmm")
-except ImportError:  # the test extra is not installed: the property tests are skipped anyway
-    pass
+settings.register_profile("tmm", suppress_health_check=[HealthCheck.data_too_large])
+settings.load_profile("tmm")
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT.parent / "shared" / "seeds" / "001_c1d02a68c42b9b45.txt"

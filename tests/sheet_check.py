@@ -4,9 +4,10 @@ no line through text (boxes of the glyphs' extent); text heights; dashed polylin
 linetype generation; text readable from the bottom or the right. Usable for any sheet (3, 4 and
 the lever sheets 1, 2 when they come).
 
-Text boxes: a TEXT or MTEXT's insertion point is the left end of its baseline (the sheets write
-them so); the width is measured with the sheet's font (ezdxf's font measurement of osifont), the
-box reaches 0.2·h below the baseline (0.4·h with a lowered index) and h above it.
+Text boxes: about a TEXT's or MTEXT's alignment point (the left end, centre or right end of its
+baseline: TEXT halign 0/1/2, MTEXT attachment 7/8/9); the width is measured with the sheet's font
+(ezdxf's font measurement of osifont), optionally `room` times wider (a CAD program's fallback
+font, issue 31), the box reaches 0.2·h below the baseline (0.4·h with a lowered index) and h above it.
 """
 
 from __future__ import annotations
@@ -56,8 +57,10 @@ def all_texts(doc) -> list[str]:
     return [re.sub(r"–(?=\d)", "-", t) for t in out]
 
 
-def text_boxes(doc):
-    """(entity, corners (4, 2), height, rotation, plain text) of every TEXT and MTEXT."""
+def text_boxes(doc, room: float = 1.0):
+    """(entity, corners (4, 2), height, rotation, plain text) of every TEXT and MTEXT; `room`: the
+    widths that many times osifont's (1.3: a CAD program's wider fallback font, about the text's
+    alignment point)."""
     out = []
     for e in doc.modelspace().query("TEXT MTEXT"):
         if e.dxftype() == "TEXT":
@@ -72,8 +75,16 @@ def text_boxes(doc):
             txt = "".join(t for t, _ in runs)
         rot = e.dxf.get("rotation", 0.0)
         c, s = math.cos(math.radians(rot)), math.sin(math.radians(rot))
-        loc = np.array([[0.0, -low], [w, -low], [w, h], [0.0, h]])
         ins = e.dxf.insert
+        if e.dxftype() == "TEXT":
+            k = {1: 0.5, 2: 1.0}.get(e.dxf.get("halign", 0), 0.0)
+            if k:
+                ins = e.dxf.align_point
+        else:
+            k = {8: 0.5, 9: 1.0}.get(e.dxf.get("attachment_point", 7), 0.0)
+        w = w * room
+        x0 = -k * w
+        loc = np.array([[x0, -low], [x0 + w, -low], [x0 + w, h], [x0, h]])
         corners = loc @ np.array([[c, s], [-s, c]]) + np.array([ins[0], ins[1]])
         out.append((e, corners, h, rot, txt))
     return out
@@ -103,6 +114,9 @@ def entity_points(e):
         return _arc_pts(e.dxf.center[0], e.dxf.center[1], e.dxf.radius, e.dxf.start_angle, e.dxf.end_angle)
     if t == "CIRCLE":
         return _arc_pts(e.dxf.center[0], e.dxf.center[1], e.dxf.radius, 0, 360)
+    if t == "HATCH":  # its boundary (the pattern's lines lie inside it)
+        pts = np.array([v[:2] for path in e.paths for v in path.vertices])
+        return np.vstack([pts, pts[:1]])
     if t == "SOLID":
         pts = np.array([[e.dxf.vtx0[0], e.dxf.vtx0[1]], [e.dxf.vtx1[0], e.dxf.vtx1[1]], [e.dxf.vtx2[0], e.dxf.vtx2[1]]])
         return np.vstack([pts, pts[:1]])
@@ -148,8 +162,9 @@ def _within(lo, hi, box, tol=1e-6) -> bool:
     return box[0] - tol <= lo[0] and box[1] - tol <= lo[1] and hi[0] <= box[2] + tol and hi[1] <= box[3] + tol
 
 
-def problems(doc, *, min_label=3.5, min_title_block=2.5) -> list[str]:
-    """Everything a normcontroller would mark, as sentences (empty: the sheet passes)."""
+def problems(doc, *, min_label=3.5, min_title_block=2.5, room: float = 1.0) -> list[str]:
+    """Everything a normcontroller would mark, as sentences (empty: the sheet passes); `room`: the
+    texts measured that many times wider (a CAD program's fallback font)."""
     out = []
     msp = doc.modelspace()
     fields = field_boxes(doc)
@@ -177,7 +192,7 @@ def problems(doc, *, min_label=3.5, min_title_block=2.5) -> list[str]:
                 out.append(f"dashed polyline ({lt}) without the linetype generation flag")
     P0 = np.concatenate(segs0)
     P1 = np.concatenate(segs1)
-    texts = text_boxes(doc)
+    texts = text_boxes(doc, room)
     for e, c, h, rot, txt in texts:
         lo, hi = c.min(axis=0), c.max(axis=0)
         in_tb = _within(lo, hi, TITLE_BLOCK, 0.05)

@@ -143,6 +143,7 @@ def test_exact_card_gives_the_bores_back(z, with_e):
     assert np.allclose([b.radial_prime for b in fit.bores], r_r, atol=1e-9)
     assert np.allclose([b.tangential_prime for b in fit.bores], t_r, atol=1e-9)
     assert fit.unknowns == 4 * z - 1 and fit.used == (6 if with_e else 5) * z
+    assert [b.bore for b in fit.bores] == list(range(1, z + 1))  # the card's numbering: bore 1 is the first row
 
 
 @settings(max_examples=30, deadline=None)
@@ -280,6 +281,71 @@ def test_sigma_and_rms_from_the_example_cards_residuals_by_hand():
     assert fit.sigma == pytest.approx(math.sqrt(ssr / (m - n)), rel=1e-6)
     assert fit.rms == pytest.approx(math.sqrt(ssr / m), rel=1e-6)
     assert 0.1 * UM < fit.sigma < 20 * UM  # a real card's gauges: about a micrometre
+
+
+def test_suspect_threshold_and_residuals_are_the_first_rounds():
+    """The printed threshold is Student's two-sided quantile at 1 %/m with m − n − 1 degrees of
+    freedom over all m measurements of the card (scipy here), and each printed standardised
+    residual is of the full card, t_i = r_i/(σ_(i)·√M_ii) with σ_(i)² = (Σr² − r_i²/M_ii)/(m − n − 1)
+    — not of the later rounds that run without the misread."""
+    from scipy.stats import t as student
+
+    rng = np.random.default_rng(45)
+    left, right, _ = make_carrier(5, rng)
+    values = measure(left, right)
+    values["h"][2] += 50 * UM
+    card = card_from(values, True, 1 * UM, rng)
+    fit = fit_carrier(card, R)
+    assert fit.suspect == ("h3",)
+    m, n = fit.used, fit.unknowns
+    assert fit.critical_t == pytest.approx(float(student.ppf(1 - 0.01 / (2 * m), m - n - 1)), rel=1e-12)
+    # the residuals' projector by differences of the test's own measure() at the fitted centres
+    left_f, right_f = bores_of(fit)
+    x0 = np.concatenate((left_f.ravel(), right_f.ravel()))
+    names = [r.name for r in fit.residuals]
+
+    def model(x):
+        p = x.reshape(2, -1, 2)
+        d = measure([tuple(q) for q in p[0]], [tuple(q) for q in p[1]])
+        return np.array([d[k.rstrip("0123456789")][int(k[len(k.rstrip("0123456789")):]) - 1] for k in names])
+
+    free = [i for i in range(len(x0)) if i != 1]  # bore 1 of the left cheek on +Y: its z is the frame
+    jac = np.empty((len(names), len(free)))
+    for c, i in enumerate(free):
+        h = np.zeros_like(x0)
+        h[i] = 1e-7
+        jac[:, c] = (model(x0 + h) - model(x0 - h)) / 2e-7
+    q, _ = np.linalg.qr(jac)
+    proj = np.eye(len(names)) - q @ q.T
+    r = np.array([x.residual for x in fit.residuals])
+    mii = np.diag(proj)
+    s2 = (r @ r - r ** 2 / mii) / (m - n - 1)
+    t = r / np.sqrt(s2 * mii)
+    assert np.allclose([x.standardised for x in fit.residuals], t, rtol=1e-4, atol=1e-4)
+
+
+@pytest.mark.parametrize("excluded, tested", [(("h1", "h2"), True), (("h1", "h2", "h3"), False)])
+def test_suspect_test_needs_two_redundant_measurements(excluded, tested):
+    """3 bores without e: m = 15, n = 11. Excluding two leaves d = 2, one degree of freedom for
+    the externally standardised residual: the test runs. Excluding three leaves d = 1: none."""
+    from scipy.stats import t as student
+
+    rng = np.random.default_rng(7)
+    left, right, _ = make_carrier(3, rng)
+    fit = fit_carrier(card_from(measure(left, right), False, 1 * UM, rng), R, exclude=excluded)
+    assert fit.redundancy == 4 - len(excluded)
+    if tested:
+        assert fit.critical_t == pytest.approx(float(student.ppf(1 - 0.01 / (2 * 13), 1)), rel=1e-12)
+        assert "carrier_untested" not in [x.code for x in fit.notes]
+    else:
+        assert fit.critical_t is None and "carrier_untested" in [x.code for x in fit.notes]
+
+
+def test_implausible_card_names_the_radius_in_mm():
+    """The refusal says which radius it assumed, in millimetres as the user typed it."""
+    text = GOOD.replace("216.510", "176.777").replace("216.490", "176.777").replace("216.520", "176.777")
+    with pytest.raises(TmmError, match=r"\(radius 125 mm, 3 bores\)"):
+        fit_carrier(parse_card(text), R)
 
 
 def test_clean_noisy_cards_raise_few_alarms():

@@ -90,6 +90,59 @@ def test_overlap_angles_by_the_roll_of_the_base_circles(z1, z2, x1, x2):
         assert (round(g.phi_alpha1_deg, 1), round(g.phi_alpha2_deg, 1)) == (32.5, 27.6)
 
 
+def test_single_and_double_pair_zones_on_the_line_of_action():
+    """Fig. 2.3: on the active line P1P2 (length g_α = ε_α·p_b) the two end zones of length
+    g_α − p_b carry two pairs, the middle U2U1 of length 2·p_b − g_α one pair. The book's example
+    17/20: p_b = 59.04 mm, g_α = 1.5358·p_b = 90.68 mm: 27.41 mm single, 31.64 mm double."""
+    for z1, z2, x1, x2 in ((17, 20, 0, 0), (17, 43, 0, 0), (13, 31, 0.5, -0.2), (24, 17, 0.3, 0.3)):
+        g = spur_geometry(z1, z2, x1=x1, x2=x2)
+        assert g.single_zone_mm == pytest.approx(g.u1_mm - g.u2_mm, rel=1e-12)
+        assert g.double_zone_mm == pytest.approx(g.u2_mm - g.p1_mm, rel=1e-12)
+        assert g.single_zone_mm + 2 * g.double_zone_mm == pytest.approx(g.p2_mm - g.p1_mm, rel=1e-12)
+    g = spur_geometry(17, 20)
+    assert (round(g.single_zone_mm, 2), round(g.double_zone_mm, 2)) == (27.41, 31.64)
+
+
+def test_a_pointed_shift_names_the_limit_in_mm():
+    """m = 20 mm: the limit the message offers is 0.25·m = 5 mm."""
+    from tmm_cli.errors import TmmError
+
+    with pytest.raises(TmmError, match=r"s_a ≥ 0\.25·m = 5 mm is the limit") as info:
+        spur_geometry(17, 20, x1=2.5, x2=0.0)
+    assert str(info.value).startswith("the shift x1 = 2.5 makes gear 1 (z = 17) pointed")
+
+
+def test_no_single_row_scheme_below_a_ratio_of_2():
+    """§2.4: z_n/z_k = i − 1 and z_c = (z_n − z_k)/2, so i ≤ 2 leaves the planet no teeth."""
+    from fractions import Fraction
+
+    from tmm_cli.gears.planetary.book import book_scheme1
+
+    assert book_scheme1(Fraction(3, 2)) is None and book_scheme1(Fraction(2)) is None
+    assert book_scheme1(Fraction(13, 4)).chosen.teeth == (40, 25, 90)
+
+
+@pytest.mark.parametrize("value", [1e-12, 1e-6, 0.0149, 0.5, 3.0, 50.0, 1e3, 1e5])
+def test_inverse_involute_round_trip_up_to_the_asymptote(value):
+    """inv α = tg α − α grows without bound as α → 90°: its inverse must stay below 90° and give
+    the value back for every value, also where Newton's first step would jump past the asymptote."""
+    a = inv_inverse(value)
+    assert 0 < a < math.pi / 2
+    assert inv(a) == pytest.approx(value, rel=1e-9)  # near 90° a step of α's last bit moves inv α by 1e-11
+
+
+@pytest.mark.parametrize("n_cr, rule", [(40, "exact"), (37, "simple"), (33, "simple")])
+def test_two_stage_book_derivation_within_the_tolerance(n_cr, rule):
+    """§2.4 applied twice (i > 16: scheme 1+1): the book's procedure finds two stages whose product
+    is i_pl within ±5 % (720/40 = 18 exactly; 720/37 = 19.46 through simple fractions near √i)."""
+    r = design_gears(1000, n_cr)
+    i = r.motor_rpm / n_cr
+    d = r.derivation
+    assert r.planetary.scheme == "1+1" and d is not None and d.scheme == "1+1" and len(d.stages) == 2
+    assert d.fraction_rule == rule
+    assert abs(float(d.ratio_fraction) / i - 1) <= 0.05 + 1e-12
+
+
 def test_spur_rounding_exact_half_goes_up():
     # variants 24 and 44 have n_k = −1800: 17·1800/720 = 42.5 → 43 (a float could round it either way)
     assert spur_teeth(720, -1800) == (43, 17)

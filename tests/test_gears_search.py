@@ -191,3 +191,46 @@ def test_checker_agrees_with_books_numbers():
     assert max_planets(40, 25, 25, 90) == 5
     # a double-planet set where turning the block by whole teeth admits 3 though z_k·i = 212
     assert planet_fits(3, 20, 64, 42, 126) and not 212 % 3 == 0
+
+
+@pytest.mark.parametrize("n_cr", [130, 158, 165, 186])
+def test_the_sets_passed_over_are_what_they_are_named(n_cr):
+    """Under the accurate rule the note names the sets passed over because they are larger: the
+    smallest one more accurate than the carried set, and the smallest exact one (n_cr = 165:
+    1000/165 = 200/33 is met exactly by a larger set). Checked by their ratios against the target."""
+    from tmm_cli.gears.planetary.search import search_designs
+
+    target = 1000 / n_cr
+    r = search_designs("1", target, select="accurate")
+    e0 = abs(r.carried.ratio / target - 1)
+    assert r.more_accurate is not None and abs(r.more_accurate.ratio / target - 1) < e0
+    if n_cr == 165:
+        assert r.exact is not None and r.exact.ratio == pytest.approx(target, rel=1e-12)
+        assert r.exact.size >= r.more_accurate.size and r.exact != r.more_accurate
+    else:
+        assert r.exact is None
+
+
+def test_closest_ratio_beyond_the_range_is_the_largest_stage_twice():
+    """Far above every ratio the search reaches, the nearest two-stage (1+1) reducer is the largest
+    single-row stage repeated; the nearest single stage is that stage."""
+    from tmm_cli.gears.planetary.search import closest_ratio
+
+    one = closest_ratio("1", 1e6).ratio
+    assert closest_ratio("1+1", 1e6).ratio == pytest.approx(one ** 2, rel=1e-12)
+    assert closest_ratio("1", 1.0001).ratio < closest_ratio("1", 4.0).ratio < one
+
+
+@pytest.mark.parametrize("n_cr", [30, 120, 220, 500])
+def test_book_comparison_note_agrees_with_the_sizes(n_cr):
+    """The note comparing the book's derivation with the search says 'smaller' exactly when the
+    carried set is smaller than the book's, 'same' when equal (sizes from the note itself)."""
+    r = design_gears(1000, n_cr)
+    note = next(x for x in r.notes if x.code.startswith("book_vs_search"))
+    size, book = note.kwargs["size"], note.kwargs["book_size"]
+    if size < book:
+        assert note.code == "book_vs_search_smaller"
+    elif size == book:
+        assert note.code == "book_vs_search_same"
+    else:
+        assert note.code in ("book_vs_search_book_smaller", "book_vs_search_accurate")

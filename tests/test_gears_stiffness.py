@@ -154,7 +154,7 @@ def test_units_and_scaling():
 
 
 def test_bad_inputs():
-    for kw in ({"torque1_nm": 0.0}, {"b_w_m": -1e-3}, {"m_m": 0.0}, {"nu": 0.5}):
+    for kw in ({"torque1_nm": 0.0}, {"b_w_m": -1e-3}, {"b_w_m": 0.0}, {"m_m": 0.0}, {"nu": 0.5}):
         with pytest.raises(ValueError):
             st.mesh_stiffness(**{**EX, **kw})
     with pytest.raises(ValueError):
@@ -173,6 +173,9 @@ def test_course_pair_with_torque_uses_motor_torque():
     assert s.mesh.b_w_m == pytest.approx(st.PSI_M * 0.02)
     assert {n.code for n in s.notes} >= {"stiffness_scope", "stiffness_material", "stiffness_width",
                                          "stiffness_load_motor"}
+    # the note states the width it assumed in mm: b_w = ψ_m·m
+    width = next(n for n in s.notes if n.code == "stiffness_width").kwargs
+    assert float(width["bw"]) == pytest.approx(float(width["psi"]) * 20.0, rel=1e-12) and width["m"] == "20"
     # its notes stay in the block, not among the course's assumptions
     assert not any(n.code.startswith("stiffness") for n in r.notes)
 

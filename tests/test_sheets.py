@@ -196,11 +196,16 @@ def test_long_title_text_is_fitted():
     long = TitleFields(student="Константинопольский-Старобогатырёв Вениамин Вениаминович", org="Южно-Уральский государственный университет (национальный исследовательский университет), кафедра теоретической механики и основ проектирования машин")
     sh = sheet3(design_cam(VARIANTS[2]), "ru", long)
     doc = sh.doc
-    # every text of the title block stays inside the block; the long ones inside their cells
+    # every text of the title block stays inside the block; the long ones inside their cells — with
+    # the room of a CAD program's 30 % wider font (paper.ROOM), about the text's DXF alignment
+    from tmm_cli.render.sheets.paper import ROOM
+
     X, Y = 836.0 - 185.0, 5.0
     for e in doc.modelspace().query("TEXT"):
-        x, y = e.dxf.insert.x, e.dxf.insert.y
-        w = sh.text_width(e.dxf.text, e.dxf.height, e.dxf.width)
+        k = {1: 0.5, 2: 1.0}.get(e.dxf.halign, 0.0)
+        w = sh.text_width(e.dxf.text, e.dxf.height, e.dxf.width) * ROOM
+        x = (e.dxf.align_point.x if k else e.dxf.insert.x) - k * w
+        y = e.dxf.insert.y
         if x >= X and y <= Y + 55.0:
             assert x + w <= X + 185.0 + 1e-6
             assert Y <= y and y + e.dxf.height <= Y + 55.0 + 1e-6

@@ -212,6 +212,7 @@ def _values(texts: list[str]) -> dict[str, list[str]]:
     out: dict[str, list[str]] = {}
     for t in texts:
         for part in re.split(r";\s+", t):
+            part = re.sub(r"^[^=:;]*:\s+", "", part)  # a caption's heading («найдены: R… = …»)
             m = re.match(r"\s*([^\s=]+(?: [^\s=]+)?)\s*=\s*" + _NUM.pattern, part)
             if m:
                 out.setdefault(m.group(1).strip(), []).append(m.group(2))

@@ -245,3 +245,46 @@ def test_sheet4_velocity_texts_describe_the_drawing(number, crank):
                 {round(e.dxf.start.x, 3) for e in sh.doc.modelspace().query("LINE")})
     gaps = {round(abs(b - a), 2) for a in xs for b in xs}
     assert ok in gaps and oh in gaps, (ok, oh)
+
+
+# --- issue 31: a CAD program without osifont (LibreCAD's stroke font is about 30 % wider) ------------
+
+
+def _room_problems(doc) -> list[str]:
+    """What a 30 % wider font would break, read back from the DXF with every text measured 1.3 times
+    as wide about its alignment point: a text leaving the frame, and any trouble of a text of the
+    title block, the fields' headings or the tables — the texts set in cells. (A label placed where
+    only osifont's width was free is measured too, but may then touch a line: not counted.)"""
+    from sheet_check import TITLE_BLOCK, text_boxes
+
+    celled = set()
+    for e, c, h, rot, txt in text_boxes(doc):
+        lo, hi = c.min(axis=0), c.max(axis=0)
+        if lo[0] >= TITLE_BLOCK[0] - 0.05 and hi[1] <= TITLE_BLOCK[3] + 0.05 or e.has_xdata("TMM_FIELD"):
+            celled.add(txt)
+    out = []
+    for p in problems(doc, room=1.3):  # the issue's measure, not the code's constant
+        if "leaves the frame" in p or any(repr(t) in p for t in celled):
+            out.append(p)
+    return out
+
+
+@pytest.mark.parametrize("number", [1, 9, 23, 29, 61])
+def test_every_text_leaves_room_for_a_wider_font(number):
+    long = TitleFields(student="Константинопольский-Старобогатырёв В. В.", teacher="Преображенская-Волконская Е. А.",
+                       group="П-243", org="Южно-Уральский государственный университет, кафедра ТММ")
+    for sh in (sheet3(design_cam(V[number]), "ru", long),
+               sheet4(design_gears(V[number].n_cam_rpm, None, stiffness=False), number, "ru", long)):
+        assert not _room_problems(sh.doc), _room_problems(sh.doc)[:8]
+        assert not sh.unplaced
+
+
+def test_a_long_sheet_name_wraps_to_two_lines():
+    """The name field (70 × 25 mm): a long name goes onto two lines before it is narrowed far."""
+    from tmm_cli.render.sheets.paper import TB_BOX
+
+    sh = sheet4(design_gears(V[23].n_cam_rpm, None, stiffness=False), 23, "ru", TITLE)
+    name = [e for e in sh.doc.modelspace().query("TEXT") if TB_BOX[0] + 65 < e.dxf.align_point.x < TB_BOX[0] + 135
+            and TB_BOX[1] + 15 < e.dxf.insert.y < TB_BOX[1] + 40]
+    assert len(name) == 2, [e.dxf.text for e in name]
+    assert all(e.dxf.get("width", 1.0) >= 0.75 and e.dxf.height >= 5.0 for e in name)

@@ -190,7 +190,9 @@ _WORDS = (N_("error"), N_("internal error"), N_("aborted"), N_("interrupted"), N
 def _fail(message: str, lang: str = "en") -> None:
     from .i18n.errors import translate_error
 
-    line = translate_error(message, lang)
+    from .inputs.names import visible
+
+    line = visible(translate_error(message, lang))  # a path or a name in it: its control characters as codes
     click.echo(f"tmm: {_words(lang)('error')}: {line}", err=True)
     sys.exit(2)
 

@@ -64,6 +64,7 @@ NOTE_TEMPLATE_BYTES = 1 << 20  # --note-template
 
 # the note's typesetting ---------------------------------------------------------------------
 TYPST_MEMORY_BYTES = 2 << 30  # memory typst may use (RLIMIT_DATA on Linux, RLIMIT_AS on other Unix)
+TYPST_SECONDS = 60.0  # wall-clock time of one typst compile (the note, an assignment, a feedback PDF)
 NOTE_FOLDER_FILES = 2000  # `tmm note`: regular files of the note's folder given to typst
 NOTE_FOLDER_BYTES = 512 << 20  # ... of them copied where hard links are not possible
 NOTE_FOLDER_DEPTH = 4  # ... sub-folder levels

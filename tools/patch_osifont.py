@@ -2,7 +2,10 @@
 
 osifont 0.1.20220224 draws Э, э, Ё, ё as empty boxes. This script adds them: Э and э as the
 mirror images of Є and є (the same strokes turned), Ё and ё as references to Ë and ë (the same
-letters). Nothing else changes; the version string says so (GPL: modified files carry a notice).
+letters). Its «ь» is the capital «Ь» (ГОСТ 2.304 has a small letter): «ь» is made from «ы» without
+its stroke «і» (the same small soft sign the font draws inside «ы»). Nothing else changes; the
+version string says so (GPL: modified files carry a notice). Running it again on its own output
+changes nothing.
 
     python tools/patch_osifont.py /usr/share/fonts/truetype/osifont/osifont.ttf tmm_cli/render/sheets/fonts/osifont.ttf
 """
@@ -37,6 +40,31 @@ def copied(font, src: str):
     return pen.glyph(), font["hmtx"][src][0]
 
 
+def soft_sign(font):
+    """«ь» as «ы» without its rightmost contour (the «і»), with the side bearing «ы» has on the right."""
+    from fontTools.pens.recordingPen import RecordingPen
+
+    gs = font.getGlyphSet()
+    src = font.getBestCmap()[0x044B]
+    rec = RecordingPen()
+    gs[src].draw(rec)
+    contours, cur = [], []
+    for op, args in rec.value:
+        cur.append((op, args))
+        if op in ("closePath", "endPath"):
+            contours.append(cur)
+            cur = []
+    xmax = [max(p[0] for _, a in c for p in a) for c in contours]
+    keep = [c for c, x in zip(contours, xmax) if x < max(xmax)]  # drop the «і»
+    pen = TTGlyphPen(gs)
+    for c in keep:
+        for op, args in c:
+            getattr(pen, op)(*args)
+    adv = font["hmtx"][src][0]
+    rsb = adv - max(xmax)
+    return pen.glyph(), int(round(max(x for x in xmax if x < max(xmax)) + rsb))
+
+
 def main(src: str, dst: str) -> None:
     f = TTFont(src)
     cm = f.getBestCmap()
@@ -47,9 +75,15 @@ def main(src: str, dst: str) -> None:
         glyph.recalcBounds(f["glyf"])
         f["glyf"][name] = glyph
         f["hmtx"][name] = (adv, glyph.xMin if hasattr(glyph, "xMin") else 0)
+    name = cm[0x044C]
+    glyph, adv = soft_sign(f)
+    glyph.recalcBounds(f["glyf"])
+    f["glyf"][name] = glyph
+    f["hmtx"][name] = (adv, glyph.xMin)
     for rec in f["name"].names:
         if rec.nameID == 5:
-            rec.string = rec.toUnicode() + "; tmm: U+042D U+044D U+0401 U+0451 added"
+            text = rec.toUnicode().split("; tmm:")[0]
+            rec.string = text + "; tmm: U+042D U+044D U+0401 U+0451 added, U+044C small"
     f.save(dst)
 
 

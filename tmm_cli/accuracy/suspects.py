@@ -59,6 +59,23 @@ def standardised(jac: np.ndarray, r: np.ndarray, floor: float) -> tuple[np.ndarr
     return t, proj
 
 
+def indistinguishable(proj: np.ndarray, k: int) -> list[int]:
+    """The measurements whose residuals cannot be told apart from measurement ``k``'s: the
+    correlation of their columns of M, |M_kj|/√(M_kk·M_jj), above INDISTINGUISHABLE.
+
+    Two readings of one distance (J = [1, 1]ᵀ): each residual is minus the other's, so a misread
+    of either looks the same:
+
+    >>> indistinguishable(residual_projector(np.ones((2, 1))), 0)
+    [1]
+    >>> indistinguishable(residual_projector(np.array([[1.0], [1.0], [1.0]])), 0)   # correlation −1/2
+    []
+    """
+    mii = np.diag(proj)
+    return [j for j in range(len(mii)) if j != k and mii[j] > 1e-9
+            and abs(proj[k, j]) / math.sqrt(mii[k] * mii[j]) > INDISTINGUISHABLE]
+
+
 def critical_t(dof: int, m: int) -> float:
     """The Bonferroni threshold: Student's two-sided quantile at SUSPECT_ALPHA/m with ``dof``.
 
@@ -101,9 +118,7 @@ def find_suspects(card: Card, radius: float, used: np.ndarray, x: np.ndarray, fl
         k = int(np.nanargmax(np.abs(t)))
         if abs(t[k]) <= crit:
             break
-        mii = np.diag(proj)
-        group = [k] + [j for j in range(m) if j != k and mii[j] > 1e-9
-                       and abs(proj[k, j]) / math.sqrt(mii[k] * mii[j]) > INDISTINGUISHABLE]
+        group = [k] + indistinguishable(proj, k)
         suspects.extend(names[index[j]] for j in group if names[index[j]] not in suspects)
         used[index[k]] = False
         if m - 1 - n < 3:  # too little redundancy left to test the rest

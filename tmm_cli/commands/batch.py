@@ -66,7 +66,7 @@ def batch_cmd(variants_spec, roster, variants_file, crank_rpm, torque_nm, out, f
         plan = jobs_from_roster(roster, crank_rpm, torque_nm, variants_file)
         rows, bad = plan.jobs, plan.bad
         print_batch_intro(console, lang, roster=plan)
-    from rich.markup import escape
+    from ..render.terminal import escape
 
     summary = run_batch(
         rows, bad, out_dir, variants_file=variants_file, lang=lang, fmt=fmt,

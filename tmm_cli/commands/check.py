@@ -64,13 +64,15 @@ def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, t
         group = check_group(roster, answers_dir, variants_file=variants_file, crank_rpm=crank_rpm, torque_nm=torque_nm,
                             rtol_pct=rtol_pct, sheets=sheets, lang=lang)
         kept: list = []  # a check.csv the teacher edited is kept, the new one written beside it
+        failed: list = []  # a feedback PDF typst could not set (the others and the group's files are written)
         written = write_group_check(out_dir, group, lang, csv_locale or lang, rtol_pct, sheets, pdf=feedback == "pdf",
-                                    feedback=feedback != "none", kept=kept)
+                                    feedback=feedback != "none", kept=kept, failed=failed)
+        _say_failed(failed, lang)
         if as_json:
             print_json(group.to_json(lang))
             print_kept(None, kept, lang)
         else:
-            from rich.markup import escape
+            from ..render.terminal import escape
 
             from ..i18n import tr
 
@@ -89,3 +91,16 @@ def check_cmd(variant, answers, roster, answers_dir, variants_file, crank_rpm, t
     else:
         print_check(console, report, lang)
     return 0 if report.passed else 1
+
+
+def _say_failed(failed: list, lang: str) -> None:
+    """One line on stderr per feedback PDF that was not written."""
+    import click
+
+    from ..i18n import tr
+    from ..i18n.errors import error_text
+    from ..inputs.names import visible
+
+    for name, why in failed:
+        click.echo("tmm: " + visible(tr(lang, "{name} was not written ({why}); the Markdown feedback is there").format(
+            name=name, why=error_text(why, lang))), err=True)

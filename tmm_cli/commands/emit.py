@@ -31,7 +31,7 @@ def print_notes(console, notes, lang: str) -> None:
 
 
 def print_files(console, folder: Path, names: list[str], lang: str) -> None:
-    from rich.markup import escape
+    from ..render.terminal import escape
 
     from ..i18n import tr
 
@@ -61,7 +61,7 @@ def print_kept(console, kept, lang: str) -> None:
         for line in kept_lines(kept, lang):
             click.echo("tmm: " + line, err=True)
         return
-    from rich.markup import escape
+    from ..render.terminal import escape
 
     for line in kept_lines(kept, lang):
         console.print("[yellow]⚠[/] " + escape(line))

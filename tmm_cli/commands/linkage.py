@@ -208,7 +208,9 @@ def _mechanism(path, plan, n_positions, as_json, no_plots, out, fmt, lang, sheet
     doc = mechanism_document(sheet, lang)
     files = {"linkage.json": doc, "linkage_curve.csv": curve_csv(sheet)}
     names = tuple(n for n in FIGURES if not n.endswith("_2") or len(sheet.plans) > 1)
-    notes = tuple(sheet.cycle.notes)
+    from ..i18n.lang import name_script_notes
+
+    notes = tuple(sheet.cycle.notes) + name_script_notes(mech.name, lang)
     if s2 is not None:
         from ..i18n.lang import note_text
         from ..render.data.dynamics import add_sheet2, dynamics_csv

@@ -127,12 +127,13 @@ stiffness_option = click.option("--stiffness", is_flag=True, help="Also compute 
 
 
 def title_options(f):
-    """--student, --group, --teacher, --org, --designation: the title block and the note's title page."""
+    """--student, --group, --teacher, --org, --city, --designation: the title block and the note's title page."""
     helps = {
         "student": ("TEXT", "Student's name for the title block and the note, e.g. \"Иванов И. И.\" (or in tmm.toml)."),
         "group": ("TEXT", "Student's group (or in tmm.toml)."),
         "teacher": ("TEXT", "Teacher's name (or in tmm.toml)."),
         "org": ("TEXT", "University and department (or in tmm.toml)."),
+        "city": ("TEXT", "City on the note's title page, above the year (or in tmm.toml)."),
         "designation": ("TEXT", "Drawing designation (default: built from the sheet and variant numbers)."),
     }
     for name, (metavar, text) in reversed(helps.items()):

@@ -31,6 +31,7 @@ _PLACES = (
     (r"^exit status (\d+)$", N_("exit status {0}")),
     (r"^typst needed more memory than the limit of (\d+) MiB$", N_("typst needed more memory than the limit of {0} MiB")),
     (r"^typst stopped \((.*)\)$", N_("typst stopped ({0})")),
+    (r"^typst ran longer than the limit of ([\d.]+) s$", N_("typst ran longer than the limit of {0} s")),
     (r"(\S) line (\d+)", N_("{0} line {1}")),  # "table.csv line 3" → "table.csv, строка 3"
     (r"(\S) bore (\d+)$", N_("{0} bore {1}")),  # a measurement card's row (tmm carrier)
     (r"^link (\d+)", N_("link {0}")),  # a dimensional chain's link (tmm chain)

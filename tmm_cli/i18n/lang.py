@@ -84,3 +84,31 @@ def note_text(note: Note, lang: str) -> str:
             pass
     args = ", ".join(f"{k}={v}" for k, v in note.params)
     return f"{note.code}" + (f" ({args})" if args else "")
+
+
+def _scripts(text: str) -> set[str]:
+    """The alphabets `text`'s letters come from: 'cyrillic', 'latin' (others ignored)."""
+    out = set()
+    for ch in text:
+        if "\u0400" <= ch <= "\u04ff":
+            out.add("cyrillic")
+        elif ch.isascii() and ch.isalpha():
+            out.add("latin")
+    return out
+
+
+def name_script_notes(name: str, lang: str) -> tuple[Note, ...]:
+    """A warning when a mechanism's `name` (the student's text, printed as given on the sheets and
+    in the note) has no letter of the language's alphabet but letters of the other one: a Latin
+    name on a Russian note, a Cyrillic one on an English note.
+
+    >>> [n.code for n in name_script_notes("Crank-slider", "ru")]
+    ['mechanism_name_script']
+    >>> name_script_notes("Механизм ДВС V8", "ru"), name_script_notes("", "ru")
+    ((), ())
+    """
+    have = _scripts(name or "")
+    want = "cyrillic" if lang == "ru" else "latin"
+    if not have or want in have:
+        return ()
+    return (Note.make("mechanism_name_script", "warning", name=name),)

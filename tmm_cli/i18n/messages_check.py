@@ -18,6 +18,7 @@ MESSAGES: dict[str, str] = {
     'alt_fewer_planets_stage': N_('stage {stage}: k = {k} fits; up to {k_max} planets fit this set (§2.4 step 5 takes the largest)'),
     'set_invalid': N_('your set {teeth} with k = {k} breaks a condition of §2.1.3:'),
     'set_not_positive': N_('every tooth number and k must be a positive whole number'),
+    'set_too_large': N_('a wheel of {z_max} teeth at most and {k_max} planets at most (the bounds of the search, §2.4)'),
     'set_ratio': N_('the ratio i = {ratio:.4f} is {err:+.2f} % off the required {target:.4f}, outside ±{tol:g} % (condition 1, (2.1))'),
     'set_coaxial': N_('not coaxial: {formula} gives {lhs} ≠ {rhs} (condition 2)'),
     'set_coaxial_stage': N_('stage {stage} not coaxial: {formula} gives {lhs} ≠ {rhs} (condition 2)'),

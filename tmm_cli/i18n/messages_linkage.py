@@ -9,6 +9,7 @@ MESSAGES: dict[str, str] = {
     "linkage_rod_angle": N_("The rod BC leans up to {angle_deg:.1f}° from the ram's guide (more than {limit_deg:.0f}°): the ram is pushed at a poor angle; lengthen the rod (--r3) or move the guide (--b) towards B's path."),
     "linkage_near_pivot": N_("The block passes within {rho_min_mm:.2f} mm of the link's pivot O41: the link turns up to {ratio:.1f} times as fast as the crank."),
     "linkage_reversals": N_("The ram stops {count} times per crank turn (not only at the two dead positions); H and K are taken between its extreme positions."),
+    "mechanism_name_script": N_("The mechanism's name «{name}» is not written in the letters of the document's language; it is printed on the sheets and in the note as the file gives it (change `name` in the file to change it)."),
     "mechanism_position0_working": N_("Position 0 is the extreme position of the output link where the working stroke begins; the working stroke is the slower one (the larger crank angle)."),
     "mechanism_position0_load": N_("Position 0 is the extreme position of the output link where the working stroke begins, the stroke the file's load.working names."),
     "mechanism_position0_far": N_("Both strokes take the same crank angle (K = 1): position 0 is the extreme position of the output link farthest from the crank pivot (the top dead centre); give load.working or crank.start_deg to choose another."),

@@ -42,6 +42,24 @@ def clean_text(text: str, limit: int | None = None) -> str:
     return text[:limit] if limit else text
 
 
+# shown, never obeyed: what a terminal or a browser would act on (C0/C1 controls, DEL, line and
+# paragraph separators, the bidirectional overrides and isolates that reorder what follows)
+_SHOWN_AS_CODE = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+
+
+def visible(text) -> str:
+    r"""Text as it may be shown on a terminal or a page: every control character as its code
+    (``\x1b``), so an ESC cannot clear the screen nor a line break forge an output line.
+
+    >>> print(visible("a\nb\x1b[2J\u202e"))
+    a\x0ab\x1b[2J\u202e
+    """
+    def code(m):
+        c = ord(m.group(0))
+        return f"\\x{c:02x}" if c < 0x100 else f"\\u{c:04x}"
+    return _SHOWN_AS_CODE.sub(code, str(text))
+
+
 def display_name(raw: str) -> str:
     """A roster name as shown and written to summaries (clean text, at most NAME_CHARS)."""
     return clean_text(raw, NAME_CHARS)

@@ -113,6 +113,17 @@ def rows(text: str, max_rows: int, what: str) -> list[list[str]]:
     return out
 
 
+def whole_number(text) -> int | None:
+    """A cell's whole number in ASCII digits (at most 9), or None: «¹⁷» and «²» are digits to
+    str.isdigit() but not to int(), and a row of them is one bad row, not a crash.
+
+    >>> whole_number("17"), whole_number("¹⁷"), whole_number("٣"), whole_number("")
+    (17, None, None, None)
+    """
+    text = str(text)
+    return int(text) if 0 < len(text) <= 9 and text.isascii() and text.isdigit() else None
+
+
 def parse_number(raw, where: str) -> int | float:
     """A number from a cell: decimal comma or dot; finite; never echoes the cell itself.
 

@@ -1,7 +1,7 @@
 """Who hands the project in: the fields of the title block (sheets) and the title page (note).
 
 A student sets them once in ``tmm.toml`` in the current folder, or per run with ``--student``,
-``--group``, ``--teacher``, ``--org``, ``--designation``; an option beats the file. Missing fields
+``--group``, ``--teacher``, ``--org``, ``--city``, ``--designation``; an option beats the file. Missing fields
 stay empty: the sheets leave the cell blank, the note leaves a line to fill in by hand.
 
 ``tmm.toml``::
@@ -10,6 +10,7 @@ stay empty: the sheets leave the cell blank, the note leaves a line to fill in b
     group = "П-243"
     teacher = "Петров П. П."
     org = "ЮУрГУ, кафедра ТММ"
+    city = "Челябинск"                  # the note's title page, above the year
     # designation = "ТММ.03.17.00.00"   (default: built from the sheet and variant numbers)
 """
 
@@ -23,7 +24,7 @@ from pathlib import Path
 from ..errors import TmmError
 from ..records import record
 
-FIELDS = ("student", "group", "teacher", "org", "designation")
+FIELDS = ("student", "group", "teacher", "org", "city", "designation")
 SETTINGS_FILE = "tmm.toml"
 MAX_FIELD = 200  # characters; longer text is refused (a title block cell holds far less)
 
@@ -36,6 +37,7 @@ class TitleFields:
     group: str = ""
     teacher: str = ""
     org: str = ""
+    city: str = ""  # the note's title page: «Челябинск 2026»
     designation: str = ""
     year: int = 0
 
@@ -59,7 +61,9 @@ def _clean(value, name: str, source: str) -> str:
         return ""
     if not isinstance(value, str):
         raise TmmError(f"{source}: '{name}' must be text in quotes, e.g. {name} = \"...\"")
-    text = " ".join("".join(ch for ch in value if ch.isprintable() or ch == " ").split())
+    from .names import clean_text
+
+    text = clean_text(value)  # one line: breaks and tabs as spaces, control characters dropped
     if len(text) > MAX_FIELD:
         raise TmmError(f"{source}: '{name}' is {len(text)} characters long; shorten it to {MAX_FIELD} or fewer")
     return text

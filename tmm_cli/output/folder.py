@@ -297,7 +297,7 @@ def remove_active_staging() -> None:
 
 @contextmanager
 def staged_dir(target: Path, owns: tuple[str, ...] = (), writer: str | None = None, force: bool = False,
-               kept: list | None = None, root: Path | None = None) -> Iterator[Path]:
+               kept: list | None = None, root: Path | None = None, spare: list | None = None) -> Iterator[Path]:
     """Yield an empty staging folder; on success its files move into `target`, on error it vanishes.
 
     Files are moved one by one with :func:`os.replace` (atomic per file), only after everything
@@ -309,7 +309,9 @@ def staged_dir(target: Path, owns: tuple[str, ...] = (), writer: str | None = No
     `target` that is a symbolic link, is refused with a TmmError; a file the user changed is kept
     and the new version written beside it (or, with `force`, replaced after a backup): each such
     file is appended to `kept` (:class:`Kept`). With `root`, every folder between it and `target`
-    must be a real folder (a batch's student folders).
+    must be a real folder (a batch's student folders). `spare` (read when the files move in, so the
+    caller may fill it while writing): glob patterns of older files that stay even though this run
+    did not write them again (a note that failed keeps the folder's last good note).
     """
     target = Path(target)
     if root is not None:
@@ -339,7 +341,7 @@ def staged_dir(target: Path, owns: tuple[str, ...] = (), writer: str | None = No
         except OSError as exc:  # a full disk, a name too long, a folder gone: one line
             raise _write_error(target, exc) from None
         with lock_dir(target):  # two runs into one folder: one commits after the other
-            found = _commit(tmp, target, fresh, owns, writer, force)
+            found = _commit(tmp, target, fresh, owns, writer, force, spare or ())
         if kept is not None:
             kept.extend(found)
     except BaseException:
@@ -378,7 +380,7 @@ def _new_staging(parent: Path, name: str) -> Path:
             raise
 
 
-def _commit(tmp: Path, target: Path, fresh: set[str], owns, writer: str | None, force: bool) -> list[Kept]:
+def _commit(tmp: Path, target: Path, fresh: set[str], owns, writer: str | None, force: bool, spare=()) -> list[Kept]:
     """Move the staged files into `target` and drop this writer's stale files; returns the user's
     files met (kept, or backed up under `force`)."""
     if not is_real_dir(target):
@@ -400,7 +402,8 @@ def _commit(tmp: Path, target: Path, fresh: set[str], owns, writer: str | None, 
             os.replace(tmp / name, target / final)
             entries[final] = {"sha256": hashes[name], "by": _writers(None if final in backed else entries.get(final), writer)}
         for name in sorted(set(old["entries"]) - written - {k.name for k in kept}):
-            if any(fnmatch.fnmatchcase(name, pat) for pat in owns) and claims(entries[name], writer):
+            if any(fnmatch.fnmatchcase(name, pat) for pat in owns) and claims(entries[name], writer) \
+                    and not any(fnmatch.fnmatchcase(name, pat) for pat in spare):
                 _drop_claim(target, name, entries, writer)
         write_manifest(target, set(entries), old["dirs"], entries)
     except OSError as exc:

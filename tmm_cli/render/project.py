@@ -87,7 +87,8 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
     doc = project_document(result, lang)
     # the project owns its folder: nothing of an earlier run (other options) stays beside it
     found: list = []
-    with staged_dir(folder, owns=("*",), writer=writer, force=force, kept=found, root=root) as tmp:
+    spare: list = []  # a note that fails keeps the folder's last good one (note.pdf, note.typ, its style, figures)
+    with staged_dir(folder, owns=("*",), writer=writer, force=force, kept=found, root=root, spare=spare) as tmp:
         svg: set = set()
         cached, finish_cached = set(), lambda: None
         if plots and figure_cache is not None:
@@ -139,6 +140,8 @@ def write_project_folder(result, folder: Path, lang: str, *, fmt: str = "png", p
                 note_error = _finish_note(tmp, note, title, reports, pdf=False, docx=True)
             if typeset:
                 _tidy_note_figures(tmp, reports, note_error)
+            if note_error is not None:
+                spare += list(NOTE_KEPT)
         # ----------------------------------------------------------------------------------------
         written = staged_names(tmp)
     if kept is not None:
@@ -192,7 +195,7 @@ def _prepare_note(tmp: Path, result, lang: str, title, template: str | None, rep
 
     try:
         return prepare_note(tmp, result, lang, title, _note_files(result, note_figs), template,
-                            pdf="pdf" in reports), None
+                            pdf="pdf" in reports, docx="docx" in reports), None
     except TmmError as exc:
         return None, exc
 
@@ -207,6 +210,10 @@ def _finish_note(tmp: Path, doc, title, reports, pdf: bool, docx: bool):
     except TmmError as exc:
         return exc
     return None
+
+
+# the files of a note: kept as they were when a new note fails
+NOTE_KEPT = ("note.typ", "note-style.typ", "note.pdf", "note.docx", "note_*.svg", "note_*.png")
 
 
 def _tidy_note_figures(tmp: Path, reports, note_error) -> None:

@@ -31,7 +31,9 @@ class Unreadable:
 
 
 def _answer_key(raw: str, where: str) -> str:
-    key = str(raw).strip()
+    from ..inputs.names import clean_text
+
+    key = clean_text(raw)  # one line, no control characters (docs/limits.md)
     if not _KEY.fullmatch(key) or not any(ch.isalpha() for ch in key):
         raise TmmError(f"{where}: the key is not a name like r0_mm (letters, digits, '_'); see `tmm check --keys`")
     return key

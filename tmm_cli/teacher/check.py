@@ -20,6 +20,7 @@ from pathlib import Path
 
 from ..errors import TmmError
 from ..i18n import tr
+from ..inputs.tables import whole_number
 from ..notes import Note
 from .answers import Unreadable, read_answers  # noqa: F401  (read_answers: the public reader)
 from .keys import ANSWER_KEYS, KEYS_BY_NAME, REQUIRED, SHEETS, resolve_key, suggest_key  # noqa: F401
@@ -234,7 +235,7 @@ def check_group(roster, answers_dir, *, variants_file=None, crank_rpm=None, torq
     if not d.is_dir():
         raise TmmError(f"answers folder {d} does not exist; give the folder with one file per student")
     plan = jobs_from_roster(roster, crank_rpm, torque_nm, variants_file)
-    reports = [(b.job.line, CheckReport(label=b.job.label, variant=int(b.job.variant) if str(b.job.variant).isdigit() else 0,
+    reports = [(b.job.line, CheckReport(label=b.job.label, variant=whole_number(b.job.variant) or 0,
                                         rtol_pct=rtol_pct, rows=(), error=b.reason, group=b.job.group, line=b.job.line))
                for b in plan.bad]
     used: set[str] = set()
@@ -244,7 +245,7 @@ def check_group(roster, answers_dir, *, variants_file=None, crank_rpm=None, torq
         fn = file_name(b.job.label)
         used.update(f"{fn}{ext}" for ext in ANSWER_SUFFIXES if fn)
     for job in plan.jobs:
-        number = int(job.variant) if job.variant.isdigit() else 0
+        number = whole_number(job.variant) or 0
         found = None
         try:
             v = get_variant(job.variant, variants_file)

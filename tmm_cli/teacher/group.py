@@ -320,10 +320,11 @@ def read_check_json(out_dir: Path) -> dict | None:
 
 
 def write_group_check(out_dir: Path, group, lang: str, csv_locale: str, rtol_pct: float, sheets, *, pdf: bool = False,
-                      feedback: bool = True, kept: list | None = None) -> list[str]:
+                      feedback: bool = True, kept: list | None = None, failed: list | None = None) -> list[str]:
     """The files of a group check: feedback/check-<name>.md (.pdf), check.csv, check.md, check.json
     and group.html, each written atomically and recorded as ours. Returns the names written (a file
-    the teacher changed since is kept and the new one written beside it: appended to `kept`)."""
+    the teacher changed since is kept and the new one written beside it: appended to `kept`; a
+    feedback PDF typst could not set, with its error, to `failed`)."""
     from ..output.folder import staged_dir, write_owned
     from ..render.data.check import check_csv, check_json
     from ..render.feedback import FEEDBACK_DIR, write_feedback
@@ -333,7 +334,7 @@ def write_group_check(out_dir: Path, group, lang: str, csv_locale: str, rtol_pct
     written = []
     if feedback and any(rep.fname for rep in group.reports):
         with staged_dir(Path(out_dir) / FEEDBACK_DIR, owns=("check-*.md", "check-*.pdf"), writer="check", kept=kept) as tmp:
-            write_feedback(tmp, group.reports, lang, pdf=pdf)
+            write_feedback(tmp, group.reports, lang, pdf=pdf, failed=failed)
         written.append(f"{FEEDBACK_DIR}/")
     for name, data in (("check.csv", check_csv(group, lang, csv_locale)),
                        ("check.md", group_markdown(group, lang, rtol_pct, sheets).encode("utf-8")),

@@ -67,8 +67,11 @@ def student_reducer(answers: dict, scheme: str, target: float, tolerance_pct: fl
     >>> r = student_reducer(dict(z_sun=40, z_planet=25, z_ring=40, planets=3), "1", 3.25, 5.0)
     >>> [n.code for n in r.problems]
     ['set_ratio', 'set_coaxial', 'set_assembly', 'set_interference']
+    >>> [n.code for n in student_reducer(dict(z_sun=400000, z_planet=250000, z_ring=900000, planets=2), "1", 3.25, 5.0).problems]
+    ['set_too_large']
     """
-    from ..gears.planetary.conditions import Stage
+    from ..gears.planetary.conditions import K_MAX, Stage
+    from ..gears.planetary.search import Z_MAX
 
     n_stages = 2 if scheme == "1+1" else 1
     stages, problems = [], []
@@ -81,6 +84,9 @@ def student_reducer(answers: dict, scheme: str, target: float, tolerance_pct: fl
         stages.append(Stage(values[zs], values[zp], values.get(zp2) if scheme == "2" else None, values[zn], values[kk]))
         if any(v <= 0 for v in values.values()):
             problems.append(Note.make("set_not_positive"))
+        elif any(values[k] > Z_MAX for k in need if k != kk) or values[kk] > K_MAX:
+            # the bounds of the program's own search: the right set ×10 000 meets every condition
+            problems.append(Note.make("set_too_large", z_max=Z_MAX, k_max=K_MAX))
     if problems:
         return StudentReducer(scheme, tuple(stages), tuple(problems), None, None, tuple(1 for _ in stages))
     ratio = 1.0

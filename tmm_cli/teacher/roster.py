@@ -8,6 +8,7 @@ from pathlib import Path
 from .. import limits
 from ..errors import TmmError
 from ..inputs.names import collision_key, display_name, file_name
+from ..inputs.tables import whole_number
 from ..records import record
 
 # ROSTER header names (English and what Russian teachers write) -> our keys
@@ -206,7 +207,7 @@ def jobs_from_roster(path: str | Path, crank_rpm: float | None, torque_nm: float
             if not variant and need_variant:
                 raise TmmError("the variant column is empty")
             pending = not variant  # given out later (tmm assign --assign-variants)
-            if not pending and (not variant.isdigit() or int(variant) not in table):
+            if not pending and whole_number(variant) not in table:
                 raise TmmError(f"variant {variant} is not in the table; choose a variant from {min(table)} to {max(table)}")
             mechanism = _mechanism_path(cell.get("mechanism", ""), Path(path))
             if mechanism:

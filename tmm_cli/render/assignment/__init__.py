@@ -14,6 +14,7 @@ from pathlib import Path
 from ...i18n import N_, tr, trc
 from ...i18n.numbers import num
 from ..note.doc import typst_escape, typst_string
+from ..note.typst import literal_text
 
 STYLE_FILE = "assignment-style.typ"
 
@@ -25,6 +26,11 @@ def default_style() -> str:
 def _t(text) -> str:
     """Plain text inside typst markup."""
     return typst_escape(str(text), start=False)
+
+
+def _who(text) -> str:
+    """A person's text (a name, a group, the teacher) inside typst markup: the characters given."""
+    return literal_text(str(text))
 
 
 def _n(x, lang: str, sig: int = 6) -> str:
@@ -140,9 +146,9 @@ def page_source(a, lang: str, *, teacher: str = "", org: str = "", issued=None, 
 
     org_lines = [s.strip() for s in (org or "").split(",") if s.strip()]
     org_arg = "(" + "".join(typst_string(s) + ", " for s in org_lines) + ")"
-    who = tr(lang, 'Student: *{student}*').format(student=_t(a.student))
+    who = tr(lang, 'Student: *{student}*').format(student=_who(a.student))
     if a.group:
-        who += tr(lang, ' #h(1.5em) Group: *{group}*').format(group=_t(a.group))
+        who += tr(lang, ' #h(1.5em) Group: *{group}*').format(group=_who(a.group))
     who += tr(lang, ' #h(1.5em) Variant: *{number}*').format(number=a.variant.number)
     body = [
         "*" + tr(lang, '1. Subject.') + "* " + _t(tr(lang, 'Synthesis of the cam mechanism (sheet 3) and synthesis and analysis of the gear mechanisms of the drive (sheet 4) by the book [1].')),
@@ -159,9 +165,9 @@ def page_source(a, lang: str, *, teacher: str = "", org: str = "", issued=None, 
         tr(lang, 'Issued: ') + _date(issued, lang) + " #h(2em) "
         + tr(lang, 'Due: ') + _date(due, lang),
         "#v(0.8em)",
-        "#sign([" + tr(lang, "Teacher") + f"], [{_t(teacher)}])",
+        "#sign([" + tr(lang, "Teacher") + f"], [{_who(teacher)}])",
         "#v(0.5em)",
-        "#sign([" + tr(lang, "Accepted by the student") + f"], [{_t(a.student)}], date-label: ["
+        "#sign([" + tr(lang, "Accepted by the student") + f"], [{_who(a.student)}], date-label: ["
         + tr(lang, "date") + " #blank(2.5cm)])",
     ]
     title = tr(lang, "ASSIGNMENT")

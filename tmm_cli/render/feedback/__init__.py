@@ -34,8 +34,11 @@ def feedback_name(fname: str, ext: str = "md") -> str:
 
 
 def _plain(text: str) -> str:
-    """A student's own text inside the document: a '$' never opens typst math."""
-    return str(text).replace("$", "\uff04")
+    """A student's own text (or a sentence holding it) inside the document: set as the characters
+    given, never as markup (render/note/model.literal)."""
+    from ..note.model import literal
+
+    return literal(str(text))
 
 
 def student_doc(report, lang: str):
@@ -89,7 +92,9 @@ def _title(report, lang: str) -> str:
 
 def student_markdown(report, lang: str) -> str:
     """check-<name>.md."""
-    return student_doc(report, lang).to_markdown(_plain(_title(report, lang)))
+    from ..note.model import md_text
+
+    return student_doc(report, lang).to_markdown(md_text(_title(report, lang)))
 
 
 _TYPST_HEAD = """// Feedback written by `tmm check`.
@@ -106,17 +111,22 @@ _TYPST_HEAD = """// Feedback written by `tmm check`.
 
 def student_typst(report, lang: str) -> str:
     """The same feedback as typst source (compiled to check-<name>.pdf)."""
-    from ..note.doc import typst_escape, typst_string
+    from ..note.doc import typst_string
+    from ..note.typst import literal_text
 
-    title = _plain(_title(report, lang))
+    title = _title(report, lang)
     head = _TYPST_HEAD.format(title=typst_string(title), lang="ru" if lang == "ru" else "en",
-                              title_markup=typst_escape(title))
+                              title_markup=literal_text(title))
     return student_doc(report, lang).to_typst(head)
 
 
-def write_feedback(folder: Path, reports, lang: str, pdf: bool = False) -> list[str]:
+def write_feedback(folder: Path, reports, lang: str, pdf: bool = False, failed: list | None = None) -> list[str]:
     """check-<name>.md (and .pdf) of every report that has a student file name, into `folder`
-    (a staging folder); the names written."""
+    (a staging folder); the names written. A PDF typst cannot set (past its time or memory
+    limit) is left out, its Markdown kept, and (name, error) appended to `failed`: one student's
+    text never stops the others' feedback (without `failed`, the error is raised)."""
+    from ...errors import TmmError
+
     folder = Path(folder)
     written = []
     for rep in reports:
@@ -132,6 +142,11 @@ def write_feedback(folder: Path, reports, lang: str, pdf: bool = False) -> list[
             (folder / src).write_text(student_typst(rep, lang), encoding="utf-8")
             try:
                 compile_note(folder, src, feedback_name(rep.fname, "pdf"))
+            except TmmError as exc:
+                if failed is None:
+                    raise
+                failed.append((feedback_name(rep.fname, "pdf"), str(exc)))
+                continue
             finally:
                 (folder / src).unlink(missing_ok=True)
             written.append(feedback_name(rep.fname, "pdf"))

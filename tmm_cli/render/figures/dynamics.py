@@ -24,6 +24,7 @@ from ...linkage.sheet2 import Sheet2
 from ..terminal.dynamics import symbol as book_symbol
 from .kit import decimal_commas, mt, new_figure, suptitle, title_height
 from .mechanism import _block, joint_tex, label_tex, span_mm
+from ..terminal.mechanism import pattern
 
 MM = 1000.0
 C_APPLIED = "#1f77b4"
@@ -226,7 +227,7 @@ def forces_figure(s: Sheet2, lang: str):
         ax.set_ylim(xy.imag.min() - pad, xy.imag.max() + pad)
         ax.set_aspect("equal", adjustable="box")
         ax.axis("off")
-        name = tr(lang, "the crank with the frame") if group == 0 else tr(lang, "group {group} ({kind})").format(group=group, kind=s.sheet1.mechanism.groups[group - 1].kind)
+        name = tr(lang, "the crank with the frame") if group == 0 else tr(lang, "group {group} ({kind})").format(group=group, kind=pattern(s.sheet1.mechanism.groups[group - 1].kind, lang))
         ax.set_title(name, fontsize=10)
         _polygon(bx, pg, lang)
     phi = num(math.degrees(p.phi) % 360.0, lang, decimals=1)

@@ -25,6 +25,16 @@ PT = 1 / 72  # inch per point
 _SYMBOL = re.compile(r"(?<![A-Za-zА-Яа-яЁёα-ωΑ-Ω_\\$])([A-Za-zα-ωΑ-Ω])_([0-9A-Za-zА-Яа-яЁёα-ω′]+)")
 
 
+def literal_text(text: str) -> str:
+    r"""A person's text (a mechanism's name) for a matplotlib text: every "$" escaped, so no part of
+    it is mathtext (an unknown macro or a lone "^" would stop the drawing) — shown as typed.
+
+    >>> literal_text("A $x^$ B")
+    'A \\$x^\\$ B'
+    """
+    return str(text).replace("$", r"\$")
+
+
 def mt(text: str) -> str:
     """Book symbols of `text` as mathtext: a letter, then its subscript set upright and small.
 

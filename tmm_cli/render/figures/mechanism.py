@@ -21,7 +21,7 @@ import numpy as np
 from ...linkage.chain import slider_pose, slot_axis
 from ...linkage.sheet1 import Sheet1
 from ...linkage.vector_plans import Plan, Plans
-from .kit import decimal_commas, new_figure, suptitle, title_height
+from .kit import decimal_commas, literal_text, new_figure, suptitle, title_height
 from ...i18n import tr
 from ...i18n.numbers import num
 
@@ -253,9 +253,10 @@ def scheme_figure(s: Sheet1, lang: str):
     extreme = "; " + tr(lang, "the other extreme position {label} — dashed").format(label=label_tex(ends[0].label)) \
         if ends else ""
     title = tr(lang, "{name} in {n} positions (position 0 bold{extreme})\n"
-                     "scale of the sheet μ_l = {mu} m/mm; coloured: the paths of the named points").format(
-        name=m.name or tr(lang, "Mechanism"), n=len(c.positions), extreme=extreme, mu=mu)
-    suptitle(fig, title.replace("μ_l", r"$\mu_l$"), fontsize=11)
+                     "scale of the sheet μ_l = {mu} m/mm; coloured: the paths of the named points")
+    title = title.replace("μ_l", r"$\mu_l$").format(  # the name: a person's text, never mathtext
+        name=literal_text(m.name) if m.name else tr(lang, "Mechanism"), n=len(c.positions), extreme=extreme, mu=mu)
+    suptitle(fig, title, fontsize=11)
     decimal_commas(fig, lang)
     return fig
 

@@ -156,7 +156,10 @@ _JS = """
 
 
 def _e(text) -> str:
-    return html.escape("" if text is None else str(text), quote=True)
+    """Text for the page: HTML escaped, control characters shown as codes (inputs/names.visible)."""
+    from ...inputs.names import visible
+
+    return html.escape(visible("" if text is None else str(text)), quote=True)
 
 
 def _href(path: str) -> str:

@@ -25,6 +25,8 @@ def textbook(lang: str) -> str:
 
 STYLE_FILE = "note-style.typ"
 NOTE_FILES = ("note.typ", STYLE_FILE, "note.pdf")
+# the typst source of a DOCX-only run, kept only to ask typst for the contents' pages
+PAGES_FILES = (".tmm-note.typ", ".tmm-note-style.typ")
 DOCX_FILE = "note.docx"
 # the note's own figures (drawn at the note's size, render/figures/note.py), in their order
 NOTE_FIGURES = ("cam_motion", "cam_zone", "cam_profile", "cam_pressure_angle",
@@ -148,9 +150,11 @@ def recompile(path: Path) -> Path:
 
 
 def prepare_note(folder: Path, result, lang: str, title, figures: dict, template: str | None = None,
-                 pdf: bool = True):
+                 pdf: bool = True, docx: bool = False):
     """Build the document and (for the PDF) write note.typ and note-style.typ; the figures need not
-    be drawn yet. Returns the document for :func:`finish_note`."""
+    be drawn yet. For the DOCX alone the same source goes to hidden files (:data:`PAGES_FILES`),
+    which :func:`finish_note` lays out for the contents' pages and removes. Returns the document for
+    :func:`finish_note`."""
     from ...inputs.titleblock import TitleFields
     from .front import title_meta
     from .typst import note_source
@@ -159,12 +163,13 @@ def prepare_note(folder: Path, result, lang: str, title, figures: dict, template
     title = title or TitleFields()
     doc = build_note(result, lang, figures, title)
     try:
-        if pdf:
+        if pdf or docx:
             from .ctx import Ctx
 
             meta = title_meta(Ctx(result, lang), title)
-            (folder / STYLE_FILE).write_text(template if template is not None else default_template(), encoding="utf-8")
-            (folder / "note.typ").write_text(note_source(doc, meta, STYLE_FILE), encoding="utf-8")
+            source, style = ("note.typ", STYLE_FILE) if pdf else PAGES_FILES
+            (folder / style).write_text(template if template is not None else default_template(), encoding="utf-8")
+            (folder / source).write_text(note_source(doc, meta, style), encoding="utf-8")
     except BaseException:
         _remove_note(folder)
         raise
@@ -182,8 +187,17 @@ def finish_note(folder: Path, doc, title, pdf: bool = True, docx: bool = False) 
             compile_note(folder)
         if docx:
             from .docx import write_docx
+            from .typeset import page_numbers
 
-            write_docx(doc, folder / DOCX_FILE, folder, title or TitleFields())
+            # the contents' page numbers and the page count as typst lays the note out (when note.typ
+            # is here: the PDF is written too), the DOCX's fields' results before any update
+            source = next((n for n in ("note.typ", PAGES_FILES[0]) if (folder / n).is_file()), None)
+            try:
+                pages = page_numbers(folder, source) if source else None
+            finally:
+                for name in PAGES_FILES:
+                    (folder / name).unlink(missing_ok=True)
+            write_docx(doc, folder / DOCX_FILE, folder, title or TitleFields(), pages=pages)
     except BaseException:
         _remove_note(folder)
         raise
@@ -191,7 +205,7 @@ def finish_note(folder: Path, doc, title, pdf: bool = True, docx: bool = False) 
 
 
 def _remove_note(folder: Path) -> None:
-    for name in (*NOTE_FILES, DOCX_FILE):
+    for name in (*NOTE_FILES, DOCX_FILE, *PAGES_FILES):
         (folder / name).unlink(missing_ok=True)
 
 
@@ -204,7 +218,7 @@ def write_note(folder: Path, result, lang: str, title, figures: dict, template: 
     `folder`; `template` is the style's text (default: the package's). On a typst error the
     note's files are removed and TmmError raised.
     """
-    doc = prepare_note(folder, result, lang, title, figures, template, pdf=pdf)
+    doc = prepare_note(folder, result, lang, title, figures, template, pdf=pdf, docx=docx)
     return finish_note(folder, doc, title, pdf=pdf, docx=docx)
 
 
@@ -217,7 +231,6 @@ def rewrite_docx(path: Path, lang: str, title=None) -> Path:
     import tempfile
 
     from ...project import run_project
-    from ...variants import Variant
     from ..figures.note import save_note_figure
     from ..figures.note_scales import figure_size_cm
 
@@ -228,25 +241,17 @@ def rewrite_docx(path: Path, lang: str, title=None) -> Path:
         raise TmmError(f"no {src} here: the Word note is written from the project's results; run tmm project "
                        "--report docx in its folder's parent, or keep results.json beside the note")
     try:
+        if src.stat().st_size > 16 << 20:
+            raise ValueError
         data = json.loads(src.read_text(encoding="utf-8"))
-        row = data["input"]
-        v = Variant(int(data["variant"]), int(row["scheme"]), row["l_bc_m"], float(row["nu_max_deg"]),
-                    float(row["n_cam_rpm"]), float(row["stroke"]), int(row["law"]), float(row["phi_rise_deg"]),
-                    float(row["phi_far_dwell_deg"]), float(row["phi_return_deg"]))
-        o = data.get("options") or {}
-    except (OSError, ValueError, KeyError, TypeError):
+        row, o = data["input"], data.get("options") or {}
+        if not isinstance(row, dict) or not isinstance(o, dict):
+            raise TypeError
+    except (OSError, ValueError, KeyError, TypeError, RecursionError):
         raise TmmError(f"no {src} here: the Word note is written from the project's results; run tmm project "
                        "--report docx in its folder's parent, or keep results.json beside the note") from None
-    from ...cam.design import CamChoice
-    from ...gears.design import parse_ratio
-
-    choice = CamChoice(**o["cam_choice"]) if o.get("cam_choice") else None
-    shift = o.get("shift")
-    result = run_project(v, crank_rpm=o.get("crank_rpm"), torque_nm=o.get("torque_nm"), step_deg=o.get("step_deg", 10.0),
-                         ratio=parse_ratio(o["ratio"]) if o.get("ratio") else None,
-                         tolerance_pct=o.get("tolerance_pct", 5.0), planets=o.get("planets"),
-                         shift=tuple(shift) if isinstance(shift, list) else shift, a_w_mm=o.get("a_w_mm"),
-                         select=o.get("select", "accurate"), cam_choice=choice)
+    v, kw = read_back(data, row, o, str(src))
+    result = run_project(v, **kw)
     with tempfile.TemporaryDirectory(prefix=".tmm-note-", dir=folder) as tmp:
         tmp = Path(tmp)
         figures = {}
@@ -260,6 +265,68 @@ def rewrite_docx(path: Path, lang: str, title=None) -> Path:
         except OSError as exc:
             raise TmmError(f"cannot write the note for Word ({exc.strerror})") from None
     return folder / DOCX_FILE
+
+
+def read_back(data: dict, row: dict, o: dict, src: str):
+    """The variant and the options of a results.json read back (`tmm note --to docx`), held to the
+    limits the command line holds them to (limits.py, the variants table's rules): a folder a
+    teacher received is not trusted to ask for a 0.0001° step or a 10⁹ % tolerance. TmmError
+    (one line naming the file and the key) otherwise."""
+    from ... import limits
+    from ...cam.design import CamChoice, check_choice
+    from ...gears.design import parse_ratio
+    from ...gears.shifted import parse_shift
+    from ...variants import parse_row
+
+    def cell(x) -> str:
+        if x is None:
+            return ""
+        if isinstance(x, bool) or not isinstance(x, (int, float, str)) or len(str(x)) > 40:
+            return "?"
+        return str(x)
+
+    scheme = row.get("scheme")
+    csv_row = {k: cell(row.get(k)) for k in ("scheme", "l_bc_m", "nu_max_deg", "n_cam_rpm", "law", "phi_rise_deg",
+                                              "phi_far_dwell_deg", "phi_return_deg")}
+    csv_row["variant"] = cell(data.get("variant"))
+    csv_row["gamma_max_deg" if scheme in (3, 4) else "s_max_m"] = cell(row.get("stroke"))
+    v = parse_row(csv_row, src)
+
+    def number(key, lo, hi, default=None):
+        x = o.get(key, default)
+        return None if x is None else limits.check_range(x if not isinstance(x, bool) else "?", lo, hi, f"{src}: {key}")
+
+    kw = dict(crank_rpm=number("crank_rpm", *limits.CRANK_RPM), torque_nm=number("torque_nm", *limits.TORQUE_NM),
+              step_deg=number("step_deg", *limits.STEP_DEG, default=10.0),
+              tolerance_pct=number("tolerance_pct", *limits.TOLERANCE_PCT, default=5.0))
+    planets = o.get("planets")
+    kw["planets"] = None if planets is None else limits.check_int_range(planets, *limits.PLANETS, f"{src}: planets")
+    ratio = o.get("ratio")
+    if ratio is not None and (not isinstance(ratio, str) or len(ratio) > 20):
+        raise TmmError(f"{src}: ratio is not a fraction such as 13/4; run tmm project again")
+    kw["ratio"] = parse_ratio(ratio) if ratio else None
+    shift = o.get("shift")
+    if isinstance(shift, list) and len(shift) == 2 and all(isinstance(x, (int, float)) and not isinstance(x, bool)
+                                                           for x in shift):
+        shift = parse_shift(f"{float(shift[0])!r},{float(shift[1])!r}")
+    elif shift is not None:
+        shift = parse_shift(shift if isinstance(shift, str) and len(shift) < 20 else "?")
+    kw["shift"] = shift
+    kw["a_w_mm"] = number("a_w_mm", 1.0, 1.0e5)
+    select = o.get("select", "accurate")
+    if select not in ("accurate", "smallest"):
+        raise TmmError(f"{src}: select is not accurate or smallest; run tmm project again")
+    kw["select"] = select
+    choice = o.get("cam_choice")
+    if choice:
+        fields = ("r0_mm", "offset_mm", "l_oc_mm", "swing", "roller_mm")
+        if not isinstance(choice, dict) or set(choice) - set(fields) \
+                or any(not isinstance(choice.get(k), (int, float, type(None))) or isinstance(choice.get(k), bool)
+                       for k in fields if k != "swing") or not isinstance(choice.get("swing"), (str, type(None))):
+            raise TmmError(f"{src}: cam_choice is not a choice tmm writes; run tmm project again")
+        choice = check_choice(v, CamChoice(**choice))
+    kw["cam_choice"] = choice or None
+    return v, kw
 
 
 def markdown_note(result, lang: str, figure_files: list[str]) -> str:

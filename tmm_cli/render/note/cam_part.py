@@ -71,7 +71,7 @@ def _input(c: Ctx, r) -> None:
     rows += [
         [t("Allowed pressure angle"), "$ν_max$, °", n(v.nu_max_deg)],
         [t("Cam speed (sign: sense of rotation)"),
-         "$n_k$, " + t("rpm"), n(v.n_cam_rpm)],
+         "$n_\"к\"$, " + t("rpm"), n(v.n_cam_rpm)],
         [t("Rise angle"), '$φ_"у"$, °', n(v.phi_rise_deg)],
         [t("Far-dwell angle"), '$φ_"дс"$, °', n(v.phi_far_dwell_deg)],
         [t("Return angle"), '$φ_"в"$, °', n(v.phi_return_deg)],
@@ -80,7 +80,7 @@ def _input(c: Ctx, r) -> None:
             [t("Quantity"), t("Symbol, unit"), t("Value")], rows,
             align=["left", "center", "center"], widths=[2.4, 1.3, 1.5])
     sense = t("counter-clockwise") if v.ccw else t("clockwise")
-    c.p(t("The cam turns {sense} (the sign of $n_k$). Its working angle {{cite:book:formula (1.3)}} and the near-dwell angle are").format(sense=sense))
+    c.p(t("The cam turns {sense} (the sign of $n_\"к\"$). Its working angle {{cite:book:formula (1.3)}} and the near-dwell angle are").format(sense=sense))
     c.formula(c.calc('φ_"р" = φ_"у" + φ_"дс" + φ_"в"', "{0} + {1} + {2}",
                      [V(v.phi_rise_deg, exact=True), V(v.phi_far_dwell_deg, exact=True), V(v.phi_return_deg, exact=True)],
                      V(v.phi_working_deg, exact=True, deg=True)),
@@ -90,9 +90,9 @@ def _input(c: Ctx, r) -> None:
                      V(v.phi_near_dwell_deg, exact=True, deg=True)), where=['φ_"бс"'])
     m = r.motion
     c.p(t("The angular speed of the cam {cite:book:formula (1.5)} and the time of one turn:"))
-    c.formula(c.calc("ω_k = (π |n_k|)/30", "(π dot {0})/30", [V(abs(v.n_cam_rpm), exact=True)],
-                     V(m.omega, decimals=2), t("rad/s")), label="omega_k", where=["ω_k", "n_k"])
-    c.formula(c.calc("T = 60/(|n_k|)", "60/{0}", [V(abs(v.n_cam_rpm), exact=True)],
+    c.formula(c.calc("ω_k = (π |n_\"к\"|)/30", "(π dot {0})/30", [V(abs(v.n_cam_rpm), exact=True)],
+                     V(m.omega, decimals=2), t("rad/s")), label="omega_k", where=["ω_k", "n_\"к\""])
+    c.formula(c.calc("T = 60/(|n_\"к\"|)", "60/{0}", [V(abs(v.n_cam_rpm), exact=True)],
                      V(m.period_s, sig=4), t("s")), where=["T"])
 
 
@@ -110,9 +110,9 @@ def _motion(c: Ctx, r) -> None:
         c.formula(line.replace('"  for "', '"  ' + t("for") + ' "'),
                   where=["t", "f(t)"] if j == len(_LAW_F[v.law]) - 1 else ())
     if rocker:  # the rocker's angle, its angular velocity and acceleration (§1.2)
-        c.p(t("The rocker's angle on the rise is $γ = γ_max f(φ/φ_\"у\")$, on the return $γ = γ_max (1 - f((φ - φ_\"у\" - φ_\"дс\")/φ_\"в\"))$. The cam turns at a constant speed, so $ω = ω_k d γ/d φ$ and $ε = ω_k^2 d^2 γ/d φ^2$; the largest values on the rise are"))
+        c.p(t("The rocker's angle on the rise is $γ = γ_max f(φ/φ_\"у\")$, on the return $γ = γ_max (1 - f((φ - φ_\"у\" - φ_\"дс\")/φ_\"в\"))$. The cam turns at a constant speed, so $ω = ω_k (d γ)/(d φ)$ and $ε = ω_k^2 (d^2 γ)/(d φ^2)$; the largest values on the rise are"))
     else:
-        c.p(t("The follower's displacement on the rise is $s = S_max f(φ/φ_\"у\")$, on the return $s = S_max (1 - f((φ - φ_\"у\" - φ_\"дс\")/φ_\"в\"))$. The cam turns at a constant speed, so $V = ω_k d s/d φ$ and $a = ω_k^2 d^2 s/d φ^2$; the largest values on the rise are"))
+        c.p(t("The follower's displacement on the rise is $s = S_max f(φ/φ_\"у\")$, on the return $s = S_max (1 - f((φ - φ_\"у\" - φ_\"дс\")/φ_\"в\"))$. The cam turns at a constant speed, so $V = ω_k (d s)/(d φ)$ and $a = ω_k^2 (d^2 s)/(d φ^2)$; the largest values on the rise are"))
     f1, f2, _ = law_max(v.law)
     mx = m.maxima
     h_num = math.radians(v.stroke) if rocker else v.stroke
@@ -195,7 +195,7 @@ def _scales(c: Ctx, r) -> None:
     deg_mm = t("°/mm")
     c.formula(c.calc('k_φ = φ_"р"/b', "{0}/{1}", [V(v.phi_working_deg, exact=True), V(s.b_mm, exact=True)],
                      V(s.k_phi_deg_mm, sig=4), deg_mm), where=["k_φ", "b"])
-    c.formula(c.calc('k_t = φ_"р"/(6 |n_k| b)', "{0}/(6 dot {1} dot {2})",
+    c.formula(c.calc('k_t = φ_"р"/(6 |n_"к"| b)', "{0}/(6 dot {1} dot {2})",
                      [V(v.phi_working_deg, exact=True), V(abs(v.n_cam_rpm), exact=True), V(s.b_mm, exact=True)],
                      V(s.k_t_s_mm, sig=4), t("s/mm")), where=["k_t"])
     if rocker:

@@ -8,6 +8,8 @@ string (``"0,875"``), so that typst sets no space after the comma.
 
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass, field
 
 from ...i18n import ntr, tr, trc
@@ -84,6 +86,16 @@ class Ctx:
         if sign and x > 0 and text.strip("0,.") != "":
             text = "+" + text
         return text + NBSP + "%"
+
+    def pct_digits(self, x) -> str:
+        """A small difference in % to the digits it has: two significant digits (0,0042 %), not 0,00 %;
+        below 10⁻⁹ % (a computer's rounding) «less than 10⁻⁹ %»."""
+        a = abs(float(x))
+        if a >= 0.1:
+            return self.pct(x, decimals=2)
+        if a < 1e-9:
+            return self.t("less than {v}").format(v="$10^(-9)$" + NBSP + "%")
+        return self.pct(x, decimals=1 - math.floor(math.log10(a)))
 
     @staticmethod
     def u(unit: str) -> str:
@@ -170,7 +182,7 @@ class Ctx:
         return self.nt("{k} planet", "{k} planets", k).format(k=k)
 
 
-LINE_EM = 33.0  # the width of a display formula line (16,5 cm less the number) in :func:`width`'s em
+LINE_EM = 30.0  # the width of a display formula line in :func:`width`'s em: 16,5 cm (33 em) less the number «(NN)» and a gap, and the rough estimate's error
 
 
 def fit_lines(pieces: list[str], limit: float = LINE_EM) -> str:

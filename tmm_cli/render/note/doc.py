@@ -16,7 +16,8 @@ import re
 from dataclasses import dataclass, field
 
 from ...i18n import tr
-from .typst import escape, inline_math, string
+from .model import md_text, text_runs
+from .typst import escape, inline_math, literal_text, string
 
 _REF = re.compile(r"\{(fig|tab):([a-z0-9_]+)\}")
 # the escaping of the note's typst writer (one rule for every typst text tmm writes)
@@ -181,15 +182,19 @@ class Doc:
             if part.startswith("$") and part.endswith("$") and len(part) >= 2:
                 out.append(inline_slashes(part))
                 continue
-            first = not out
-            part = _NBSP.sub("\\1\u00a0", part)
-            pieces = _REF.split(part)
-            # split gives [text, kind, name, text, kind, name, ...]
-            for k in range(0, len(pieces), 3):
-                out.append(typst_escape(pieces[k], start=first and k == 0))
-                if k + 2 < len(pieces):
-                    kind, name = pieces[k + 1], pieces[k + 2]
-                    out.append(f"@{kind}-{name.replace('_', '-')}[]")
+            for given, run in text_runs(part):
+                first = not out
+                if given:  # a person's text: the characters given
+                    out.append(literal_text(run))
+                    continue
+                run = _NBSP.sub("\\1\u00a0", run)
+                pieces = _REF.split(run)
+                # split gives [text, kind, name, text, kind, name, ...]
+                for k in range(0, len(pieces), 3):
+                    out.append(typst_escape(pieces[k], start=first and k == 0))
+                    if k + 2 < len(pieces):
+                        kind, name = pieces[k + 1], pieces[k + 2]
+                        out.append(f"@{kind}-{name.replace('_', '-')}[]")
         return "".join(out)
 
     def _inline_md(self, text: str) -> str:
@@ -203,7 +208,8 @@ class Doc:
             if part.startswith("$") and part.endswith("$") and len(part) >= 2:
                 out.append(math_to_text(part[1:-1]))
             else:
-                out.append(re.sub(r"([*_`\\])", r"\\\1", part))
+                out += [md_text(run) if given else re.sub(r"([*_`\\])", r"\\\1", run)
+                        for given, run in text_runs(part)]
         return "".join(out)
 
     def to_typst(self, preamble: str) -> str:
@@ -278,7 +284,7 @@ class Doc:
                 n = self.numbers["tab:" + name]
                 word = tr(self.lang, "Table")
                 out += [f"*{word} {n} – {self._inline_md(caption)}*", ""]
-                cell = lambda c: self._inline_md(c).replace("|", "\\|").replace("\n", " ")  # noqa: E731
+                cell = lambda c: re.sub(r"(?<!\\)\|", r"\\|", self._inline_md(c)).replace("\n", " ")  # noqa: E731
                 out.append("| " + " | ".join(cell(h) for h in header) + " |")
                 out.append("|" + "|".join(["---"] * len(header)) + "|")
                 for row in rows:

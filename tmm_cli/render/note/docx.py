@@ -36,6 +36,7 @@ from .model import (
     TaskSheet,
     TitlePage,
     split_math,
+    text_runs,
 )
 from .omml import omath, omath_para
 
@@ -46,9 +47,10 @@ TEXT_CM = 16.5
 
 
 class DocxWriter:
-    def __init__(self, doc: Document, folder: Path, title):
+    def __init__(self, doc: Document, folder: Path, title, pages: dict | None = None):
         import docx
 
+        self.pages = pages or {}
         self.doc = doc
         self.folder = Path(folder)
         self.title = title
@@ -131,6 +133,10 @@ class DocxWriter:
         tab.paragraph_format.first_line_indent = Cm(0)
         tab.paragraph_format.line_spacing_rule = WD_LINE_SPACING.SINGLE
         tab.paragraph_format.alignment = WD_ALIGN_PARAGRAPH.LEFT
+        from docx.oxml.ns import qn
+
+        for fonts in list(self.d.styles.element.iter(qn("w:rFonts"))):  # every style, Times New Roman by name
+            self._east_asian(fonts.getparent(), FONT)
         core = self.d.core_properties
         core.title = self.title_text()
         core.author = getattr(self.title, "student", "") or ""
@@ -156,6 +162,7 @@ class DocxWriter:
         if lang is None:
             lang = etree.SubElement(rpr_el, qn("w:lang"))
         lang.set(qn("w:val"), "ru-RU" if self.ru else "en-GB")
+        self._east_asian(rpr_el, FONT)
         settings = self.d.settings.element
         # in the schema's order: autoHyphenation after defaultTabStop, updateFields before the notes and compat
         if settings.find(qn("w:autoHyphenation")) is None:
@@ -184,16 +191,22 @@ class DocxWriter:
 
     @staticmethod
     def _east_asian(style_el, font: str) -> None:
+        """The font named outright for every script: a theme font (python-docx's heading styles ask
+        for the theme's major font) goes before an explicit name in Word and LibreOffice, and showed
+        the headings in a sans-serif."""
         from docx.oxml.ns import qn
 
-        rpr = style_el.get_or_add_rPr()
+        rpr = style_el.get_or_add_rPr() if hasattr(style_el, "get_or_add_rPr") else style_el
         fonts = rpr.find(qn("w:rFonts"))
         if fonts is None:
             from lxml import etree
 
-            fonts = etree.SubElement(rpr, qn("w:rFonts"))
+            fonts = etree.Element(qn("w:rFonts"))
+            rpr.insert(0, fonts)
         for k in ("w:ascii", "w:hAnsi", "w:cs", "w:eastAsia"):
             fonts.set(qn(k), font)
+        for k in ("w:asciiTheme", "w:hAnsiTheme", "w:cstheme", "w:eastAsiaTheme"):
+            fonts.attrib.pop(qn(k), None)
 
     def _field(self, paragraph, code: str, cached: str = "") -> None:
         """A Word field (PAGE, NUMPAGES, SEQ, TOC) with its cached result."""
@@ -221,25 +234,37 @@ class DocxWriter:
         p.append(char("end"))
 
     # -- inline ------------------------------------------------------------------------------------
-    def inline(self, paragraph, text: str, bold: bool = False, size: float | None = None) -> None:
+    def inline(self, paragraph, text: str, bold: bool = False, size: float | None = None, in_table: bool = False) -> None:
         from docx.shared import Pt
 
         text = self.doc.resolve(text)
         for is_math, piece in split_math(text):
-            if is_math:
-                paragraph._p.append(omath(piece))
+            if is_math:  # in a table at the table's 12 pt, fractions on the line (no tall rows)
+                paragraph._p.append(omath(piece, size=12 if in_table else 14, linear=in_table))
             elif piece:
-                # a power of ten, "1,458·10⁻⁴", as a superscript run
-                parts = SCI_EXPONENT.split(piece)
-                for k, part in enumerate(parts):
-                    if not part:
-                        continue
-                    run = paragraph.add_run(part.translate(SUPER_DIGITS) if k % 2 else part)
-                    run.bold = bold or None
-                    if k % 2:
-                        run.font.superscript = True
-                    if size:
-                        run.font.size = Pt(size)
+                for given, run in text_runs(piece):
+                    if given:  # a person's text: one plain run, as given
+                        r = paragraph.add_run(run)
+                        r.bold = bold or None
+                        if size:
+                            r.font.size = Pt(size)
+                    else:
+                        self._runs(paragraph, run, bold, size)
+
+    def _runs(self, paragraph, piece: str, bold: bool, size: float | None) -> None:
+        """The program's text: a power of ten, "1,458·10⁻⁴", as a superscript run."""
+        from docx.shared import Pt
+
+        parts = SCI_EXPONENT.split(piece)
+        for k, part in enumerate(parts):
+            if not part:
+                continue
+            run = paragraph.add_run(part.translate(SUPER_DIGITS) if k % 2 else part)
+            run.bold = bold or None
+            if k % 2:
+                run.font.superscript = True
+            if size:
+                run.font.size = Pt(size)
 
     STYLE_IDS = {"Structural": "Structural", "Structural Plain": "StructuralPlain", "Caption": "Caption",
                  "Table Text": "TableText", "Heading 1": "Heading1", "Heading 2": "Heading2"}
@@ -307,39 +332,47 @@ class DocxWriter:
             raise TypeError(b)
 
     def title_page(self, f: dict) -> None:
+        """The title page on one page in every word processor: no empty paragraphs (five of them
+        pushed the year onto page 2 in LibreOffice), the gaps as spacing, single-spaced lines, and the
+        city with the year in the title page's own footer, at the bottom of page 1 wherever the
+        lines above end."""
         from docx.enum.text import WD_ALIGN_PARAGRAPH as A
-        from docx.shared import Pt
+        from docx.enum.text import WD_LINE_SPACING
+        from docx.shared import Cm, Pt
 
-        def line(text, bold=False, align=A.CENTER, space=0):
+        def line(text, bold=False, align=A.CENTER, space=0, before=0.0):
             p = self.para("", indent=False, align=align)
-            p.paragraph_format.space_after = Pt(space)
+            pf = p.paragraph_format
+            pf.space_after = Pt(space)
+            pf.space_before = Cm(before)
+            pf.line_spacing_rule = WD_LINE_SPACING.SINGLE
             run = p.add_run(text)
             run.bold = bold or None
             return p
 
         if f.get("ministry"):
-            line(f["ministry"])
+            line(f["ministry"], space=6)
         for ln in f["org-lines"] or ["_" * 50, "_" * 50]:
-            line(ln)
-        for _ in range(6):
-            line("")
-        line(f["doc-kind"].upper(), bold=True)
-        line(f["discipline"])
-        line(f["topic"], bold=True)
-        line(f["variant-line"])
+            line(ln, space=6)
+        line(f["doc-kind"].upper(), bold=True, before=5.0, space=6)
+        line(f["discipline"], space=6)
+        line(f["topic"], bold=True, space=6)
+        line(f["variant-line"], space=6)
         line(f["designation"], space=12)
-        for _ in range(5):
-            line("")
         date = ("«___» __________ 20__ " + f["date-label"]).strip()
+        first = True
         for label, name, extra in ((f["teacher-label"], f["teacher"], date),
                                    (f["student-label"] + (", " + f["group-label"] + " " + f["group"] if f["group"] else ""),
                                     f["student"], date)):
-            line(f"{label}  ____________  {name or '____________'}", align=A.RIGHT)
-            line(extra, align=A.RIGHT, space=8)
+            line(f"{label}  ____________  {name or '____________'}", align=A.RIGHT, before=3.5 if first else 0.0,
+                 space=6)
+            line(extra, align=A.RIGHT, space=12)
+            first = False
         line(f"{f['grade-label']} ____________", align=A.RIGHT)
-        for _ in range(5):
-            line("")
-        line(((f["city"] + " ") if f["city"] else "") + f["year"])
+        foot = self.d.sections[0].first_page_footer.paragraphs[0]
+        foot.alignment = A.CENTER
+        foot.paragraph_format.first_line_indent = Cm(0)
+        foot.add_run(((f["city"] + " ") if f["city"] else "") + f["year"])
 
     def abstract(self, b: Abstract) -> None:
         c = self.doc.counts()
@@ -348,7 +381,7 @@ class DocxWriter:
         p = self.para("")
         head, _, tail = tr(lang, ABSTRACT_COUNTS).partition("{pages}")  # the page count is Word's field
         p.add_run(head)
-        self._field(p, "NUMPAGES", "")
+        self._field(p, "NUMPAGES", str(self.pages.get("total") or ""))
         tail = tail.format(figures=c["figures"], tables=c["tables"], sources=c["sources"])
         if c["appendices"]:
             tail += tr(lang, APPENDIX_COUNT).format(appendices=c["appendices"])
@@ -357,10 +390,76 @@ class DocxWriter:
         for text in b.text:
             self.para(text)
 
+    def toc_entries(self) -> list[tuple[int, str]]:
+        """The contents' entries (level, text) as the headings of levels 1–2 will read in Word."""
+        out = []
+        for b in self.doc.blocks:
+            if not isinstance(b, Heading):
+                continue
+            if b.kind == "structural":
+                if b.outlined:
+                    out.append((1, b.text.upper()))
+            elif b.kind == "appendix":
+                word = tr(self.doc.lang, "Appendix").upper()
+                out.append((1, word + " " + b.number))
+            elif b.level <= 2:
+                out.append((b.level, f"{b.number} {b.text}"))
+        return out
+
     def contents(self) -> None:
-        p = self.para("", indent=False)
-        self._field(p, 'TOC \\o "1-2" \\h \\z \\u',
-                    tr(self.doc.lang, "Update the field (F9) to build the contents."))
+        """A TOC field with its result written: the entries, each with its page as typst laid the
+        note out (when the PDF was made in the same run), a dotted leader to the number. LibreOffice
+        shows the result as it is (it ignores updateFields); Word offers to update it on opening;
+        either rebuilds it after editing (F9 / Tools ▸ Update)."""
+        from docx.enum.text import WD_ALIGN_PARAGRAPH, WD_TAB_ALIGNMENT, WD_TAB_LEADER
+        from docx.oxml import OxmlElement
+        from docx.oxml.ns import qn
+        from docx.shared import Cm
+
+        entries = self.toc_entries()
+        pages = self.pages.get("pages") or []
+        if len(pages) != len(entries):
+            pages = [""] * len(entries)
+        if not entries:
+            p = self.para("", indent=False)
+            self._field(p, 'TOC \\o "1-2" \\h \\z \\u', tr(self.doc.lang, "Update the field (F9) to build the contents."))
+            return
+        paras = []
+        for k, ((level, text), page) in enumerate(zip(entries, pages)):
+            p = self.para("", indent=False)
+            pf = p.paragraph_format
+            pf.left_indent = Cm(0.5 * (level - 1))
+            pf.first_line_indent = Cm(0)
+            pf.alignment = WD_ALIGN_PARAGRAPH.LEFT
+            pf.tab_stops.add_tab_stop(Cm(TEXT_CM), WD_TAB_ALIGNMENT.RIGHT, WD_TAB_LEADER.DOTS)
+            if k == 0:
+                self._field_start(p, 'TOC \\o "1-2" \\h \\z \\u')
+            self.inline(p, text)
+            p.add_run("\t" + str(page))
+            paras.append(p)
+        r = OxmlElement("w:r")
+        fc = OxmlElement("w:fldChar")
+        fc.set(qn("w:fldCharType"), "end")
+        r.append(fc)
+        paras[-1]._p.append(r)
+
+    def _field_start(self, paragraph, code: str) -> None:
+        """A field's begin, code and separator: its result follows (over several paragraphs)."""
+        from docx.oxml import OxmlElement
+        from docx.oxml.ns import qn
+
+        for kind, text in (("begin", None), (None, code), ("separate", None)):
+            r = OxmlElement("w:r")
+            if kind:
+                fc = OxmlElement("w:fldChar")
+                fc.set(qn("w:fldCharType"), kind)
+                r.append(fc)
+            else:
+                it = OxmlElement("w:instrText")
+                it.set(qn("xml:space"), "preserve")
+                it.text = f" {text} "
+                r.append(it)
+            paragraph._p.append(r)
 
     def heading(self, b: Heading) -> None:
         from docx.enum.text import WD_ALIGN_PARAGRAPH
@@ -389,10 +488,7 @@ class DocxWriter:
         if b.numbered:
             t = self.d.add_table(rows=1, cols=3)
             t.alignment = WD_TABLE_ALIGNMENT.CENTER
-            t.autofit = False
-            widths = (Cm(1.5), Cm(TEXT_CM - 3.0), Cm(1.5))
-            for cell, w in zip(t.rows[0].cells, widths):
-                cell.width = w
+            self._grid(t, (1.5, TEXT_CM - 3.0, 1.5))
             mid = t.rows[0].cells[1].paragraphs[0]
             mid.paragraph_format.first_line_indent = Cm(0)
             mid.alignment = WD_ALIGN_PARAGRAPH.CENTER
@@ -417,6 +513,29 @@ class DocxWriter:
             p.paragraph_format.keep_with_next = i < len(b.where) - 1
             self.inline(p, f"{word}${w.symbol}$ – {w.meaning}" + (";" if i < len(b.where) - 1 else ""))
 
+    @staticmethod
+    def _grid(t, widths_cm) -> None:
+        """A table of fixed column widths: the grid (w:gridCol, which LibreOffice lays the columns
+        out by — python-docx leaves it at equal thirds of the page, so a formula's middle cell was
+        5,5 cm wide and cut the formula), each cell's width and a fixed layout (Word)."""
+        from docx.oxml import OxmlElement
+        from docx.oxml.ns import qn
+        from docx.shared import Cm
+
+        t.autofit = False
+        for col, w in zip(t._tbl.tblGrid.findall(qn("w:gridCol")), widths_cm):
+            col.set(qn("w:w"), str(int(Cm(w).twips)))
+        for row in t.rows:
+            for cell, w in zip(row.cells, widths_cm):
+                cell.width = Cm(w)
+        pr = t._tbl.tblPr
+        tw = pr.find(qn("w:tblW"))
+        if tw is None:
+            tw = OxmlElement("w:tblW")
+            pr.append(tw)
+        tw.set(qn("w:type"), "dxa")
+        tw.set(qn("w:w"), str(int(Cm(sum(widths_cm)).twips)))
+
     def _no_split(self, row) -> None:
         from docx.oxml import OxmlElement
 
@@ -439,24 +558,20 @@ class DocxWriter:
         t = self.d.add_table(rows=1 + len(b.rows), cols=n)
         t._tbl.tblPr.get_or_add_tblStyle().val = "TableGrid"
         t.alignment = WD_TABLE_ALIGNMENT.CENTER
-        if b.widths:
-            total = sum(b.widths)
-            for j, w in enumerate(b.widths):
-                for row in t.rows:
-                    row.cells[j].width = Cm(TEXT_CM * w / total)
+        self._grid(t, column_widths([b.header, *b.rows], self.doc, b.widths))
         aligns = b.align or ["left"] + ["center"] * (n - 1)
         amap = {"left": WD_ALIGN_PARAGRAPH.LEFT, "center": WD_ALIGN_PARAGRAPH.CENTER, "right": WD_ALIGN_PARAGRAPH.RIGHT}
         for j, h in enumerate(b.header):
             p = self._styled(t.rows[0].cells[j].paragraphs[0], "Table Text")
             p.alignment = WD_ALIGN_PARAGRAPH.CENTER
-            self.inline(p, h)
+            self.inline(p, h, in_table=True)
         hdr = t.rows[0]._tr.get_or_add_trPr()
         hdr.append(OxmlElement("w:tblHeader"))  # repeated on every page the table runs over
         for i, row in enumerate(b.rows, 1):
             for j, cell in enumerate(row):
                 p = self._styled(t.rows[i].cells[j].paragraphs[0], "Table Text")
                 p.alignment = amap.get(aligns[j] if j < len(aligns) else "left")
-                self.inline(p, cell)
+                self.inline(p, cell, in_table=True)
             self._no_split(t.rows[i])
         self.para("", indent=False)
 
@@ -509,8 +624,9 @@ class DocxWriter:
         sb.set(qn("r:embed"), rid)
 
 
-def write_docx(doc: Document, path: Path, folder: Path, title) -> Path:
-    """note.docx from the document; TmmError if it cannot be written."""
+def write_docx(doc: Document, path: Path, folder: Path, title, pages: dict | None = None) -> Path:
+    """note.docx from the document; TmmError if it cannot be written. `pages`: typst's page of each
+    heading of the contents and the page count (:func:`.typeset.page_numbers`), the fields' results."""
     from ...errors import TmmError
 
     try:
@@ -518,7 +634,7 @@ def write_docx(doc: Document, path: Path, folder: Path, title) -> Path:
     except ImportError:  # pragma: no cover - a dependency
         raise TmmError("cannot write the note for Word (python-docx is missing; reinstall tmm)") from None
     try:
-        DocxWriter(doc, folder, title).write(Path(path))
+        DocxWriter(doc, folder, title, pages).write(Path(path))
     except OSError as exc:
         raise TmmError(f"cannot write the note for Word ({exc.strerror})") from None
     return Path(path)
@@ -538,3 +654,62 @@ def docx_text(path: Path) -> str:
             out.append(text)
     return "\n".join(out)
 
+
+
+def _plain(text: str) -> str:
+    """A cell's text as it reads (its math as text), for measuring."""
+    from .mathsyntax import parse, to_text
+
+    out = []
+    for is_math, piece in split_math(text):
+        if is_math:
+            try:
+                piece = to_text(parse(piece), html=False).replace("_", "").replace("(", "").replace(")", "")
+            except ValueError:
+                pass
+        out.append(piece)
+    return "".join(out)
+
+
+def column_widths(rows: list[list[str]], doc=None, given=None) -> list[float]:
+    """Column widths [cm] of a table from its text at 12 pt: every column at least as wide as its
+    longest word or number (a number never breaks: «51 312,|7» and «Отклоне|ние» were LibreOffice
+    breaking columns of equal width), the rest of the 16,5 cm shared by what the columns' whole
+    texts would need beyond that.
+
+    >>> w = column_widths([["№", "Отклонение, %", "Значение"], ["1", "−51 312,7", "3"]])
+    >>> round(sum(w), 1), w[0] < w[1]
+    (16.5, True)
+    """
+    char = 0.23  # cm: the mean width of a character of Times New Roman at 12 pt, with room
+    pad = 0.4  # the cell's margins
+    n = max(len(r) for r in rows)
+    lo, hi = [0.6] * n, [0.6] * n
+    for r in rows:
+        for j, cell in enumerate(r):
+            text = _plain(doc.resolve(cell) if doc is not None else cell)
+            # a number with its thousands' narrow spaces is one word
+            longest = max((len(w) for w in text.replace("\u202f", "0").replace("\u00a0", "0").split()), default=0)
+            lo[j] = max(lo[j], longest * char + pad)
+            hi[j] = max(hi[j], len(text) * char + pad)
+    if sum(lo) >= TEXT_CM:
+        return [w * TEXT_CM / sum(lo) for w in lo]
+    if given:  # the chapter's proportions, each column widened to its longest word
+        want = [TEXT_CM * g / sum(given) for g in given]
+        for _ in range(n):
+            short = [j for j in range(n) if want[j] < lo[j] - 1e-9]
+            if not short:
+                break
+            need = sum(lo[j] - want[j] for j in short)
+            for j in short:
+                want[j] = lo[j]
+            rest = [j for j in range(n) if j not in short and want[j] > lo[j]]
+            room = sum(want[j] - lo[j] for j in rest)
+            for j in rest:
+                want[j] -= need * (want[j] - lo[j]) / room if room > 0 else 0
+        return want
+    extra = [h - w for h, w in zip(hi, lo)]
+    spare = TEXT_CM - sum(lo)
+    if sum(extra) <= spare:  # every text on one line: the rest in proportion to the texts
+        return [h + (TEXT_CM - sum(hi)) * h / sum(hi) for h in hi]
+    return [w + spare * e / sum(extra) for w, e in zip(lo, extra)]

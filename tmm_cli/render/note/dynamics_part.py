@@ -66,6 +66,14 @@ def fsym(c: Ctx, sym: str) -> str:
     return f"{letters}_{number}" + tick if number else letters + tick
 
 
+def vsym(c: Ctx, sym: str) -> str:
+    """A force as a vector in typst math: 'Rτ12' → arrow(R)_(12)^τ (the letter under the arrow, as the
+    book writes a vector equation)."""
+    text = fsym(c, sym)
+    base, sep, rest = text.partition("_")
+    return f"arrow({base})" + (sep + rest if sep else "")
+
+
 def pt(name: str) -> str:
     """A point's name as typst math: 'A' → A, 'O2' → O_2, 'S3' → S_3."""
     letters, number = _split(name)
@@ -180,10 +188,12 @@ def _kind(c: Ctx, kind: str) -> str:
 
 
 def _link_name(c: Ctx, ln) -> str:
-    words = {"crank": c.t("crank"), "bar": c.t("bar"), "slider": c.t("slider"), "block": c.t("block"),
-             "slotted": c.t("slotted link")}
+    from ...linkage.roles import link_roles
+    from ..terminal.mechanism import ROLE_WORDS
+
+    role = link_roles(c.r.linkage.sheet1)[ln.name]
     ends = ln.axis if ln.axis is not None and ln.kind not in ("slider", "block") else (ln.name,)
-    return words[ln.kind] + " " + "".join(ends)
+    return c.t(ROLE_WORDS[role]) + " " + "".join(ends)
 
 
 def _load(c: Ctx, s) -> None:
@@ -343,18 +353,18 @@ def _groups(c: Ctx, s) -> None:
                                     V(abs(complex(rc.tangential[i])), sig=4), N))
             c.formula(*lines, where=[_sum_where(c, jb)])
             if g.kind == "RRR":
-                poly = (f"{fsym(c, 'Rτ' + ra.label[1:])} + Σ F^(({n2})) + Σ F^(({n3})) + "
-                        f"{fsym(c, 'Rτ' + rc.label[1:])} + {fsym(c, 'Rn' + rc.label[1:])} + "
-                        f"{fsym(c, 'Rn' + ra.label[1:])} = 0")
+                poly = (f"{vsym(c, 'Rτ' + ra.label[1:])} + Σ arrow(F)^(({n2})) + Σ arrow(F)^(({n3})) + "
+                        f"{vsym(c, 'Rτ' + rc.label[1:])} + {vsym(c, 'Rn' + rc.label[1:])} + "
+                        f"{vsym(c, 'Rn' + ra.label[1:])} = 0")
                 c.p(t("The normal components close the force polygon of the group; the inner reaction follows from "
-                      "the polygon of link {n3}, ${b} = -({c} + Σ F^(({n3})))$:").format(
-                    n3=n3, b=fsym(c, rb.label), c=fsym(c, rc.label)))
+                      "the polygon of link {n3}, ${b} = -({c} + Σ arrow(F)^(({n3})))$:").format(
+                    n3=n3, b=vsym(c, rb.label), c=vsym(c, rc.label)))
             else:
-                poly = (f"{fsym(c, 'Rτ' + ra.label[1:])} + Σ F^(({n2})) + Σ F^(({n3})) + {fsym(c, rc.label)} + "
-                        f"{fsym(c, 'Rn' + ra.label[1:])} = 0")
+                poly = (f"{vsym(c, 'Rτ' + ra.label[1:])} + Σ arrow(F)^(({n2})) + Σ arrow(F)^(({n3})) + "
+                        f"{vsym(c, rc.label)} + {vsym(c, 'Rn' + ra.label[1:])} = 0")
                 c.p(t("The normal component and the guide's reaction close the force polygon of the group; the inner "
-                      "reaction follows from the polygon of the slider, ${b} = -({c} + Σ F^(({n3})))$:").format(
-                    b=fsym(c, rb.label), c=fsym(c, rc.label), n3=n3))
+                      "reaction follows from the polygon of the slider, ${b} = -({c} + Σ arrow(F)^(({n3})))$:").format(
+                    b=vsym(c, rb.label), c=vsym(c, rc.label), n3=n3))
             c.formula(poly, numbered=False)
         else:
             ja, jc = g.joints
@@ -385,8 +395,8 @@ def _groups(c: Ctx, s) -> None:
                               [V(abs(m3), sig=5), V(rho, sig=4)], V(abs(complex(rb.force[i])), sig=4), N)
             c.formula(line, where=[_sum_where(c, jc)])
             c.p(t("The polygons of the block and of the slotted link give the other two:"))
-            c.formula(f"{fsym(c, ra.label)} = {fsym(c, rb.label)} - Σ F^(({n2})); quad "
-                      f"{fsym(c, rc.label)} = -({fsym(c, rb.label)} + Σ F^(({n3})))", numbered=False)
+            c.formula(f"{vsym(c, ra.label)} = {vsym(c, rb.label)} - Σ arrow(F)^(({n2})); quad "
+                      f"{vsym(c, rc.label)} = -({vsym(c, rb.label)} + Σ arrow(F)^(({n3})))", numbered=False)
         _group_table(c, s, g)
     _crank(c, s)
     _reactions_table(c, s)
@@ -435,7 +445,7 @@ def _crank(c: Ctx, s) -> None:
     r21 = "R_21"
     c.p(t("The crank comes last. On it act the reaction ${r21} = -{r12}$ of link 2, its own loads and the balancing "
           "moment $M_\"ур\"$ of the motor; the frame's reaction ${r01}$ closes its polygon. The moments about "
-          "${O}$:").format(r21=r21, r12=fsym(c, r12.label), r01=fsym(c, r01.label), O=pt(mech.crank.pivot)))
+          "${O}$:").format(r21="arrow(R)_21", r12=vsym(c, r12.label), r01=vsym(c, r01.label), O=pt(mech.crank.pivot)))
     if abs(others) <= 1e-9 * max(1.0, abs(moment_r)):
         c.formula(c.calc(f'abs(M_"ур") = {r21} h_21', "{0} dot {1}", [V(size, sig=5), V(h, sig=4)], V(abs(mb), sig=4),
                          t("N·m")),
@@ -490,8 +500,8 @@ def _lever(c: Ctx, s) -> None:
           "position {label} ($μ_v = {mu}$ m/(s·mm)) is turned through 90°, every force is applied at the image of "
           "its point, parallel to itself (an inertia moment as two forces $M_Φ/l$ across its link at the link's "
           "ends), and the plan, a rigid lever pivoted at the pole $p$, is in equilibrium with the balancing force "
-          "$F_\"ур\"$ at the image $a$ of the crank pin, across the crank. The arms $h$ are measured on the turned "
-          "plan (Table {{tab:dyn_lever}}).").format(label=plan.position.label, mu=c.q(mu, sig=3)))
+          "$F_\"ур\"$ at the image $a$ of the crank pin, across the crank. The arms $h$ on the turned plan are found "
+          "from the plan's coordinates (Table {{tab:dyn_lever}}).").format(label=plan.position.label, mu=c.q(mu, sig=3)))
     rows = []
     total = 0.0
     for f in s.lever.forces:
@@ -524,13 +534,14 @@ def _lever(c: Ctx, s) -> None:
     mb = float(s.balancing[i])
     diff = float(s.difference_pct()[i])
     c.p(t("Its difference from the moment of the force analysis:"))
+    same = c.n(abs(mb), sig=6) == c.n(abs(mz), sig=6)  # equal to the printed digits: Δ is 0 there
     c.formula(c.calc('Δ = (abs(M_"ур") - abs(M_"ур"^"Ж"))/abs(M_"ур") dot 100', "({0} - {1})/{0} dot 100",
-                     [V(abs(mb), sig=6), V(abs(mz), sig=6)], V(abs(diff) if abs(diff) < 5e-3 else diff, decimals=2),
-                     "%"))
+                     [V(abs(mb), sig=6), V(abs(mz), sig=6)],
+                     V(0.0, decimals=0) if same else V(abs(diff) if abs(diff) < 5e-3 else diff, decimals=2), "%"))
     ok = abs(diff) < 1.0
-    c.p((t("The two agree within 1 %, as required: both rest on the same exact velocity and acceleration plans, so "
-           "they differ by rounding only.") if ok else
-         t("The two differ by more than 1 %.")))
+    c.p((t("The two agree within 1 %, as required (unrounded, the difference is {diff}): both rest on the same exact "
+           "velocity and acceleration plans, so they differ by rounding only.") if ok else
+         t("The two differ by more than 1 % ({diff}).")).format(diff=c.pct_digits(abs(diff))))
     c.doc.claim(kind="linkage_zhukovsky", kinetostatic=mb, lever=mz, diff_pct=diff, ok=ok)
 
 

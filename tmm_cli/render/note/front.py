@@ -7,7 +7,7 @@ import math
 
 from ..terminal.variants import law_words
 from .ctx import Ctx, sheet1_of
-from .model import Abstract, Contents, Heading, ListBlock, ReferenceList, TaskSheet, TitlePage
+from .model import Abstract, Contents, Heading, ListBlock, ReferenceList, TaskSheet, TitlePage, literal
 
 from .sources import source_text
 
@@ -40,6 +40,10 @@ def title_meta(c: Ctx, title) -> dict:
         "date-label": "г." if c.lang == "ru" else "",  # the Russian date's «  » ______ 20__ г.; none in English
         "grade-label": t("Defended with the mark"),
         "city": getattr(title, "city", "") or "",
+        # ГОСТ 7.32's labels under the lines left blank (no --org, no --city)
+        "org-label": t("name of the organisation"),
+        "dept-label": t("name of the department"),
+        "city-label": t("city"),
         "year": str(title.the_year),
         "figure-word": t("Figure"),
         "table-word": t("Table"),
@@ -72,8 +76,8 @@ def _task(c: Ctx, title) -> None:
     s1 = _sheet1(c)
     torque = ("; " + t("mean reduced moment M = {torque}").format(torque=c.qty(g.torque_nm, t("N·m")))
               if g.torque_nm is not None and s1 is None else "")  # with a mechanism, M is a result of sheet 2
-    who = title.student or "_" * 24
-    group = title.group or "_" * 10
+    who = literal(title.student) if title.student else "_" * 24  # a person's text: set as typed
+    group = literal(title.group) if title.group else "_" * 10
     lines = [
         t("Student: {who}, group {group}.").format(who=who, group=group),
         (t("Topic: analysis of the lever mechanism, synthesis of the cam mechanism and of the gear drive, variant "
@@ -81,7 +85,7 @@ def _task(c: Ctx, title) -> None:
          t("Topic: synthesis of the cam mechanism and of the gear drive, variant {number}.")).format(number=v.number),
         *([_mechanism_line(c, s1)] if s1 is not None else []),
         t("Input data (Table 1.2 {{cite:book}}, variant {number}): scheme of the cam mechanism {scheme}; acceleration "
-          "law {law} ({law_words}); {stroke}; allowed pressure angle $ν_max$ = {nu_max}°; cam speed $n_k$ = {n_cam}; "
+          "law {law} ({law_words}); {stroke}; allowed pressure angle $ν_max$ = {nu_max}°; cam speed $n_\"к\"$ = {n_cam}; "
           "phase angles $φ_\"у\"$ = {phi_rise}°, $φ_\"дс\"$ = {phi_far}°, $φ_\"в\"$ = {phi_return}°; "
           "{crank}{torque}.").format(
             number=v.number, scheme=v.scheme, law=v.law, law_words=law_words(v.law, c.lang), stroke=stroke,
@@ -119,20 +123,98 @@ def _abstract(c: Ctx) -> None:
           t("tooth numbers"), t("assembly condition"),
           t("neighbouring condition"), t("involute mesh"),
           t("contact ratio")]
-    if _sheet1(c) is not None:
+    s1, s2 = _sheet1(c), _sheet2(c)
+    if s1 is not None:
         kw = [t("lever mechanism"), t("Assur group"), t("velocity plan"), t("acceleration plan")] + kw
+    if s2 is not None:  # sheet 2's words; ГОСТ 7.32 allows 5…15 key words: the reducer's conditions give way
+        kw = kw[:4] + [t("kinetostatics"), t("Zhukovsky's lever")] + (
+            [t("flywheel")] if s2.flywheel is not None else []) + [w for w in kw[4:] if w not in (
+                t("assembly condition"), t("neighbouring condition"))]
     mm = t("mm")
     geo = (f"$l_(O C)$ = {c.qty(z.l_oc_m * 1000, mm, decimals=2)}" if r.variant.is_rocker
            else f"$e$ = {c.qty(z.e_m * 1000, mm, decimals=2)}")
-    text = [
-        t("The object of the project is the drive of a machine: the cam mechanism of variant {number} and the gear mechanisms between the motor, the cam and the crank of the linkage.").format(number=r.variant.number),
-        t("The aim is to find the main dimensions and the profile of the cam and the tooth numbers of the planetary reducer and of the spur pair that satisfy the conditions of the textbook."),
-        t("Results: the cam with the base radius $r_0$ = {r0}, {geo}; the planetary reducer {teeth} with {planets}; "
-          "the spur pair $z_1$ = {z1}, $z_2$ = {z2}, $m$ = {m}.").format(
-            r0=c.qty(z.r0_m * 1000, mm, decimals=2), geo=geo, teeth=_teeth_text(g), planets=c.planets(g.planetary.planets),
-            z1=g.spur.z1, z2=g.spur.z2, m=c.qty(g.spur.m_mm, mm)),
-    ]
+    if s1 is None:
+        obj = t("The object of the project is the drive of a machine: the cam mechanism of variant {number} and the gear mechanisms between the motor, the cam and the crank of the linkage.").format(number=r.variant.number)
+        aim = t("The aim is to find the main dimensions and the profile of the cam and the tooth numbers of the planetary reducer and of the spur pair that satisfy the conditions of the textbook.")
+    else:
+        obj = t("The object of the project is a machine: the lever mechanism «{name}», the cam mechanism of variant "
+                "{number} and the gear mechanisms between the motor, the cam and the crank of the lever "
+                "mechanism.").format(name=literal(s1.mechanism.name) if s1.mechanism.name else t("Mechanism"), number=r.variant.number)
+        aim = (t("The aim is to analyse the structure, the motion and the forces of the lever mechanism, to find the "
+                 "balancing moment, the driving moment and the flywheel that keeps the crank's speed within the "
+                 "allowed fluctuation, and to find the main dimensions and the profile of the cam and the tooth "
+                 "numbers of the planetary reducer and of the spur pair that satisfy the conditions of the textbook.")
+               if s2 is not None else
+               t("The aim is to analyse the structure and the motion of the lever mechanism and to find the main "
+                 "dimensions and the profile of the cam and the tooth numbers of the planetary reducer and of the "
+                 "spur pair that satisfy the conditions of the textbook."))
+    results = t("Results: the cam with the base radius $r_0$ = {r0}, {geo}; the planetary reducer {teeth} with {planets}; "
+                "the spur pair $z_1$ = {z1}, $z_2$ = {z2} (its mesh drawn at the course's module $m$ = {m}).").format(
+        r0=c.qty(z.r0_m * 1000, mm, decimals=2), geo=geo, teeth=_teeth_text(g), planets=c.planets(g.planetary.planets),
+        z1=g.spur.z1, z2=g.spur.z2, m=c.qty(g.spur.m_mm, mm))
+    text = [obj, aim]
+    if s1 is not None:
+        text.append(t("Results of the lever mechanism: {items}.").format(items="; ".join(linkage_results(c))))
+    text.append(results)
     c.doc.add(Abstract(kw, text))
+
+
+def linkage_results(c: Ctx) -> list[str]:
+    """What sheets 1 and 2 found, each a phrase read from the result objects (the abstract and the
+    conclusion say the same): the stroke or swing and K; the balancing moment of the position of the
+    force analysis by both methods; the driving moment; the flywheel and its size."""
+    t, n = c.t, c.n
+    s1, s2 = _sheet1(c), _sheet2(c)
+    out = []
+    if s1 is None:
+        return out
+    cy = s1.cycle
+    if cy.stroke is not None:
+        move = (t("the stroke of the slider $H$ = {h}").format(h=c.qty(cy.stroke * 1000, t("mm"), decimals=2))
+                if s1.mechanism.output.kind == "slider" else
+                t("the swing of the rocker $ψ$ = {psi}°").format(psi=n(math.degrees(cy.stroke), decimals=2)))
+        if cy.working is not None:
+            move += t(", the time ratio $K$ = {k}").format(k=n(cy.time_ratio, decimals=3))
+        out.append(move)
+    if s2 is None:
+        return out
+    i = s2.force_position
+    mb, diff = float(s2.balancing[i]), float(s2.difference_pct()[i])
+    out.append(t("the balancing moment in position {label} $M_\"ур\"$ = {mb} (by Zhukovsky's lever, a difference of "
+                 "{diff})").format(label=s2.sheet1.cycle.positions[i].label, mb=c.qty(mb, t("N·m"), decimals=2),
+                                   diff=c.pct_digits(abs(diff))))
+    out.append(t("the driving moment $M_\"д\"$ = {md}").format(md=c.qty(abs(s2.dynamics.M_d), t("N·m"), sig=4)))
+    fw = s2.flywheel
+    if fw is not None:
+        if fw.size is not None:
+            size = fw.size
+            dims = t("$D$ = {d}").format(d=c.qty(size.D * 1000, t("mm"), decimals=0))
+            out.append(t("the flywheel $J_\"м\"$ = {j} ({dims}, mass {m})").format(
+                j=c.qty(fw.mertsalov.J_fl, t("kg·m²"), sig=5), dims=dims, m=c.qty(size.m, t("kg"), decimals=1)))
+        else:
+            out.append(t("no flywheel is needed"))
+    return out
+
+
+def linkage_requirements(c: Ctx) -> list[tuple[str, bool]]:
+    """Sheet 2's checks, each (text, met): the balancing moment by the two methods within 1 %; the
+    speed with the flywheel within the allowed δ."""
+    t = c.t
+    s2 = _sheet2(c)
+    if s2 is None:
+        return []
+    i = s2.force_position
+    diff = float(s2.difference_pct()[i])
+    out = [(t("the balancing moments by the force analysis and by Zhukovsky's lever agree within 1 % ({diff})").format(
+        diff=c.pct_digits(abs(diff))), abs(diff) < 1.0)]
+    fw = s2.flywheel
+    if fw is not None:
+        ok = fw.delta_actual <= fw.delta * (1 + 1e-6)
+        out.append(((t("with the flywheel the coefficient of speed fluctuation $δ$ = {actual} does not exceed the "
+                       "allowed {delta}") if ok else
+                     t("with the flywheel the coefficient of speed fluctuation $δ$ = {actual} exceeds the allowed "
+                       "{delta}")).format(actual=c.n(fw.delta_actual, sig=3), delta=c.n(fw.delta, sig=4)), ok))
+    return out
 
 
 def _teeth_text(g) -> str:
@@ -154,10 +236,18 @@ def _introduction(c: Ctx) -> None:
               "(sheet 2); the synthesis of the cam mechanism (sheet 3) and the synthesis of the gear mechanisms of the "
               "drive (sheet 4) by the textbook {cite:book}."))
     c.p(t("The computations were made with the program tmm, which follows the procedures of the textbook and prints every substitution, so that each number of the note can be checked by hand."))
+    c.p(t("The drawing sheets follow the unified system for design documentation: the title block by GOST 2.104 "
+          "{cite:gost2104}, the scales by GOST 2.302 {cite:gost2302}; the note is set out by GOST 7.32 {cite:gost732}."))
 
 
 def _sheet1(c: Ctx):
     return sheet1_of(c.r)
+
+
+def _sheet2(c: Ctx):
+    """Sheet 2 (forces and the flywheel) of the project, or None."""
+    s = getattr(c.r, "linkage", None)
+    return s if s is not None and hasattr(s, "flywheel") else None
 
 
 def _mechanism_line(c: Ctx, s1) -> str:
@@ -170,7 +260,7 @@ def _mechanism_line(c: Ctx, s1) -> str:
     groups = ", ".join(f"{pattern(g.kind, c.lang)} ({'–'.join(g.joints)})" for g in m.groups)
     return c.t("Lever mechanism: «{name}»; the crank {crank} of length {length} turns {sense} at {rpm}; the groups "
                "{groups}; {count} positions per turn.").format(
-        name=m.name or c.t("Mechanism"), crank=m.links[0].name, length=c.qty(cr.length * 1000, c.t("mm")),
+        name=literal(m.name) if m.name else c.t("Mechanism"), crank=m.links[0].name, length=c.qty(cr.length * 1000, c.t("mm")),
         sense=sense, rpm=c.qty(cr.rpm, c.t("rpm"), sig=6), groups=groups, count=m.positions)
 
 
@@ -218,6 +308,18 @@ def conclusion(c: Ctx) -> None:
     def verdict(ok: bool) -> str:
         return met if ok else unmet
 
+    lk = linkage_results(c)
+    if lk:
+        s1 = _sheet1(c)
+        c.p(t("The lever mechanism «{name}» is analysed (sheets 1 and 2): {items}.").format(
+            name=literal(s1.mechanism.name) if s1.mechanism.name else t("Mechanism"), items="; ".join(lk)))
+        lreqs = linkage_requirements(c)
+        if lreqs:
+            c.doc.add(ListBlock([f"{txt} — {verdict(ok)};" for txt, ok in lreqs[:-1]] +
+                                [f"{lreqs[-1][0]} — {verdict(lreqs[-1][1])}."]))
+        c.doc.claim(kind="conclusion_linkage", items=tuple(lk), met=tuple(ok for _, ok in lreqs))
+    else:
+        lreqs = []
     geo = (f"$l_(O C)$ = {c.qty(z.l_oc_m * 1000, mm, decimals=2)}" if v.is_rocker
            else t("offset") + f" $e$ = {c.qty(z.e_m * 1000, mm, decimals=2)}")
     c.p(t("A cam mechanism of scheme {scheme} is designed: the base radius of the pitch profile $r_0$ = {v}, {geo}, the roller radius $r_\"р\"$ = {v2}; the profile is drawn at {scale}.").format(scheme=v.scheme, v=c.qty(z.r0_m * 1000, mm, decimals=2), geo=geo, v2=c.qty(p.roller_m * 1000, mm, decimals=2), scale=cam.drawing.scale))
@@ -246,7 +348,7 @@ def conclusion(c: Ctx) -> None:
     sp = g.spur
     rpm = t("rpm")
     c.p(t("The drive: a motor of {speed}, {scheme_words} {teeth} {with_planets} ($i$ = {ratio}), the spur pair "
-          "$z_1$ = {z1}, $z_2$ = {z2}, $m$ = {m}.").format(
+          "$z_1$ = {z1}, $z_2$ = {z2} (its mesh drawn at the course's module $m$ = {m}).").format(
         speed=c.qty(g.motor_rpm, rpm), scheme_words=scheme_words, teeth=_teeth_text(g),
         with_planets=c.nt("with {k} planet", "with {k} planets", d.planets).format(k=d.planets),
         ratio=n(d.ratio, decimals=4), z1=sp.z1, z2=sp.z2, m=c.qty(sp.m_mm, mm)))
@@ -275,7 +377,7 @@ def conclusion(c: Ctx) -> None:
             greqs.append((t("a motor of the standard series covers the required power"), False))
     c.doc.add(ListBlock([f"{txt} — {verdict(ok)};" for txt, ok in greqs[:-1]] + [f"{greqs[-1][0]} — {verdict(greqs[-1][1])}."]))
     c.doc.claim(kind="conclusion_gears", met=tuple(ok for _, ok in greqs), gears=g)
-    bad = [txt for txt, ok in reqs + greqs if not ok]
+    bad = [txt for txt, ok in lreqs + reqs + greqs if not ok]
     if bad:
         c.p(c.nt("{bad} of the requirements is not met; the design has to be revised there.",
                  "{bad} of the requirements are not met; the design has to be revised there.", len(bad)).format(bad=len(bad)))

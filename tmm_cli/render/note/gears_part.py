@@ -70,7 +70,7 @@ def _motor(c: Ctx) -> None:
               + f'; quad n_"д" = {g.motor_rpm} {c.u(rpm)}', where=['n_"д"', 'n_"кр"'])
     c.doc.claim(kind="motor_speed", chosen=g.motor_rpm, candidates=tuple(g.motor_candidates), crank=g.crank_rpm)
     c.p(t("The required ratios of the spur pair (motor to cam) and of the planetary reducer (motor to crank):"))
-    c.formula(c.calc('i_"д" = n_"д"/(|n_k|)', "{0}/{1}", [V(g.motor_rpm, exact=True), V(abs(g.cam_rpm), exact=True)],
+    c.formula(c.calc('i_"д" = n_"д"/(|n_"к"|)', "{0}/{1}", [V(g.motor_rpm, exact=True), V(abs(g.cam_rpm), exact=True)],
                      V(g.i_spur, sig=4)),
               c.calc('i_"пл" = n_"д"/n_"кр"', "{0}/{1}", [V(g.motor_rpm, exact=True), V(g.crank_rpm, exact=True)],
                      V(g.i_planetary, sig=5)), where=['i_"д"', 'i_"пл"'])
@@ -93,7 +93,7 @@ def _scheme(c: Ctx) -> None:
     c.doc.add(Heading(2, t("Scheme of the planetary reducer")))
     rows = []
     for s in g.schemes:
-        rows.append([str(s.number), f"{n(s.i_min)} … {n(s.i_max)}", f"{n(s.eta_max)} … {n(s.eta_min)}",
+        rows.append([str(s.number), f"{n(s.i_min)}…{n(s.i_max)}", f"{n(s.eta_max)}…{n(s.eta_min)}",
                      "$" + _scheme_math(s.formula) + "$"])
     i = c.q(g.i_planetary, sig=4)
     why = {
@@ -348,9 +348,9 @@ def _selection(c: Ctx) -> None:
         lo, hi = STAGE_RANGE_1
         inside = s.stage_range_ok
         stages = (t("The stage with the larger ratio is put on the motor side (its gears carry the smaller torque): "
-                    "$i_1 = {i1}$, $i_2 = {i2}$, both within the range {lo} … {hi} of a single-row stage.") if inside else
+                    "$i_1 = {i1}$, $i_2 = {i2}$, both within the range {lo}…{hi} of a single-row stage.") if inside else
                   t("The stage with the larger ratio is put on the motor side (its gears carry the smaller torque): "
-                    "$i_1 = {i1}$, $i_2 = {i2}$; no pair keeps both within {lo} … {hi}."))
+                    "$i_1 = {i1}$, $i_2 = {i2}$; no pair keeps both within {lo}…{hi}."))
         c.p(stages.format(i1=c.q(r1, decimals=3), i2=c.q(r2, decimals=3), lo=c.n(lo), hi=c.n(hi)))
 
 
@@ -484,6 +484,12 @@ def _spur(c: Ctx) -> None:
         _spur_shifted(c)
         return
     c.p(t("The spur pair is made of zero gears (§2.3 {{cite:book}}): module $m = {m_mm}$ mm, profile angle $α = {alpha_deg}°$, $h^*_a = {ha_star}$, $c^* = {c_star}$, shifts $x_1 = x_2 = 0$.").format(m_mm=q(sp.m_mm), alpha_deg=q(sp.alpha_deg), ha_star=q(sp.ha_star), c_star=q(sp.c_star)))
+    c.p(t("The geometry of the pair is computed by the formulas of §2.3 {cite:book}, which are those of GOST 16532-70 "
+          "{cite:gost16532} for zero gears."))
+    c.p(t("The module is the one the textbook fixes for every variant for the drawing of the mesh on sheet 4 (§2.1.1 "
+          "{{cite:book}}): at $m = {m_mm}$ mm the teeth are large enough to construct their involutes, the line of "
+          "action and the zones of the mesh by hand at a readable scale. It is a module of the drawing, not a "
+          "result of a strength calculation, which the course project does not make.").format(m_mm=q(sp.m_mm)))
     c.p(t("1–2. The ratio and the tooth numbers: the smaller gear has 17 teeth, the textbook's smallest; the other is the nearest whole number to the required ratio:"))
     if not sp.multiplier:
         c.formula(c.calc('z_2 = z_1 i_"д"', "17 dot {0}", [V(sp.i_d, sig=4)], V(17 * sp.i_d, decimals=2))

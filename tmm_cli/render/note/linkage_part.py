@@ -17,13 +17,12 @@ import re
 from ...i18n import N_
 from ...linkage.positions import PRESSURE_WARN_DEG, output_coordinate
 from ...linkage.scales import PLAN_MM, SCHEME_MM
-from ..terminal.mechanism import pattern
+from ...linkage.roles import link_roles
+from ..terminal.mechanism import ROLE_WORDS, pattern
 from .ctx import Ctx, V, sheet1_of
-from .model import Heading
+from .model import Heading, literal
 from .synthesis_part import synthesis_section
 
-_KIND = {"crank": N_("crank"), "bar": N_("bar"), "slider": N_("slider"), "block": N_("block"),
-         "slotted": N_("slotted link")}
 _PAIR = {"R": N_("revolute"), "P": N_("prismatic")}
 _NAME = re.compile(r"[^\W\d_]\d*['′]*")
 
@@ -123,23 +122,26 @@ def _lengths(m) -> dict[str, float]:
     return size
 
 
-def _link_words(c: Ctx, m) -> str:
-    return ", ".join(f"{ln.number} — {c.t(_KIND[ln.kind])} {ln.name}" for ln in m.links)
+def _link_words(c: Ctx, s) -> str:
+    roles = link_roles(s)
+    return ", ".join(f"{ln.number} — {c.t(ROLE_WORDS[roles[ln.name]])} {ln.name}" for ln in s.mechanism.links)
 
 
 def _structure(c: Ctx, s) -> None:
     t, n = c.t, c.n
     m, st = s.mechanism, s.structure
     c.doc.add(Heading(2, t("Structure of the mechanism")))
-    name = m.name or t("Mechanism")
+    name = literal(m.name) if m.name else t("Mechanism")  # a person's text: set as typed
     c.p(t("The mechanism «{name}» consists of the frame 0 and {count} moving links: {links}. The links and the "
           "kinematic pairs are given in Tables {{tab:linkage_links}} and {{tab:linkage_groups}}.").format(
-        name=name, count=st.n, links=_link_words(c, m)))
+        name=name, count=st.n, links=_link_words(c, s)))
     mm = t("mm")
     size = _lengths(m)
     rows = [["0", t("frame"), t("fixed joints {joints}").format(joints=", ".join(m.frame)), "—"]]
+    roles = link_roles(s)
     for ln in m.links:
-        rows.append([str(ln.number), ln.name, t(_KIND[ln.kind]), n(size[ln.name] * 1000) if ln.name in size else "—"])
+        rows.append([str(ln.number), ln.name, t(ROLE_WORDS[roles[ln.name]]),
+                     n(size[ln.name] * 1000) if ln.name in size else "—"])
     c.table("linkage_links", t("Links of the mechanism"), ["№", t("Link"), t("Kind"), f"$l$, {mm}"], rows,
             align=["center", "center", "left", "center"], widths=[0.5, 1.0, 2.2, 1.0])
     c.p(t("Every kinematic pair of the mechanism is a lower pair of class 5 (a revolute or a prismatic pair), there are no "

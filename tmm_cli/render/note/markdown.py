@@ -21,22 +21,30 @@ from .model import (
     Table,
     TaskSheet,
     TitlePage,
+    md_text,
     split_math,
+    text_runs,
 )
 
 
-def _inline(doc: Document, text: str) -> str:
+def _inline(doc: Document, text: str, cell: bool = False) -> str:
+    """Markdown of inline markup: math as text, a person's text as typed (model.md_text: no
+    Markdown, no HTML), the program's text with its emphasis characters escaped; in a
+    table `cell`, every "|" too."""
+    special = r"([*_`\\|])" if cell else r"([*_`\\])"
     out = []
     for is_math, piece in split_math(doc.resolve(text)):
         if is_math:
-            out.append(to_text(parse(piece)))
-        else:
-            out.append(re.sub(r"([*_`\\])", r"\\\1", piece))
-    return "".join(out)
+            math = to_text(parse(piece))
+            out.append(math.replace("|", "\\|") if cell else math)
+            continue
+        for given, run in text_runs(piece):
+            out.append(md_text(run) if given else re.sub(special, r"\\\1", run))
+    return "".join(out).replace("\n", " ") if cell else "".join(out)
 
 
 def _table(doc: Document, b: Table, word: str) -> list[str]:
-    cell = lambda c: _inline(doc, c).replace("|", "\\|").replace("\n", " ")  # noqa: E731
+    cell = lambda c: _inline(doc, c, cell=True)  # noqa: E731
     out = [f"*{word} {b.number} – {_inline(doc, b.caption)}*", ""]
     out.append("| " + " | ".join(cell(h) for h in b.header) + " |")
     out.append("|" + "|".join(["---"] * len(b.header)) + "|")

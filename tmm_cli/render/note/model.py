@@ -12,7 +12,12 @@ Text is written in a small inline markup, the same for every writer:
 - ``{fig:name}``, ``{tab:name}``, ``{eq:name}``, ``{app:name}`` — the number of a figure, table,
   formula or appendix (letter) defined anywhere in the document;
 - ``{cite:key}`` and ``{cite:key:формула (1.20)}`` — a source of the list of references:
-  "[1]", "[1, формула (1.20)]"; sources are numbered in the order of their first citation.
+  "[1]", "[1, формула (1.20)]"; sources are numbered in the order of their first citation;
+- :func:`literal` — a person's text (a student's name, a group, a mechanism's name): the one way
+  user text enters a document. It is kept encoded (hex between two private-use marks), so no
+  markup rule of any writer — ``$…$``, a reference, typst, Markdown, Word — can see into it;
+  each writer decodes it (:func:`text_runs`) and sets it as the characters typed. A writer that
+  forgot would print hex, never markup.
 
 Numbers of figures, tables and formulas are the note's own sequence (1), (2), …; in an appendix
 "А.1". :meth:`Document.number` assigns them (the writers call it); the typst writer leaves the
@@ -29,6 +34,80 @@ from ...i18n import N_, tr
 REF = re.compile(r"\{(fig|tab|eq|app):([a-z0-9_]+)\}")
 CITE = re.compile(r"\{cite:([a-z0-9_]+)(?::([^{}]*))?\}")
 MATH = re.compile(r"(\$[^$]*\$)")
+# a person's text: hex of its UTF-8 between U+E000 and U+E001 (see literal())
+_LIT_OPEN, _LIT_CLOSE = "\ue000", "\ue001"
+LITERAL = re.compile("\ue000((?:[0-9a-f]{2})*)\ue001")
+
+
+def literal(text) -> str:
+    """A person's text as a piece of inline markup that every writer sets as the characters given.
+
+    >>> literal("A $x$") == literal("A $x$") and "$" not in literal("A $x$")
+    True
+    >>> text_runs("name: " + literal("#x [y]") + ".")
+    [(False, 'name: '), (True, '#x [y]'), (False, '.')]
+    """
+    return _LIT_OPEN + str(text).encode("utf-8", "surrogatepass").hex() + _LIT_CLOSE
+
+
+def text_runs(piece: str) -> list[tuple[bool, str]]:
+    """[(is_literal, text)] of a piece of markup text: a person's text decoded, the rest as it is."""
+    out = []
+    pos = 0
+    for m in LITERAL.finditer(piece):
+        if m.start() > pos:
+            out.append((False, piece[pos:m.start()]))
+        out.append((True, bytes.fromhex(m.group(1)).decode("utf-8", "replace")))
+        pos = m.end()
+    if pos < len(piece):
+        out.append((False, piece[pos:]))
+    return out
+
+
+# ASCII punctuation: the characters a markup may give a meaning (typst, CommonMark); a person's text
+# has every one of them escaped with a backslash, which both typst and CommonMark read as the character
+PUNCT = re.compile(r"([!-/:-@\[-`{-~])")
+
+
+def escape_all(text: str) -> str:
+    r"""A person's text for typst markup or Markdown: every ASCII punctuation character escaped,
+    so nothing in it is markup (no code, math, comment, label, list, heading, link, HTML).
+
+    >>> print(escape_all("a///b $x$ #f() <i>"))
+    a\/\/\/b \$x\$ \#f\(\) \<i\>
+    """
+    return PUNCT.sub(r"\\\1", text)
+
+
+# Markdown (CommonMark, GitHub's): the characters that open emphasis, code, links, images, HTML,
+# entities, math, strikethrough or a table cell anywhere in a line
+_MD_INLINE = re.compile(r"([\\`*_\[\]<>&~|!#$@])")
+
+
+def md_text(text: str) -> str:
+    r"""A person's text for Markdown: set as typed, never as markup — no emphasis, link, image,
+    HTML, entity, math, table cell; no list, heading or quote where it starts; no autolink.
+
+    >>> print(md_text("<img src=x>[PASSED](javascript:alert(2)) a_b*"))
+    \<img src=x\>\[PASSED\](javascript:alert(2)) a\_b\*
+    >>> print(md_text("1. - http://x www.y"))
+    1\. - http\://x www\.y
+    """
+    out = _MD_INLINE.sub(r"\\\1", text)
+    out = re.sub(r"(?i)(https?|ftp|mailto)(:)", r"\1\\\2", out)  # GitHub's autolinks
+    out = re.sub(r"(?i)\b(www)\.", r"\1\\.", out)
+    m = re.match(r"(\s*\d+)([.)])", out)
+    if m:  # "1." would start a numbered list
+        return m.group(1) + "\\" + out[m.end(1):]
+    m = re.match(r"\s*[-+=>]", out)
+    if m:  # a list, a setext heading, a quote
+        return out[:m.end() - 1] + "\\" + out[m.end() - 1:]
+    return out
+
+
+def plain(text: str) -> str:
+    """The markup text with a person's text decoded (for a writer that shows text as it is)."""
+    return LITERAL.sub(lambda m: bytes.fromhex(m.group(1)).decode("utf-8", "replace"), text)
 
 # ГОСТ 7.32 letters of appendices (Ё, З, Й, О, Ч, Ь, Ы, Ъ are not used)
 # ГОСТ 7.32: the appendices are lettered in the alphabet of the note, without the letters that read as
@@ -279,6 +358,11 @@ SCI_EXPONENT = re.compile(r"(?<=·10)([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)")
 SUPER_DIGITS = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "−0123456789")
 
 
+# a unit right after an inline formula («$b = 240$ мм»): the space before it does not break
+UNIT_AFTER_MATH = re.compile(r"^ (?=(?:мм|м|Н|кН|об/мин|рад|кг|кВт|Вт|Дж|мин|°|%|mm|m|N|kN|rpm|rad|kg|kW|W|J|min)"
+                             r"(?![^\W\d_]))")
+
+
 def split_math(text: str) -> list[tuple[bool, str]]:
     """[(is_math, piece)] of an inline markup text.
 
@@ -287,6 +371,8 @@ def split_math(text: str) -> list[tuple[bool, str]]:
 
     >>> split_math("угол $ν_max$ = 25°")
     [(False, 'угол '), (True, 'ν_max'), (False, '\xa0=\xa025°')]
+    >>> split_math("$b = 240$ мм, $k$ мало")
+    [(True, 'b = 240'), (False, '\xa0мм, '), (True, 'k'), (False, ' мало')]
     """
     out = []
     for part in MATH.split(text):
@@ -297,6 +383,7 @@ def split_math(text: str) -> list[tuple[bool, str]]:
         else:
             if out and out[-1][0]:
                 part = re.sub(r"^ ([=≤≥<>≈≠]) ", "\u00a0\\1\u00a0", part)
+                part = UNIT_AFTER_MATH.sub("\u00a0", part)  # «$b = 240$ мм»: the unit stays with its formula
             out.append((False, part))
     return out
 

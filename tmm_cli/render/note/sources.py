@@ -35,6 +35,32 @@ SOURCES = {
         english="Artobolevsky, I. I. Theory of mechanisms and machines: a textbook for technical universities. 4th "
                 "ed. Moscow: Nauka, 1988. 640 p. (in Russian)",
     ),
+    # the standards the note and the sheets follow (records without the imprint the project could not check)
+    "gost16532": Source(
+        record="ГОСТ 16532-70. Передачи зубчатые цилиндрические эвольвентные внешнего зацепления. Расчет "
+               "геометрии : государственный стандарт Союза ССР : издание официальное : введен 1971-07-01.",
+        english="GOST 16532-70. Involute external spur gear pairs. Calculation of geometry: state standard of the "
+                "USSR. Introduced 1971-07-01. (in Russian)",
+    ),
+    "gost2104": Source(
+        record="ГОСТ 2.104-2006. Единая система конструкторской документации. Основные надписи : межгосударственный "
+               "стандарт : издание официальное : введен 2006-09-01.",
+        english="GOST 2.104-2006. Unified system for design documentation. Title blocks: interstate standard. "
+                "Introduced 2006-09-01. (in Russian)",
+    ),
+    "gost2302": Source(
+        record="ГОСТ 2.302-68. Единая система конструкторской документации. Масштабы : межгосударственный стандарт : "
+               "издание официальное : введен 1971-01-01.",
+        english="GOST 2.302-68. Unified system for design documentation. Scales: interstate standard. Introduced "
+                "1971-01-01. (in Russian)",
+    ),
+    "gost732": Source(
+        record="ГОСТ 7.32-2017. Система стандартов по информации, библиотечному и издательскому делу. Отчет о "
+               "научно-исследовательской работе. Структура и правила оформления : межгосударственный стандарт : "
+               "издание официальное : введен 2018-07-01.",
+        english="GOST 7.32-2017. System of standards on information, librarianship and publishing. The research "
+                "report. Structure and rules of presentation: interstate standard. Introduced 2018-07-01. (in Russian)",
+    ),
 }
 
 

@@ -8,6 +8,12 @@ other Unix systems; Windows: no limit), Ctrl-C or SIGTERM in the parent kill it 
 Linux it dies with its parent. Whatever happens, the caller gets a TmmError of one line: typst's
 message and where it points, or the memory limit, or the signal that stopped it; never the
 child's output nor any file's content.
+
+typst is a sandbox here (docs/limits.md): packages are off — the child's home, data and cache
+folders are an empty folder of its own (no ``@local`` package, nothing from ``$HOME``), its package
+paths point there and its network goes to a closed port (no ``@preview`` download); typst reads
+only the files under the root it is given (the folder of files tmm wrote, or for `tmm note` a copy
+of the folder's regular files); a compile that runs longer than ``limits.TYPST_SECONDS`` is killed.
 """
 
 from __future__ import annotations
@@ -45,17 +51,22 @@ class _Child:
 
         self.memory, self.owner, self.served = memory, os.getpid(), 0
         self.err = tempfile.TemporaryFile()
-        env = dict(os.environ, RUST_BACKTRACE="0", PYTHONIOENCODING="utf-8")
-        self.proc = subprocess.Popen([sys.executable, "-c", _CHILD, str(memory)], stdin=subprocess.PIPE,
-                                     stdout=subprocess.PIPE, stderr=self.err, env=env, close_fds=True)
+        self.home = tempfile.mkdtemp(prefix="tmm-typst-")  # empty: no packages, nothing of the user's
+        self.proc = subprocess.Popen([sys.executable, "-c", _CHILD, str(memory), self.home], stdin=subprocess.PIPE,
+                                     stdout=subprocess.PIPE, stderr=self.err, env=sandbox_env(self.home),
+                                     close_fds=True)
         add_child(self.proc.pid)
 
     def ask(self, request: dict) -> dict:
         """The child's answer; on its death a dict {"died": reason}."""
         self.served += 1
+        seconds = limits.TYPST_SECONDS
         try:
             self.proc.stdin.write((json.dumps(request) + "\n").encode("utf-8"))
             self.proc.stdin.flush()
+            if not _wait_readable(self.proc.stdout, seconds):
+                self.kill()
+                return {"died": f"typst ran longer than the limit of {seconds:g} s"}
             line = self.proc.stdout.readline()
         except (BrokenPipeError, OSError):
             line = b""
@@ -79,7 +90,7 @@ class _Child:
             pass
         self.proc.wait()
         remove_child(self.proc.pid)
-        self.err.close()
+        self._clean()
 
     def close(self) -> None:
         from ...output.interrupt import remove_child
@@ -91,7 +102,53 @@ class _Child:
             self.proc.kill()
             self.proc.wait()
         remove_child(self.proc.pid)
-        self.err.close()
+        self._clean()
+
+    def _clean(self) -> None:
+        import shutil
+
+        if not self.err.closed:
+            self.err.close()
+        shutil.rmtree(self.home, ignore_errors=True)
+
+
+# the child's environment: a home of its own (typst looks for @local packages in the data folder and
+# caches @preview ones in the cache folder, both under it) and no way out to the network
+_HOME_VARS = ("HOME", "USERPROFILE", "XDG_DATA_HOME", "XDG_CACHE_HOME", "XDG_CONFIG_HOME", "APPDATA", "LOCALAPPDATA",
+              "TYPST_PACKAGE_PATH", "TYPST_PACKAGE_CACHE_PATH")
+_PROXY_VARS = ("HTTPS_PROXY", "https_proxy", "HTTP_PROXY", "http_proxy", "ALL_PROXY", "all_proxy")
+_NO_NETWORK = "http://127.0.0.1:9"  # the discard port: a refused connection, at once
+
+
+def sandbox_env(home: str) -> dict:
+    """The typst child's environment: `home` (an empty folder) for every home, data and cache
+    folder, every proxy pointing at a closed local port, no proxy exceptions."""
+    env = dict(os.environ, RUST_BACKTRACE="0", PYTHONIOENCODING="utf-8")
+    env.update({k: home for k in _HOME_VARS})
+    env.update({k: _NO_NETWORK for k in _PROXY_VARS})
+    for k in ("NO_PROXY", "no_proxy", "SSL_CERT_FILE", "SSL_CERT_DIR"):
+        env.pop(k, None)
+    return env
+
+
+def _wait_readable(stream, seconds: float) -> bool:
+    """True when `stream` has something to read within `seconds` (select; where pipes cannot be
+    selected, Windows, True at once: no time limit there)."""
+    if os.name == "nt":  # pragma: no cover
+        return True
+    import select
+    import time
+
+    end = time.monotonic() + seconds
+    while True:
+        left = end - time.monotonic()
+        if left <= 0:
+            return False
+        try:
+            ready, _, _ = select.select([stream], [], [], left)
+        except InterruptedError:  # pragma: no cover - PEP 475 retries; kept for old kernels
+            continue
+        return bool(ready)
 
 
 _CHILDREN: list[_Child] = []  # this process's (a forked process starts its own)
@@ -150,6 +207,41 @@ def typeset(root: Path, source: str, output: str, shown: Path | None = None) -> 
     raise TmmError(f"the note could not be typeset ({why}); check the note template or {source}")
 
 
+PAGES_LABEL = "tmm-pages"
+PAGES_SOURCE = """#include "{source}"
+#context [#metadata((pages: query(heading.where(outlined: true)).filter(h => h.level <= 2).map(h => counter(page).at(h.location()).first()), total: counter(page).final().first())) <tmm-pages>]
+"""
+
+
+def page_numbers(root: Path, source: str = "note.typ") -> dict | None:
+    """The pages of the note as typst lays it out: {"pages": the page of each heading of the
+    contents (levels 1–2, in order), "total": the number of pages}, or None when it cannot be had
+    (the DOCX then goes without them). A private source beside `source` includes it and asks typst
+    (one more layout, in the same child)."""
+    root = Path(root)
+    probe = root / ".tmm-pages.typ"
+    child = None
+    try:
+        probe.write_text(PAGES_SOURCE.format(source=source), encoding="utf-8")
+        child = _child()
+        answer = child.ask({"root": os.path.abspath(root), "source": probe.name, "query": "<" + PAGES_LABEL + ">"})
+    except OSError:
+        return None
+    except BaseException:  # Ctrl-C, SIGTERM: the child ends now
+        _CHILDREN.clear()
+        if child is not None:
+            child.kill()
+        raise
+    finally:
+        probe.unlink(missing_ok=True)
+    if "died" in answer:
+        _CHILDREN.clear()
+    value = answer.get("value") if answer.get("ok") else None
+    if not isinstance(value, dict) or not isinstance(value.get("pages"), list):
+        return None
+    return value
+
+
 def _reason(code: int, err: bytes, memory: int) -> str:
     """Why the child died, in a few words (never its output).
 
@@ -193,10 +285,23 @@ def _limit_memory(limit: int) -> None:
         pass
 
 
+def _compile(typst, source: str, **kw):
+    """typst.compile_with_warnings; its package paths where the installed typst takes them (0.15 and
+    later; before, the child's environment alone keeps the packages away)."""
+    try:
+        return typst.compile_with_warnings(source, **kw)
+    except TypeError as exc:
+        if "package" not in str(exc):
+            raise
+        kw.pop("package_path", None)
+        kw.pop("package_cache_path", None)
+        return typst.compile_with_warnings(source, **kw)
+
+
 def _child_main(argv: list[str]) -> None:
-    """The child: `memory_bytes`; then for each request line {"root", "source", "output"} one
+    """The child: `memory_bytes` `home`; then for each request line {"root", "source", "output"} one
     answer line {"ok": true} or {"message": …}, until its stdin ends."""
-    (memory,) = argv
+    memory, home = argv
     if signal.getsignal(signal.SIGINT) is signal.default_int_handler:  # Ctrl-C kills it even inside typst
         signal.signal(signal.SIGINT, signal.SIG_DFL)
     if sys.platform.startswith("linux"):
@@ -223,10 +328,20 @@ def _child_main(argv: list[str]) -> None:
             answer({"message": "the typst package is missing; reinstall tmm (pip install tmm)"})
             continue
         base = Path(request["root"])
+        if request.get("query"):
+            try:
+                value = typst.query(str(base / request["source"]), request["query"], field="value", one=True,
+                                    root=str(base), font_paths=[str(FONTS_DIR)], ignore_system_fonts=True)
+                answer({"ok": True, "value": json.loads(value) if isinstance(value, str) else value})
+            except MemoryError:
+                answer({"message": "memory"})
+            except Exception as exc:  # typst.TypstError and its relatives
+                answer({"message": _typst_error(exc)})
+            continue
         try:
-            _, warnings = typst.compile_with_warnings(str(base / request["source"]), output=str(base / request["output"]),
-                                                      root=str(base), font_paths=[str(FONTS_DIR)],
-                                                      ignore_system_fonts=True)
+            _, warnings = _compile(typst, str(base / request["source"]), output=str(base / request["output"]),
+                                   root=str(base), font_paths=[str(FONTS_DIR)], ignore_system_fonts=True,
+                                   package_path=home, package_cache_path=home)
         except MemoryError:
             answer({"message": f"typst needed more memory than the limit of {int(memory) >> 20} MiB"})
         except Exception as exc:  # typst.TypstError and its relatives
@@ -311,6 +426,26 @@ def _fill(src: Path, dst: Path, depth: int, count: list[int], budget: list[int])
         _copy_regular(src / e.name, target, budget)
 
 
+_PACKAGE = re.compile(r"""(?:import|include)\s*\(?\s*"(@[^"\n]{0,80})""")
+
+
+def _refuse_packages(root: Path, source: str, shown: Path) -> None:
+    """TmmError naming `source` when it imports a typst package: the sandbox has none (the note
+    needs none; what a department's style needs is copied into the folder). A package imported
+    any other way fails in the sandbox itself."""
+    for path in (root / source,):
+        try:
+            text = path.read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            continue
+        m = _PACKAGE.search(text)
+        if m:
+            where = shown / path.relative_to(root)
+            line = text.count("\n", 0, m.start()) + 1
+            raise TmmError(f"{where}:{line} imports the typst package {m.group(1)}; tmm compiles with packages off "
+                           f"(nothing outside the folder is read): copy the files the note needs into its folder")
+
+
 def typeset_in_copy(folder: Path, source: str, pdf: Path) -> Path:
     """`tmm note`: compile ``folder/source`` with a typst root that holds only the regular files of
     `folder` (hard links, or copies), so a symbolic link planted in the folder leads typst nowhere;
@@ -326,6 +461,7 @@ def typeset_in_copy(folder: Path, source: str, pdf: Path) -> Path:
         _fill(folder, root, limits.NOTE_FOLDER_DEPTH, [limits.NOTE_FOLDER_FILES], [limits.NOTE_FOLDER_BYTES])
         if not (root / source).is_file():
             raise TmmError(f"{folder / source} is not a regular file; tmm compiles only a real note.typ (not a link)")
+        _refuse_packages(root, source, folder)
         out = f".out-{os.urandom(4).hex()}.pdf"
         typeset(root, source, out, shown=folder)
         try:

@@ -29,10 +29,13 @@ from .model import (
     Table,
     TaskSheet,
     TitlePage,
+    escape_all,
+    plain,
     split_math,
+    text_runs,
 )
 
-_SPECIAL = re.compile(r"([\\#*_`$@<>\[\]~])")
+_SPECIAL = re.compile(r"([\\#*_`$@<>\[\]~/])")
 
 # "1,458·10⁻⁴" (model.SCI_EXPONENT): a superscript scaled from the font's own digits and minus
 _SCI_MATH = re.compile(r'"([^"\\]*·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+[^"\\]*)"')
@@ -66,32 +69,55 @@ def escape(text: str, start: bool = True) -> str:
     'a\\\\_b \\\\#1 \\\\*x\\\\* \\\\[y\\\\] \\\\<z\\\\> 2 - 3'
     >>> escape("- item"), escape("1. item"), escape("48.86")
     ('\\\\- item', '1\\\\. item', '48.86')
+    >>> print(escape("a///b */"))
+    a\\/\\/\\/b \\*\\/
+
+    Every "/" is escaped: no "//" or "/*" can open a comment. A person's text is not program text:
+    :func:`~.model.escape_all` (through :func:`~.model.literal`) escapes it whole.
     """
     out = _SPECIAL.sub(r"\\\1", text)
-    out = sci_text(out.replace("//", "/\u200b/").replace("--", "-\u200b-"))
+    out = sci_text(out.replace("--", "-\u200b-"))
     if not start:
         return out
     m = re.match(r"(\s*)(\d+)\.(?=\s|$)", out)
     if m:  # "1. " would start a numbered list ("48.86" would not)
         out = out[:m.end() - 1] + "\\." + out[m.end():]
-    elif re.match(r"\s*[-+=/]", out):  # a list, a heading or a term
+    elif re.match(r"\s*[-+=]", out):  # a list, a heading or a term
         lead = len(out) - len(out.lstrip())
         out = out[:lead] + "\\" + out[lead:]
     return out
 
 
 def string(text: str) -> str:
-    """A typst string literal."""
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    """A typst string literal (its text shown as given: a string is never markup).
+
+    >>> print(string('a"b' + chr(92) + chr(10) + 'c'))
+    "a\\"b\\\\\\nc"
+    """
+    text = plain(text)
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n").replace("\r", "\\r") + '"'
+
+
+def literal_text(text: str) -> str:
+    """A person's text in typst markup: the characters given, nothing read as markup."""
+    return escape_all(text)
+
+
+# a derivative written (d γ)/(d φ) (one fraction in the tree: Word's stacked dγ/dφ) reads dγ/dφ on the line
+DIFFERENTIAL = re.compile(r"\((d(?:\^\d)? [^()/\"]+)\)/\((d [^()/\"]+)\)")
 
 
 def inline_math(math: str) -> str:
-    """Inline math keeps a/b on the line: every / outside strings becomes \\/.
+    """Inline math keeps a/b on the line: every / outside strings becomes \\/; a derivative's
+    parentheses go, as typst drops them from a fraction.
+
+    >>> print(inline_math("ω = ω_k (d γ)/(d φ)"), inline_math("ε = ω_k^2 (d^2 γ)/(d φ^2)"))
+    ω = ω_k d γ\\/d φ ε = ω_k^2 d^2 γ\\/d φ^2
 
     >>> print(inline_math('a/b + "°/мм"'))
     a\\/b + "°/мм"
     """
-    math = sci_math(math)
+    math = DIFFERENTIAL.sub(r"\1/\2", sci_math(math))
     out, quoted = [], False
     for i, ch in enumerate(math):
         if ch == '"' and (i == 0 or math[i - 1] != "\\"):
@@ -132,14 +158,19 @@ class TypstWriter:
             if is_math:
                 out.append("$" + inline_math(piece) + "$")
             else:
-                # references and citations become markup; the rest is escaped text
-                parts = re.split(r"(\{(?:fig|tab|eq|app|cite):[^{}]*\})", piece)
-                for k, part in enumerate(parts):
-                    if k % 2:
-                        resolved = self.doc.resolve(part, ref=ref, cite=cite)
-                        out.append(resolved if resolved.startswith("#ref") else escape(resolved, start=False))
-                    else:
-                        out.append(escape(part, start=first and k == 0))
+                # a person's text is set as given; references and citations become markup; the rest is
+                # escaped text
+                for j, (given, run) in enumerate(text_runs(piece)):
+                    if given:
+                        out.append(literal_text(run))
+                        continue
+                    parts = re.split(r"(\{(?:fig|tab|eq|app|cite):[^{}]*\})", run)
+                    for k, part in enumerate(parts):
+                        if k % 2:
+                            resolved = self.doc.resolve(part, ref=ref, cite=cite)
+                            out.append(resolved if resolved.startswith("#ref") else escape(resolved, start=False))
+                        else:
+                            out.append(escape(part, start=first and j == 0 and k == 0))
             first = False
         return "".join(out)
 

@@ -236,7 +236,7 @@ def _motion_field(sh: Sheet, r, lang: str, box) -> None:
     ]
     if rocker:
         lines[-1] += (f";  k_{{SB}} = k_{{γ}}·l_{{BC}} = {_g(sc.k_s_b, lang)} " + tr(lang, "m/mm")
-                      + f";  k_{{γ,°}} = {_g(sc.k_gamma_deg_mm, lang)} °/{mm}")
+                      + f";  k_{{γ°}} = {_g(sc.k_gamma_deg_mm, lang)} °/{mm}")
     sh.caption(box[0], box[2], box[1] + 2.5, lines, H_NOTE, LINE)
 
 
@@ -431,8 +431,10 @@ def _field_scale_text(sh, f, lang, lab):
 
 
 def _hatch(f, poly, spacing):
-    """45° thin hatch lines across a convex polygon (drawing units), clipped by the field."""
-    # only the part inside the field's window (drawing units): a few dozen lines, not thousands
+    """The zone hatched at 45° in thin lines `spacing` (drawing units) apart, cut to the field's
+    window: one HATCH entity of the standard pattern ANSI31 (a CAD user can edit or re-scale it;
+    LINEs before) at the pattern scale that gives the drawn spacing, its boundary the cut polygon.
+    The lines it draws go into the sheet's index of lines, so labels keep clear of them."""
     x0, y0, x1, y1 = f.cut
     lo = (np.array([x0, y0]) - f.origin) / f.scale
     hi = (np.array([x1, y1]) - f.origin) / f.scale
@@ -440,20 +442,29 @@ def _hatch(f, poly, spacing):
         poly = _clip_half(poly, np.array(a), c)
         if len(poly) < 3:
             return
+    sh = f.sheet
+    pts = [(float(x), float(y)) for x, y in f.to_sheet(poly)]
+    step = spacing * f.scale  # [sheet mm]
+    hatch = sh.msp.add_hatch(color=256, dxfattribs={"layer": "Тонкие"})
+    hatch.paths.add_polyline_path(pts, is_closed=True)
+    hatch.set_pattern_fill("ANSI31", scale=step / ANSI31_SPACING)
+    # the pattern's lines, for the index of what is drawn (labels avoid them)
     d = np.array([1.0, 1.0]) / math.sqrt(2)
     n = np.array([-d[1], d[0]])
-    proj = poly @ n
-    for c in np.arange(proj.min() + spacing / 2, proj.max(), spacing):
-        # intersect the line {x: x·n = c} with the polygon's edges
+    q = np.asarray(pts)
+    proj = q @ n
+    for c in np.arange(proj.min() + step / 2, proj.max(), step):
         hits = []
-        for a, b in zip(poly, np.roll(poly, -1, axis=0)):
+        for a, b in zip(q, np.roll(q, -1, axis=0)):
             pa, pb = a @ n - c, b @ n - c
             if pa * pb < 0:
-                t = pa / (pa - pb)
-                hits.append(a + t * (b - a))
+                hits.append(a + pa / (pa - pb) * (b - a))
         if len(hits) >= 2:
             hits = sorted(hits, key=lambda h: h @ d)
-            f.line(hits[0], hits[-1], "Тонкие")
+            sh.obstacles.add_polyline(np.array([hits[0], hits[-1]]))
+
+
+ANSI31_SPACING = 3.175  # mm between the lines of ANSI31 at pattern scale 1 (1/8")
 
 
 def _clip_half(poly: np.ndarray, a: np.ndarray, c: float) -> np.ndarray:
@@ -809,7 +820,8 @@ def _results(sh: Sheet, r, lang: str, box, prof_scale: str) -> None:
     k = 1000.0
     mm = tr(lang, "mm")
     rows = [
-        (tr(lang, "Minimum cam radius r_0"), f"{_n(z.r0_m * k, lang)} {mm}"),
+        # r_0 is the base radius of the pitch (theoretical) profile, as the book names it (§1.3)
+        (tr(lang, "Base radius of the pitch profile r_0"), f"{_n(z.r0_m * k, lang)} {mm}"),
     ]
     if z.rocker:
         rows += [(tr(lang, "Centre distance l_{OC}"), f"{_n(z.l_oc_m * k, lang)} {mm}"),
@@ -824,7 +836,9 @@ def _results(sh: Sheet, r, lang: str, box, prof_scale: str) -> None:
          f"{_n(p.psi_rise_deg, lang, 1)}°; {_n(p.psi_far_deg, lang, 1)}°; {_n(p.psi_return_deg, lang, 1)}°"),
         (tr(lang, "Scales k_{S}, k_{V}, k_{a}") if not z.rocker
          else tr(lang, "Scales k_{γ}, k_{ω}, k_{ε}"),
-         f"{_g(sc.k_s, lang)}; {_g(sc.k_v, lang)}; {_g(sc.k_a, lang)}"),
+         "; ".join(_g(x, lang) + " " + u for x, u in zip(
+             (sc.k_s, sc.k_v, sc.k_a), (tr(lang, "rad/mm"), tr(lang, "(rad/s)/mm"), tr(lang, "(rad/s²)/mm")) if z.rocker
+             else (tr(lang, "m/mm"), tr(lang, "(m/s)/mm"), tr(lang, "(m/s²)/mm"))))),
         (tr(lang, "Profile scale (k_{Sk})"), _m(lang, prof_scale)),
         (tr(lang, "Closure, follower"),
          (tr(lang, "force closure") if z.closure == "force" else tr(lang, "form closure")) + ", "

@@ -61,6 +61,7 @@ from .lever_parts import (
     wrap_items,
 )
 from .paper import FRAME, H_LABEL, TB_BOX, Sheet
+from ..terminal.mechanism import pattern
 
 POLY_PAD = (10.0, 8.0, 10.0, 8.0)  # [mm] around a force polygon: its names
 SHORT_MM = 9.0  # a polygon's vector shorter than this is named in the caption, not on the drawing
@@ -90,6 +91,8 @@ def _link_lines(m, kin, i: int, names, k: float) -> np.ndarray:
             segs.append([sg[1], sg[2]])
         elif sg[0] == "poly":
             segs += [[a, b] for a, b in zip(sg[1][:-1], sg[1][1:])]
+        elif sg[0] == "hatch":
+            continue  # inside the outline: nothing an arrow must avoid beyond it
         else:
             c, angle, w, h = sg[1], sg[2], sg[3], sg[4]
             e = complex(math.cos(angle), math.sin(angle))
@@ -238,14 +241,22 @@ def _polygon_extent(pg):
 def _polygon_items(pg, lang: str) -> list[str]:
     """The polygon's found reactions and its vectors too short to be named on it, with their values."""
     unit = tr(lang, "N")
-    out = []
+    found, short = [], []
     for v in pg.vectors:
         length = abs(v.value) / pg.scale
-        if v.kind == "unknown" or length < SHORT_MM:
-            out.append(f"{symbol(v.symbol, lang)} = {num(abs(v.value), lang, decimals=1)}")
-    if out:
-        out[-1] += f" {unit}"
-    return out
+        item = f"{symbol(v.symbol, lang)} = {num(abs(v.value), lang, decimals=1)}"
+        if v.kind != "unknown" and length < SHORT_MM:
+            short.append(item)  # a side of the polygon too short to carry its name at μ_F
+        elif v.kind == "unknown":
+            found.append(item)
+    if found:
+        found[0] = tr(lang, "found:") + " " + found[0]
+        found[-1] += f" {unit}"
+    if short:  # every force of the equation is a side of the polygon: the short ones are named here
+        short[0] = tr(lang, "short sides (< {mm} mm), unnamed above:").format(
+            mm=num(SHORT_MM, lang)) + " " + short[0]
+        short[-1] += f" {unit}"
+    return found + short
 
 
 def _polygon_size(sh: Sheet, pg, lang: str, width: float | None = None) -> tuple[float, float]:
@@ -600,7 +611,7 @@ def _lever_need(sh: Sheet, s: Sheet2, lang: str, k: float, width: float | None =
 def _group_heading(s: Sheet2, g: int, lang: str) -> str:
     if g == 0:
         return tr(lang, "The crank")
-    return tr(lang, "Group {g} ({kind})").format(g=g, kind=s.sheet1.mechanism.groups[g - 1].kind)
+    return tr(lang, "Group {g} ({kind})").format(g=g, kind=pattern(s.sheet1.mechanism.groups[g - 1].kind, lang))
 
 
 GROUP_PAD = (8.0, 8.0)  # [mm] around a group's points (pins, blocks, names)

@@ -652,13 +652,14 @@ def _clip_seg(a, b, box):
 def _results(sh: Sheet, r, lang: str):
     d, g = r.planetary, r.spur
     teeth = " + ".join("/".join(map(str, s.teeth)) for s in d.stages)
+    mm = tr(lang, "mm")
     rows = [
         (tr(lang, "Motor speed n_{d}"), f"{r.motor_rpm} " + tr(lang, "rpm")),
         (tr(lang, "Reducer scheme; teeth"), f"{d.scheme}; {teeth}"),
         (tr(lang, "Planets k"), str(d.planets)),
         (tr(lang, "i_{pl}: required / obtained"),
          f"{_n(r.i_planetary, lang, 3)} / {_n(d.ratio, lang, 3)} ({num(d.ratio_error_pct, lang, decimals=2)} %)"),
-        (tr(lang, "Spur pair z_{1}/z_{2}, m"), f"{g.z1}/{g.z2}, {_g6(g.m_mm, lang)} " + tr(lang, "mm")),
+        (tr(lang, "Spur pair z_{1}/z_{2}; module of the drawing m"), f"{g.z1}/{g.z2}; {_g6(g.m_mm, lang)} " + tr(lang, "mm")),
         (tr(lang, "i_{12}: required / obtained"), f"{_n(r.i_spur, lang, 3)} / {_n(g.i_actual, lang, 3)}"),
     ]
     if g.shifted:
@@ -669,16 +670,18 @@ def _results(sh: Sheet, r, lang: str):
             (tr(lang, "Shifts x_{1}; x_{2}"),
              f"{num(g.x1, lang, sig=4)}; {num(g.x2, lang, sig=4)} ({rule})"),
             (tr(lang, "a_{w}; α_{w}"), f"{_g6(aw_of(g), lang)}; {num(g.alpha_w_deg, lang, sig=5)}°"),
-            ("d_{w1}; d_{w2}", f"{_n(pr.dw_mm[0], lang)}; {_n(pr.dw_mm[1], lang)}"),
+            ("d_{w1}; d_{w2}", f"{_n(pr.dw_mm[0], lang)}; {_n(pr.dw_mm[1], lang)} {mm}"),
         ]
-    rows += [
-        ("d_{1}; d_{2}", f"{_g6(g.d1_mm, lang)}; {_g6(g.d2_mm, lang)}"),
-        ("d_{a1}; d_{a2}", f"{_n(g.da1_mm, lang)}; {_n(g.da2_mm, lang)}" if g.shifted else f"{_g6(g.da1_mm, lang)}; {_g6(g.da2_mm, lang)}"),
-        ("d_{f1}; d_{f2}", f"{_n(g.df1_mm, lang)}; {_n(g.df2_mm, lang)}" if g.shifted else f"{_g6(g.df1_mm, lang)}; {_g6(g.df2_mm, lang)}"),
-        ("d_{b1}; d_{b2}", f"{_n(g.db1_mm, lang)}; {_n(g.db2_mm, lang)}"),
+    rows += [  # every value with its unit (a table on a sheet has no column of units)
+        ("d_{1}; d_{2}", f"{_g6(g.d1_mm, lang)}; {_g6(g.d2_mm, lang)} {mm}"),
+        ("d_{a1}; d_{a2}", (f"{_n(g.da1_mm, lang)}; {_n(g.da2_mm, lang)}" if g.shifted else
+                            f"{_g6(g.da1_mm, lang)}; {_g6(g.da2_mm, lang)}") + f" {mm}"),
+        ("d_{f1}; d_{f2}", (f"{_n(g.df1_mm, lang)}; {_n(g.df2_mm, lang)}" if g.shifted else
+                            f"{_g6(g.df1_mm, lang)}; {_g6(g.df2_mm, lang)}") + f" {mm}"),
+        ("d_{b1}; d_{b2}", f"{_n(g.db1_mm, lang)}; {_n(g.db2_mm, lang)} {mm}"),
         (tr(lang, "a_{w}; contact ratio ε_{α}") if not g.shifted
          else tr(lang, "a; contact ratio ε_{α}"),
-         f"{_g6(g.a_mm, lang)}; {_n(g.eps_alpha, lang, 3)}"),
+         f"{_g6(g.a_mm, lang)} {mm}; {_n(g.eps_alpha, lang, 3)}"),
     ]
     table(sh, BOX_TABLE, tr(lang, "Gear data"), rows, col1=0.55)
 

@@ -13,7 +13,7 @@ import math
 import numpy as np
 
 from .layout import DESCENT, SUB_DESCENT
-from .paper import H_LABEL, H_MIN_LABEL, Sheet, _dirs_towards, rich_parts
+from .paper import H_LABEL, H_MIN_LABEL, ROOM, Sheet, _dirs_towards, rich_parts
 
 MM = 1000.0  # real millimetres per metre
 GAP = 2.0  # between fields
@@ -53,11 +53,12 @@ def scale_line(sh: Sheet, f, text: str, h: float = H_LABEL) -> None:
 
 
 def wrap_items(sh: Sheet, items: list[str], width: float, h: float = H_NOTE, sep: str = ";  ") -> list[str]:
-    """Items joined by `sep` into lines no wider than `width` [mm] (an item is never split)."""
+    """Items joined by `sep` into lines no wider than `width` [mm] (an item is never split), with
+    room for a CAD program's wider font (paper.ROOM)."""
     lines, cur = [], ""
     for it in items:
         cand = f"{cur}{sep}{it}" if cur else it
-        if cur and sh.text_width(cand, h) > width:
+        if cur and sh.text_width(cand, h) * ROOM > width:
             lines.append(cur)
             cur = it
         else:
@@ -114,27 +115,36 @@ def hatched_guide(sh: Sheet, a, b, side) -> None:
 
 def link_segments(mech, kin, i: int, names=None, unit: float = 1.0, reach: dict | None = None):
     """What the links of `names` (all when None) look like at position number i of `kin` [real mm]:
-    ('line', p0, p1) for bars (from the farthest pins and points on them), ('poly', pts) for the bend
-    of a bar through a point off its axis, ('box', centre, angle, w, h) for blocks and sliders (size
+    ('line', p0, p1) for bars (from the farthest pins and points on their axis), ('poly', pts) the
+    outline and ('hatch', [(p0, p1), …]) the hatching of a bar with a joint off its axis (a rigid plate), ('box', centre, angle, w, h) for blocks and sliders (size
     in paper mm: `unit` real mm per paper mm); a slotted link runs from its pivot past the block to
     `reach[name]` [real mm] plus 4 paper mm."""
     z = {n: complex(x[i]) * MM for n, x in kin.z.items()}
     on_link: dict[str, list[str]] = {}
     for p in mech.points:
         on_link.setdefault(p.link, []).append(p.name)
+    hang = {j for g in mech.groups for j in g.known}  # the points later groups hang on: the link's joints
     out = []
     for ln in mech.links:
         if names is not None and ln.name not in names:
             continue
         if ln.kind in ("crank", "bar"):
             a, b = ln.axis
-            ends = [z[a], z[b]] + [z[p] for p in on_link.get(ln.name, [])]
             d = (z[b] - z[a]) / abs(z[b] - z[a])
+            ends, off = [z[a], z[b]], []
+            for p in on_link.get(ln.name, []):
+                across = abs(((z[p] - z[a]) * d.conjugate()).imag)
+                if across <= 1e-6 * max(1.0, abs(z[b] - z[a])):
+                    ends.append(z[p])  # on the axis: the bar runs on to it
+                elif p in hang:
+                    off.append(z[p])  # a joint off the axis: the link is a rigid plate
             t = [((e - z[a]) * d.conjugate()).real for e in ends]
             out.append(("line", z[a] + min(t) * d, z[a] + max(t) * d, ln))
-            for e in ends:
-                if abs(((e - z[a]) * d.conjugate()).imag) > 1e-6:
-                    out.append(("poly", [z[a], e, z[b]], ln))
+            if off:  # a link of three or more joints: one body, a hatched plate (the book's way)
+                hull = convex_hull([z[a] + min(t) * d, z[a] + max(t) * d] + off)
+                out.append(("poly", hull + hull[:1], ln))
+                if unit > 0:
+                    out.append(("hatch", hatch_lines(hull, 2.0 * unit), ln))
         elif ln.kind == "slotted":
             a, cpin = ln.axis
             riders = [g.joints[1] for g in mech.groups if g.guide is not None and g.guide.link == ln.name]
@@ -162,10 +172,63 @@ def link_segments(mech, kin, i: int, names=None, unit: float = 1.0, reach: dict 
     return out
 
 
+def convex_hull(pts: list[complex]) -> list[complex]:
+    """The convex hull of points, counter-clockwise (Andrew's monotone chain).
+
+    >>> convex_hull([0j, 2 + 0j, 1 + 1j, 1 + 0.2j])
+    [0j, (2+0j), (1+1j)]
+    """
+    p = sorted(set(pts), key=lambda q: (q.real, q.imag))
+    if len(p) < 3:
+        return p
+
+    def cross(o, a, b):
+        return (a - o).real * (b - o).imag - (a - o).imag * (b - o).real
+
+    lower, upper = [], []
+    for q in p:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], q) <= 0:
+            lower.pop()
+        lower.append(q)
+    for q in reversed(p):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], q) <= 0:
+            upper.pop()
+        upper.append(q)
+    return lower[:-1] + upper[:-1]
+
+
+def hatch_lines(hull: list[complex], step: float) -> list[tuple[complex, complex]]:
+    """Thin 45° hatching of a convex polygon, lines `step` apart (ГОСТ 2.306's section lines)."""
+    if len(hull) < 3 or step <= 0:
+        return []
+    u = complex(math.cos(math.pi / 4), math.sin(math.pi / 4))  # along the lines
+    n = u * 1j  # across them
+    proj = [(q * n.conjugate()).real for q in hull]
+    out = []
+    c = min(proj) + step / 2
+    while c < max(proj):
+        hits = []
+        for k in range(len(hull)):
+            p0, p1 = hull[k], hull[(k + 1) % len(hull)]
+            s0, s1 = proj[k], proj[(k + 1) % len(hull)]
+            if (s0 - c) * (s1 - c) < 0:
+                hits.append(p0 + (p1 - p0) * (c - s0) / (s1 - s0))
+        if len(hits) >= 2:
+            hits.sort(key=lambda q: (q * u.conjugate()).real)
+            out.append((hits[0], hits[-1]))
+        c += step
+    return out
+
+
 def draw_links(f, segs, layer: str, linetype, unit: float, size: float = 1.0) -> None:
     """Draw :func:`link_segments` in a field (real mm)."""
     for sg in segs:
-        if sg[0] == "line":
+        if sg[0] == "hatch":
+            if layer != "Основные":
+                continue  # the other positions' plates in outline only (the scheme stays readable)
+            for p0, p1 in sg[1]:
+                f.poly([[p0.real, p0.imag], [p1.real, p1.imag]], "Тонкие", None)
+        elif sg[0] == "line":
             p0, p1 = sg[1], sg[2]
             f.poly([[p0.real, p0.imag], [p1.real, p1.imag]], layer, linetype)
         elif sg[0] == "poly":

@@ -38,6 +38,11 @@ TB_ORIGIN = (FRAME[2] - TB_W, FRAME[1])  # its lower-left corner
 TB_BOX = (TB_ORIGIN[0], TB_ORIGIN[1], TB_ORIGIN[0] + TB_W, TB_ORIGIN[1] + TB_H)
 TEXT_HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0, 20.0)  # ГОСТ 2.304
 MIN_WIDTH_FACTOR = 0.6  # narrower text is hard to read; wrap first
+# A CAD program without osifont draws the sheet's text in its own font: LibreCAD 2.2's stroke font is
+# about 30 % wider. Every text with a width to keep (a cell, a field, the frame) is laid out as if it
+# were ROOM times as wide as osifont sets it, and aligned by the DXF itself (centre, right), so the
+# wider font stays inside its cell too; our PDF keeps osifont (with that much room to spare).
+ROOM = 1.3
 MIN_HEIGHT = 2.5  # ГОСТ 2.304: never smaller (only the title block's cells use it)
 H_LABEL = 5.0  # labels and dimensions on A1
 H_MIN_LABEL = 3.5  # the smallest label (dense constructions)
@@ -242,9 +247,19 @@ def plain(text: str) -> str:
 
 
 SUB_RATIO = 0.7
+SUPERSCRIPTS = str.maketrans({"2": "²", "3": "³"})  # a power written inline (osifont has these two)
 
 
 SUB_DROP = 0.25  # a subscript's baseline below the text's, in heights
+
+
+def dxf_literal(text: str) -> str:
+    """A person's text as a TEXT entity's string that every reader shows as the characters given.
+
+    >>> dxf_literal("%%uIvanov G^{2}")
+    '%%%%%%uIvanov G^ {2}'
+    """
+    return text.replace("%", "%%%").replace("^", "^ ")
 
 
 def mtext_content(text: str) -> str:
@@ -567,9 +582,9 @@ class Sheet:
             w = self._widths[key] = self.font(h, wf).text_width(part)
         return w
 
-    def text_width(self, text: str, h: float, wf: float = 1.0) -> float:
+    def text_width(self, text: str, h: float, wf: float = 1.0, literal: bool = False) -> float:
         w = 0.0
-        for part, lv in rich_parts(glyphs(text)):
+        for part, lv in ([(text, 0)] if literal else rich_parts(glyphs(text))):
             w += self._w(part, h if lv == 0 else h * SUB_RATIO, wf)
         return w
 
@@ -583,32 +598,52 @@ class Sheet:
             y -= step
         return top
 
-    def _put(self, x, y, text: str, h: float, wf: float, rot: float, layer: str, register: bool = True):
-        """One line of text with its insertion at the left end of the baseline; TEXT when plain,
-        MTEXT when it carries an index."""
-        text = glyphs(text)
-        parts = rich_parts(text)
+    def _put(self, x, y, text: str, h: float, wf: float, rot: float, layer: str, register: bool = True,
+             align: str = "left", room: float = ROOM, literal: bool = False):
+        """One line of text, (x, y) the left end, the centre or the right end of its baseline
+        (`align`), aligned so in the DXF (a CAD program with a wider font keeps it centred or
+        right-aligned in its cell); TEXT when plain (its width factor `wf`), MTEXT when it carries an
+        index — MTEXT has no width factor every program reads (LibreCAD prints ``\\W0.8;`` as text),
+        so a narrowed text with an index is a TEXT with its indices written inline (``μv``, ``м²``).
+        A `literal` text (a person's: a name, a group) is one TEXT of the characters given: no index,
+        no glyph swapped, its "%%" codes written as "%%%" (AutoCAD's percent sign), so «%%u» is not
+        an underline, and a caret as "^ " (not a control character)."""
+        from ezdxf.enums import TextEntityAlignment
+
+        if literal:
+            parts = [(dxf_literal(text), 0)]
+        else:
+            text = glyphs(text)
+            parts = rich_parts(text)
         sub = any(lv for _, lv in parts)
+        if sub and wf < 1.0 - 1e-6:  # narrowed: one TEXT with its width factor, its indices inline
+            target = self.text_width(text, h, wf)  # as wide as the fitted text with its indices
+            parts = [(t.translate(SUPERSCRIPTS) if lv > 0 else t, 0) for t, lv in parts]
+            text, sub = "".join(t for t, _ in parts), False
+            wf = wf * target / max(self.text_width(text, h, wf), 1e-9)
         if not sub:
             e = self.msp.add_text("".join(t for t, _ in parts), height=h, rotation=rot,
                                   dxfattribs={"layer": layer, "style": STYLE, "width": wf})
-            e.set_placement((float(x), float(y)))
+            e.set_placement((float(x), float(y)), align={"left": TextEntityAlignment.LEFT,
+                                                         "center": TextEntityAlignment.CENTER,
+                                                         "right": TextEntityAlignment.RIGHT}[align])
         else:
             e = self.msp.add_mtext(mtext_content(text), dxfattribs={
                 "layer": layer, "style": STYLE, "char_height": h, "insert": (float(x), float(y)),
-                "attachment_point": 7, "rotation": rot})
-            if abs(wf - 1.0) > 1e-6:
-                e.text = f"\\W{wf:.3f};" + e.text
-        if register:
-            w = self.text_width(text, h, wf)
-            self.obstacles.add_box(text_corners(x, y, w, h, rot, sub=sub))
+                "attachment_point": {"left": 7, "center": 8, "right": 9}[align], "rotation": rot})
+        if register:  # the room a wider font takes, about the alignment point
+            w = self.text_width(text, h, wf, literal) * room
+            c, s_ = math.cos(math.radians(rot)), math.sin(math.radians(rot))
+            dx = {"left": 0.0, "center": -w / 2, "right": -w}[align]
+            self.obstacles.add_box(text_corners(x + c * dx, y + s_ * dx, w, h, rot, sub=sub))
         return e
 
     def text(self, x, y, text: str, h: float = 3.5, *, align: str = "left", valign: str = "base",
              width: float | None = None, rot: float = 0.0, layer: str = "Текст", max_lines: int = 1,
              line_gap: float = 0.5, height_max: float | None = None, min_h: float = MIN_HEIGHT,
-             min_wf: float = MIN_WIDTH_FACTOR) -> list:
-        """Text at (x, y) [sheet mm] with ГОСТ height `h`; markup _{sub}, ^{sup}.
+             min_wf: float = MIN_WIDTH_FACTOR, literal: bool = False) -> list:
+        """Text at (x, y) [sheet mm] with ГОСТ height `h`; markup _{sub}, ^{sup} (none in a
+        `literal` text: a person's, set as the characters given).
 
         A text wider than `width` is first narrowed (width factor down to `min_wf`), then wrapped
         into at most `max_lines` lines, then set a size smaller (never below `min_h`), and at the
@@ -618,7 +653,7 @@ class Sheet:
         """
         if not text:
             return []
-        h, wf, lines = self._fit(text, h, width, max_lines, height_max, line_gap, min_h, min_wf)
+        h, wf, lines = self._fit(text, h, width, max_lines, height_max, line_gap, min_h, min_wf, literal)
         n = len(lines)
         step = h * (1.0 + line_gap + 0.15)
         if valign == "top":
@@ -632,14 +667,12 @@ class Sheet:
         out = []
         c, s = math.cos(math.radians(rot)), math.sin(math.radians(rot))
         for k, line in enumerate(lines):
-            w = self.text_width(line, h, wf)
-            dx = {"left": 0.0, "center": -w / 2, "right": -w}[align]
             dy = y0 - k * step
-            X, Y = x + c * dx - s * dy, y + s * dx + c * dy
-            out.append(self._put(X, Y, line, h, wf, rot, layer))
+            X, Y = x - s * dy, y + c * dy
+            out.append(self._put(X, Y, line, h, wf, rot, layer, align=align, literal=literal))
         return out
 
-    def _fit(self, text, h, width, max_lines, height_max, gap, min_h=MIN_HEIGHT, min_wf=MIN_WIDTH_FACTOR):
+    def _fit(self, text, h, width, max_lines, height_max, gap, min_h=MIN_HEIGHT, min_wf=MIN_WIDTH_FACTOR, literal=False):
         def block_h(hh, n):
             return hh * n + (n - 1) * hh * (gap + 0.15)
 
@@ -655,7 +688,7 @@ class Sheet:
                     continue
                 if width is None:
                     return hh, 1.0, lines
-                w = max(self.text_width(t, hh) for t in lines)
+                w = max(self.text_width(t, hh, 1.0, literal) for t in lines) * ROOM
                 if w <= width:
                     return hh, 1.0, lines
                 if w * min_wf <= width:
@@ -667,7 +700,7 @@ class Sheet:
             if height_max is not None and block_h(hh, n) > height_max + 1e-9:
                 break
             best = _wrap(text, n) or best
-        w = max(self.text_width(t, hh) for t in best)
+        w = max(self.text_width(t, hh, 1.0, literal) for t in best) * (ROOM if width else 1.0)
         return hh, min(1.0, (width or w) / w * 0.999), best
 
     # ---------------------------------------------------------------------------- labels
@@ -698,44 +731,66 @@ class Sheet:
         return inside(corners, within) and self.obstacles.free(corners)
 
     def _place(self, lab: Label) -> None:
+        """The label at the first free candidate: the caller's positions (left ends of the baseline,
+        as measured in osifont), then around the anchor with ROOM for a wider font — the text aligned
+        towards the anchor (right-aligned on its left, centred above and below it), so that a
+        wider font grows away from the anchor, into the room kept for it."""
         text = glyphs(lab.text)
         h = lab.h
         w = self.text_width(text, h)
+        wr = w * ROOM
         sub = any(lv for _, lv in rich_parts(text))
-        cands = [(x, y, r) for x, y, r in lab.positions]
-        if lab.rot == 0.0:
-            cands += [(x, y, 0.0) for x, y in ring_positions(lab.anchor, w, h, lab.dirs, lab.dists, sub)]
-        else:  # a turned label: along its direction, centred on the anchor's normal
-            c, s = math.cos(math.radians(lab.rot)), math.sin(math.radians(lab.rot))
-            for dist in lab.dists:
-                for side in (1.0, -1.0):
-                    off = dist + (0 if side > 0 else h + DESCENTS * h)
-                    x = lab.anchor[0] - c * w / 2 - s * off * side
-                    y = lab.anchor[1] - s * w / 2 + c * off * side
-                    cands.append((x, y, lab.rot))
-        for x, y, r in cands:
-            box = text_corners(x, y, w, h, r, sub=sub, pad=CLEAR)
+        cands = [(x, y, r, w, "left") for x, y, r in lab.positions]
+        rings = []
+        for ww in (wr, w):  # each place with room for a wider font, else as osifont sets it
+            ring = []
+            if lab.rot == 0.0:
+                for x, y in ring_positions(lab.anchor, ww, h, lab.dirs, lab.dists, sub):
+                    mid = x + ww / 2 - lab.anchor[0]
+                    align = "center" if abs(mid) < ww / 4 else ("left" if mid > 0 else "right")
+                    ring.append((x, y, 0.0, ww, align))
+            else:  # a turned label: along its direction, centred on the anchor's normal
+                c, s = math.cos(math.radians(lab.rot)), math.sin(math.radians(lab.rot))
+                for dist in lab.dists:
+                    for side in (1.0, -1.0):
+                        off = dist + (0 if side > 0 else h + DESCENTS * h)
+                        x = lab.anchor[0] - c * ww / 2 - s * off * side
+                        y = lab.anchor[1] - s * ww / 2 + c * off * side
+                        ring.append((x, y, lab.rot, ww, "center"))
+            rings.append(ring)
+        cands += [c for pair in zip(*rings) for c in pair]
+        for x, y, r, ww, align in cands:
+            box = text_corners(x, y, ww, h, r, sub=sub, pad=CLEAR)
             if self._free(box, lab.within):
-                self._put(x, y, text, h, 1.0, r, "Текст")
+                self._put_in(x, y, ww, text, h, r, align)
                 return
         if lab.leader:
-            best = self._leader_spot(lab, text, w, h, sub)
-            if best is not None:
-                return
+            for room in (ROOM, 1.0):
+                if self._leader_spot(lab, text, w, h, sub, room) is not None:
+                    return
         # nowhere free: the least crowded candidate, and the sheet remembers it (tests fail on it)
-        x, y, r = min(cands, key=lambda c: self._cost(text_corners(c[0], c[1], w, h, c[2], sub=sub, pad=CLEAR), lab))
-        self._put(x, y, text, h, 1.0, r, "Текст")
+        x, y, r, ww, align = min(cands, key=lambda c: self._cost(text_corners(c[0], c[1], c[3], h, c[2], sub=sub,
+                                                                               pad=CLEAR), lab))
+        self._put_in(x, y, ww, text, h, r, align)
         self.unplaced.append(text)
+
+    def _put_in(self, x, y, w, text, h, rot, align):
+        """A label in the box of length `w` whose baseline starts at (x, y), aligned in it."""
+        k = {"left": 0.0, "center": 0.5, "right": 1.0}[align]
+        c, s = math.cos(math.radians(rot)), math.sin(math.radians(rot))
+        # indexed as osifont sets it (the room kept is the label's own: labels keep their old density)
+        self._put(x + c * k * w, y + s * k * w, text, h, 1.0, rot, "Текст", align=align, room=1.0)
 
     def _cost(self, box, lab) -> float:
         return (0.0 if inside(box, lab.within) else 100.0) + 3.0 * self.obstacles.text_hits(box) \
             + self.obstacles.line_hits(box)
 
-    def _leader_spot(self, lab: Label, text, w, h, sub):
+    def _leader_spot(self, lab: Label, text, w, h, sub, room: float = ROOM):
         """A place farther out with a leader: the text on a shelf, a thin line from the anchor to
         the shelf's near end; neither the text nor the leader touches text (the leader may cross
         lines, as on any drawing)."""
         d_lo = (SUB_DESCENTS if sub else DESCENTS) * h
+        w = w * room  # room for a wider font, the text aligned at the shelf's near end
         anchors = [lab.anchor] + list(lab.anchors)
         for dist in (7.0, 10.0, 14.0, 19.0, 25.0, 32.0, 40.0, 50.0, 62.0, 76.0, 92.0):
             for k in range(24):
@@ -756,7 +811,7 @@ class Sheet:
                 self.line(*shelf, "Тонкие")
                 if lab.dot:
                     self.dot((ax, ay), 0.5, "Тонкие")
-                self._put(x, y, text, h, 1.0, 0.0, "Текст")
+                self._put_in(x, y, w, text, h, 0.0, "left" if right else "right")
                 return True
         return None
 
@@ -839,26 +894,27 @@ class Sheet:
             return self.text(X + x, Y + y, s, h, width=w, align=align, **kw)
 
         for x, w, s in ((0, 7, "Изм."), (7, 10, "Лист"), (17, 23, "№ докум."), (40, 15, "Подп."), (55, 10, "Дата")):
-            T(x + w / 2, 31.2, s, 2.5, w - 1, "center")
+            T(x + w / 2, 31.2, s, 2.5, w - 3, "center")
         # lower rows, top down: Разраб. 25–30, Пров. 20–25, Т.контр. 15–20, (free), Н.контр., Утв.
         for k, s in enumerate(("Разраб.", "Пров.", "Т.контр.", "", "Н.контр.", "Утв.")):
             if s:
                 T(0.8, 25 - k * 5 + 1.2, s, 2.5, 15.5)
         # a full name: one line of 3.5 or 2.5 mm, condensed as far as needed (never smaller)
-        T(17.6, 26.2, title.student, 3.5, 22.0, height_max=3.6)
-        T(17.6, 21.2, title.teacher, 3.5, 22.0, height_max=3.6)
+        T(18.0, 26.2, title.student, 3.5, 21.0, height_max=3.6, min_wf=0.6, literal=True)  # a person's text, as typed; 1 mm clear of the cell's lines
+        T(18.0, 21.2, title.teacher, 3.5, 21.0, height_max=3.6, min_wf=0.6, literal=True)
         for x, w, s in ((135, 15, "Лит."), (150, 17, "Масса"), (167, 18, "Масштаб")):
-            T(x + w / 2, 36.2, s, 2.5, w - 1, "center")
+            T(x + w / 2, 36.2, s, 2.5, w - 3, "center")
         T(176, 27.5, scale, 5.0, 16, "center", valign="middle")
         T(137.5, 27.5, "У", 3.5, 4, "center", valign="middle")  # литера: учебный документ
         T(136, 16.2, "Лист 1", 2.5, 18)
         T(156, 16.2, "Листов 1", 2.5, 28)
-        T(125, 47.5, designation, 7.0, 114, "center", valign="middle")
-        T(100, 27.5, name, 5.0, 66, "center", valign="middle", max_lines=3, height_max=23)
+        T(125, 47.5, designation, 7.0, 114, "center", valign="middle", literal=True)
+        # a long name goes onto two or three lines before it is narrowed far
+        T(100, 27.5, name, 5.0, 66, "center", valign="middle", max_lines=3, height_max=23, min_wf=0.75)
         org = ", ".join(s for s in (title.org, ("гр. " + title.group) if title.group else "") if s)
         if org_extra:
             org = f"{org}, {org_extra}" if org else org_extra
-        T(160, 7.5, org, 3.5, 48, "center", valign="middle", max_lines=3, height_max=13.5)
+        T(160, 7.5, org, 3.5, 48, "center", valign="middle", max_lines=3, height_max=13.5, literal=True)
 
     # ---------------------------------------------------------------------------- finish
     def finish(self) -> None:

@@ -124,7 +124,13 @@ def _frontend(ctx, backend, cfg):
 
             ins = dxf.insert
             rot = Matrix44.z_rotate(math.radians(dxf.get("rotation", 0.0)))
-            for t, dx, dy, hh in run_offsets(mtext_runs(content), h, measure):
+            runs = run_offsets(mtext_runs(content), h, measure)
+            ap = dxf.get("attachment_point", 7)
+            if ap in (8, 9):  # bottom centre / right: the runs shifted by (half) their length
+                total = max((dx + measure(t, hh) for t, dx, dy, hh in runs), default=0.0)
+                shift = total / 2 if ap == 8 else total
+                runs = [(t, dx - shift, dy, hh) for t, dx, dy, hh in runs]
+            for t, dx, dy, hh in runs:
                 m = Matrix44.scale(wf, 1.0, 1.0) @ Matrix44.translate(dx, dy, 0) @ rot @ Matrix44.translate(ins.x, ins.y, 0)
                 self.pipeline.draw_text(t, m, properties, hh, "MTEXT")
 

@@ -8,7 +8,7 @@ from ...i18n.numbers import num
 
 def print_assignments(console, plan, lang: str) -> None:
     """`plan`: a teacher.assign.AssignmentSet, read by its fields."""
-    from rich.markup import escape
+    from . import escape
     from rich.table import Table
 
     from ...i18n.errors import error_text

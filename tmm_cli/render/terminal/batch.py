@@ -20,7 +20,7 @@ def _num(value, lang: str, decimals: int) -> str:
 def print_batch_intro(console, lang: str, *, roster=None, default_crank: bool = False) -> None:
     """Said once, before the rows: the roster's encoding and separator, or that every row uses
     the book's crank speed (a --variants run without --crank-rpm)."""
-    from rich.markup import escape
+    from . import escape
 
     if roster is not None:
         sep = tr(lang, "';'") if roster.delimiter == ";" else tr(lang, "','")
@@ -43,7 +43,7 @@ def print_batch_intro(console, lang: str, *, roster=None, default_crank: bool = 
 
 def print_batch(console, summary, out_dir: Path, lang: str) -> None:
     from rich import box
-    from rich.markup import escape
+    from . import escape
     from rich.table import Table
 
     from ..data.summary import STATUS, flag_name

@@ -5,6 +5,7 @@ only the unit is changed back to the chain file's.
 
 from __future__ import annotations
 
+from . import escape
 from ...accuracy.chain import ChainResult
 from ...i18n import N_, tr
 from ...i18n.numbers import num
@@ -47,7 +48,7 @@ def _links_table(res: ChainResult, lang: str):
                (tr(lang, "Share of variance, %"), "right"),
                caption=tr(lang, "ξ: + the link increases the closing link, − decreases it. Laws: normal, triangle (Simpson), uniform, with λ². β = ±arctg(δ/l): a hub's turn in its radial clearance δ over the length l, mm (Abdullaev, Rasulov)."))
     for i, (link, share) in enumerate(zip(chain.links, res.shares), 1):
-        name = link.name
+        name = escape(link.name)  # a person's text: "[/x]" is text
         if link.clearance is not None:
             name += f" = arctg({num(link.clearance * 1e3, lang, sig=6)}/{num(link.length * 1e3, lang, sig=6)})"
         law = tr(lang, DISTRIBUTIONS[link.distribution])
@@ -86,9 +87,9 @@ def summary_lines(res: ChainResult, lang: str) -> list[str]:
 
 
 def print_chain(console, res: ChainResult, lang: str) -> None:
-    name = res.chain.name or tr(lang, "Dimensional chain")
+    name = escape(res.chain.name) if res.chain.name else tr(lang, "Dimensional chain")
     console.print(f"[bold]{name}[/] " + tr(lang, "(dimensional chain; Abdullaev, Rasulov)"))
     console.print(_links_table(res, lang))
     console.print(_closing_table(res, lang))
     for line in summary_lines(res, lang):
-        console.print(line)
+        console.print(escape(line))

@@ -22,7 +22,7 @@ _COLOUR = {"fail": "red", "missing": "red", "unreadable": "red", "duplicate": "r
 
 
 def _coloured(status: str, lang: str) -> str:
-    from rich.markup import escape
+    from . import escape
 
     colour = "green" if status.startswith("pass") else _COLOUR.get(status, "yellow")
     return f"[{colour}]{escape(status_word(status, lang))}[/]"
@@ -57,7 +57,7 @@ def _who(report, lang: str) -> str:
 def print_check(console, report, lang: str) -> None:
     """One student: every checked value (yours, right, deviation, tolerance, result, where to look),
     then what to correct in sentences, the remarks and the verdict."""
-    from rich.markup import escape
+    from . import escape
     from rich.table import Table
 
     from ...i18n.lang import note_text
@@ -133,7 +133,7 @@ def group_markdown(group, lang: str, rtol_pct: float, sheets) -> str:
 
 
 def print_group(console, group, lang: str) -> None:
-    from rich.markup import escape
+    from . import escape
     from rich.table import Table
 
     from ...i18n.errors import error_text

@@ -7,9 +7,10 @@ import math
 
 import numpy as np
 
+from . import escape
 from ...linkage.positions import output_coordinate
 from ...linkage.sheet1 import Sheet1
-from ...i18n import tr
+from ...i18n import N_, tr
 from ...i18n.numbers import num
 
 PATTERN_RU = str.maketrans({"R": "В", "P": "П"})  # вращательная, поступательная
@@ -51,12 +52,22 @@ def structure_table(s: Sheet1, lang: str):
     return t
 
 
+# the links' roles (linkage/roles.py) as the course names them
+ROLE_WORDS = {"crank": N_("crank"), "rocker": N_("rocker"), "coupler": N_("connecting rod"), "slider": N_("slider"),
+              "slotted": N_("slotted link"), "block": N_("slotted-link block")}
+
+
+def role_words(s: Sheet1, lang: str) -> dict[str, str]:
+    """Link name → its role's word in `lang` («кривошип», «коромысло», «шатун», …)."""
+    from ...linkage.roles import link_roles
+
+    return {name: tr(lang, ROLE_WORDS[role]) for name, role in link_roles(s).items()}
+
+
 def links_table(s: Sheet1, lang: str):
     m = s.mechanism
-    kinds = {"crank": tr(lang, "crank"), "bar": tr(lang, "bar"),
-             "slider": tr(lang, "slider"), "block": tr(lang, "block"),
-             "slotted": tr(lang, "slotted link")}
-    t = _table(tr(lang, "{name}: links").format(name=m.name or tr(lang, "Mechanism")),
+    kinds = role_words(s, lang)
+    t = _table(tr(lang, "{name}: links").format(name=escape(m.name) if m.name else tr(lang, "Mechanism")),
                ("№", "right"), (tr(lang, "Link"), "left"), (tr(lang, "Kind"), "left"),
                (tr(lang, "Size"), "right"))
     t.add_row("0", tr(lang, "frame"), ", ".join(m.frame), "")
@@ -66,7 +77,7 @@ def links_table(s: Sheet1, lang: str):
             size[name] = length
     for ln in m.links:
         mm = num(size[ln.name] * 1000, lang, decimals=1) + " " + tr(lang, "mm") if ln.name in size else ""
-        t.add_row(str(ln.number), ln.name, kinds[ln.kind], mm)
+        t.add_row(str(ln.number), ln.name, kinds[ln.name], mm)
     return t
 
 

@@ -22,7 +22,18 @@ def print_project(console, result, lang: str) -> None:
     print_gears(console, result.gears, lang)
     console.print(Heading(tr(lang, "Sheet 3 — cam mechanism")))
     print_cam(console, result.cam, lang, include_input=False)
-    print_notes(console, result.notes, lang)
+    print_notes(console, tuple(result.notes) + mechanism_name_notes(result, lang), lang)
+
+
+def mechanism_name_notes(result, lang: str) -> tuple:
+    """The warning of a mechanism's name not in the letters of `lang` (with --mechanism)."""
+    from ...i18n.lang import name_script_notes
+
+    linkage = getattr(result, "linkage", None)
+    if linkage is None:
+        return ()
+    s1 = getattr(linkage, "sheet1", linkage)
+    return name_script_notes(s1.mechanism.name, lang)
 
 
 def print_notes(console, notes, lang: str) -> None:

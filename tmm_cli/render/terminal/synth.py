@@ -119,7 +119,7 @@ def check_table(result, lang: str):
 
 
 def print_synth(console, result, lang: str) -> None:
-    from rich.markup import escape
+    from . import escape
 
     title, construction = tr(lang, TITLES[result.task.type]), tr(lang, "Construction")
     console.print(f"[bold]{escape(title)}[/]")
