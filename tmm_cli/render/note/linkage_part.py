@@ -93,8 +93,13 @@ class _Sym:
     def __init__(self, mech):
         names = list(mech.joint_names)
         for g in mech.groups:
-            if g.kind == "RPR":
+            if g.kind in ("RPR", "RPP"):
                 names += [f"{g.joints[0]}{n}" for n in g.numbers]
+            # the points of the guides' links under a block (b3 of a slider on the slotted link 3, …)
+            point = {"RRP": g.joints[-1], "PRP": g.joints[0], "RPP": f"{g.joints[0]}{g.numbers[1]}"}.get(g.kind)
+            for gd in ((g.guide,) if g.guide is not None else ()) + g.guides:
+                if gd.moving and point is not None:
+                    names.append(f"{point}{mech.link(gd.link).number}")
         self.names = names
 
     def parts(self, symbol: str) -> tuple[str, str, list[str]]:
