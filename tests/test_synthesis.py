@@ -194,20 +194,27 @@ def test_the_task_file_is_never_overwritten(tmp_path):
     assert task.read_text(encoding="utf-8").startswith('type = "crank-slider"')
 
 
-def test_chain_synth_linkage_project(tmp_path):
-    r = run("synth", EXAMPLES / "synth_shaper.toml", "--out", tmp_path / "m", "--no-plots", "--lang", "en")
+@pytest.mark.parametrize("name,k,rpm", [("synth_shaper", 1.5, 60.0), ("synth_rocker", 1.2, 120.0),
+                                         ("synth_slider", 1.2, 90.0)])
+def test_chain_synth_linkage_project(name, k, rpm, tmp_path):
+    """The README's chain works end to end for every shipped example: the task's sheet-2 tables reach
+    the mechanism file, and the project's note opens chapter 1 with the synthesis."""
+    r = run("synth", EXAMPLES / f"{name}.toml", "--out", tmp_path / "m", "--no-plots", "--lang", "en")
     assert r.exit_code == 0, r.output
-    mech = tmp_path / "m" / "synth_shaper.toml"
+    mech = tmp_path / "m" / f"{name}.toml"
     r = run("linkage", mech, "--out", tmp_path, "--json", "--no-plots", "--lang", "en")
     assert r.exit_code == 0, r.output
     doc = json.loads(r.stdout)
-    assert doc["stroke_m"] == pytest.approx(0.40, rel=1e-3) and doc["time_ratio"] == pytest.approx(1.5, rel=1e-3)
+    assert doc["time_ratio"] == pytest.approx(k, rel=1e-3)
+    if name == "synth_shaper":
+        assert doc["stroke_m"] == pytest.approx(0.40, rel=1e-3)
     r = run("project", "-v", 17, "--mechanism", mech, "--no-plots", "--report", "md", "--no-sheets", "--out",
-            tmp_path / "p", "--lang", "en")
+            tmp_path / "p", "--lang", "ru")
     assert r.exit_code == 0, r.output
     res = json.loads((tmp_path / "p" / "variant-17" / "results.json").read_text(encoding="utf-8"))
-    assert res["gears"]["crank_rpm"] == pytest.approx(60.0)
+    assert res["gears"]["crank_rpm"] == pytest.approx(rpm)
     assert res["mechanism"]["dynamics"]["motor_moment_Nm"] > 0
+    assert "Синтез механизма" in (tmp_path / "p" / "variant-17" / "report.md").read_text(encoding="utf-8")
 
 
 HOSTILE = {
