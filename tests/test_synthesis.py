@@ -280,6 +280,10 @@ def test_synthesis_gives_back_the_examples_lengths_from_their_own_h_k_psi():
 # the note: «Синтез механизма» opens chapter 1 when the file records its task
 
 def _note_of(text: str, lang: str = "ru"):
+    return _note_of_figs(text, lang, None)
+
+
+def _note_of_figs(text: str, lang: str, figures):
     from dataclasses import replace
 
     from tmm_cli.linkage.sheet1 import analyse_mechanism
@@ -291,7 +295,7 @@ def _note_of(text: str, lang: str = "ru"):
 
     m = parse_mechanism(tomllib.loads(text), "m.toml")
     r = replace(run_project(get_variant("17")), linkage=analyse_sheet2(analyse_mechanism(m), parse_sheet2(m)))
-    return build_note(r, lang)
+    return build_note(r, lang, figures)
 
 
 def _synth_text(name: str) -> str:
@@ -354,3 +358,56 @@ def test_sheet1_draws_the_construction(name, angle, tmp_path):
     (tmp_path / "plain").mkdir()
     doc2 = reopen(sheet1(plain, "ru", TITLE), tmp_path / "plain", "sheet1")
     assert angle not in [e.dxf.text for e in doc2.modelspace().query("TEXT")]
+
+
+def test_rocker_note_derives_every_number_and_shows_the_construction():
+    """B6: AC₁, AC₂ and l_AD come with formulas and substitutions (from the coordinates of the chosen
+    pivot on the locus), γ_min with cos γ and its substitution; the given data name γ ≥ γ_task; the
+    figure of the construction is embedded with a caption when drawn."""
+    from tmm_cli.render.note.mathsyntax import check_line
+    from tmm_cli.render.note.model import Figure, Formula, Heading, Paragraph
+
+    from tmm_cli.render.note import note_figures
+
+    text = _synth_text("synth_rocker.toml")
+    doc = _note_of_figs(text, "ru", {"linkage_synthesis": ("a.svg", "a.png", 16.5, 13.0)})
+    blocks = doc.blocks
+    i = next(k for k, b in enumerate(blocks) if isinstance(b, Heading) and b.text == "Синтез механизма")
+    j = next(k for k in range(i + 1, len(blocks)) if isinstance(blocks[k], Heading))
+    section = blocks[i:j]
+    math_ = [b.math for b in section if isinstance(b, Formula)]
+    for lhs, result in (("A C_1 = sqrt", '"105,100"'), ("A C_2 = sqrt", '"234,408"'), ("l_(A D) = sqrt", '"211,11"'),
+                        ("cos μ_1 =", '"0,6976"'), ("l_(A B) = (A C_2 - A C_1)/2", '"64,65"')):
+        f = next(m for m in math_ if m.startswith(lhs))
+        assert result in f and all(c.ok for c in check_line(f))
+    words = " ".join(b.text for b in section if isinstance(b, Paragraph))
+    assert 'γ_"min" >= "40°"' in words and '"45,77°"' in words
+    figs = [b for b in section if isinstance(b, Figure)]
+    assert [f.name for f in figs] == ["linkage_synthesis"] and figs[0].caption
+    assert "{fig:linkage_synthesis}" in words
+    m = parse_mechanism(tomllib.loads(text), "m.toml")
+    from types import SimpleNamespace
+
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+
+    s1 = analyse_mechanism(m)
+    assert note_figures(SimpleNamespace(linkage=SimpleNamespace(sheet1=s1)))[0] == "linkage_synthesis"
+    plain = analyse_mechanism(parse_mechanism({k: v for k, v in tomllib.loads(text).items() if k != "synthesis"}))
+    assert "linkage_synthesis" not in note_figures(SimpleNamespace(linkage=SimpleNamespace(sheet1=plain)))
+
+
+def test_the_construction_figure_of_the_note_lies_on_the_mirrored_mechanism():
+    """The rocker example is written mirrored (its load makes the other stroke the working one): the
+    figure's C₁, C₂ and locus follow the drawn mechanism, not the unmirrored synthesis."""
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+    from tmm_cli.render.figures.synth import recorded_construction_figure
+
+    s1 = analyse_mechanism(parse_mechanism(tomllib.loads(_synth_text("synth_rocker.toml")), "m.toml"))
+    fig = recorded_construction_figure(s1, "ru", (165.0, 130.0))
+    ax = fig.axes[0]
+    marks = {t.get_text(): t.xy for t in ax.texts if hasattr(t, "xy")}
+    c = s1.cycle
+    ends = [complex(c.kin.z["C"][p.index]) * 1000 for p in c.positions if p.extreme in ("start", "end")]
+    for name in ("$C_1$", "$C_2$"):
+        z = complex(*marks[name])
+        assert min(abs(z - e) for e in ends) < 1e-6
