@@ -411,3 +411,36 @@ def test_the_construction_figure_of_the_note_lies_on_the_mirrored_mechanism():
     for name in ("$C_1$", "$C_2$"):
         z = complex(*marks[name])
         assert min(abs(z - e) for e in ends) < 1e-6
+
+
+@pytest.mark.parametrize("name,want", [
+    ("synth_slider.toml", ["H = 100,0", "e = 20,0", "B1", "B2"]),
+    ("synth_rocker.toml", ["ψ = 40,00°", "R = 242,8", "C1C2 = 136,8", "C1", "C2"]),
+    ("synth_shaper.toml", ["f = 31,7"])])
+def test_sheet1_labels_the_construction(name, want, tmp_path):
+    """B7: the crank-rocker's C₁, C₂, the chord, ψ at D and the locus radius R (the locus an arc inside
+    the field); the crank-slider's B₁, B₂, e and H; the shaper's f as a dimension of the sagitta
+    (a dimension line of the sagitta's length between two arrowheads, not a leader to the arc)."""
+    from test_sheets import TITLE, fields, reopen
+
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+    from tmm_cli.render.sheets.linkage_sheet import sheet1
+
+    s = analyse_mechanism(parse_mechanism(tomllib.loads(_synth_text(name)), "m.toml"))
+    doc = reopen(sheet1(s, "ru", TITLE), tmp_path, "sheet1")
+    msp = doc.modelspace()
+    texts = [e.dxf.text for e in msp.query("TEXT")] + [e.plain_text().replace("^", "") for e in msp.query("MTEXT")]
+    for w in want:
+        assert w in texts, (w, texts)
+    box = fields(doc)["scheme"]["box"]
+    x0, y0, x1, y1 = box
+    for e in msp.query("LWPOLYLINE[layer=='Осевые']"):
+        for x, y, *_ in e.get_points():
+            assert x0 - 1e-6 <= x <= x1 + 1e-6 and y0 - 1e-6 <= y <= y1 + 1e-6
+    assert not msp.query("CIRCLE[layer=='Осевые']") and not msp.query("ARC[layer=='Осевые']")
+    if name == "synth_shaper.toml":
+        scale = fields(doc)["scheme"]["scale"]
+        f_sheet = 31.677 * scale
+        dims = [e for e in msp.query("LINE[layer=='Размеры']")
+                if abs(abs(e.dxf.end.y - e.dxf.start.y) - (f_sheet + 14.0)) < 0.2 and abs(e.dxf.end.x - e.dxf.start.x) < 0.5]
+        assert dims, "no dimension line along the sagitta"
