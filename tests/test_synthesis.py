@@ -330,6 +330,23 @@ def test_note_says_when_the_lengths_were_changed_after_synthesis():
     assert any(isinstance(b, Paragraph) and "changed afterwards" in b.text for b in doc.blocks)
 
 
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_an_edited_file_says_which_lengths_changed_and_gives_the_task(lang):
+    """B8: no literal backticks; the lengths that differ from the synthesis, with both values; the
+    task's data."""
+    from tmm_cli.render.note.model import Heading, Paragraph
+
+    text = _synth_text("synth_rocker.toml").replace("lengths = [0.1697", "lengths = [0.1797", 1)
+    assert "lengths = [0.1797" in text
+    doc = _note_of(text, lang)
+    i = next(k for k, b in enumerate(doc.blocks) if isinstance(b, Heading) and b.text in ("Синтез механизма", "Synthesis of the mechanism"))
+    para = doc.blocks[i + 1]
+    assert isinstance(para, Paragraph) and "`" not in para.text
+    assert "l_(B C) = " in para.text and ("169,75" if lang == "ru" else "169.75") in para.text
+    assert "l_(A B)" not in para.text  # only what changed
+    assert "l_(C D) = 200$" in para.text and 'γ_"min" >=' in para.text
+
+
 def test_no_synthesis_section_without_the_record():
     from tmm_cli.render.note.model import Heading
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 
 from ...linkage.synthesis import RockerSynthesis, SliderSynthesis
-from ...linkage.synthesis_file import recorded_synthesis
+from ...linkage.synthesis_file import changed_lengths, recorded_synthesis
 from .ctx import Ctx, V
 from .model import Heading
 
@@ -25,8 +25,7 @@ def synthesis_section(c: Ctx, s) -> None:
     c.doc.add(Heading(2, t("Synthesis of the mechanism")))
     c.doc.claim(kind="linkage_synthesis", type=rec.task.type, matches=rec.matches)
     if not rec.matches:
-        c.p(t("The mechanism was found by `tmm synth` from its task, but its lengths were changed afterwards: the "
-              "synthesis is not repeated here; the analysis below is of the lengths the file gives."))
+        _edited(c, rec, s.mechanism)
         return
     syn, mm = rec.synthesis, t("mm")
     if isinstance(syn, SliderSynthesis):
@@ -37,6 +36,40 @@ def synthesis_section(c: Ctx, s) -> None:
         _slotted(c, syn, mm)
     c.p(t("The mechanism with these lengths is analysed below; the stroke (or swing) and the time ratio found there "
           "are those of the task."))
+
+
+SYMBOLS = {"l_OA": "l_(O A)", "l_AB": "l_(A B)", "l_BC": "l_(B C)", "l_CD": "l_(C D)", "l_AD": "l_(A D)",
+           "l_O1A": "l_(O_1 A)", "l_O1O2": "l_(O_1 O_2)", "l_O2B": "l_(O_2 B)"}
+
+
+def _task_data(c: Ctx, task) -> str:
+    """The task's data as the note writes them: «$H = 100$ мм, $K = 1,2$, …»."""
+    v, mm = task.values, c.t("mm")
+    frame = "l_(A D)" if task.type == "crank-rocker" else "l_(O_1 O_2)"
+    keys = (("stroke", "H", 1000.0, mm), ("rocker", "l_(C D)", 1000.0, mm), ("swing_deg", "ψ", None, "°"),
+            ("time_ratio", "K", 1.0, ""), ("lambda", "λ", 1.0, ""), ("offset", "e", 1000.0, mm),
+            ("frame", frame, 1000.0, mm), ("min_transmission_deg", 'γ_"min" >=', None, "°"),
+            ("rod_ratio", "l_(B C)/l_(O_2 B)", 1.0, ""))
+    out = []
+    for key, sym, scale, unit in keys:
+        if key not in v:
+            continue
+        if scale is None:
+            out.append(f"${sym} = {c.qd(v[key], sig=6)}$" if "=" not in sym else f"${sym} {c.qd(v[key], sig=6)}$")
+        else:
+            out.append(f"${sym} = {c.q(v[key] * scale, sig=6)}$" + (f" {unit}" if unit else ""))
+    return ", ".join(out)
+
+
+def _edited(c: Ctx, rec, mech) -> None:
+    """The file's lengths are no longer the synthesis': say which, and give the task's data."""
+    t = c.t
+    diffs = "; ".join(t("${sym} = {file}$ mm in the file, {syn} mm by the synthesis").format(
+        sym=SYMBOLS[name], file=c.q(a * 1000, decimals=2), syn=c.n(b * 1000, decimals=2)) for name, a, b in
+        changed_lengths(mech, rec))
+    c.p(t("The mechanism was found by synthesis from the task {data}; its lengths were changed afterwards "
+          "({diffs}). The synthesis is therefore not repeated here; the analysis below is of the lengths the file "
+          "gives.").format(data=_task_data(c, rec.task), diffs=diffs or t("its frame or guide")))
 
 
 def _theta(c: Ctx, syn) -> None:
