@@ -554,7 +554,16 @@ MAKERS = {"cam_motion": ("cam", _motion), "cam_zone": ("cam", _zone), "cam_profi
           "cam_pressure_angle": ("cam", _pressure), "gears_planetary": ("gears", _planetary),
           "gears_assembly": ("gears", _assembly), "gears_mesh": ("gears", _mesh),
           "linkage_plans": ("linkage", lambda s2, lang: _linkage_plans(s2.sheet1, lang)),
-          "linkage_dynamics": ("linkage", _dynamics)}
+          "linkage_dynamics": ("linkage", _dynamics),
+          "linkage_synthesis": ("linkage", lambda s2, lang: _synthesis(s2.sheet1, lang))}
+
+
+def _synthesis(s1, lang: str):
+    """The construction of the synthesis the mechanism file records (tmm synth, issue 33)."""
+    from .note_scales import SYNTHESIS
+    from .synth import recorded_construction_figure
+
+    return recorded_construction_figure(s1, lang, SYNTHESIS["size"])
 
 
 def note_figure(result, lang: str, name: str):
