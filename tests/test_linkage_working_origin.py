@@ -162,3 +162,46 @@ def test_the_force_analysis_is_on_the_working_stroke_where_the_load_acts(name, s
     expected = float(np.interp(fraction, load["stroke"], load["force"]))
     f = [x for x in s2.forces.loading.forces if x.kind == "load"]
     assert f and abs(complex(f[0].f[i])) == pytest.approx(expected, rel=1e-9, abs=1e-6)
+
+
+def _note_claims(name, start):
+    from dataclasses import replace
+
+    from tmm_cli.project import run_project
+    from tmm_cli.render.note import build_note
+    from tmm_cli.variants import get_variant
+
+    m = _mech(name, start)
+    s2 = analyse_sheet2(analyse_mechanism(m), parse_sheet2(m, f"{name}.toml"))
+    r = replace(run_project(get_variant("17")), linkage=s2)
+    return m, s2, build_note(r, "ru", {})
+
+
+@pytest.mark.parametrize("name,start", [("shaper", 90.0), ("shaper", 200.0), ("four_bar", 90.0),
+                                        ("compressor", 200.0)])
+def test_the_notes_claims_agree_whatever_position_0_is(name, start):
+    from test_note_linkage import check_claim
+
+    m, s2, doc = _note_claims(name, start)
+    s1, c = s2.sheet1, s2.sheet1.cycle
+    kinds = {cl["kind"] for cl in doc.claims}
+    assert "linkage_plan_position" in kinds
+    for cl in doc.claims:
+        check_claim(cl, s1)
+        if cl["kind"] == "linkage_plan_position" and m.plan is None:
+            assert cl["middle"]  # «в середине рабочего хода» — and it is (checked by check_claim)
+        if cl["kind"] == "linkage_load_at_position":  # «совершает рабочий ход … доля …»: from the output's place
+            i = c.index(cl["label"])
+            assert cl["working"] == (_working_way(m, c, c.positions[i].phi) == 1.0)
+            first = next(p for p in c.positions if p.extreme == "start")
+            (z0,), _ = _out_point(m, first.phi)
+            (zi,), _ = _out_point(m, c.positions[i].phi)
+            if m.output.kind == "slider" and cl["working"]:
+                assert cl["share"] == pytest.approx(abs(zi - z0) / c.stroke, abs=1e-9)
+            if m.plan is None:
+                assert cl["working"]  # the force analysis is made on the working stroke
+    if s2.input.load is not None:
+        assert "linkage_load_at_position" in kinds
+    first = next(p for p in c.positions if p.extreme == "start")
+    if first.index != 0:
+        assert "linkage_working_extremes" in kinds
