@@ -29,6 +29,7 @@ from tmm_cli.linkage.mechanism_file import parse_mechanism
 from tmm_cli.linkage.sheet1 import analyse_mechanism
 from tmm_cli.linkage.sheet2 import analyse_sheet2
 from tmm_cli.linkage.sheet2_file import parse_sheet2
+from tmm_cli.render.data.mechanism import mechanism_document
 from tmm_cli.render.note.linkage_part import position_rows
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
@@ -103,6 +104,8 @@ def test_the_extremes_the_plans_and_s_count_from_the_working_stroke_start(name, 
     eps = 1e-3
     assert _working_way(m, c, first.phi + sense * eps) == 1.0
     assert _working_way(m, c, last.phi + sense * eps) == -1.0
+    # linkage.json names them in that order (start, end)
+    assert mechanism_document(s1, "en")["extreme_positions"] == [first.label, last.label]
     # which stroke is the working one: by load.working (the distance from the crank pivot), else the slower
     working = FILES[name].get("load", {}).get("working") if isinstance(FILES[name].get("load"), dict) else None
     if working is not None and m.output.kind == "slider":
