@@ -23,12 +23,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from tmm_cli.linkage.chain import solve
 from tmm_cli.linkage.mechanism_file import parse_mechanism
 from tmm_cli.linkage.sheet1 import analyse_mechanism
 from tmm_cli.linkage.sheet2 import analyse_sheet2
 from tmm_cli.linkage.sheet2_file import parse_sheet2
+from tmm_cli.render.data.mechanism import mechanism_document
 from tmm_cli.render.note.linkage_part import position_rows
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
@@ -103,6 +106,8 @@ def test_the_extremes_the_plans_and_s_count_from_the_working_stroke_start(name, 
     eps = 1e-3
     assert _working_way(m, c, first.phi + sense * eps) == 1.0
     assert _working_way(m, c, last.phi + sense * eps) == -1.0
+    # linkage.json names them in that order (start, end)
+    assert mechanism_document(s1, "en")["extreme_positions"] == [first.label, last.label]
     # which stroke is the working one: by load.working (the distance from the crank pivot), else the slower
     working = FILES[name].get("load", {}).get("working") if isinstance(FILES[name].get("load"), dict) else None
     if working is not None and m.output.kind == "slider":
@@ -205,3 +210,15 @@ def test_the_notes_claims_agree_whatever_position_0_is(name, start):
     first = next(p for p in c.positions if p.extreme == "start")
     if first.index != 0:
         assert "linkage_working_extremes" in kinds
+
+
+@settings(max_examples=12, deadline=None)
+@given(name=st.sampled_from(["shaper", "four_bar", "shaper_offset"]), start=st.floats(0.0, 359.999))
+def test_any_position_0_keeps_the_plans_on_their_strokes_and_s_non_negative(name, start):
+    m = _mech(name, start)
+    s1 = analyse_mechanism(m)
+    c = s1.cycle
+    if m.plan is None:
+        assert _working_way(m, c, s1.plans[0].position.phi) == 1.0
+        assert _working_way(m, c, s1.plans[1].position.phi) == -1.0
+    assert c.curve.s.min() >= -1e-9 and c.curve.s.max() <= c.stroke + 1e-9

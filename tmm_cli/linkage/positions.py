@@ -91,6 +91,25 @@ class Cycle:
         [rad, 0 … 2π): 0 unless ``crank.start_deg`` puts position 0 elsewhere (0 without extremes)."""
         return next((p.travel for p in self.positions if p.extreme == "start"), 0.0)
 
+    def stroke_spans(self, working: bool = True) -> tuple[tuple[float, float], ...]:
+        """The crank travel from position 0 [rad] covered by the working (or the return) stroke, as
+        intervals within [0, 2π] (two when the stroke wraps past position 0; none without extremes).
+
+        >>> from types import SimpleNamespace as N
+        >>> c = N(working=3.0, returning=2 * math.pi - 3.0, lead=5.0)
+        >>> [tuple(round(x, 6) for x in s) for s in Cycle.stroke_spans(c)]
+        [(5.0, 6.283185), (0.0, 1.716815)]
+        """
+        if self.working is None:
+            return ()
+        lo = self.lead if working else self.lead + self.working
+        hi = lo + (self.working if working else self.returning)
+        lo, hi = lo % TWO_PI, (lo % TWO_PI) + (hi - lo)
+        spans = [(lo, min(hi, TWO_PI))]
+        if hi > TWO_PI + 1e-12:
+            spans.append((0.0, hi - TWO_PI))
+        return tuple(spans)
+
     def working_start(self) -> Position | None:
         """The extreme position where the working stroke starts (None when the output turns fully)."""
         return next((p for p in self.positions if p.extreme == "start"), None)

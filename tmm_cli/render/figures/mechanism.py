@@ -307,11 +307,9 @@ def diagrams_figure(s: Sheet1, lang: str):
     evens = [p for p in c.positions if p.label.isdigit()]
     for j, (ax, (y, label, mu, unit)) in enumerate(zip(axes, series)):
         if c.working is not None:
-            w, b = math.degrees(c.working), math.degrees(c.lead)  # the working stroke from its start extreme
-            for lo, hi, colour in ((b, b + w, C_WORK), (b + w, b + 360, C_RET)):
-                for shift in (0.0, -360.0):
-                    if max(lo + shift, 0.0) < min(hi + shift, 360.0):
-                        ax.axvspan(max(lo + shift, 0.0), min(hi + shift, 360.0), color=colour, alpha=0.06, lw=0)
+            for working, colour in ((True, C_WORK), (False, C_RET)):  # from the working stroke's start extreme
+                for lo, hi in c.stroke_spans(working):
+                    ax.axvspan(math.degrees(lo), math.degrees(hi), color=colour, alpha=0.06, lw=0)
         for p in c.positions:
             if p.extreme:
                 ax.axvline(math.degrees(p.travel), color="k", lw=0.6, ls=":")
@@ -327,9 +325,11 @@ def diagrams_figure(s: Sheet1, lang: str):
         mu_tex = {"s": r"$\mu_s$", "v": r"$\mu_v$", "a": r"$\mu_a$"}[names[j]]
         ax.set_title(f"{mu_tex} = {num(mu, lang, sig=3)} {unit}", fontsize=9, loc="right", pad=3)
     if c.working is not None:
-        axes[0].text(math.degrees(c.working) / 2, 0.96, tr(lang, "working stroke"),
+        w_lo, w_hi = max(c.stroke_spans(True), key=lambda sp: sp[1] - sp[0])
+        r_lo, r_hi = max(c.stroke_spans(False), key=lambda sp: sp[1] - sp[0])
+        axes[0].text(math.degrees(w_lo + w_hi) / 2, 0.96, tr(lang, "working stroke"),
                      transform=axes[0].get_xaxis_transform(), ha="center", va="top", fontsize=8, color=C_WORK)
-        axes[0].text((math.degrees(c.working) + 360) / 2, 0.96, tr(lang, "return stroke"),
+        axes[0].text(math.degrees(r_lo + r_hi) / 2, 0.96, tr(lang, "return stroke"),
                      transform=axes[0].get_xaxis_transform(), ha="center", va="top", fontsize=8, color=C_RET)
     mu_phi = num(math.degrees(sc.phi), lang, sig=3)
     axes[-1].set_xlabel(tr(lang, "positions of the crank from position 0 (μ_φ = {mu_phi}°/mm)").format(mu_phi=mu_phi).replace("μ_φ", r"$\mu_\varphi$"))
