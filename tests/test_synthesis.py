@@ -194,20 +194,27 @@ def test_the_task_file_is_never_overwritten(tmp_path):
     assert task.read_text(encoding="utf-8").startswith('type = "crank-slider"')
 
 
-def test_chain_synth_linkage_project(tmp_path):
-    r = run("synth", EXAMPLES / "synth_shaper.toml", "--out", tmp_path / "m", "--no-plots", "--lang", "en")
+@pytest.mark.parametrize("name,k,rpm", [("synth_shaper", 1.5, 60.0), ("synth_rocker", 1.2, 120.0),
+                                         ("synth_slider", 1.2, 90.0)])
+def test_chain_synth_linkage_project(name, k, rpm, tmp_path):
+    """The README's chain works end to end for every shipped example: the task's sheet-2 tables reach
+    the mechanism file, and the project's note opens chapter 1 with the synthesis."""
+    r = run("synth", EXAMPLES / f"{name}.toml", "--out", tmp_path / "m", "--no-plots", "--lang", "en")
     assert r.exit_code == 0, r.output
-    mech = tmp_path / "m" / "synth_shaper.toml"
+    mech = tmp_path / "m" / f"{name}.toml"
     r = run("linkage", mech, "--out", tmp_path, "--json", "--no-plots", "--lang", "en")
     assert r.exit_code == 0, r.output
     doc = json.loads(r.stdout)
-    assert doc["stroke_m"] == pytest.approx(0.40, rel=1e-3) and doc["time_ratio"] == pytest.approx(1.5, rel=1e-3)
+    assert doc["time_ratio"] == pytest.approx(k, rel=1e-3)
+    if name == "synth_shaper":
+        assert doc["stroke_m"] == pytest.approx(0.40, rel=1e-3)
     r = run("project", "-v", 17, "--mechanism", mech, "--no-plots", "--report", "md", "--no-sheets", "--out",
-            tmp_path / "p", "--lang", "en")
+            tmp_path / "p", "--lang", "ru")
     assert r.exit_code == 0, r.output
     res = json.loads((tmp_path / "p" / "variant-17" / "results.json").read_text(encoding="utf-8"))
-    assert res["gears"]["crank_rpm"] == pytest.approx(60.0)
+    assert res["gears"]["crank_rpm"] == pytest.approx(rpm)
     assert res["mechanism"]["dynamics"]["motor_moment_Nm"] > 0
+    assert "Синтез механизма" in (tmp_path / "p" / "variant-17" / "report.md").read_text(encoding="utf-8")
 
 
 HOSTILE = {
@@ -273,6 +280,10 @@ def test_synthesis_gives_back_the_examples_lengths_from_their_own_h_k_psi():
 # the note: «Синтез механизма» opens chapter 1 when the file records its task
 
 def _note_of(text: str, lang: str = "ru"):
+    return _note_of_figs(text, lang, None)
+
+
+def _note_of_figs(text: str, lang: str, figures):
     from dataclasses import replace
 
     from tmm_cli.linkage.sheet1 import analyse_mechanism
@@ -284,7 +295,7 @@ def _note_of(text: str, lang: str = "ru"):
 
     m = parse_mechanism(tomllib.loads(text), "m.toml")
     r = replace(run_project(get_variant("17")), linkage=analyse_sheet2(analyse_mechanism(m), parse_sheet2(m)))
-    return build_note(r, lang)
+    return build_note(r, lang, figures)
 
 
 def _synth_text(name: str) -> str:
@@ -319,6 +330,23 @@ def test_note_says_when_the_lengths_were_changed_after_synthesis():
     assert any(isinstance(b, Paragraph) and "changed afterwards" in b.text for b in doc.blocks)
 
 
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_an_edited_file_says_which_lengths_changed_and_gives_the_task(lang):
+    """B8: no literal backticks; the lengths that differ from the synthesis, with both values; the
+    task's data."""
+    from tmm_cli.render.note.model import Heading, Paragraph
+
+    text = _synth_text("synth_rocker.toml").replace("lengths = [0.1697", "lengths = [0.1797", 1)
+    assert "lengths = [0.1797" in text
+    doc = _note_of(text, lang)
+    i = next(k for k, b in enumerate(doc.blocks) if isinstance(b, Heading) and b.text in ("Синтез механизма", "Synthesis of the mechanism"))
+    para = doc.blocks[i + 1]
+    assert isinstance(para, Paragraph) and "`" not in para.text
+    assert "l_(B C) = " in para.text and ("169,75" if lang == "ru" else "169.75") in para.text
+    assert "l_(A B)" not in para.text  # only what changed
+    assert "l_(C D) = 200$" in para.text and 'γ_"min" >=' in para.text
+
+
 def test_no_synthesis_section_without_the_record():
     from tmm_cli.render.note.model import Heading
 
@@ -347,3 +375,89 @@ def test_sheet1_draws_the_construction(name, angle, tmp_path):
     (tmp_path / "plain").mkdir()
     doc2 = reopen(sheet1(plain, "ru", TITLE), tmp_path / "plain", "sheet1")
     assert angle not in [e.dxf.text for e in doc2.modelspace().query("TEXT")]
+
+
+def test_rocker_note_derives_every_number_and_shows_the_construction():
+    """B6: AC₁, AC₂ and l_AD come with formulas and substitutions (from the coordinates of the chosen
+    pivot on the locus), γ_min with cos γ and its substitution; the given data name γ ≥ γ_task; the
+    figure of the construction is embedded with a caption when drawn."""
+    from tmm_cli.render.note.mathsyntax import check_line
+    from tmm_cli.render.note.model import Figure, Formula, Heading, Paragraph
+
+    from tmm_cli.render.note import note_figures
+
+    text = _synth_text("synth_rocker.toml")
+    doc = _note_of_figs(text, "ru", {"linkage_synthesis": ("a.svg", "a.png", 16.5, 13.0)})
+    blocks = doc.blocks
+    i = next(k for k, b in enumerate(blocks) if isinstance(b, Heading) and b.text == "Синтез механизма")
+    j = next(k for k in range(i + 1, len(blocks)) if isinstance(blocks[k], Heading))
+    section = blocks[i:j]
+    math_ = [b.math for b in section if isinstance(b, Formula)]
+    for lhs, result in (("A C_1 = sqrt", '"105,100"'), ("A C_2 = sqrt", '"234,408"'), ("l_(A D) = sqrt", '"211,11"'),
+                        ("cos μ_1 =", '"0,6976"'), ("l_(A B) = (A C_2 - A C_1)/2", '"64,65"')):
+        f = next(m for m in math_ if m.startswith(lhs))
+        assert result in f and all(c.ok for c in check_line(f))
+    words = " ".join(b.text for b in section if isinstance(b, Paragraph))
+    assert 'γ_"min" >= "40°"' in words and '"45,77°"' in words
+    figs = [b for b in section if isinstance(b, Figure)]
+    assert [f.name for f in figs] == ["linkage_synthesis"] and figs[0].caption
+    assert "{fig:linkage_synthesis}" in words
+    m = parse_mechanism(tomllib.loads(text), "m.toml")
+    from types import SimpleNamespace
+
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+
+    s1 = analyse_mechanism(m)
+    assert note_figures(SimpleNamespace(linkage=SimpleNamespace(sheet1=s1)))[0] == "linkage_synthesis"
+    plain = analyse_mechanism(parse_mechanism({k: v for k, v in tomllib.loads(text).items() if k != "synthesis"}))
+    assert "linkage_synthesis" not in note_figures(SimpleNamespace(linkage=SimpleNamespace(sheet1=plain)))
+
+
+def test_the_construction_figure_of_the_note_lies_on_the_mirrored_mechanism():
+    """The rocker example is written mirrored (its load makes the other stroke the working one): the
+    figure's C₁, C₂ and locus follow the drawn mechanism, not the unmirrored synthesis."""
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+    from tmm_cli.render.figures.synth import recorded_construction_figure
+
+    s1 = analyse_mechanism(parse_mechanism(tomllib.loads(_synth_text("synth_rocker.toml")), "m.toml"))
+    fig = recorded_construction_figure(s1, "ru", (165.0, 130.0))
+    ax = fig.axes[0]
+    marks = {t.get_text(): t.xy for t in ax.texts if hasattr(t, "xy")}
+    c = s1.cycle
+    ends = [complex(c.kin.z["C"][p.index]) * 1000 for p in c.positions if p.extreme in ("start", "end")]
+    for name in ("$C_1$", "$C_2$"):
+        z = complex(*marks[name])
+        assert min(abs(z - e) for e in ends) < 1e-6
+
+
+@pytest.mark.parametrize("name,want", [
+    ("synth_slider.toml", ["H = 100,0", "e = 20,0", "B1", "B2"]),
+    ("synth_rocker.toml", ["ψ = 40,00°", "R = 242,8", "C1C2 = 136,8", "C1", "C2"]),
+    ("synth_shaper.toml", ["f = 31,7"])])
+def test_sheet1_labels_the_construction(name, want, tmp_path):
+    """B7: the crank-rocker's C₁, C₂, the chord, ψ at D and the locus radius R (the locus an arc inside
+    the field); the crank-slider's B₁, B₂, e and H; the shaper's f as a dimension of the sagitta
+    (a dimension line of the sagitta's length between two arrowheads, not a leader to the arc)."""
+    from test_sheets import TITLE, fields, reopen
+
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+    from tmm_cli.render.sheets.linkage_sheet import sheet1
+
+    s = analyse_mechanism(parse_mechanism(tomllib.loads(_synth_text(name)), "m.toml"))
+    doc = reopen(sheet1(s, "ru", TITLE), tmp_path, "sheet1")
+    msp = doc.modelspace()
+    texts = [e.dxf.text for e in msp.query("TEXT")] + [e.plain_text().replace("^", "") for e in msp.query("MTEXT")]
+    for w in want:
+        assert w in texts, (w, texts)
+    box = fields(doc)["scheme"]["box"]
+    x0, y0, x1, y1 = box
+    for e in msp.query("LWPOLYLINE[layer=='Осевые']"):
+        for x, y, *_ in e.get_points():
+            assert x0 - 1e-6 <= x <= x1 + 1e-6 and y0 - 1e-6 <= y <= y1 + 1e-6
+    assert not msp.query("CIRCLE[layer=='Осевые']") and not msp.query("ARC[layer=='Осевые']")
+    if name == "synth_shaper.toml":
+        scale = fields(doc)["scheme"]["scale"]
+        f_sheet = 31.677 * scale
+        dims = [e for e in msp.query("LINE[layer=='Размеры']")
+                if abs(abs(e.dxf.end.y - e.dxf.start.y) - (f_sheet + 14.0)) < 0.2 and abs(e.dxf.end.x - e.dxf.start.x) < 0.5]
+        assert dims, "no dimension line along the sagitta"

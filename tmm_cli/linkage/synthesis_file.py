@@ -233,6 +233,21 @@ def _synthesis_lengths(syn) -> tuple[float, ...]:
     return (syn.crank, syn.rod, syn.frame, syn.link)
 
 
+LENGTH_NAMES = {"crank-slider": ("l_OA", "l_AB", None, None), "crank-rocker": ("l_AB", "l_BC", "l_CD", "l_AD", None),
+                "slotted-link": ("l_O1A", "l_BC", "l_O1O2", "l_O2B")}  # in the order of _synthesis_lengths
+
+
+def changed_lengths(mech, rec: Recorded) -> tuple[tuple[str, float, float], ...]:
+    """The lengths of the file that differ from the synthesis it records: (the book's name, the
+    file's [m], the synthesis' [m]), in the order crank, coupler/rod, rocker, frame, link."""
+    have, want = _file_lengths(mech), _synthesis_lengths(rec.synthesis)
+    names = LENGTH_NAMES[rec.task.type]
+    if len(have) != len(want):
+        return ()
+    return tuple((n, a, b) for n, a, b in zip(names, have, want)
+                 if n is not None and abs(a - b) > 1e-9 * max(abs(b), 1e-3))
+
+
 def recorded_synthesis(mech) -> Recorded | None:
     """The synthesis recorded in the mechanism's [synthesis] table, or None (no table, or a table
     that is not a task tmm synth can do again). `matches` says whether the file still has the

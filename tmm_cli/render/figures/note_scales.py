@@ -132,6 +132,7 @@ def linkage_layout(s1) -> dict:
 
 
 # sheet 2's diagrams over the crank's turn (M_пр and M_д, ΔT and ΔT_I, J_пр): 360° at 2,5 °/mm on 144 mm
+SYNTHESIS = {"size": (TEXT_WIDTH_MM, 130.0)}  # the construction of the synthesis (tmm synth)
 DYNAMICS = {"size": (TEXT_WIDTH_MM, 162.0), "x": (17.0, 144.0), "panel": 40.0, "gap": 7.0, "bottom": 16.0,
             "mu_phi": 2.5}
 
@@ -310,7 +311,7 @@ def figure_size_cm(name: str, gears=None, linkage=None) -> tuple[float, float]:
         return w / 10, h / 10
     sizes = {"cam_motion": MOTION["size"], "cam_pressure_angle": PRESSURE["size"], "cam_zone": PLAN["size"],
              "cam_profile": PLAN["size"], "gears_mesh": MESH["size"], "gears_planetary": PLANETARY["size"],
-             "linkage_dynamics": DYNAMICS["size"]}
+             "linkage_dynamics": DYNAMICS["size"], "linkage_synthesis": SYNTHESIS["size"]}
     if name == "gears_assembly":
         n = len(gears.planetary.stages)
         side = assembly_side(gears)

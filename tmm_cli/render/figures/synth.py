@@ -13,6 +13,7 @@ from ...i18n import N_, tr
 from ...i18n.numbers import num
 from ...linkage.chain import solve
 from ...linkage.synthesis import RockerSynthesis, SliderSynthesis
+from ...records import record
 from .kit import decimal_commas, mt, new_figure, suptitle, title_height
 
 MM = 1000.0
@@ -64,14 +65,34 @@ def _box(ax, z, size, color):
                            lw=1.2, zorder=5))
 
 
-def construction_figure(result, lang: str):
+@record(eq=False)
+class _Recorded:
+    """What the figure reads of a project's mechanism whose file records its synthesis."""
+
+    task: object
+    synthesis: object
+    mechanism: object
+    cycle: object
+
+
+def recorded_construction_figure(sheet1, lang: str, size_mm: tuple[float, float]):
+    """The construction of the synthesis a project's mechanism file records (the note's figure
+    «Синтез механизма», issue 33), drawn at the note's size without a title (the caption is the note's)."""
+    from ...linkage.synthesis_file import recorded_synthesis
+
+    rec = recorded_synthesis(sheet1.mechanism)
+    return construction_figure(_Recorded(rec.task, rec.synthesis, sheet1.mechanism, sheet1.cycle), lang,
+                               size_in=(size_mm[0] / 25.4, size_mm[1] / 25.4), title=False)
+
+
+def construction_figure(result, lang: str, size_in: tuple[float, float] = (9.0, 7.5), title: bool = True):
     syn = result.synthesis
     pos = _positions(result)
     allz = np.array([z for p in pos for z in p.values()])
     span = max(float(np.ptp(allz.real)), float(np.ptp(allz.imag)), 1e-9)
-    top = title_height(2, 11)
-    fig = new_figure(9.0, 7.5)
-    ax = fig.add_axes((0.09, 0.08, 0.88, 1 - (top + 0.7) / 7.5))
+    top = title_height(2, 11) if title else 0.0
+    fig = new_figure(*size_in)
+    ax = fig.add_axes((0.1, 0.1, 0.87, 1 - (top + 0.25 + 0.5) / size_in[1]))
     ax.set_aspect("equal", adjustable="datalim")
     unit = 0.03 * span
     colors = (C_EXT, C_EXT2)
@@ -105,10 +126,13 @@ def construction_figure(result, lang: str):
         ax.text((b1.real + b2.real) / 2, yy - unit, h, ha="center", va="top", fontsize=10)
     elif isinstance(syn, RockerSynthesis):
         a, d = pos[0]["A"], pos[0]["D"]
-        centre = syn.centre * MM
+        centre, c1, c2 = syn.centre * MM, syn.C1 * MM, syn.C2 * MM
+        cs = [p["C"] for p in pos]
+        if sum(min(abs(z - w.conjugate()) for w in (c1, c2)) for z in cs) < sum(min(abs(z - w) for w in (c1, c2))
+                                                                             for z in cs):
+            centre, c1, c2 = centre.conjugate(), c1.conjugate(), c2.conjugate()  # the file was written mirrored
         _circle(ax, centre, syn.radius * MM, color=C_CONS, lw=0.8, ls="--")
         _circle(ax, a, syn.crank * MM, color=GREY, lw=0.7, ls="--")
-        c1, c2 = syn.C1 * MM, syn.C2 * MM
         _seg(ax, c1, c2, color=C_CONS, lw=0.7, ls=":")
         _seg(ax, a, c1, color=C_CONS, lw=0.7, ls=":")
         _seg(ax, a, c2, color=C_CONS, lw=0.7, ls=":")
@@ -123,8 +147,8 @@ def construction_figure(result, lang: str):
         _seg(ax, a, d, color="k", lw=0.6, ls="-.")
         _dot(ax, a, "A", fixed=True, offset=(-14, -12))
         _dot(ax, d, "D", fixed=True, offset=(6, -12))
-        for i, p in enumerate(pos, 1):
-            _dot(ax, p["B"], f"B_{i}")
+        for p in pos:  # B₁ with C₁ (folded), B₂ with C₂ (extended), as the derivation
+            _dot(ax, p["B"], "B_1" if abs(p["C"] - c1) <= abs(p["C"] - c2) else "B_2")
         _dot(ax, c1, "C_1", offset=(-16, 6))
         _dot(ax, c2, "C_2", offset=(6, 6))
         ax.text(centre.real, centre.imag, mt(tr(lang, "locus of θ")), color=C_CONS, fontsize=9, ha="center")
@@ -167,8 +191,8 @@ def construction_figure(result, lang: str):
     ax.set_ylabel("y, " + tr(lang, "mm"))
     ax.grid(alpha=0.2)
     ax.margins(0.08)
-    title = tr(lang, TITLES[result.task.type]) + "\n" + tr(
-        lang, "the extreme positions: black — start of the working stroke, blue — its end")
-    suptitle(fig, title, fontsize=11)
+    if title:
+        suptitle(fig, tr(lang, TITLES[result.task.type]) + "\n" + tr(
+            lang, "the extreme positions: black — start of the working stroke, blue — its end"), fontsize=11)
     decimal_commas(fig, lang)
     return fig

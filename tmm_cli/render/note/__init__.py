@@ -38,8 +38,15 @@ MAX_TEMPLATE_BYTES = NOTE_TEMPLATE_BYTES
 
 
 def note_figures(result) -> tuple[str, ...]:
-    """The note figures of this result, in their order: the mechanism's (if any), the cam's, the gears'."""
-    return (LINKAGE_NOTE_FIGURES if getattr(result, "linkage", None) is not None else ()) + NOTE_FIGURES
+    """The note figures of this result, in their order: the mechanism's (if any; the construction of
+    its synthesis first when the file records one), the cam's, the gears'."""
+    linkage = getattr(result, "linkage", None)
+    if linkage is None:
+        return NOTE_FIGURES
+    from ...linkage.synthesis_file import recorded_synthesis
+
+    rec = recorded_synthesis(linkage.sheet1.mechanism)
+    return (("linkage_synthesis",) if rec is not None and rec.matches else ()) + LINKAGE_NOTE_FIGURES + NOTE_FIGURES
 
 
 def note_figure_file(name: str, ext: str = "svg") -> str:

@@ -225,6 +225,7 @@ def _load(c: Ctx, s) -> None:
             [[f"${sym}$, {unit}"] + [n(y, sig=5) for y in ld.values]],
             align=["left"] + ["center"] * len(ld.stroke), widths=[2.2] + [1.0] * len(ld.stroke))
     value = float(table_value(ld, f)) if on else 0.0
+    c.doc.claim(kind="linkage_load_at_position", label=_position(s).label, working=on, share=f, value=value)
     if on:
         c.p(t("In position {label} the crank is on the working stroke and the output has covered the share {share} of "
               "it, so ${sym} = {value}$ {unit}.").format(label=_position(s).label, share=n(f, decimals=3), sym=sym,

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 
 from ...linkage.synthesis import RockerSynthesis, SliderSynthesis
-from ...linkage.synthesis_file import recorded_synthesis
+from ...linkage.synthesis_file import changed_lengths, recorded_synthesis
 from .ctx import Ctx, V
 from .model import Heading
 
@@ -25,8 +25,7 @@ def synthesis_section(c: Ctx, s) -> None:
     c.doc.add(Heading(2, t("Synthesis of the mechanism")))
     c.doc.claim(kind="linkage_synthesis", type=rec.task.type, matches=rec.matches)
     if not rec.matches:
-        c.p(t("The mechanism was found by `tmm synth` from its task, but its lengths were changed afterwards: the "
-              "synthesis is not repeated here; the analysis below is of the lengths the file gives."))
+        _edited(c, rec, s.mechanism)
         return
     syn, mm = rec.synthesis, t("mm")
     if isinstance(syn, SliderSynthesis):
@@ -37,6 +36,40 @@ def synthesis_section(c: Ctx, s) -> None:
         _slotted(c, syn, mm)
     c.p(t("The mechanism with these lengths is analysed below; the stroke (or swing) and the time ratio found there "
           "are those of the task."))
+
+
+SYMBOLS = {"l_OA": "l_(O A)", "l_AB": "l_(A B)", "l_BC": "l_(B C)", "l_CD": "l_(C D)", "l_AD": "l_(A D)",
+           "l_O1A": "l_(O_1 A)", "l_O1O2": "l_(O_1 O_2)", "l_O2B": "l_(O_2 B)"}
+
+
+def _task_data(c: Ctx, task) -> str:
+    """The task's data as the note writes them: «$H = 100$ мм, $K = 1,2$, …»."""
+    v, mm = task.values, c.t("mm")
+    frame = "l_(A D)" if task.type == "crank-rocker" else "l_(O_1 O_2)"
+    keys = (("stroke", "H", 1000.0, mm), ("rocker", "l_(C D)", 1000.0, mm), ("swing_deg", "ψ", None, "°"),
+            ("time_ratio", "K", 1.0, ""), ("lambda", "λ", 1.0, ""), ("offset", "e", 1000.0, mm),
+            ("frame", frame, 1000.0, mm), ("min_transmission_deg", 'γ_"min" >=', None, "°"),
+            ("rod_ratio", "l_(B C)/l_(O_2 B)", 1.0, ""))
+    out = []
+    for key, sym, scale, unit in keys:
+        if key not in v:
+            continue
+        if scale is None:
+            out.append(f"${sym} = {c.qd(v[key], sig=6)}$" if "=" not in sym else f"${sym} {c.qd(v[key], sig=6)}$")
+        else:
+            out.append(f"${sym} = {c.q(v[key] * scale, sig=6)}$" + (f" {unit}" if unit else ""))
+    return ", ".join(out)
+
+
+def _edited(c: Ctx, rec, mech) -> None:
+    """The file's lengths are no longer the synthesis': say which, and give the task's data."""
+    t = c.t
+    diffs = "; ".join(t("${sym} = {file}$ mm in the file, {syn} mm by the synthesis").format(
+        sym=SYMBOLS[name], file=c.q(a * 1000, decimals=2), syn=c.n(b * 1000, decimals=2)) for name, a, b in
+        changed_lengths(mech, rec))
+    c.p(t("The mechanism was found by synthesis from the task {data}; its lengths were changed afterwards "
+          "({diffs}). The synthesis is therefore not repeated here; the analysis below is of the lengths the file "
+          "gives.").format(data=_task_data(c, rec.task), diffs=diffs or t("its frame or guide")))
 
 
 def _theta(c: Ctx, syn) -> None:
@@ -93,40 +126,104 @@ def _slider(c: Ctx, syn, mm: str) -> None:
           "K = {k}.").format(theta=c.n(math.degrees(syn.theta), decimals=3), k=c.n(syn.time_ratio, decimals=4)))
 
 
+def _rocker_frame(syn) -> dict:
+    """The construction's points [mm] with the origin at D and the y axis along the bisector of the
+    rocker's swing (the frame the note writes the coordinates in)."""
+    mid = (syn.C1 + syn.C2) / 2.0
+    rot = 1j * abs(mid - syn.D) / (mid - syn.D)
+
+    def put(z: complex) -> complex:
+        return (z - syn.D) * rot * 1000.0
+
+    return {"C1": put(syn.C1), "C2": put(syn.C2), "A": put(syn.A), "O": put(syn.centre)}
+
+
 def _rocker(c: Ctx, syn, mm: str) -> None:
     t = c.t
     psi = math.degrees(syn.swing)
-    c.p(t("The task gives the rocker $l_(C D) = {c}$ mm, its swing $ψ = {psi}$ and the time ratio $K = {k}$.").format(
-        c=c.q(syn.rocker * 1000, sig=6), psi=c.qd(psi, sig=6), k=c.q(syn.time_ratio, sig=6)))
+    given = t("The task gives the rocker $l_(C D) = {c}$ mm, its swing $ψ = {psi}$ and the time ratio $K = {k}$").format(
+        c=c.q(syn.rocker * 1000, sig=6), psi=c.qd(psi, sig=6), k=c.q(syn.time_ratio, sig=6))
+    if syn.mode == "frame":
+        given += t(", and the frame $l_(A D) = {d}$ mm").format(d=c.q(syn.frame * 1000, sig=6))
+    if syn.gamma_task is not None:
+        given += t("; the smallest transmission angle must be $γ_\"min\" >= {g}$").format(
+            g=c.qd(math.degrees(syn.gamma_task), sig=6))
+    c.p(given + ".")
     _theta(c, syn)
     chord = 2.0 * syn.rocker * math.sin(syn.swing / 2.0)
-    c.p(t("The rocker is drawn in its extreme positions $C_1 D$ and $C_2 D$; the chord between its ends and the radius "
-          "of the circle through $C_1$, $C_2$ on which the chord subtends the angle θ (the locus of the crank's "
-          "centre A):"))
-    c.formula(c.calc("C_1 C_2 = 2 l_(C D) sin(ψ/2)", "2 dot {0} dot sin {1}",
-                     [_given(syn.rocker * 1000), V(psi / 2.0, decimals=3, deg=True)], _mm(chord), mm),
+    pts = _rocker_frame(syn)
+    c1, c2, a, o = pts["C1"], pts["C2"], pts["A"], pts["O"]
+    c.p(t("The rocker is drawn in its extreme positions $C_1 D$ and $C_2 D$ (Figure {fig:linkage_synthesis}); the "
+          "coordinates below have the origin at D and the y axis along the bisector of the swing. The chord between "
+          "the rocker's ends and the radius of the circle through $C_1$, $C_2$ on which the chord subtends the angle "
+          "θ (the locus of the crank's centre A):") if c.has("linkage_synthesis") else
+        t("The rocker is drawn in its extreme positions $C_1 D$ and $C_2 D$; the coordinates below have the origin at "
+          "D and the y axis along the bisector of the swing. The chord between the rocker's ends and the radius of "
+          "the circle through $C_1$, $C_2$ on which the chord subtends the angle θ (the locus of the crank's centre A):"))
+    half = V(psi / 2.0, decimals=3, deg=True)
+    c.formula(c.calc("C_1 C_2 = 2 l_(C D) sin(ψ/2)", "2 dot {0} dot sin {1}", [_given(syn.rocker * 1000), half],
+                     _mm(chord, decimals=3), mm),
               c.calc("R = (C_1 C_2)/(2 sin θ)", "{0}/(2 dot sin {1})",
-                     [_mm(chord), V(math.degrees(syn.theta), decimals=3, deg=True)], _mm(syn.radius), mm))
+                     [_mm(chord, decimals=3), V(math.degrees(syn.theta), decimals=3, deg=True)], _mm(syn.radius, decimals=3), mm))
+    c.formula(c.calc("y_C = l_(C D) cos(ψ/2)", "{0} dot cos {1}", [_given(syn.rocker * 1000), half],
+                     V(c1.imag, decimals=3), mm),
+              c.calc("abs(x_C) = l_(C D) sin(ψ/2)", "{0} dot sin {1}", [_given(syn.rocker * 1000), half],
+                     V(abs(c1.real), decimals=3), mm))
+    below = o.imag < c1.imag
+    c.formula(c.calc("y_O = y_C - R cos θ" if below else "y_O = y_C + R cos θ",
+                     "{0} - {1} dot cos {2}" if below else "{0} + {1} dot cos {2}",
+                     [V(c1.imag, decimals=3), _mm(syn.radius, decimals=3), V(math.degrees(syn.theta), decimals=3, deg=True)],
+                     V(o.imag, decimals=3), mm),
+              where=[("y_O", t("the ordinate of the locus circle's centre O (on the bisector)"))])
+    phi = math.degrees(math.atan2(a.imag - o.imag, a.real - o.real))
     if syn.mode == "frame":
-        where = t("The crank's centre A is where the circle of radius $l_(A D) = {d}$ mm about D meets the locus.").format(
-            d=c.q(syn.frame * 1000, sig=6))
+        c.p(t("The crank's centre A is where the circle of radius $l_(A D)$ about D meets the locus (of the two "
+              "points, the one with the larger smallest transmission angle); it lies on the locus at the polar angle "
+              "$φ_A = {phi}$ from O:").format(phi=c.qd(phi, decimals=3)))
     else:
-        where = t("The crank's centre A is taken at the point of the locus where the smallest transmission angle over "
-                  "the turn is largest; there $l_(A D) = {d}$ mm.").format(d=c.q(syn.frame * 1000, decimals=2))
-    a1, a2 = abs(syn.A - syn.C1) * 1000, abs(syn.A - syn.C2) * 1000
-    c.p(where + " " + t("Its distances to the rocker's ends are $A C_1 = {a1}$ mm and $A C_2 = {a2}$ mm; in the extreme "
-                        "positions the crank and the coupler lie in line, so").format(
-        a1=c.q(a1, decimals=2), a2=c.q(a2, decimals=2)))
-    c.formula(c.calc("l_(A B) = (A C_2 - A C_1)/2", "({0} - {1})/2", [V(a2, decimals=2), V(a1, decimals=2)],
+        c.p(t("The crank's centre A is taken at the point of the locus where the smallest transmission angle over the "
+              "turn is largest (the textbooks leave the point to the designer; the program searches the locus for it): "
+              "at the polar angle $φ_A = {phi}$ from O:").format(phi=c.qd(phi, decimals=3)))
+    phv = V(phi, decimals=3, deg=True)
+    c.formula(c.calc("x_A = R cos φ_A", "{0} dot cos {1}", [_mm(syn.radius, decimals=3), phv], V(a.real, decimals=3), mm),
+              c.calc("y_A = y_O + R sin φ_A", "{0} + {1} dot sin {2}", [V(o.imag, decimals=3), _mm(syn.radius, decimals=3), phv],
+                     V(a.imag, decimals=3), mm))
+    a1, a2 = abs(a - c1), abs(a - c2)
+    xa, ya = V(a.real, decimals=3), V(a.imag, decimals=3)
+    c.formula(c.calc("A C_1 = sqrt((x_A - x_(C_1))^2 + (y_A - y_C)^2)", "sqrt(({0} - ({1}))^2 + ({2} - {3})^2)",
+                     [xa, V(c1.real, decimals=3), ya, V(c1.imag, decimals=3)], V(a1, decimals=3), mm))
+    c.formula(c.calc("A C_2 = sqrt((x_A - x_(C_2))^2 + (y_A - y_C)^2)", "sqrt(({0} - ({1}))^2 + ({2} - {3})^2)",
+                     [xa, V(c2.real, decimals=3), ya, V(c2.imag, decimals=3)], V(a2, decimals=3), mm))
+    c.formula(c.calc("l_(A D) = sqrt(x_A^2 + y_A^2)", "sqrt(({0})^2 + {1}^2)" if a.imag >= 0 else
+                     "sqrt(({0})^2 + ({1})^2)", [xa, ya], _mm(syn.frame), mm))
+    c.p(t("In the extreme positions the crank and the coupler lie in line ($A C_1 = l_(B C) - l_(A B)$, "
+          "$A C_2 = l_(B C) + l_(A B)$), so"))
+    c.formula(c.calc("l_(A B) = (A C_2 - A C_1)/2", "({0} - {1})/2", [V(a2, decimals=3), V(a1, decimals=3)],
                      _mm(syn.crank), mm),
-              c.calc("l_(B C) = (A C_2 + A C_1)/2", "({0} + {1})/2", [V(a2, decimals=2), V(a1, decimals=2)],
+              c.calc("l_(B C) = (A C_2 + A C_1)/2", "({0} + {1})/2", [V(a2, decimals=3), V(a1, decimals=3)],
                      _mm(syn.coupler), mm))
+    c.p(t("The transmission angle γ is extreme when the crank lies along the frame ($B D = l_(A D) minus.plus l_(A B)$); "
+          "the angles μ between the coupler and the rocker there:"))
+    bc, ad, ab = (_mm(x) for x in (syn.coupler, syn.frame, syn.crank))
+    cd = _given(syn.rocker * 1000)
+    mus = []
+    for sign, name in (("-", "μ_1"), ("+", "μ_2")):
+        bd = syn.frame - syn.crank if sign == "-" else syn.frame + syn.crank
+        cos_mu = (syn.coupler ** 2 + syn.rocker ** 2 - bd ** 2) / (2.0 * syn.coupler * syn.rocker)
+        mus.append(math.degrees(math.acos(max(-1.0, min(1.0, cos_mu)))))
+        c.formula(c.calc(f"cos {name} = (l_(B C)^2 + l_(C D)^2 - (l_(A D) {sign} l_(A B))^2)/(2 l_(B C) l_(C D))",
+                         f"({{0}}^2 + {{1}}^2 - ({{2}} {sign} {{3}})^2)/(2 dot {{0}} dot {{1}})", [bc, cd, ad, ab],
+                         V(cos_mu, decimals=4)))
     gamma = math.degrees(syn.gamma_min)
+    text = t("whence $μ_1 = {m1}$, $μ_2 = {m2}$; the transmission angle is μ or 180° − μ, whichever is acute, so the "
+             "smallest over the turn is $γ_\"min\" = {g}$").format(m1=c.qd(mus[0], decimals=2),
+                                                                    m2=c.qd(mus[1], decimals=2),
+                                                                    g=c.qd(gamma, decimals=2))
     if syn.gamma_task is not None:
-        c.p(t("The smallest transmission angle over the turn is $γ_\"min\" = {g}$, not less than the task's {gt}°.").format(
-            g=c.qd(gamma, decimals=2), gt=c.n(math.degrees(syn.gamma_task), sig=6)))
-    else:
-        c.p(t("The smallest transmission angle over the turn is $γ_\"min\" = {g}$.").format(g=c.qd(gamma, decimals=2)))
+        text += t(", not less than the task's {gt}°").format(gt=c.n(math.degrees(syn.gamma_task), sig=6))
+    c.p(text + ".")
+    c.fig("linkage_synthesis", t("The synthesis of the crank-rocker mechanism: the rocker's extreme positions, the "
+                                 "angle θ and the locus of the crank's centre"))
 
 
 def _slotted(c: Ctx, syn, mm: str) -> None:
