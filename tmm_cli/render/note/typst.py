@@ -35,7 +35,10 @@ from .model import (
     text_runs,
 )
 
-_SPECIAL = re.compile(r"([\\#*_`$@<>\[\]~/])")
+_SPECIAL = re.compile(r"([\\#*_`$@<>\[\]~])")
+# a "/" that could make a comment with a neighbour: beside another "/", or at either end of
+# the piece (the text around it is not known here: «x/» before the "*" of "*{name}*" would open "/*")
+_SLASH = re.compile(r"^/|/$|/(?=/)|(?<=/)/")  # after the others are escaped: a "*" is "\\*" then
 
 # "1,458·10⁻⁴" (model.SCI_EXPONENT): a superscript scaled from the font's own digits and minus
 _SCI_MATH = re.compile(r'"([^"\\]*·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+[^"\\]*)"')
@@ -69,13 +72,14 @@ def escape(text: str, start: bool = True) -> str:
     'a\\\\_b \\\\#1 \\\\*x\\\\* \\\\[y\\\\] \\\\<z\\\\> 2 - 3'
     >>> escape("- item"), escape("1. item"), escape("48.86")
     ('\\\\- item', '1\\\\. item', '48.86')
-    >>> print(escape("a///b */"))
-    a\\/\\/\\/b \\*\\/
+    >>> print(escape("a///b */ м/с x/"))
+    a\\/\\/\\/b \\*/ м/с x\\/
 
-    Every "/" is escaped: no "//" or "/*" can open a comment. A person's text is not program text:
+    A "/" that could open a comment is escaped (beside another "/", or at an end of the piece: a
+    "*" is escaped itself); one inside a word, as in «м/с», stays as typed for the student who edits note.typ. A person's text is not program text:
     :func:`~.model.escape_all` (through :func:`~.model.literal`) escapes it whole.
     """
-    out = _SPECIAL.sub(r"\\\1", text)
+    out = _SLASH.sub(r"\\/", _SPECIAL.sub(r"\\\1", text))
     out = sci_text(out.replace("--", "-\u200b-"))
     if not start:
         return out
