@@ -22,6 +22,8 @@ import shutil
 import subprocess
 
 import numpy as np
+import math
+
 import pytest
 
 from tmm_cli.inputs.titleblock import TitleFields
@@ -87,9 +89,17 @@ def test_the_zone_of_centres_is_one_hatch(sheets):
     hatches = sheets["sheet3"].doc.modelspace().query("HATCH")
     assert len(hatches) == 1
     h = hatches[0]
-    assert h.dxf.pattern_name == "ANSI31" and h.dxf.layer == "Тонкие"
-    # the drawn spacing: 3 mm on paper (ANSI31 lines are 3.175 mm apart at scale 1)
-    assert abs(h.dxf.pattern_scale * 3.175 - 3.0) < 0.5
+    assert h.dxf.layer == "Тонкие"
+    # one family of parallel lines at the drawn spacing, 3 mm on paper: ANSI31 (3.175 mm apart at scale
+    # 1) scaled, or — where the zone's line must pass through the cam's centre O (issue 32) — the same
+    # family laid through O in the entity's own pattern definition, which every CAD program reads
+    lines = h.pattern.lines
+    assert len(lines) == 1
+    offset = lines[0].offset
+    spacing = abs(float(offset[0]) * -math.sin(math.radians(lines[0].angle))
+                  + float(offset[1]) * math.cos(math.radians(lines[0].angle)))
+    assert abs(spacing - 3.0) < 0.5, (h.dxf.pattern_name, spacing)
+    assert not lines[0].dash_length_items  # solid lines, as ANSI31's
 
 
 @pytest.mark.skipif(LIBRECAD is None or PDFTOPPM is None,
