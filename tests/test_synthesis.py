@@ -552,3 +552,13 @@ def test_a_poor_crank_slider_is_warned_of_and_a_good_one_is_not(tmp_path):
 def analysed_notes(task: dict):
     t = parse_task(task)
     return synthesised_file(synthesise(t), t).notes
+
+
+def test_the_terminal_derives_the_rocker_pivot_too(tmp_path):
+    """B6 in the terminal: AC₁, AC₂, l_AD and the angles μ with their formulas and substitutions."""
+    r = run("synth", EXAMPLES / "synth_rocker.toml", "--out", tmp_path, "--no-plots", "--lang", "ru")
+    assert r.exit_code == 0, r.output
+    out = " ".join(r.stdout.split())
+    assert "AC₁ = √((x_A − x_C₁)² + (y_A − y_C)²) = √((160,447" in out and "= 105,100 мм" in out
+    assert "l_AD = √(x_A² + y_A²) = √(160,447² + 137,205²) = 211,11 мм" in out
+    assert "μ₁ = 45,77°" in out and "R = C₁C₂/(2·sin θ) = 136,808/" in out

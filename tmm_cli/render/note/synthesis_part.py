@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 
-from ...linkage.synthesis import RockerSynthesis, SliderSynthesis
+from ...linkage.synthesis import RockerSynthesis, SliderSynthesis, rocker_construction_frame
 from ...linkage.synthesis_file import changed_lengths, recorded_synthesis
 from .ctx import Ctx, V
 from .model import Heading
@@ -139,15 +139,8 @@ def _slider(c: Ctx, syn, mm: str) -> None:
 
 
 def _rocker_frame(syn) -> dict:
-    """The construction's points [mm] with the origin at D and the y axis along the bisector of the
-    rocker's swing (the frame the note writes the coordinates in)."""
-    mid = (syn.C1 + syn.C2) / 2.0
-    rot = 1j * abs(mid - syn.D) / (mid - syn.D)
-
-    def put(z: complex) -> complex:
-        return (z - syn.D) * rot * 1000.0
-
-    return {"C1": put(syn.C1), "C2": put(syn.C2), "A": put(syn.A), "O": put(syn.centre)}
+    """The construction's points [mm] in the derivation's frame (origin D, y along the bisector)."""
+    return {k: z * 1000.0 for k, z in rocker_construction_frame(syn).items()}
 
 
 def _rocker(c: Ctx, syn, mm: str) -> None:
