@@ -562,3 +562,22 @@ def test_the_terminal_derives_the_rocker_pivot_too(tmp_path):
     assert "AC₁ = √((x_A − x_C₁)² + (y_A − y_C)²) = √((160,447" in out and "= 105,100 мм" in out
     assert "l_AD = √(x_A² + y_A²) = √(160,447² + 137,205²) = 211,11 мм" in out
     assert "μ₁ = 45,77°" in out and "R = C₁C₂/(2·sin θ) = 136,808/" in out
+
+
+def test_the_sheets_font_draws_theta_as_the_note_does():
+    """C13: the sheets' osifont drew «θ» in the script form «ϑ» (the note prints θ); tmm's copy draws
+    θ as a closed oval with its bar — «Θ» narrowed — and keeps ϑ as its own glyph."""
+    from fontTools.pens.recordingPen import DecomposingRecordingPen
+    from fontTools.ttLib import TTFont
+
+    font = TTFont(Path(__file__).resolve().parents[1] / "tmm_cli" / "render" / "sheets" / "fonts" / "osifont.ttf")
+    cmap, gs = font.getBestCmap(), font.getGlyphSet()
+
+    def contours(cp):
+        pen = DecomposingRecordingPen(gs)
+        gs[cmap[cp]].draw(pen)
+        return [op for op, _ in pen.value if op in ("closePath", "endPath")], pen.value
+
+    theta, big, script = contours(0x03B8), contours(0x0398), contours(0x03D1)
+    assert len(theta[0]) == len(big[0]) and theta[1] != script[1]
+    assert font["hmtx"][cmap[0x03B8]][0] < font["hmtx"][cmap[0x0398]][0]
