@@ -290,3 +290,12 @@ def test_notes_are_data(results):
             for lang in ("ru", "en"):
                 text = note_text(note, lang)
                 assert text and not text.startswith("cam_"), note.code
+
+
+def test_one_cam_turn_takes_60_over_n_seconds(results, table):
+    """T, the time of one cam turn the outputs print: 60/|n_k| s for Table 1.2's n_k [rpm]; the
+    motion's time axis ends there."""
+    for n, r in results.items():
+        t = 60.0 / abs(table[n].n_cam_rpm)
+        assert r.motion.period_s == pytest.approx(t, rel=1e-12), n
+        assert r.motion.time[-1] == pytest.approx(t, rel=1e-9), n

@@ -145,3 +145,18 @@ def test_reported_maxima_keep_1_7_for_all_68_variants():
     for number, v in load_table().items():
         mx = follower_motion(v, 10.0).maxima
         assert mx.accel_ratio == pytest.approx(mx.accel_ratio_book, rel=1e-6), number
+
+
+@pytest.mark.parametrize("rise, far, ret", [(100, 20, 100), (40, 30, 80), (160, 0, 120), (60, 200, 60)])
+def test_phase_index_follows_the_phase_angles(rise, far, ret):
+    """Every half degree of the turn is in the phase Table 1.2's angles put it in: rise on
+    [0, φ_у], far dwell up to φ_у + φ_дс, return up to φ_р, near dwell after (the ends to 10⁻⁶)."""
+    p = CamProgram(law=1, stroke=0.05, phi_rise=math.radians(rise), phi_far=math.radians(far),
+                   phi_return=math.radians(ret))
+    deg = np.arange(0.0, 360.0, 0.5)
+    ends = np.array([rise, rise + far, rise + far + ret])
+    inner = np.min(np.abs(deg[:, None] - ends[None, :]), axis=1) > 1e-6
+    want = np.searchsorted(ends, deg, side="left")  # 0 up to φ_у, 1 up to φ_у + φ_дс, …
+    got = p.phase_index(np.radians(deg))
+    assert np.array_equal(got[inner], want[inner])
+    assert {0, 2, 3} <= set(got.tolist()) and (1 in got) == (far > 0)

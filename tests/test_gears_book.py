@@ -143,6 +143,24 @@ def test_two_stage_book_derivation_within_the_tolerance(n_cr, rule):
     assert abs(float(d.ratio_fraction) / i - 1) <= 0.05 + 1e-12
 
 
+@pytest.mark.parametrize("scheme, fraction", [("1", (13, 4)), ("1", (36, 7)), ("2", (53, 5)), ("2", (72, 5))])
+def test_book_stage_planets_by_the_reference_conditions(scheme, fraction):
+    """The planets the book's chosen set carries (k_max_exact) are the most that pass the
+    neighbouring and assembly conditions, checked by tests/reference_gears.py with the set's own
+    sun, planet(s) and ring."""
+    from fractions import Fraction
+
+    from tmm_cli.gears.planetary.book import book_scheme1, book_scheme2
+
+    from reference_gears import max_planets
+
+    b = (book_scheme1 if scheme == "1" else book_scheme2)(Fraction(*fraction))
+    t = b.chosen.teeth
+    zk, zc, zc2, zn = (t[0], t[1], t[1], t[2]) if scheme == "1" else t  # the reference's single planet: zc2 = zc
+    assert b.k_max_exact == max_planets(zk, zc, zc2, zn) >= 2
+    assert (b.stage.z_sun, b.stage.z_ring) == (zk, zn)
+
+
 def test_spur_rounding_exact_half_goes_up():
     # variants 24 and 44 have n_k = −1800: 17·1800/720 = 42.5 → 43 (a float could round it either way)
     assert spur_teeth(720, -1800) == (43, 17)

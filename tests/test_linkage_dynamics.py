@@ -346,3 +346,25 @@ def test_random_four_bars_three_ways(a, b, c, m2, m3, j3, across, moment, sense)
     assert np.max(np.abs(s.lever.balancing - s.balancing)) <= 1e-9 * scale
     k = s1.cycle.kin
     assert np.allclose(lever(m, s.loading, k).balancing, balancing_moment_by_power(k, s.loading), atol=1e-9 * scale)
+
+
+@pytest.mark.parametrize("name, couples", [("compressor", ["MΦ2"]), ("four_bar", ["MΦ2", "MΦ3", "Mc"]),
+                                           ("shaper", ["MΦ3", "MΦ4"])])
+def test_a_uniform_crank_has_no_inertia_moment(name, couples):
+    """The crank turns at its mean speed (ε₁ = 0), so its inertia moment −J₁·ε₁ is zero and the
+    loading (the tables, the plans of forces) leaves it out; every other link with J swings."""
+    s = sheet2(name)
+    assert [c.symbol for c in s.loading.couples] == couples
+    assert all(np.max(np.abs(c.m)) > 0 for c in s.loading.couples)
+
+
+@pytest.mark.parametrize("name", WITH_MASSES)
+def test_the_energy_diagram_fits_its_height(name):
+    """Sheet 2 draws ΔT(φ) and Mertsalov's ΔT_I(φ) (from its value at position 0) at one scale μ_T:
+    both curves stay within the diagram's height at that scale, and μ_T is not needlessly small
+    (the largest of them fills more than a tenth of it)."""
+    s = sheet2(name)
+    sc, fw = s.scales, s.flywheel
+    curves = (s.dynamics.dT, fw.mertsalov.dT_I - fw.mertsalov.dT_I[0])
+    tallest = max(float(np.max(np.abs(c))) for c in curves) / sc.T
+    assert 0.1 * sc.height_mm < tallest <= sc.height_mm + 1e-9

@@ -396,3 +396,15 @@ def test_plans_of_an_accelerating_crank_close():
     ks = [solve(m, [p], omega1=w + 5.0 * t) for p, t in zip(phis, (-dt, dt))]
     a_fd = (ks[1].v["C"][0] - ks[0].v["C"][0]) / (2 * dt)
     assert abs(a_fd - k.a["C"][0]) < 1e-5 * max(1.0, abs(k.a["C"][0]))
+
+
+@pytest.mark.parametrize("name, d, r", [("shaper", 0.30, 0.10), ("whitworth", 0.04, 0.10)])
+def test_the_slot_length_the_note_states_by_hand(name, d, r):
+    """The block rides on the crank pin A, so its distance from the slotted link's pivot ranges from
+    |d − r| to d + r (the crank pointing towards and away from the pivot, d apart): the note's ρ_min
+    and ρ_max, which say how long the slot must be."""
+    path = Path(__file__).resolve().parents[1] / "docs" / "examples" / f"{name}.toml"
+    m = parse_mechanism(tomllib.loads(path.read_text(encoding="utf-8")), path.name)
+    slot = next(n for n in cycle(m).notes if n.code == "mechanism_slot").kwargs
+    assert slot["rho_min_mm"] == pytest.approx(abs(d - r) * 1000, abs=1e-6)
+    assert slot["rho_max_mm"] == pytest.approx((d + r) * 1000, abs=1e-6)

@@ -536,3 +536,60 @@ def test_hostile_directions(name, change, fragment):
     text = str(err.value)
     assert "\n" not in text and fragment in text, text
     assert any("а" <= ch <= "я" for ch in translate_error(text))
+
+
+# --- random files of the new forms (hypothesis) ------------------------------------------------
+
+from hypothesis import HealthCheck, assume, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+def _random_file(kind, r, h, d, ang, slot, along, across):
+    base = {"frame": {"O1": [0.0, 0.0], "O2": [0.0, -h]},
+            "crank": {"pivot": "O1", "joint": "A", "length": r, "rpm": 60},
+            "mass": [{"link": ["O1", "A"], "m": 2.0, "J": 0.01, "centre": "O1"}],
+            "load": {"on": "B", "stroke": [0.0, 1.0], "force": [100.0, 300.0]}}
+    if kind == "RPP":
+        base["group"] = [{"kind": "RPP", "joints": ["A", "B"], "guide": {"through": [0.0, d], "angle_deg": ang},
+                          "slot_deg": slot}]
+        base["mass"] += [{"joint": "A", "m": 0.5}, {"joint": "B", "m": 3.0}]
+        return base
+    base["group"] = [{"kind": "RPR", "joints": ["A", "O2"], "offset": d}]
+    base["point"] = [{"name": "S3", "link": ["O2", "A"], "along": 0.2, "across": across}]
+    base["mass"] += [{"link": ["O2", "A"], "m": 5.0, "J": 0.1, "centre": "S3"}]
+    if kind == "PRP":
+        base["group"].append({"kind": "PRP", "joints": ["B"], "guides": [
+            {"link": ["O2", "A"], "along": along, "across": across, "angle_deg": ang},
+            {"through": [0.0, 0.5 * h], "angle_deg": slot - 90.0}]})  # G2 within 30° of horizontal
+        base["mass"] += [{"joint": "B′", "m": 0.5, "J": 0.002}, {"joint": "B", "m": 4.0}]
+    else:  # a slider on the slotted link's guide, hinged to a lever about a fixed D
+        base["frame"]["D"] = [0.05, 0.6 * h]
+        base["group"].append({"kind": "RRP", "joints": ["D", "B"], "length": 1.2 * h,
+                              "guide": {"link": ["O2", "A"], "along": along, "across": across, "angle_deg": ang},
+                              "branch": "ahead"})
+        base["output"] = "B"
+        base["mass"] += [{"link": ["D", "B"], "m": 2.0, "J": 0.02}, {"joint": "B", "m": 1.0, "J": 0.001}]
+    return base
+
+
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(kind=st.sampled_from(["RPP", "PRP", "RRP"]), r=st.floats(0.04, 0.10), h=st.floats(0.3, 0.5),
+       d=st.floats(-0.03, 0.03), ang=st.floats(-15.0, 15.0), slot=st.floats(70.0, 110.0),
+       along=st.floats(0.0, 0.2), across=st.floats(-0.02, 0.02))
+def test_random_files_of_the_new_forms(kind, r, h, d, ang, slot, along, across):
+    """Random RPP yokes, PRP groups on an offset slotted link and sliders on a moving guide: the
+    velocities and accelerations are the positions' derivatives, and the force analysis, the power
+    balance and Zhukovsky's lever give one M_b. (The ranges keep the guides of a PRP at least 35°
+    apart: nearly parallel guides send B far away so fast that differences at 0.1° lose 1e-5.)"""
+    data_ = _random_file(kind, r, h, d, ang, slot, along, across)
+    try:
+        m = parse_mechanism(data_, "m.toml")
+        s1 = analyse_mechanism(m)
+        s = analyse_sheet2(s1, parse_sheet2(m, "m.toml"))
+    except TmmError:
+        assume(False)
+    assume(float(np.max(np.abs(s.balancing))) > 1e-3)
+    _check_derivatives(m)
+    scale = float(np.max(np.abs(s.balancing)))
+    assert np.max(np.abs(s.balancing - s.power_balance)) <= 1e-8 * scale
+    assert np.max(np.abs(s.balancing - s.lever.balancing)) <= 1e-8 * scale

@@ -77,7 +77,8 @@ def written(tmp_path_factory):
 
 def number(text: str) -> float:
     """A number as the Russian note prints it."""
-    return float(text.replace("\u202f", "").replace("\u00a0", "").replace(",", ".").replace("−", "-").split()[0])
+    text = text.replace("\u202f", "").replace("\u00a0", " ").replace(",", ".").replace("−", "-")
+    return float(re.match(r"\s*(-?[\d.]+)", text).group(1))  # a unit may follow (issue 32: «1861,0 Н»)
 
 
 def chapter_formulas(doc):

@@ -207,11 +207,19 @@ def check_claim(claim, s1):
         assert claim["K"] == pytest.approx(claim["working_deg"] / claim["return_deg"], rel=1e-12)
         assert claim["working_deg"] + claim["return_deg"] == pytest.approx(360.0)
     elif kind == "linkage_plan_position":  # "in the middle of the working stroke": the nearest of the positions
-        c = s1.cycle
+        c = s1.cycle  # counted from the extreme where the working stroke starts, round the turn
         evens = [p for p in c.positions if p.label.isdigit()]
-        nearest = min(evens, key=lambda p: abs(p.travel - c.working / 2)) if c.working is not None else None
+        lead = next((p.travel for p in c.positions if p.extreme == "start"), 0.0)
+
+        def gap(p):
+            d = (p.travel - lead - c.working / 2) % (2 * math.pi)
+            return min(d, 2 * math.pi - d)
+        nearest = min(evens, key=gap) if c.working is not None else None
         assert claim["middle"] == (nearest is not None and nearest.label == claim["label"])
         assert claim["label"] == s1.plans[0].position.label
+    elif kind == "linkage_working_extremes":  # the working stroke runs start → end (position 0 elsewhere)
+        assert s1.cycle.index(claim["start"]) is not None and s1.cycle.positions[s1.cycle.index(claim["start"])].extreme == "start"
+        assert s1.cycle.positions[s1.cycle.index(claim["end"])].extreme == "end"
     elif kind == "linkage_pressure":
         assert claim["ok"] == (claim["worst_deg"] <= claim["limit_deg"])
     else:

@@ -17,6 +17,7 @@ import re
 import tomllib
 from pathlib import Path
 
+import numpy as np
 import pytest
 from click.testing import CliRunner
 
@@ -24,7 +25,7 @@ from tmm_cli.cli import cli
 from tmm_cli.i18n.lang import name_script_notes
 from tmm_cli.project import analyse_linkage, run_project
 from tmm_cli.render.note import build_note
-from tmm_cli.render.note.model import Abstract, Heading, ListBlock, Paragraph
+from tmm_cli.render.note.model import Abstract, Heading, ListBlock, Paragraph, plain
 from tmm_cli.variants import get_variant
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
@@ -83,7 +84,7 @@ def conclusion_text(doc) -> str:
             out.append(b.text)
         elif inside and isinstance(b, ListBlock):
             out.extend(b.items)
-    return "\n".join(out)
+    return plain("\n".join(out))
 
 
 @pytest.mark.parametrize("name", WITH_SHEET2)
@@ -545,3 +546,95 @@ def test_every_force_of_a_polygons_equation_is_named_on_sheet2(name):
             assert "не подписаны" in text
         for v in short + [v for v in pg.vectors if v.kind == "unknown"]:
             assert f"= {num(abs(v.value), 'ru', decimals=1)}" in text, (pg.group, v.symbol)
+
+
+@pytest.mark.parametrize("number", ALL_VARIANTS)
+def test_sheet3s_centre_stands_on_the_hatched_zone(number):
+    """The chosen centre O is a corner of the feasible zone; a hatch line runs from it into the zone
+    (the hatching used to begin up to 2,4 mm from O, which looked outside it), on every variant's
+    own zone polygon cut to a window round O as the sheet cuts it."""
+    from tmm_cli.render.sheets.cam_sheet import _clip_half, _hatch_direction, hatch_chords
+
+    r, _ = variant_doc(number)
+    z = r.cam.sizing
+    poly = np.asarray(z.zone.polygon, float) * 1000.0
+    O = np.asarray(z.centre, float) * 1000.0
+    for a, c in (((-1.0, 0.0), -(O[0] - 60.0)), ((1.0, 0.0), O[0] + 60.0), ((0.0, -1.0), -(O[1] - 60.0)),
+                 ((0.0, 1.0), O[1] + 60.0)):
+        poly = _clip_half(poly, np.array(a), c)
+    d = _hatch_direction(poly, O, np.array([1.0, 1.0]) / np.sqrt(2.0))
+    lines = hatch_chords(poly, d, 3.0, float(O @ np.array([-d[1], d[0]])))
+    assert lines
+
+    def dist(p, a, b):
+        t = np.clip(np.dot(p - a, b - a) / max(np.dot(b - a, b - a), 1e-30), 0.0, 1.0)
+        return float(np.hypot(*(a + t * (b - a) - p)))
+
+    assert min(dist(O, a, b) for a, b in lines) < 0.05, number
+    from matplotlib.path import Path as MPath
+
+    zone = MPath(poly)
+    assert all(zone.contains_point((a + b) / 2, radius=1e-6) or zone.contains_point((a + b) / 2, radius=-1e-6)
+               for a, b in lines)
+
+
+def test_sheet3s_hatch_is_one_hatch_entity_from_o():
+    """The hatching stays one HATCH entity a CAD user can edit (i31), its pattern's base point O."""
+    from tmm_cli.inputs.titleblock import TitleFields
+    from tmm_cli.render.sheets import sheet3
+
+    r, _ = variant_doc(8)
+    sh = sheet3(r.cam, "ru", TitleFields())
+    hatches = [e for e in sh.doc.modelspace() if e.dxftype() == "HATCH" and e.dxf.pattern_name == "TMM_ZONE"]
+    assert len(hatches) == 1
+    line = hatches[0].pattern.lines[0]
+    field = {}
+    for e in sh.doc.modelspace():
+        if e.has_xdata("TMM_FIELD"):
+            tags = [t.value for t in e.get_xdata("TMM_FIELD")]
+            field[tags[0]] = tags
+    tags = next(v for k, v in field.items() if "zone" in k)
+    ox, oy, scale = float(tags[5]), float(tags[6]), float(tags[7])
+    O = np.asarray(r.cam.sizing.centre, float) * 1000.0
+    assert np.hypot(line.base_point[0] - (ox + scale * O[0]), line.base_point[1] - (oy + scale * O[1])) < 1e-6
+
+
+@pytest.mark.parametrize("number", ALL_VARIANTS[::3])
+def test_sheet4_draws_the_reducer_with_a_chosen_module(number):
+    """Sheet 4's reducer: the module is chosen as the drawing needs — the largest standard module at
+    which the scheme fits its field at 1:1 — and k_l, the scale label and the drawn size follow from it
+    (no more «M 2:1, m = 1 мм»)."""
+    from sheet_check import all_texts, field_boxes
+
+    from tmm_cli.inputs.titleblock import TitleFields
+    from tmm_cli.render.sheets import sheet4
+    from tmm_cli.render.sheets.gears_sheet import MODULES
+
+    r, _ = variant_doc(number)
+    sh = sheet4(r.gears, number, "ru", TitleFields())
+    text = "\n".join(all_texts(sh.doc))
+    m = re.search(r"kl = ([\d,]+) м/мм \(М (\d+(?:,\d+)?):(\d+(?:,\d+)?), m = ([\d,]+) мм", text)
+    assert m, text[:400]
+    k_l, a, b, mod = (float(x.replace(",", ".")) for x in m.groups())
+    assert mod in MODULES
+    assert abs(k_l - 0.001 * b / a) < 1e-9 * k_l  # k_l [m/mm]: the stated scale of the true (module) size
+    if mod > 1.0:
+        assert (a, b) == (1.0, 1.0) and "наибольший стандартный модуль" in text
+    d = r.gears.planetary
+    z_max = max(max(s.z_ring, s.z_sun + 2 * s.z_planet) for s in d.stages)
+    box = field_boxes(sh.doc)["scheme"]
+    assert z_max * mod * a / b <= box[3] - box[1]  # the reducer's largest diameter, drawn, fits the field's height
+
+
+@pytest.mark.parametrize("name", WITH_SHEET2)
+def test_the_crank_speed_of_the_analysis_and_of_the_drive_are_both_said(name):
+    """v8 of the issue: the reducer turns the crank at 97,1 об/мин while sheets 1–2 use the file's speed —
+    the assumptions say which is which whenever the two differ."""
+    r, doc = case(name)
+    g = r.gears
+    items = [plain(i) for b in doc.blocks if isinstance(b, ListBlock) for i in b.items]
+    said = [i for i in items if "листы 1 и 2" in i and "привод вращает кривошип" in i]
+    if abs(g.crank_rpm_actual - r.linkage.sheet1.mechanism.crank.rpm) > 1e-9:
+        assert said and ru(g.crank_rpm_actual, 1) in said[0], items
+    else:
+        assert not said

@@ -262,3 +262,10 @@ def test_the_printed_simplified_z2_formula_is_wrong():
     i, c = Fraction(a, b), Fraction(ac, bc)
     general = z1 * (c - c * i - 1) / (1 - c)
     assert printed == -6270 and general == 48
+
+
+@pytest.mark.parametrize("z_min, z_max", [(0, 180), (-3, 180), (40, 30)])
+def test_empty_or_toothless_limits_are_refused(z_min, z_max):
+    """A gear has at least one tooth: --z-min 0 is refused as an empty range, as is z_max < z_min."""
+    with pytest.raises(TmmError, match=r"tooth limits .* are empty; give 1 ≤ --z-min ≤ --z-max"):
+        synthesize(Fraction(1, 10), Fraction(26, 25), 3, z_min=z_min, z_max=z_max)

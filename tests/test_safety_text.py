@@ -372,3 +372,9 @@ def test_a_failed_rerun_keeps_the_good_note(tmp_path):
                        "--lang", "en"), "could not be typeset")
     assert {n: (folder / n).read_bytes() for n in before} == before
     assert run("note", folder).exit_code == 0  # and it still compiles
+
+
+@pytest.mark.parametrize("ratio", ["1/" + "9" * 5000, "9" * 5000, "¹/2", "13/٤"])
+def test_a_ratio_of_5000_digits_or_superscripts_is_one_line(ratio):
+    err = one_line_error(run("gears", "-v", 3, "--ratio", ratio, "--lang", "en"), "cannot read the ratio")
+    assert len(err) < 300

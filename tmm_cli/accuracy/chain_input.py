@@ -51,7 +51,6 @@ from __future__ import annotations
 import math
 
 from ..errors import TmmError
-from ..inputs.names import clean_text
 from ..limits import CHAIN_BYTES, CHAIN_LINKS
 from ..records import record
 
@@ -145,9 +144,7 @@ def _link(table, index: int, chain_unit: str, factor: float, angular: bool, seen
     name = table.get("name")
     if not isinstance(name, str) or not name.strip():
         raise TmmError(f"{where} has no name; give each link a name, e.g. name = \"A\"")
-    name = clean_text(name)  # one line (inputs/names.py)
-    if not name:
-        raise TmmError(f"{where} has no name; give each link a name, e.g. name = \"A\"")
+    name = name.strip()
     if len(name) > 40:
         raise TmmError(f"{where}: the name is {len(name)} characters long; keep it under 40")
     where = f"link {index} ('{name}')"
@@ -237,4 +234,4 @@ def parse_chain(text: str, source: str = "chain") -> Chain:
         raise TmmError(f"{source} has {len(tables)} links; a chain may have up to {CHAIN_LINKS}")
     seen: set[str] = set()
     links = tuple(_link(t, i, units, factor, angular, seen) for i, t in enumerate(tables, 1))
-    return Chain(name=clean_text(name, 200), units=units, unit_si=factor, angular=angular, links=links)
+    return Chain(name=name.strip()[:200], units=units, unit_si=factor, angular=angular, links=links)

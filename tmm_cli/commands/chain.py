@@ -53,7 +53,7 @@ def chain_cmd(chain_file, risk_pct, as_json, force, out, lang):
 
     lang = resolve_lang(lang)
     text = read_text(chain_file, str(chain_file), CHAIN_BYTES).text
-    result = solve_chain(parse_chain(text, str(chain_file)), risk_pct)
+    result = solve_chain(one_line_names(parse_chain(text, str(chain_file))), risk_pct)
 
     from ..output.folder import ensure_writable_dir
     from ..render.data.chain import chain_document
@@ -69,3 +69,13 @@ def chain_cmd(chain_file, risk_pct, as_json, force, out, lang):
         print_chain(console, result, lang)
 
     emit(folder, {name: doc}, None, "png", doc if as_json else None, show, result.notes, lang, owns=(name,), writer="chain", force=force)
+
+
+def one_line_names(chain):
+    """The chain's and its links' names as one line each (a person's text: inputs/names.clean_text)."""
+    from dataclasses import replace
+
+    from ..inputs.names import clean_text
+
+    return replace(chain, name=clean_text(chain.name, 200),
+                   links=tuple(replace(link, name=clean_text(link.name, 40)) for link in chain.links))

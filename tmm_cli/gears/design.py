@@ -35,7 +35,7 @@ from .spur import SpurGeometry, design_spur
 if TYPE_CHECKING:  # the mesh stiffness (seed 002) is loaded only when asked for (--stiffness)
     from .stiffness import SpurPairStiffness
 
-_RATIO_RE = re.compile(r"^\s*(\d+)\s*(?:/\s*(\d+)\s*)?$")
+_RATIO_RE = re.compile(r"^\s*([0-9]{1,9})\s*(?:/\s*([0-9]{1,9})\s*)?$")  # ASCII digits, at most 9: int() never refuses
 
 
 def parse_ratio(text: str) -> tuple[int, int]:
@@ -46,6 +46,7 @@ def parse_ratio(text: str) -> tuple[int, int]:
     """
     m = _RATIO_RE.match(text or "")
     if not m:
+        text = text if len(text or "") <= 40 else text[:40] + "…"
         raise TmmError(f"cannot read the ratio {text!r}: write it as a fraction of two positive whole numbers, "
                        "e.g. --ratio 13/4")
     p = int(m.group(1))

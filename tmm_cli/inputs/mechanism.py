@@ -37,4 +37,8 @@ def read_mechanism_tables(path) -> dict:
         raise TmmError(f"{path} is not valid TOML ({exc}); see docs/mechanism.md for the form") from None
     except ValueError:  # an integer of thousands of digits (Python's conversion limit)
         raise TmmError(f"{path} is not valid TOML (a number too long); see docs/mechanism.md for the form") from None
+    if isinstance(data.get("name"), str):  # a person's text: one line where it enters (names.clean_text)
+        from .names import clean_text
+
+        data["name"] = clean_text(data["name"])
     return data

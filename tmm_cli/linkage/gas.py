@@ -222,3 +222,13 @@ def parse_gas(r, mech: Mechanism, t: dict, key: str) -> GasLoad:
         r.fail(f"'{key}.head' is {off:.6g} m off the line of the piston {name}; put the cylinder head on it (within "
                f"{HEAD_TOLERANCE:g} m)")
     return gl
+
+
+def piston_forces(mech: Mechanism, gas, kin: Kinematics) -> dict[str, np.ndarray]:
+    """The gas force p·A [N] of every piston at the kinematics' angles, + away from its head (the
+    piston force diagram of sheet 2)."""
+    out = {}
+    for gl in gas:
+        pst = piston(gl, mech)
+        out[gl.link] = gas_pressure(gl, pst, mech, kin) * gl.area
+    return out

@@ -40,7 +40,6 @@ from __future__ import annotations
 import math
 
 from ..errors import TmmError
-from ..inputs.names import clean_text
 from .mechanism import FRAME, KINDS, Crank, Group, Guide, Link, Mechanism, Output, Pair, Point
 
 LENGTH_MAX = 100.0  # [m]: any length or coordinate
@@ -464,7 +463,7 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
     for k in data:
         if k not in TOP_KEYS and k not in SHEET2_KEYS and k not in RECORD_KEYS:
             r.fail(f"unknown key '{k}'; known keys here: {', '.join(TOP_KEYS + SHEET2_KEYS + RECORD_KEYS)}")
-    name = clean_text(r.text(data.get("name", ""), "name", EXAMPLES["name"]), 200)  # one line (inputs/names.py)
+    name = r.text(data.get("name", ""), "name", EXAMPLES["name"])[:200]  # one line already (inputs/mechanism.py)
     positions = data.get("positions", 12)
     if isinstance(positions, bool) or not isinstance(positions, int) or not 2 <= positions <= 360:
         r.fail(f"'positions' is {positions!r}; give a whole number of crank positions from 2 to 360, e.g. positions = 12")

@@ -58,7 +58,7 @@ class Curve:
 
     travel: np.ndarray  # crank angle turned since position 0 [rad], 0 … 2π
     kin: Kinematics  # at φ0 + sense·travel
-    s: np.ndarray  # the output's displacement from position 0 [m or rad], + along the working stroke
+    s: np.ndarray  # the output's displacement from the working stroke's start extreme [m or rad], 0 … H
     v: np.ndarray  # its velocity [m/s or rad/s]
     a: np.ndarray  # its acceleration [m/s² or rad/s²]
     pressure: dict[int, np.ndarray]  # group → pressure angle [rad]
@@ -84,6 +84,39 @@ class Cycle:
     margins: tuple[Margin, ...]
     curve: Curve
     notes: tuple[Note, ...]
+
+    @property
+    def lead(self) -> float:
+        """The crank's travel from position 0 to the extreme position where the working stroke starts
+        [rad, 0 … 2π): 0 unless ``crank.start_deg`` puts position 0 elsewhere (0 without extremes)."""
+        return next((p.travel for p in self.positions if p.extreme == "start"), 0.0)
+
+    def stroke_spans(self, working: bool = True) -> tuple[tuple[float, float], ...]:
+        """The crank travel from position 0 [rad] covered by the working (or the return) stroke, as
+        intervals within [0, 2π] (two when the stroke wraps past position 0; none without extremes).
+
+        >>> from types import SimpleNamespace as N
+        >>> c = N(working=3.0, returning=2 * math.pi - 3.0, lead=5.0)
+        >>> [tuple(round(x, 6) for x in s) for s in Cycle.stroke_spans(c)]
+        [(5.0, 6.283185), (0.0, 1.716815)]
+        """
+        if self.working is None:
+            return ()
+        lo = self.lead if working else self.lead + self.working
+        hi = lo + (self.working if working else self.returning)
+        lo, hi = lo % TWO_PI, (lo % TWO_PI) + (hi - lo)
+        spans = [(lo, min(hi, TWO_PI))]
+        if hi > TWO_PI + 1e-12:
+            spans.append((0.0, hi - TWO_PI))
+        return tuple(spans)
+
+    def working_start(self) -> Position | None:
+        """The extreme position where the working stroke starts (None when the output turns fully)."""
+        return next((p for p in self.positions if p.extreme == "start"), None)
+
+    def working_end(self) -> Position | None:
+        """The extreme position where the working stroke ends (None when the output turns fully)."""
+        return next((p for p in self.positions if p.extreme == "end"), None)
 
     def index(self, label: str) -> int | None:
         """The list index of the position labelled `label` ("7'" and "7′" alike), or None."""
@@ -267,13 +300,23 @@ def _positions(mech: Mechanism, start: float, extremes) -> tuple[Position, ...]:
                  for i, (t, lab, ex) in enumerate(items))
 
 
-def _curve(mech: Mechanism, start: float, direction: int) -> Curve:
+def displacement(mech: Mechanism, extremes, direction: int, q) -> np.ndarray:
+    """The output's displacement [m or rad] at its coordinates `q`, counted as the book counts it:
+    from the extreme position where the working stroke starts (``extremes[0]``), positive along the
+    working stroke, so 0 ≤ s ≤ H whatever position 0 is; from `q`'s first value without extremes."""
+    q = np.asarray(q, dtype=float)
+    q0 = float(output_coordinate(mech, solve(mech, [extremes[0]]))[0][0]) if extremes else float(q.flat[0])
+    d = q - q0 if mech.output.kind == "slider" else _wrap(q - q0)
+    return direction * d
+
+
+def _curve(mech: Mechanism, start: float, direction: int, extremes=None) -> Curve:
     travel = np.linspace(0.0, TWO_PI, CURVE_STEPS + 1)
     k = solve(mech, start + mech.crank.sense * travel)
     q, qd, qdd = output_coordinate(mech, k)
-    s = q - q[0] if mech.output.kind == "slider" else _wrap(q - q[0])
+    s = displacement(mech, extremes, direction, q)
     pressure = {g.index: pressure_angle(mech, g, k) for g in mech.groups}
-    return Curve(travel, k, direction * s, direction * qd, direction * qdd, pressure)
+    return Curve(travel, k, s, direction * qd, direction * qdd, pressure)
 
 
 def _notes(mech: Mechanism, rule: str, stops: int, pressure, time_ratio) -> tuple[Note, ...]:
@@ -312,7 +355,7 @@ def cycle(mech: Mechanism, source: str = "mechanism") -> Cycle:
     positions = _positions(mech, start, extremes)
     kin = solve(mech, [p.phi for p in positions])
     pressure = tuple(_worst_pressure(mech, g) for g in mech.groups)
-    curve = _curve(mech, start, direction)
+    curve = _curve(mech, start, direction, extremes)
     k_ratio = working / returning if working is not None else None
     return Cycle(mech, positions, kin, float(start), rule, extremes, stroke, working, returning, k_ratio, direction,
                  len(roots), pressure, margins, curve, _notes(mech, rule, len(roots), pressure, k_ratio))

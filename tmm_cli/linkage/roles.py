@@ -29,11 +29,17 @@ def link_roles(s1) -> dict[str, str]:
     kin = s1.cycle.curve.kin
     out = {}
     guides = {}  # the links that carry a moving guide: each is a кулиса
+    for slider, gd in m.guided():  # an RRP's slider, a PRP's blocks, an RPP's yoke on a moving guide
+        if gd.moving:
+            guides[slider] = gd.link
     for g in m.groups:
-        if g.guide is not None and g.guide.moving:
-            slider = next(ln for ln in m.links if ln.group == g.index and ln.kind == "slider")
-            guides[slider.name] = g.guide.link
+        if g.kind == "RPP":  # the block in the yoke's slot: a кулисный камень (its guide is the yoke)
+            guides[g.links[0]] = g.links[1]
+    yokes = {g.links[1] for g in m.groups if g.kind == "RPP"}
     for ln in m.links:
+        if ln.name in yokes:
+            out[ln.name] = "slotted"  # the Scotch yoke: its slot guides the block (a кулиса that slides)
+            continue
         if ln.kind == "slider" and ln.name in guides:
             out[ln.name] = "block"  # a block sliding along a moving link: a кулисный камень
             continue

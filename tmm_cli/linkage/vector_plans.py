@@ -299,17 +299,34 @@ def _group_points(mech: Mechanism, group: int, z, v, a, lab, V: _Draft, A: _Draf
             A.add("π", _lc(pt.name), f"a_{pt.name}", a[pt.name], "", "", False, a[pt.name])
 
 
+def nearest_even(cycle: Cycle, travel: float) -> int:
+    """The list index of the evenly spaced position nearest the crank travel `travel` from
+    position 0 [rad] (measured round the turn: 350° is 20° from 10°)."""
+    evens = [p for p in cycle.positions if p.extreme is None or p.label.isdigit()]
+
+    def gap(p):
+        d = float(np.remainder(p.travel - travel, 2.0 * np.pi))
+        return min(d, 2.0 * np.pi - d)
+    return min(evens, key=gap).index
+
+
+def middle_of_working(cycle: Cycle) -> int | None:
+    """The list index of the evenly spaced position nearest the middle of the working stroke
+    (counted from its start extreme), None when the output turns fully."""
+    return None if cycle.working is None else nearest_even(cycle, cycle.lead + 0.5 * cycle.working)
+
+
 def default_plan_positions(cycle: Cycle) -> tuple[int, int]:
     """The positions of the two plans a sheet shows (list indices): the evenly spaced positions
-    nearest the middle of the working and of the return stroke; without extreme positions, the
-    positions a quarter and three quarters of a turn from position 0. The file's `plan` key, if
-    given, is the first."""
-    evens = [p for p in cycle.positions if p.extreme is None or p.label.isdigit()]
+    nearest the middle of the working and of the return stroke, both counted from the extreme
+    position where the working stroke starts (whatever position 0 is: ``crank.start_deg``); without
+    extreme positions, the positions a quarter and three quarters of a turn from position 0. The
+    file's `plan` key, if given, is the first."""
     if cycle.working is None:
         targets = (0.5 * np.pi, 1.5 * np.pi)
     else:
-        targets = (0.5 * cycle.working, cycle.working + 0.5 * cycle.returning)
-    picks = [min(evens, key=lambda p: abs(p.travel - t)).index for t in targets]
+        targets = (cycle.lead + 0.5 * cycle.working, cycle.lead + cycle.working + 0.5 * cycle.returning)
+    picks = [nearest_even(cycle, t) for t in targets]
     given = cycle.mechanism.plan
     if given is not None:
         i = cycle.index(given)

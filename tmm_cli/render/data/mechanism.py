@@ -91,7 +91,7 @@ def mechanism_document(s: Sheet1, lang: str) -> dict:
         "working_stroke_deg": _f(math.degrees(c.working)) if c.working is not None else None,
         "return_stroke_deg": _f(math.degrees(c.returning)) if c.returning is not None else None,
         "position_0": {"phi_deg": _f(_deg(c.start)), "rule": c.start_rule},
-        "extreme_positions": [p.label for p in c.positions if p.extreme],
+        "extreme_positions": [p.label for p in (c.working_start(), c.working_end()) if p is not None],  # start, end
         "pressure_angles": [{"group": p.group, "max_deg": _f(math.degrees(p.worst)), "at_phi_deg": _f(_deg(p.phi))}
                             for p in c.pressure],
         "positions": positions_json(s),

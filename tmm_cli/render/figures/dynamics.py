@@ -338,8 +338,8 @@ def dynamics_figure(s: Sheet2, lang: str):
     ax.set_title(r"$\mu_J$ = " + f"{num(sc.J, lang, sig=3)} {kg}/" + tr(lang, "mm"), fontsize=9, loc="right", pad=3)
     evens = [p for p in c.positions if p.label.isdigit()]
     for j, ax in enumerate(axes):
-        if c.working is not None:
-            ax.axvspan(0, math.degrees(c.working), color=C_APPLIED, alpha=0.05, lw=0)
+        for lo, hi in c.stroke_spans():  # the working stroke, from its start extreme
+            ax.axvspan(math.degrees(lo), math.degrees(hi), color=C_APPLIED, alpha=0.05, lw=0)
         ax.axhline(0, color="k", lw=0.5)
         ax.set_xlim(0, 360)
         ax.set_xticks([math.degrees(p.travel) for p in evens] + [360.0])

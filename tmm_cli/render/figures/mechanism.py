@@ -234,9 +234,9 @@ def scheme_figure(s: Sheet1, lang: str):
         d = (a - o) / abs(a - o)
         ax.annotate(label_tex(p.label), (a.real, a.imag), xytext=(11 * d.real, 11 * d.imag), textcoords="offset points",
                     ha="center", va="center", fontsize=7, color="k")
-    ends = [p for p in c.positions if p.extreme == "end"]
-    if ends:
-        draw_mechanism(ax, s, ends[0].index, color="k", lw=1.1, ls="--", labels=False, size=0.9)
+    ends = [p for p in c.positions if p.extreme and p.index != 0]
+    for p in ends:
+        draw_mechanism(ax, s, p.index, color="k", lw=1.1, ls="--", labels=False, size=0.9)
     draw_mechanism(ax, s, 0, color="k", lw=1.8, labels=True)
     unit = 0.06 * span
     for n in m.frame:
@@ -250,8 +250,13 @@ def scheme_figure(s: Sheet1, lang: str):
     ax.set_xlim(lo.real - pad, hi.real + pad)
     ax.set_ylim(lo.imag - pad, hi.imag + pad)
     mu = num(s.scheme_scale, lang, sig=3)
-    extreme = "; " + tr(lang, "the other extreme position {label} — dashed").format(label=label_tex(ends[0].label)) \
-        if ends else ""
+    first, last = c.working_start(), c.working_end()
+    if first is not None and first.index != 0:  # crank.start_deg: position 0 is not an extreme
+        extreme = "; " + tr(lang, "the extreme positions {start} (start of the working stroke) and {end} (its end) — "
+                                  "dashed").format(start=label_tex(first.label), end=label_tex(last.label))
+    else:
+        extreme = "; " + tr(lang, "the other extreme position {label} — dashed").format(label=label_tex(last.label)) \
+            if last is not None else ""
     title = tr(lang, "{name} in {n} positions (position 0 bold{extreme})\n"
                      "scale of the sheet μ_l = {mu} m/mm; coloured: the paths of the named points")
     title = title.replace("μ_l", r"$\mu_l$").format(  # the name: a person's text, never mathtext
@@ -302,9 +307,9 @@ def diagrams_figure(s: Sheet1, lang: str):
     evens = [p for p in c.positions if p.label.isdigit()]
     for j, (ax, (y, label, mu, unit)) in enumerate(zip(axes, series)):
         if c.working is not None:
-            w = math.degrees(c.working)
-            ax.axvspan(0, w, color=C_WORK, alpha=0.06, lw=0)
-            ax.axvspan(w, 360, color=C_RET, alpha=0.06, lw=0)
+            for working, colour in ((True, C_WORK), (False, C_RET)):  # from the working stroke's start extreme
+                for lo, hi in c.stroke_spans(working):
+                    ax.axvspan(math.degrees(lo), math.degrees(hi), color=colour, alpha=0.06, lw=0)
         for p in c.positions:
             if p.extreme:
                 ax.axvline(math.degrees(p.travel), color="k", lw=0.6, ls=":")
@@ -320,9 +325,11 @@ def diagrams_figure(s: Sheet1, lang: str):
         mu_tex = {"s": r"$\mu_s$", "v": r"$\mu_v$", "a": r"$\mu_a$"}[names[j]]
         ax.set_title(f"{mu_tex} = {num(mu, lang, sig=3)} {unit}", fontsize=9, loc="right", pad=3)
     if c.working is not None:
-        axes[0].text(math.degrees(c.working) / 2, 0.96, tr(lang, "working stroke"),
+        w_lo, w_hi = max(c.stroke_spans(True), key=lambda sp: sp[1] - sp[0])
+        r_lo, r_hi = max(c.stroke_spans(False), key=lambda sp: sp[1] - sp[0])
+        axes[0].text(math.degrees(w_lo + w_hi) / 2, 0.96, tr(lang, "working stroke"),
                      transform=axes[0].get_xaxis_transform(), ha="center", va="top", fontsize=8, color=C_WORK)
-        axes[0].text((math.degrees(c.working) + 360) / 2, 0.96, tr(lang, "return stroke"),
+        axes[0].text(math.degrees(r_lo + r_hi) / 2, 0.96, tr(lang, "return stroke"),
                      transform=axes[0].get_xaxis_transform(), ha="center", va="top", fontsize=8, color=C_RET)
     mu_phi = num(math.degrees(sc.phi), lang, sig=3)
     axes[-1].set_xlabel(tr(lang, "positions of the crank from position 0 (μ_φ = {mu_phi}°/mm)").format(mu_phi=mu_phi).replace("μ_φ", r"$\mu_\varphi$"))

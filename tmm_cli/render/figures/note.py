@@ -538,8 +538,8 @@ def _dynamics(s2, lang: str):
     _mu(ax, mt(f"μ_J = {_mus(sc.J.mu, lang)} {kg}/{mm}"), "upper left")
     ticks = [(math.degrees(p.travel), p.label) for p in c.positions if p.label.isdigit()] + [(360.0, "0")]
     for k, ax in enumerate(axes):
-        if c.working is not None:
-            ax.axvspan(0, math.degrees(c.working), color=C_RISE, alpha=0.06, lw=0)
+        for lo, hi in c.stroke_spans():  # the working stroke, from its start extreme
+            ax.axvspan(math.degrees(lo), math.degrees(hi), color=C_RISE, alpha=0.06, lw=0)
         ax.axhline(0, color="k", lw=0.5)
         ax.set_xticks([t for t, _ in ticks])
         ax.set_xticklabels([lab for _, lab in ticks] if k == 2 else [])

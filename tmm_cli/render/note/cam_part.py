@@ -204,24 +204,24 @@ def _scales(c: Ctx, r) -> None:
         c.formula(c.calc('k_γ = k_(γ "°") π/180', "{0} dot π/180", [V(s.k_gamma_deg_mm, sig=4)],
                          V(s.k_s, sig=4), t("rad/mm")), where=["k_γ"])
         c.formula(c.calc("k_ω = k_γ/(k_t H_V)", "{0}/({1} dot {2})", [V(s.k_s, sig=4), V(s.k_t_s_mm, sig=4), V(s.h_v_mm, exact=True)],
-                         V(s.k_v, sig=4), t("rad/(s·mm)")), where=["k_ω", "H_V"])
+                         V(s.k_v, sig=4), t("(rad/s)/mm")), where=["k_ω", "H_V"])
         c.formula(c.calc("k_ε = k_ω/(k_t H_a)", "{0}/({1} dot {2})", [V(s.k_v, sig=4), V(s.k_t_s_mm, sig=4), V(s.h_a_mm, exact=True)],
-                         V(s.k_a, sig=4), t("rad/(s²·mm)")), where=["k_ε", "H_a"])
+                         V(s.k_a, sig=4), t("(rad/s²)/mm")), where=["k_ε", "H_a"])
         c.p(t("The scales of the roller centre's displacement, velocity and acceleration {cite:book:formula (1.18)}:"))
         lb = v.l_bc_m
         c.formula(c.calc("k_S = k_γ l_(B C)", "{0} dot {1}", [V(s.k_s, sig=4), V(lb, exact=True)], V(s.k_s_b, sig=4),
                          t("m/mm")),
                   c.calc("k_V = k_ω l_(B C)", "{0} dot {1}", [V(s.k_v, sig=4), V(lb, exact=True)], V(s.k_v_b, sig=4),
-                         t("m/(s·mm)")), where=["k_S", "k_V"])
+                         t("(m/s)/mm")), where=["k_S", "k_V"])
         c.formula(c.calc("k_a = k_ε l_(B C)", "{0} dot {1}", [V(s.k_a, sig=4), V(lb, exact=True)], V(s.k_a_b, sig=4),
-                         t("m/(s²·mm)")), where=["k_a"])
+                         t("(m/s²)/mm")), where=["k_a"])
     else:
         c.formula(c.calc("k_S = S_max/Y_(S max)", "{0}/{1}", [V(v.stroke, exact=True), V(s.y_s_max_mm, exact=True)],
                          V(s.k_s, sig=4), t("m/mm")), where=["k_S", "S_max", "Y_(S max)"])
         c.formula(c.calc("k_V = k_S/(k_t H_V)", "{0}/({1} dot {2})", [V(s.k_s, sig=4), V(s.k_t_s_mm, sig=4), V(s.h_v_mm, exact=True)],
-                         V(s.k_v, sig=4), t("m/(s·mm)")), where=["k_V", "H_V"])
+                         V(s.k_v, sig=4), t("(m/s)/mm")), where=["k_V", "H_V"])
         c.formula(c.calc("k_a = k_V/(k_t H_a)", "{0}/({1} dot {2})", [V(s.k_v, sig=4), V(s.k_t_s_mm, sig=4), V(s.h_a_mm, exact=True)],
-                         V(s.k_a, sig=4), t("m/(s²·mm)")), where=["k_a", "H_a"])
+                         V(s.k_a, sig=4), t("(m/s²)/mm")), where=["k_a", "H_a"])
     c.p(t("The largest ordinate of the acceleration diagram on the return follows from that on the rise {cite:book:formula (1.8)}:"))
     c.formula(c.calc('Y_(a "в" max) = Y_(a "у" max) (φ_"у"/φ_"в")^2', "{0} dot ({1}/{2})^2",
                      [V(s.y_a_rise_max_mm, sig=4), V(v.phi_rise_deg, exact=True), V(v.phi_return_deg, exact=True)],
@@ -371,7 +371,8 @@ def _profile(c: Ctx, r) -> None:
           "{field} × {field} of the sheet. The sizing construction is built in the scale of the displacement "
           "diagram, $k'_S = k_S$ (§1.3.1 {{cite:book}}: its segments are laid off from the diagram's ordinates); "
           "sheet 3 shows it at the standard scale stated in its field. The lengths are carried over to the "
-          "drawing of the profile {{cite:book:formulas (1.26), (1.27)}}:").format(
+          "drawing of the profile {{cite:book:formulas (1.26), (1.27)}}, the first for the largest displacement, the "
+          "second for the base radius $r_0$:").format(
         scale=d.scale, k_sk=c.q(d.k_sk, sig=4), width=c.qty(w, mm, decimals=1), height=c.qty(h, mm, decimals=1),
         field=c.qty(d.field_mm, mm, decimals=0)))
     c.doc.claim(kind="cam_drawing_scale", scale=d.scale, fits=d.fits, width_mm=w, height_mm=h, field_mm=d.field_mm)
@@ -383,7 +384,6 @@ def _profile(c: Ctx, r) -> None:
     c.formula(c.calc("x_(i k) = (k'_S)/k_(S k) x_i", "{0} dot {1}",
                      [V(d.k_s_prime / d.k_sk, sig=4), V(r0s.at_k_s_mm, sig=4)], V(r0s.drawn_mm, sig=4), mm),
               where=["x_(i k)", "k'_S", "x_i"])
-    c.p(t("(in the first, the largest displacement; in the second, the base radius $r_0$)."), indent=False)
     c.p(t("The profile angles differ from the phase angles when the follower axis is offset and for a rocker; they are measured on the profile and checked {cite:book:formulas (1.1), (1.2), (1.4)}:"))
     c.formula(c.calc('ψ_"у" + ψ_"дс" + ψ_"в" + ψ_"бс"', "{0} + {1} + {2} + {3}",
                      [V(p.psi_rise_deg, decimals=2, deg=True), V(abs(p.psi_far_deg), decimals=2, deg=True),
@@ -392,7 +392,7 @@ def _profile(c: Ctx, r) -> None:
     c.formula(c.calc('ψ_"р" = ψ_"у" + ψ_"дс" + ψ_"в"', "{0} + {1} + {2}",
                      [V(p.psi_rise_deg, decimals=2, deg=True), V(abs(p.psi_far_deg), decimals=2, deg=True),
                       V(p.psi_return_deg, decimals=2, deg=True)], V(p.psi_working_deg, decimals=2, deg=True))
-              + f' = φ_"р" = {c.qd(v.phi_working_deg)}', where=['ψ_"р"'])
+              + ' = φ_"р"', where=['ψ_"р"'])  # φ_р is the task's, given above: no second value of it
     _roller(c, r)
     if c.has("cam_profile"):
         c.p(t("The profile with the pitch curve, the base circle and the positions of the follower in the inverted motion is shown in Figure {fig:cam_profile}."))

@@ -225,6 +225,7 @@ def _load(c: Ctx, s) -> None:
             [[f"${sym}$, {unit}"] + [n(y, sig=5) for y in ld.values]],
             align=["left"] + ["center"] * len(ld.stroke), widths=[2.2] + [1.0] * len(ld.stroke))
     value = float(table_value(ld, f)) if on else 0.0
+    c.doc.claim(kind="linkage_load_at_position", label=_position(s).label, working=on, share=f, value=value)
     if on:
         c.p(t("In position {label} the crank is on the working stroke and the output has covered the share {share} of "
               "it, so ${sym} = {value}$ {unit}.").format(label=_position(s).label, share=n(f, decimals=3), sym=sym,
@@ -476,12 +477,13 @@ def _reactions_table(c: Ctx, s) -> None:
     for r in s.forces.reactions:
         what = t("pin") if r.pair.kind == "R" else t("slide")
         rows.append([f"${fsym(c, r.label)}$", f"${pt(r.pair.joint)}$", what,
-                     n(abs(complex(r.force[i])), decimals=1)])
-    rows.append(['$M_"ур"$, ' + t("N·m"), "—", "—", n(float(s.balancing[i]), decimals=2)])
+                     c.qty(abs(complex(r.force[i])), t("N"), decimals=1)])
+    # the balancing moment in the same table, each value with its own unit (the column holds N and N·m)
+    rows.append(['$M_"ур"$', "—", "—", c.qty(float(s.balancing[i]), t("N·m"), decimals=2)])
     c.p(t("The reactions of the pairs in position {label} are given in Table {{tab:dyn_reactions}}.").format(
         label=_position(s).label))
     c.table("dyn_reactions", t("Reactions in the kinematic pairs and the balancing moment, position {label}").format(
-        label=_position(s).label), [t("Pair"), t("Joint"), t("Kind"), t("Magnitude, N")], rows,
+        label=_position(s).label), [t("Pair"), t("Joint"), t("Kind"), t("Magnitude")], rows,
         align=["center", "center", "left", "right"], widths=[1, 0.8, 1.2, 1.3])
 
 
@@ -497,7 +499,7 @@ def _lever(c: Ctx, s) -> None:
     mu = plan.velocity.scale
     c.doc.add(Heading(2, t("Balancing moment by Zhukovsky's lever")))
     c.p(t("The balancing moment is checked by N. E. Zhukovsky's theorem {{cite:artobolevsky}}: the velocity plan of "
-          "position {label} ($μ_v = {mu}$ m/(s·mm)) is turned through 90°, every force is applied at the image of "
+          "position {label} ($μ_v = {mu}$ (m/s)/mm) is turned through 90°, every force is applied at the image of "
           "its point, parallel to itself (an inertia moment as two forces $M_Φ/l$ across its link at the link's "
           "ends), and the plan, a rigid lever pivoted at the pole $p$, is in equilibrium with the balancing force "
           "$F_\"ур\"$ at the image $a$ of the crank pin, across the crank. The arms $h$ on the turned plan are found "

@@ -139,7 +139,8 @@ def _abstract(c: Ctx) -> None:
     else:
         obj = t("The object of the project is a machine: the lever mechanism «{name}», the cam mechanism of variant "
                 "{number} and the gear mechanisms between the motor, the cam and the crank of the lever "
-                "mechanism.").format(name=literal(s1.mechanism.name) if s1.mechanism.name else t("Mechanism"), number=r.variant.number)
+                "mechanism.").format(name=literal(s1.mechanism.name) if s1.mechanism.name else t("Mechanism"),
+                                      number=r.variant.number)
         aim = (t("The aim is to analyse the structure, the motion and the forces of the lever mechanism, to find the "
                  "balancing moment, the driving moment and the flywheel that keeps the crank's speed within the "
                  "allowed fluctuation, and to find the main dimensions and the profile of the cam and the tooth "
@@ -286,6 +287,16 @@ def assumptions(c: Ctx) -> None:
                        "reducer change.").format(speed=c.qty(g.crank_rpm, t("rpm"))))
     items.append(t("The planetary ratio may deviate from the required by ±{tolerance_pct} % (§2.4 {{cite:book}}); the ranges of the schemes are read as $i <= 8$ — scheme 1, $8 < i <= 16$ — scheme 2, $i > 16$ — two stages.").format(tolerance_pct=n(g.tolerance_pct)))
     items.append(t("The neighbouring condition (2.5) is computed exactly instead of being read from Table 2.1."))
+    s1 = _sheet1(c)
+    if s1 is not None and abs(g.crank_rpm_actual - s1.mechanism.crank.rpm) > 1e-9:
+        # the drive's real crank speed differs from the file's within the reducer's tolerance: say which is used
+        items.append(t("The analysis of the lever mechanism (sheets 1 and 2) is made at the crank speed of the task, "
+                       "$n_1$ = {n1} ($ω_1$ = {w1} rad/s); the drive turns the crank at {actual} (the reducer's ratio "
+                       "differs from the required by {error}), which changes the velocities by the same share and the "
+                       "inertia forces by about twice it.").format(
+            n1=c.qty(s1.mechanism.crank.rpm, t("rpm"), sig=6), w1=c.n(abs(s1.mechanism.crank.omega), sig=4),
+            actual=c.qty(g.crank_rpm_actual, t("rpm"), decimals=1),
+            error=c.pct(g.checks.ratio_error_pct, sign=True)))
     items.append(t("The efficiencies in the power of the motor are $η_1$ = {eta1} (0,96 per single- or double-row stage) and $η_2$ = {eta2} (§2.6 {{cite:book}}).").format(eta1=c.n(g.eta1, sig=4), eta2=c.n(g.eta2)))
     if g.torque_nm is None:
         items.append(t("The mean reduced moment of sheet 2 is not given; the power of the motor is not computed."))

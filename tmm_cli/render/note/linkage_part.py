@@ -15,8 +15,9 @@ import math
 import re
 
 from ...i18n import N_
-from ...linkage.positions import PRESSURE_WARN_DEG, output_coordinate
+from ...linkage.positions import PRESSURE_WARN_DEG, displacement, output_coordinate
 from ...linkage.scales import PLAN_MM, SCHEME_MM
+from ...linkage.vector_plans import middle_of_working
 from ...linkage.roles import link_roles
 from ..terminal.mechanism import ROLE_WORDS, pattern
 from .ctx import Ctx, V, sheet1_of
@@ -93,8 +94,13 @@ class _Sym:
     def __init__(self, mech):
         names = list(mech.joint_names)
         for g in mech.groups:
-            if g.kind == "RPR":
+            if g.kind in ("RPR", "RPP"):
                 names += [f"{g.joints[0]}{n}" for n in g.numbers]
+            # the points of the guides' links under a block (b3 of a slider on the slotted link 3, …)
+            point = {"RRP": g.joints[-1], "PRP": g.joints[0], "RPP": f"{g.joints[0]}{g.numbers[1]}"}.get(g.kind)
+            for gd in ((g.guide,) if g.guide is not None else ()) + g.guides:
+                if gd.moving and point is not None:
+                    names.append(f"{point}{mech.link(gd.link).number}")
         self.names = names
 
     def parts(self, symbol: str) -> tuple[str, str, list[str]]:
@@ -216,6 +222,11 @@ def _positions(c: Ctx, s) -> None:
     else:
         text = t("The output link is {what}; it turns fully and has no extreme positions. Position 0 is taken at "
                  "$φ_0 = {start}°$.")
+    first, last = cy.working_start(), cy.working_end()
+    if rule == "given" and first is not None and first.index != 0:  # position 0 is not an extreme
+        text += t(" The working stroke runs from the extreme position {start} to {end}; the output's displacement is "
+                  "counted from {start}.").format(start=first.label, end=last.label)
+        c.doc.claim(kind="linkage_working_extremes", start=first.label, end=last.label)
     c.p(text.format(what=what, start=c.q(_deg(cy.start), decimals=2)))
     c.doc.claim(kind="linkage_position0", rule=rule, phi0_deg=_deg(cy.start))
     step = 360.0 / m.positions
@@ -317,10 +328,7 @@ class _Plans:
 
 def _middle_of_working(cy, pos) -> bool:
     """Whether `pos` is the evenly spaced position nearest the middle of the working stroke."""
-    if cy.working is None:
-        return False
-    evens = [p for p in cy.positions if p.label.isdigit()]
-    return min(evens, key=lambda p: abs(p.travel - 0.5 * cy.working)).index == pos.index
+    return middle_of_working(cy) == pos.index
 
 
 def _sense(c: Ctx, x: float) -> str:
@@ -663,19 +671,17 @@ def _vector_table(c: Ctx, P: _Plans) -> None:
 
 
 def position_rows(s):
-    """(label, φ°, s, v, a, {link: (ω, ε)}) per position: the output's displacement from position 0
-    along the working stroke [m or rad], its velocity and acceleration, the turning links' ω and ε."""
+    """(label, φ°, s, v, a, {link: (ω, ε)}) per position: the output's displacement from the extreme
+    position where the working stroke starts, along it [m or rad], its velocity and acceleration, the turning links' ω and ε."""
     m, cy = s.mechanism, s.cycle
     k = cy.kin
     q, qd, qdd = output_coordinate(m, k)
+    s_out = displacement(m, cy.extremes, cy.direction, q)
     rows = []
     for p in cy.positions:
         i = p.index
-        d = float(q[i] - q[0])
-        if m.output.kind != "slider":
-            d = (d + math.pi) % (2 * math.pi) - math.pi
         links = {ln.name: (float(k.omega[ln.name][i]), float(k.epsilon[ln.name][i])) for ln in m.links}
-        rows.append((p.label, _deg(p.phi), cy.direction * d, cy.direction * float(qd[i]),
+        rows.append((p.label, _deg(p.phi), float(s_out[i]), cy.direction * float(qd[i]),
                      cy.direction * float(qdd[i]), links))
     return rows
 
@@ -687,14 +693,22 @@ def _table(c: Ctx, s) -> None:
     c.doc.add(Heading(2, t("Kinematics of the mechanism in all positions")))
     turning = [ln for ln in m.links if ln.kind in ("bar", "slotted") and not (not slider and ln.name == m.output.link)]
     mm, ms, ms2, rs, rs2 = t("mm"), t("m/s"), t("m/s²"), t("rad/s"), t("rad/s²")
+    first = s.cycle.working_start()
+    moved = first is not None and first.index != 0  # crank.start_deg: s counts from the working stroke's start
     if slider:
         head = ["№", "$φ$, °", f"$s$, {mm}", f"$v$, {ms}", f"$a$, {ms2}"]
-        what = t("the displacement $s$ of the slider {link} from position 0, its velocity $v$ and acceleration $a$ "
-                 "(positive along the working stroke)").format(link=m.output.link)
+        what = (t("the displacement $s$ of the slider {link} from the extreme position {start} where the working "
+                  "stroke starts, its velocity $v$ and acceleration $a$ (positive along the working stroke)") if moved
+                else t("the displacement $s$ of the slider {link} from position 0, its velocity $v$ and acceleration "
+                       "$a$ (positive along the working stroke)")).format(link=m.output.link,
+                                                                          start=first.label if moved else "")
     else:
         head = ["№", "$φ$, °", "$ψ$, °", f"$ω$, {rs}", f"$ε$, {rs2}"]
-        what = t("the angle $ψ$ of the rocker {link} from position 0, its angular velocity $ω$ and acceleration $ε$ "
-                 "(positive along the working stroke)").format(link=m.output.link)
+        what = (t("the angle $ψ$ of the rocker {link} from the extreme position {start} where the working stroke "
+                  "starts, its angular velocity $ω$ and acceleration $ε$ (positive along the working stroke)") if moved
+                else t("the angle $ψ$ of the rocker {link} from position 0, its angular velocity $ω$ and acceleration "
+                       "$ε$ (positive along the working stroke)")).format(link=m.output.link,
+                                                                          start=first.label if moved else "")
     for ln in turning:
         head += [f"$ω_{ln.number}$, {rs}", f"$ε_{ln.number}$, {rs2}"]
     c.p(t("Table {{tab:linkage_positions}} gives, for every position, the crank angle $φ$, {what}, and the angular "

@@ -38,9 +38,9 @@ SOURCES = {
     # the standards the note and the sheets follow (records without the imprint the project could not check)
     "gost16532": Source(
         record="ГОСТ 16532-70. Передачи зубчатые цилиндрические эвольвентные внешнего зацепления. Расчет "
-               "геометрии : государственный стандарт Союза ССР : издание официальное : введен 1971-07-01.",
+               "геометрии : государственный стандарт Союза ССР : издание официальное.",
         english="GOST 16532-70. Involute external spur gear pairs. Calculation of geometry: state standard of the "
-                "USSR. Introduced 1971-07-01. (in Russian)",
+                "USSR. (in Russian)",
     ),
     "gost2104": Source(
         record="ГОСТ 2.104-2006. Единая система конструкторской документации. Основные надписи : межгосударственный "

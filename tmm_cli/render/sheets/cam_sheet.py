@@ -78,7 +78,7 @@ def _zone_room_fit(r, width: float, height: float):
 
 
 ZONE_HEAD = 16.0 + 8.0  # heading and its scale
-ZONE_CAPS = 2.5 + LINE * 3 + 2.0
+ZONE_CAPS = 2.5 + LINE * 4 + 2.0  # four caption lines: the data, the hatching, the book's lines, O_b
 ZONE_MARGIN = (12.0, 10.0, 12.0, 8.0)
 
 
@@ -300,7 +300,7 @@ def _zone_field(sh: Sheet, r, lang: str, box):
     # the feasible zone the wedges cut: outline (thin) and a 45° hatch
     poly = zn.polygon * k
     f.poly(poly, "Тонкие", closed=True)
-    _hatch(f, poly, spacing=3.0 / fac)
+    _hatch(f, poly, spacing=3.0 / fac, through=O)  # a hatch line through O: the centre stands on the hatching
     rise = zn.phase == 0
     ret = zn.phase == 2
     # B path and D-curves
@@ -407,6 +407,9 @@ def _zone_field(sh: Sheet, r, lang: str, box):
         tr(lang, "Hatched: the centres with ν ≤ ν_{max} at every position (the wedges at D_{i})"),
         tr(lang, "O_b — the book's vertex: r_0 = {v} mm").format(v=_n(z.book_r0_m * k, lang, 2)),
     ]
+    if zn.lines:  # the letters on the drawing said (a norm-controller marks a letter never defined)
+        txt.insert(2, tr(lang, "{names} — the textbook's lines at ν_{{max}} (§1.3), meeting at O_b").format(
+            names=", ".join(L.name for L in zn.lines)))
     if not fit.fits:
         txt[-1] += tr(lang, " (the construction is cut at the field's edge)")
     sh.caption(box[0], box[2], box[1] + 2.5, txt, H_NOTE, LINE)
@@ -430,11 +433,16 @@ def _field_scale_text(sh, f, lang, lab):
     f.inner = (x0, y0, x1, y1 - 1.0 - H_LABEL - 1.5 - 2.0)
 
 
-def _hatch(f, poly, spacing):
+def _hatch(f, poly, spacing, through=None):
     """The zone hatched at 45° in thin lines `spacing` (drawing units) apart, cut to the field's
     window: one HATCH entity of the standard pattern ANSI31 (a CAD user can edit or re-scale it;
     LINEs before) at the pattern scale that gives the drawn spacing, its boundary the cut polygon.
-    The lines it draws go into the sheet's index of lines, so labels keep clear of them."""
+    The lines it draws go into the sheet's index of lines, so labels keep clear of them.
+
+    With `through` (the chosen centre O, a corner of the zone) the lines run at 45° or 135°, whichever
+    enters the zone from O (else along the corner's bisector: ГОСТ 2.306 turns the hatching when 45°
+    does not suit), and one of them starts at O: the pattern's own definition, its base point O (the
+    hatching used to begin up to 2,4 mm from O, which looked outside the zone)."""
     x0, y0, x1, y1 = f.cut
     lo = (np.array([x0, y0]) - f.origin) / f.scale
     hi = (np.array([x1, y1]) - f.origin) / f.scale
@@ -447,21 +455,73 @@ def _hatch(f, poly, spacing):
     step = spacing * f.scale  # [sheet mm]
     hatch = sh.msp.add_hatch(color=256, dxfattribs={"layer": "Тонкие"})
     hatch.paths.add_polyline_path(pts, is_closed=True)
-    hatch.set_pattern_fill("ANSI31", scale=step / ANSI31_SPACING)
-    # the pattern's lines, for the index of what is drawn (labels avoid them)
     d = np.array([1.0, 1.0]) / math.sqrt(2)
-    n = np.array([-d[1], d[0]])
     q = np.asarray(pts)
+    start = None
+    if through is not None:
+        p = np.asarray(f.to_sheet(np.asarray([through], float))[0], float)
+        d = _hatch_direction(q, p, d)
+        start = float(p @ np.array([-d[1], d[0]]))
+        angle = math.degrees(math.atan2(d[1], d[0]))
+        off = step * np.array([-d[1], d[0]])
+        hatch.set_pattern_fill("TMM_ZONE", scale=1.0, definition=[
+            [angle, (float(p[0]), float(p[1])), (float(off[0]), float(off[1])), []]])
+    else:
+        hatch.set_pattern_fill("ANSI31", scale=step / ANSI31_SPACING)
+    # the pattern's lines, for the index of what is drawn (labels avoid them)
+    for a_, b_ in hatch_chords(q, d, step, start):
+        sh.obstacles.add_polyline(np.array([a_, b_]))
+
+
+def _hatch_direction(q: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """45°, 135° or the bisector of the corner of polygon `q` nearest `p`: the first whose line
+    through p enters the polygon."""
+    centroid = q.mean(axis=0)
+    j = int(np.argmin(np.hypot(*(q - p).T)))
+    e1, e2 = q[j - 1] - q[j], q[(j + 1) % len(q)] - q[j]
+    bis = e1 / max(float(np.hypot(*e1)), 1e-300) + e2 / max(float(np.hypot(*e2)), 1e-300)
+    bis = bis / max(float(np.hypot(*bis)), 1e-300)
+    h = 1e-3 * float(np.ptp(q, axis=0).max())
+    for cand in (d, np.array([-1.0, 1.0]) / math.sqrt(2), bis):
+        if any(_inside(q, p + sgn * h * cand + 1e-9 * (centroid - p)) for sgn in (1.0, -1.0)):
+            return cand
+    return d
+
+
+def hatch_chords(q: np.ndarray, d: np.ndarray, step: float, start: float | None = None):
+    """The chords of polygon `q` cut by the lines along `d`, `step` apart: from half a step in, or
+    through the offset `start` (a line through a corner counts)."""
+    n = np.array([-d[1], d[0]])
     proj = q @ n
-    for c in np.arange(proj.min() + step / 2, proj.max(), step):
+    if start is None:
+        offsets = np.arange(proj.min() + step / 2, proj.max(), step)
+    else:
+        k0 = math.floor((proj.min() - start) / step)
+        offsets = start + step * np.arange(k0, math.ceil((proj.max() - start) / step) + 1)
+        offsets = offsets[(offsets >= proj.min() - 1e-12) & (offsets <= proj.max() + 1e-12)]
+    tol = 1e-6 * float(np.ptp(q, axis=0).max())
+    out = []
+    for c in offsets:
         hits = []
         for a, b in zip(q, np.roll(q, -1, axis=0)):
             pa, pb = a @ n - c, b @ n - c
-            if pa * pb < 0:
+            if abs(pa) <= tol:
+                hits.append(a)
+            elif pa * pb < 0 and abs(pb) > tol:
                 hits.append(a + pa / (pa - pb) * (b - a))
         if len(hits) >= 2:
             hits = sorted(hits, key=lambda h: h @ d)
-            sh.obstacles.add_polyline(np.array([hits[0], hits[-1]]))
+            if float(np.hypot(*(hits[-1] - hits[0]))) > tol:
+                out.append((hits[0], hits[-1]))
+    return out
+
+
+def _inside(poly: np.ndarray, q: np.ndarray) -> bool:
+    """Whether q is inside the convex polygon (either orientation)."""
+    e = np.roll(poly, -1, axis=0) - poly
+    w = q - poly
+    cr = e[:, 0] * w[:, 1] - e[:, 1] * w[:, 0]
+    return bool(np.all(cr >= -1e-12) or np.all(cr <= 1e-12))
 
 
 ANSI31_SPACING = 3.175  # mm between the lines of ANSI31 at pattern scale 1 (1/8")
@@ -794,7 +854,7 @@ def table(sh: Sheet, box, title: str, rows: list[tuple[str, str]], col1: float =
         sh.text(x0 + 2.0, y + row_h / 2 - 0.3, a, hh, valign="middle", width=xm - x0 - 4.0, height_max=row_h - 2.0,
                 max_lines=2, min_h=min(hh, 3.5) if hh >= 3.5 else hh)
         sh.text((xm + x1) / 2, y + row_h / 2 - 0.3, b, hh, align="center", valign="middle", width=x1 - xm - 4.0,
-                min_h=min(hh, 3.5) if hh >= 3.5 else hh)
+                height_max=row_h - 2.0, max_lines=2, min_h=min(hh, 3.5) if hh >= 3.5 else hh)
     return bottom
 
 

@@ -455,6 +455,16 @@ def _series(s: Sheet2, lang: str):
                else [])),
            ("J", sc.J, tr(lang, "kg·m²/mm"), [(d.J_r / sc.J, "Основные", None, tr(lang, "J_{r}")),
                                                 (np.full(d.travel.shape, d.J_first) / sc.J, "Штриховые", None, None)])]
+    if s.input.gas:  # the piston force diagrams P = p·A over the turn (+ away from the head)
+        from ...linkage.gas import piston_forces
+        from ...linkage.scales import DIAGRAM_HEIGHT_MM
+
+        mech = s.sheet1.mechanism
+        forces = piston_forces(mech, s.input.gas, s.sheet1.cycle.curve.kin)
+        mu = drafting_scale(max(float(np.max(np.abs(f))) for f in forces.values()), DIAGRAM_HEIGHT_MM)
+        out.insert(0, ("P", mu, tr(lang, "N/mm"), [
+            (f / mu, "Основные" if j == 0 else "Штриховые", None, f"P_{{{mech.link(name).number}}}")
+            for j, (name, f) in enumerate(forces.items())]))
     return out
 
 

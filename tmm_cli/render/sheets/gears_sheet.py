@@ -83,7 +83,23 @@ def _ground(sh, a, b, side, layer="Тонкие", step=2.0, depth=2.0):
 
 
 # ----------------------------------------------------------------------------------------------
-# scheme (ГОСТ 2.770) and the picture of linear velocities (module units: r = z/2 with m = 1 mm)
+# scheme (ГОСТ 2.770) and the picture of linear velocities (drawn in module units r = z/2; the module
+# the drawing takes: planetary_module)
+
+
+# ГОСТ 9563-60, series 1 (the preferred modules) [mm]
+MODULES = (1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 16.0, 20.0, 25.0)
+
+
+def planetary_module(paper_per_module: float) -> float:
+    """The module the reducer is drawn with: the largest standard one at which its scheme, drawn
+    `paper_per_module` paper mm per module, stands at 1:1 or larger; 1 mm when even that needs a
+    reduction.
+
+    >>> planetary_module(2.0), planetary_module(2.5), planetary_module(0.5), planetary_module(7.0)
+    (2.0, 2.5, 1.0, 6.0)
+    """
+    return max([m for m in MODULES if m <= paper_per_module * (1 + 1e-9)] or [1.0])
 
 
 def _scheme_layout(d):
@@ -126,9 +142,14 @@ def _scheme_field(sh: Sheet, r, lang: str):
     room = (x0b + 2.0, y0b + 2.5 + LINE * 2 + 2.0, split, fld.inner[3] - 2.0)
     fit = fit_view(lo, hi, room, margin=(14.0, 4.0, 6.0, 4.0), choices=ENLARGE)
     f = fit.scale
+    # the reducer's module: the synthesis gives tooth numbers only; the drawing takes the largest standard
+    # module (ГОСТ 9563, series 1) at which the scheme fits its field at 1:1 (f paper mm per module)
+    m_pl = planetary_module(f)
+    scale = f / m_pl  # paper mm per real mm
+    label = next((lab for lab, x in GOST_SCALES if abs(x - scale) < 1e-9 * scale), fit.label)
     sh.set_field_transform(fld, fit.origin, f, fit.label)
     P = fld.p
-    k_s = 0.001 / f  # m/mm for a module of 1 mm
+    k_s = 0.001 / scale  # m/mm of the reducer at its module
     inner = (x0b + 1.0, room[1], x1b - 1.0, fld.inner[3])
     # the axis of the reducer
     sh.line(P(-0.5 * rmax, 0), P(x_end + 0.95 * gap, 0), "Осевые")
@@ -180,7 +201,7 @@ def _scheme_field(sh: Sheet, r, lang: str):
     vmin = min(0.0, min(s.v_a / (s.r_a - s.r_b) * (max(s.r_b, s.r_a + 2 * s.r_planet) - s.r_b) for s in v.stages))
     room_w = x1b - split - 26.0
     omega = math.pi * r.motor_rpm / 30.0  # the sun k turns with the motor [rad/s]
-    v_real = omega * v.stages[0].r_a * 0.001  # V_A of stage 1 [m/s] with m = 1 mm
+    v_real = omega * v.stages[0].r_a * m_pl * 0.001  # V_A of stage 1 [m/s] at the module m_pl
     k_v = nice_scale(v_real / v.stages[0].v_a * (1.1 * vmax - vmin) / room_w)  # (m/s)/mm, round
     kv = v_real / v.stages[0].v_a / k_v  # paper mm per drawn unit of the core
     xo = split + 14.0 - kv * vmin
@@ -228,7 +249,8 @@ def _scheme_field(sh: Sheet, r, lang: str):
         ("z_{k}", "z_{c}", "z_{c′}", "z_{n}") if s.z_planet2 is not None else ("z_{k}", "z_{c}", "z_{n}"), s.teeth))
         + f", k = {s.planets}" for s in d.stages)
     lines = [
-        f"k_{{l}} = {num(k_s, lang, sig=3)} " + tr(lang, "m/mm") + f" ({_m(lang, fit.label)}, m = 1 {mm});  "
+        f"k_{{l}} = {num(k_s, lang, sig=3)} " + tr(lang, "m/mm") + f" ({_m(lang, label)}, m = {num(m_pl, lang, sig=3)} {mm}"
+        + tr(lang, ": the largest standard module at which the reducer fits at 1:1") * (abs(scale - 1.0) < 1e-9) + ");  "
         + f"k_{{V}} = {num(k_v, lang, sig=3)} " + tr(lang, "(m/s)/mm") + ";  "
         + tr(lang, "scheme {scheme}: ").format(scheme=d.scheme) + teeth,
         f"i = tg φ_{{k}} / tg φ_{{H}} = {ratios};  φ_{{k}} = "
@@ -236,7 +258,7 @@ def _scheme_field(sh: Sheet, r, lang: str):
         + ";  φ_{H} = " + "; ".join(f"{_n(drawn(s.phi_h_deg), lang, 2)}°" for s in v.stages),
     ]
     sh.caption(x0b, x1b, y0b + 2.5, lines, H_NOTE, LINE)
-    return fld, rmax
+    return fld, rmax, m_pl
 
 
 def _bar(sh, fld, x, y0, y1, tick):
@@ -293,7 +315,7 @@ def _angular_field(sh: Sheet, r, lang: str):
     return fld
 
 
-def _assembly_field(sh: Sheet, r, lang: str):
+def _assembly_field(sh: Sheet, r, lang: str, m_pl: float = 1.0):
     d = r.planetary
     n = len(d.stages)
     fld = sh.add_field("assembly", BOX_ASSEMBLY, tr(lang, "Assembly order"))
@@ -306,17 +328,27 @@ def _assembly_field(sh: Sheet, r, lang: str):
     caps = []
     for j, (st, ch) in enumerate(zip(d.stages, r.checks.stages)):
         suf = tr(lang, "Stage {v}: ").format(v=j + 1) if n > 1 else ""
-        caps.append(suf + f"K = {st.planets};  c = {ch.assembly_c};  2β = 360°/{st.planets} = {num(360.0 / st.planets, lang, sig=4)}°")
+        caps.append(suf + f"k = {st.planets};  c = {ch.assembly_c};  2β = 360°/k = {num(360.0 / st.planets, lang, sig=4)}°")
         caps.append(f"φ_{{H1}} = c·2β = {num(ch.carrier_turn_deg, lang, sig=5)}°"
                     + (f" = {int(ch.carrier_turn_deg // 360)}·360° + {num(ch.carrier_turn_deg % 360, lang, sig=4)}°"
                        if ch.carrier_turn_deg >= 360 else ""))
+    # one ГОСТ 2.302 scale for the view, at the module the scheme is drawn with (stated in the caption)
+    top_guess = top
+    cap_guess = BOX_ASSEMBLY[1] + 2.5 + LINE * (len(caps) + 1) + H_NOTE
+    f_max = min(min((cw - 10.0) / (2 * max(st.z_ring / 2, st.z_sun / 2 + st.z_planet / 2 + max(st.z_planet, st.zc2) / 2)
+                                     + 4), (top_guess - cap_guess - 8.0) /
+                    (2 * max(st.z_ring / 2, st.z_sun / 2 + st.z_planet / 2 + max(st.z_planet, st.zc2) / 2) + 4))
+                for st in d.stages)
+    fits = [(lab, x) for lab, x in GOST_SCALES if x * m_pl <= f_max * (1 + 1e-9)]
+    lab_a, x_a = fits[-1] if fits else GOST_SCALES[0]
+    mm = tr(lang, "mm")
+    caps.append(f"{_m(lang, lab_a)}, m = {num(m_pl, lang, sig=3)} {mm}")
     cap_top = sh.caption(BOX_ASSEMBLY[0], BOX_ASSEMBLY[2], BOX_ASSEMBLY[1] + 2.5, caps, H_NOTE, LINE)
     inner = (x0b, cap_top + 2.0, x1b, top)
     for j, (st, ch) in enumerate(zip(d.stages, r.checks.stages)):
         rk, rc, rc2, rn = st.z_sun / 2, st.z_planet / 2, st.zc2 / 2, st.z_ring / 2
         rC = rk + rc
-        big = max(rn, rC + max(rc, rc2))
-        f = min((cw - 10.0) / (2 * big + 4), (top - cap_top - 8.0) / (2 * big + 4))
+        f = x_a * m_pl  # paper mm per module unit
         c = np.array([x0b + cw * (j + 0.5), (cap_top + top) / 2])
         sh.circle(c, rk * f, "Основные")
         sh.circle(c, rn * f, "Основные")
@@ -690,9 +722,9 @@ def sheet4(result, variant: int, lang: str, title) -> Sheet:
     """Build sheet 4 for a GearsResult (no file written)."""
     sh = Sheet(lang)
     sh.frame()
-    _scheme_field(sh, result, lang)
+    _, _, m_pl = _scheme_field(sh, result, lang)
     _angular_field(sh, result, lang)
-    _assembly_field(sh, result, lang)
+    _assembly_field(sh, result, lang, m_pl)
     mesh = _mesh_field(sh, result, lang)
     _results(sh, result, lang)
     sh.title_block(title, name=tr(lang, "Gear mechanisms: synthesis and analysis"),

@@ -225,10 +225,13 @@ def _scheme_caption_lines(sh: Sheet, s: Sheet1, lang: str, width: float) -> int:
 
 def _scheme_items(s: Sheet1, lang: str, reduced: str = "") -> list[str]:
     c = s.cycle
-    ends = [p.label for p in c.positions if p.extreme == "end"]
+    first, last = c.working_start(), c.working_end()
     items = [tr(lang, "position 0 — main lines")]
-    if ends:
-        items.append(tr(lang, "the other extreme position {label} — dashed").format(label=ends[0]))
+    if first is not None and first.index != 0:  # crank.start_deg: position 0 is not an extreme
+        items.append(tr(lang, "the extreme positions {start} (start of the working stroke) and {end} (its end) — "
+                              "dashed").format(start=first.label, end=last.label))
+    elif last is not None:
+        items.append(tr(lang, "the other extreme position {label} — dashed").format(label=last.label))
     items.append(tr(lang, "dashed curves: the paths of the points"))
     if reduced:
         items.append(reduced)
@@ -290,7 +293,7 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
             continue
         z = c.curve.kin.z[n] * MM
         f.poly(thin_out(np.column_stack([z.real, z.imag]), 0.5 * unit), "Тонкие" if n in joints else "Штриховые")
-    ends = [p.index for p in c.positions if p.extreme == "end"]
+    ends = [p.index for p in c.positions if p.extreme]
     drawn = shown(c.positions)
     for p in drawn:
         if p.index == 0:
@@ -354,7 +357,7 @@ def _diagrams_field(sh: Sheet, s: Sheet1, lang: str, box):
     x0 = x0b + DIAGRAM_LEFT - 1.0 + max(0.0, (x1b - x0b) - (DIAGRAM_LEFT + length + 9.0 + DIAGRAM_RIGHT)) / 2
     xs = x0 + np.asarray(cv.travel) / sc.phi
     marks = [x0 + p.travel / sc.phi for p in c.positions]
-    ends = [x0 + p.travel / sc.phi for p in c.positions if p.extreme == "end"]
+    ends = [x0 + p.travel / sc.phi for p in c.positions if p.extreme and p.index != 0]
     series = _diagram_series(s)
     lines = wrap_items(sh, _diagram_items(s, lang), box[2] - box[0] - 4.0)
     cap_h = caption_height(len(lines))

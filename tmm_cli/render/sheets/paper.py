@@ -894,7 +894,7 @@ class Sheet:
             return self.text(X + x, Y + y, s, h, width=w, align=align, **kw)
 
         for x, w, s in ((0, 7, "Изм."), (7, 10, "Лист"), (17, 23, "№ докум."), (40, 15, "Подп."), (55, 10, "Дата")):
-            T(x + w / 2, 31.2, s, 2.5, w - 3, "center")
+            T(x + w / 2, 31.2, s, 2.5, w - (2 if w <= 10 else 3), "center")
         # lower rows, top down: Разраб. 25–30, Пров. 20–25, Т.контр. 15–20, (free), Н.контр., Утв.
         for k, s in enumerate(("Разраб.", "Пров.", "Т.контр.", "", "Н.контр.", "Утв.")):
             if s:
@@ -903,7 +903,7 @@ class Sheet:
         T(18.0, 26.2, title.student, 3.5, 21.0, height_max=3.6, min_wf=0.6, literal=True)  # a person's text, as typed; 1 mm clear of the cell's lines
         T(18.0, 21.2, title.teacher, 3.5, 21.0, height_max=3.6, min_wf=0.6, literal=True)
         for x, w, s in ((135, 15, "Лит."), (150, 17, "Масса"), (167, 18, "Масштаб")):
-            T(x + w / 2, 36.2, s, 2.5, w - 3, "center")
+            T(x + w / 2, 36.2, s, 2.5, w - (2 if w <= 10 else 3), "center")
         T(176, 27.5, scale, 5.0, 16, "center", valign="middle")
         T(137.5, 27.5, "У", 3.5, 4, "center", valign="middle")  # литера: учебный документ
         T(136, 16.2, "Лист 1", 2.5, 18)
@@ -961,17 +961,30 @@ def _dirs_towards(v) -> tuple[str, ...]:
 
 
 def _wrap(text: str, n: int) -> list[str] | None:
-    """Split `text` at spaces into `n` lines of about equal length (None if it has too few words)."""
+    """Split `text` at spaces into `n` lines, the longest as short as it can be (None if it has too
+    few words).
+
+    >>> _wrap("Синтез кулачкового механизма", 2)
+    ['Синтез кулачкового', 'механизма']
+    """
     words = text.split(" ")
     if len(words) < n:
         return None
-    target = len(text) / n
-    lines, cur = [], ""
-    for w in words:
-        if cur and len(cur) + 1 + len(w) > target * 1.15 and len(lines) < n - 1:
-            lines.append(cur)
-            cur = w
-        else:
-            cur = f"{cur} {w}" if cur else w
-    lines.append(cur)
-    return lines
+    from functools import lru_cache
+
+    @lru_cache(maxsize=None)
+    def best(i: int, k: int) -> tuple[int, tuple[int, ...]]:
+        """(the longest line, the break positions) of words[i:] on k lines."""
+        if k == 1:
+            return len(" ".join(words[i:])), ()
+        out = (10 ** 9, ())
+        for j in range(i + 1, len(words) - k + 2):
+            head = len(" ".join(words[i:j]))
+            rest, cuts = best(j, k - 1)
+            cand = (max(head, rest), (j, *cuts))
+            if cand[0] < out[0]:
+                out = cand
+        return out
+
+    cuts = (0, *best(0, n)[1], len(words))
+    return [" ".join(words[a:b]) for a, b in zip(cuts[:-1], cuts[1:])]

@@ -103,7 +103,7 @@ def results_table(s: Sheet1, lang: str):
                   num(c.time_ratio, lang, decimals=5), tr(lang, "K = φ_w/φ_r"))
         t.add_row(tr(lang, "Working stroke φ_w"), num(math.degrees(c.working), lang, decimals=3) + "°", "")
         t.add_row(tr(lang, "Return stroke φ_r"), num(math.degrees(c.returning), lang, decimals=3) + "°", "")
-        ext = [p for p in c.positions if p.extreme]
+        ext = [p for p in (c.working_start(), c.working_end()) if p is not None]
         t.add_row(tr(lang, "Extreme positions"),
                   "; ".join(f"{p.label}: φ = {num(_deg(p.phi), lang, decimals=3)}°" for p in ext),
                   tr(lang, "start / end of the working stroke"))
@@ -131,7 +131,14 @@ def positions_table(s: Sheet1, lang: str):
     for ln in turning:
         cols += [(f"ω{ln.number}, " + tr(lang, "rad/s"), "right"),
                  (f"ε{ln.number}, " + tr(lang, "rad/s²"), "right")]
-    t = _table(tr(lang, "Positions (0: start of the working stroke); output {link}").format(link=m.output.link), *cols)
+    first, last = c.working_start(), c.working_end()
+    if first is None or first.index == 0:
+        title = tr(lang, "Positions (0: start of the working stroke); output {link}").format(link=m.output.link)
+    else:  # crank.start_deg puts position 0 elsewhere: s counts from the working stroke's start
+        title = tr(lang, "Positions (0: φ = {phi}°; the working stroke runs {start} → {end}, s from {start}); "
+                         "output {link}").format(phi=num(_deg(c.start), lang, decimals=3), start=first.label,
+                                                 end=last.label, link=m.output.link)
+    t = _table(title, *cols)
     cv = c.curve
     for p in c.positions:
         i = p.index

@@ -89,13 +89,18 @@ class NoteBlock:
     def __rich__(self):
         from rich.panel import Panel
 
+        from . import escape
+
         colour = {"ℹ": "cyan", "⚠": "yellow", "✖": "bold red"}
-        body = "\n".join(f"[{colour[mark]}]{mark} {text}[/]" if mark == "✖" else f"[{colour.get(mark, 'white')}]{mark}[/] {text}"
-                         for mark, text in self.lines)
+        # a sentence may hold a person's text (a mechanism's name): its markup and controls are text
+        body = "\n".join(f"[{colour[mark]}]{mark} {escape(text)}[/]" if mark == "✖"
+                         else f"[{colour.get(mark, 'white')}]{mark}[/] {escape(text)}" for mark, text in self.lines)
         return Panel(body, title=self.title, expand=False)
 
     def markdown(self) -> str:
-        return "\n".join([f"**{self.title}**", ""] + [f"- {mark} {plain(text)}" for mark, text in self.lines])
+        from ..note.model import md_text
+
+        return "\n".join([f"**{self.title}**", ""] + [f"- {mark} {md_text(text)}" for mark, text in self.lines])
 
 
 class MarkdownSink:
