@@ -215,7 +215,7 @@ def test_bad_chain_in_russian_and_bad_risk(tmp_path):
     chain = tmp_path / "c.toml"
     chain.write_text('[[link]]\nname = "A"\nnominal = 1\nes = 0\nei = 0.1\nsign = "+"\n', encoding="utf-8")
     res = run("chain", chain, "--out", tmp_path / "o", "--lang", "ru")
-    assert_russian_error(res, "звено 1 ('A'): es = 0 меньше ei = 0.1")
+    assert_russian_error(res, "звено 1 ('A'): es = 0 меньше ei = 0,1")  # decimal commas in Russian (issue 33, B10)
     risk = run("chain", EXAMPLES / "chain-radial-1.toml", "--risk", 0, "--out", tmp_path / "o", "--lang", "ru")
     assert_russian_error(risk, "'--risk'", "вне допустимого диапазона")
     assert not (tmp_path / "o").exists()

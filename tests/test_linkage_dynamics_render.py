@@ -149,7 +149,7 @@ def test_a_bad_mass_is_one_line_and_nothing_is_written(tmp_path):
     path = tmp_path / "bad.toml"
     path.write_text(text, encoding="utf-8")
     for lang, fragment in (("en", "'mass[2].m' is -2.4; a mass must lie in [0, 100000] kg"),
-                           ("ru", "'mass[2].m' = -2.4; масса должна лежать в [0, 100000] кг")):
+                           ("ru", "'mass[2].m' = -2,4; масса должна лежать в [0, 100000] кг")):
         r = run("linkage", path, "--out", tmp_path / "o", "--lang", lang)
         assert r.exit_code == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
         assert fragment in r.stderr, r.stderr

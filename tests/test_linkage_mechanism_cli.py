@@ -78,8 +78,8 @@ def _bad(tmp_path):
 
 CASES = {
     "a negative length": (["{t}/bad.toml"], "'crank.length' = -1; длина должна лежать в (0, 100] м"),
-    "cannot be assembled": (["{t}/short.toml"], "группу 1 (RRR A-B-C) нельзя собрать при φ = 180.0°: |AC| = 0.5 м, "
-                                                "а AB + BC = 0.45 м; сделайте AB + BC длиннее 0.5 м"),
+    "cannot be assembled": (["{t}/short.toml"], "группу 1 (RRR A-B-C) нельзя собрать при φ = 180,0°: |AC| = 0,5 м, "
+                                                "а AB + BC = 0,45 м; сделайте AB + BC длиннее 0,5 м"),
     "not TOML": (["{t}/broken.toml"], "— не TOML"),
     "not UTF-8": (["{t}/latin1.toml"], "— не текст в UTF-8"),
     "too big": (["{t}/big.toml"], "больше 256 КиБ"),

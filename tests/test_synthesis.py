@@ -304,7 +304,7 @@ def _synth_text(name: str) -> str:
 
 
 @pytest.mark.parametrize("name,length_mm", [("synth_slider.toml", "97,24"), ("synth_rocker.toml", "169,75"),
-                                             ("synth_shaper.toml", "647,21")])
+                                             ("synth_shaper.toml", "647,214")])
 def test_note_opens_chapter_1_with_the_synthesis(name, length_mm):
     from tmm_cli.render.note.mathsyntax import check_line
     from tmm_cli.render.note.model import Formula, Heading, all_math
@@ -461,3 +461,123 @@ def test_sheet1_labels_the_construction(name, want, tmp_path):
         dims = [e for e in msp.query("LINE[layer=='Размеры']")
                 if abs(abs(e.dxf.end.y - e.dxf.start.y) - (f_sheet + 14.0)) < 0.2 and abs(e.dxf.end.x - e.dxf.start.x) < 0.5]
         assert dims, "no dimension line along the sagitta"
+
+
+def test_russian_errors_and_warnings_use_decimal_commas_and_advise_what_the_file_takes(tmp_path):
+    """B10: «0,3 м … 34,88°» in Russian; the low-γ warning of a task with a frame advises another
+    frame (written as the file takes it, «frame = 0.2111») or no frame with min_transmission_deg —
+    and that advice, followed, is accepted."""
+    task = tmp_path / "e.toml"
+    task.write_text('type = "crank-rocker"\nrocker = 0.2\nswing_deg = 40\ntime_ratio = 1.2\nframe = 0.3\n'
+                    'min_transmission_deg = 40\n', encoding="utf-8")
+    r = run("synth", task, "--out", tmp_path / "o", "--no-plots", "--lang", "ru")
+    assert r.exit_code == 2 and len(r.stderr.strip().splitlines()) == 1 and r.stderr.startswith("tmm: ошибка:")
+    assert "'min_transmission_deg'" in r.stderr and "0,3 м" in r.stderr and "34,88°" in r.stderr and "0.3" not in r.stderr
+    task.write_text('type = "crank-rocker"\nrocker = 0.2\nswing_deg = 40\ntime_ratio = 1.2\nframe = 0.3\n',
+                    encoding="utf-8")
+    r = run("synth", task, "--out", tmp_path / "o", "--no-plots", "--json", "--lang", "ru")
+    assert r.exit_code == 0, r.output
+    warning = next(n for n in json.loads(r.stdout)["notes"] if "34,9°" in n)
+    assert "frame = 0.2111" in warning and "min_transmission_deg = 40" in warning and "34.9" not in warning
+    for fix in ('frame = 0.2111\n', 'min_transmission_deg = 40\n'):
+        task.write_text('type = "crank-rocker"\nrocker = 0.2\nswing_deg = 40\ntime_ratio = 1.2\n' + fix, encoding="utf-8")
+        r = run("synth", task, "--out", tmp_path / "o", "--no-plots", "--json", "--lang", "en", "--force")
+        assert r.exit_code == 0, r.output
+        assert json.loads(r.stdout)["checks"]["gamma_min_deg"]["linkage"] >= 40.0
+
+
+def test_note_titles_words_and_one_rounding_per_number():
+    """C11: «ход» for a slider, «размах» for a rocker; C12: ψ = θ and f as formulas, one number per
+    formula, a number printed with one rounding wherever it appears, the rod ratio said given or
+    assumed («принято»); C14: chapter 1's title names the synthesis (not when edited)."""
+    import re
+
+    from tmm_cli.render.note.model import Formula, Heading, Paragraph
+
+    def section(doc):
+        blocks = doc.blocks
+        i = next(k for k, b in enumerate(blocks) if isinstance(b, Heading) and b.text == "Синтез механизма")
+        assert blocks[i - 1].level == 1 and blocks[i - 1].text.startswith("Синтез, структурный и кинематический анализ")
+        j = next(k for k in range(i + 1, len(blocks)) if isinstance(blocks[k], Heading))
+        return blocks[i:j]
+
+    last = {n: [b.text for b in section(_note_of(_synth_text(n))) if isinstance(b, Paragraph)][-1]
+            for n in ("synth_slider.toml", "synth_rocker.toml")}
+    assert "ход" in last["synth_slider.toml"] and "размах" not in last["synth_slider.toml"]
+    assert "размах" in last["synth_rocker.toml"] and "(или" not in last["synth_rocker.toml"]
+    sec = section(_note_of(_synth_text("synth_shaper.toml")))
+    maths = [b.math for b in sec if isinstance(b, Formula)]
+    assert any(m.startswith("ψ = θ = ") for m in maths) and any(m.startswith("f = l_(O_2 B)") for m in maths)
+    assert all(" quad " not in m and m.count(" thin ") <= 1 for m in maths)  # one number per formula
+    numbers = re.findall(r'"(\d+,\d+)"', " ".join(maths))
+    for a in numbers:  # no number printed both rounded and unrounded (647,21 beside 647,214)
+        assert not any(b != a and b.startswith(a) and float(a.replace(",", ".")) > 100 for b in numbers), a
+    words = " ".join(b.text for b in sec if isinstance(b, Paragraph))
+    assert "k = " in words and "обычно" in words
+    text = _synth_text("synth_shaper.toml").replace("rod_ratio = 0.3\n", "")
+    words = " ".join(b.text for b in section(_note_of(text)) if isinstance(b, Paragraph))
+    assert "принято" in words
+    edited = _synth_text("synth_slider.toml").replace("length = 0.0485", "length = 0.0490", 1)
+    heads = [b.text for b in _note_of(edited).blocks if isinstance(b, Heading) and b.level == 1]
+    assert "Структурный и кинематический анализ рычажного механизма" in heads
+
+
+def test_sheet1_title_names_the_synthesis(tmp_path):
+    """C14: sheet 1's name in the title block."""
+    from test_sheets import TITLE, reopen
+
+    from tmm_cli.linkage.sheet1 import analyse_mechanism
+    from tmm_cli.render.sheets.linkage_sheet import sheet1
+
+    s = analyse_mechanism(parse_mechanism(tomllib.loads(_synth_text("synth_slider.toml")), "m.toml"))
+    doc = reopen(sheet1(s, "ru", TITLE), tmp_path, "sheet1")
+    texts = " ".join(e.dxf.text for e in doc.modelspace().query("TEXT")) + " ".join(
+        e.plain_text() for e in doc.modelspace().query("MTEXT"))
+    assert "Синтез и кинематический анализ" in texts
+
+
+def test_a_poor_crank_slider_is_warned_of_and_a_good_one_is_not(tmp_path):
+    """C18: a pressure angle near or above 45° (λ near 0,5) is legal but poor: a visible warning."""
+    poor = analysed_notes({"type": "crank-slider", "stroke": 0.10, "time_ratio": 1.2, "offset": 0.02})
+    assert [n.code for n in poor if n.code == "synth_slider_pressure"] == ["synth_slider_pressure"]
+    assert poor[[n.code for n in poor].index("synth_slider_pressure")].level == "warning"
+    good = analysed_notes({"type": "crank-slider", "stroke": 0.12, "lambda": 0.25})
+    assert "synth_slider_pressure" not in [n.code for n in good]
+    task = tmp_path / "t.toml"
+    task.write_text('type = "crank-slider"\nstroke = 0.1\nlambda = 0.45\n', encoding="utf-8")
+    r = run("synth", task, "--out", tmp_path / "o", "--no-plots", "--lang", "ru")
+    assert r.exit_code == 0 and "давления" in r.output and "0,450" in r.output
+
+
+def analysed_notes(task: dict):
+    t = parse_task(task)
+    return synthesised_file(synthesise(t), t).notes
+
+
+def test_the_terminal_derives_the_rocker_pivot_too(tmp_path):
+    """B6 in the terminal: AC₁, AC₂, l_AD and the angles μ with their formulas and substitutions."""
+    r = run("synth", EXAMPLES / "synth_rocker.toml", "--out", tmp_path, "--no-plots", "--lang", "ru")
+    assert r.exit_code == 0, r.output
+    out = " ".join(r.stdout.split())
+    assert "AC₁ = √((x_A − x_C₁)² + (y_A − y_C)²) = √((160,447" in out and "= 105,100 мм" in out
+    assert "l_AD = √(x_A² + y_A²) = √(160,447² + 137,205²) = 211,11 мм" in out
+    assert "μ₁ = 45,77°" in out and "R = C₁C₂/(2·sin θ) = 136,808/" in out
+
+
+def test_the_sheets_font_draws_theta_as_the_note_does():
+    """C13: the sheets' osifont drew «θ» in the script form «ϑ» (the note prints θ); tmm's copy draws
+    θ as a closed oval with its bar — «Θ» narrowed — and keeps ϑ as its own glyph."""
+    from fontTools.pens.recordingPen import DecomposingRecordingPen
+    from fontTools.ttLib import TTFont
+
+    font = TTFont(Path(__file__).resolve().parents[1] / "tmm_cli" / "render" / "sheets" / "fonts" / "osifont.ttf")
+    cmap, gs = font.getBestCmap(), font.getGlyphSet()
+
+    def contours(cp):
+        pen = DecomposingRecordingPen(gs)
+        gs[cmap[cp]].draw(pen)
+        return [op for op, _ in pen.value if op in ("closePath", "endPath")], pen.value
+
+    theta, big, script = contours(0x03B8), contours(0x0398), contours(0x03D1)
+    assert len(theta[0]) == len(big[0]) and theta[1] != script[1]
+    assert font["hmtx"][cmap[0x03B8]][0] < font["hmtx"][cmap[0x0398]][0]

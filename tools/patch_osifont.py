@@ -3,7 +3,9 @@
 osifont 0.1.20220224 draws Э, э, Ё, ё as empty boxes. This script adds them: Э and э as the
 mirror images of Є and є (the same strokes turned), Ё and ё as references to Ë and ë (the same
 letters). Its «ь» is the capital «Ь» (ГОСТ 2.304 has a small letter): «ь» is made from «ы» without
-its stroke «і» (the same small soft sign the font draws inside «ы»). Nothing else changes; the
+its stroke «і» (the same small soft sign the font draws inside «ы»). Its «θ» is the script form «ϑ»
+(so the sheets showed ϑ where the note writes θ): «θ» is made from «Θ» narrowed to 0,8 of its width
+(a closed oval with its bar, as the note's θ). Nothing else changes; the
 version string says so (GPL: modified files carry a notice). Running it again on its own output
 changes nothing.
 
@@ -65,11 +67,27 @@ def soft_sign(font):
     return pen.glyph(), int(round(max(x for x in xmax if x < max(xmax)) + rsb))
 
 
+def narrowed(font, src: str, k: float = 0.8):
+    """The glyph `src` scaled to `k` of its width (about its left side bearing), with its advance."""
+    gs = font.getGlyphSet()
+    adv, lsb = font["hmtx"][src]
+    rec = DecomposingRecordingPen(gs)
+    gs[src].draw(rec)
+    pen = TTGlyphPen(gs)
+    rec.replay(TransformPen(pen, (k, 0, 0, 1, lsb * (1 - k), 0)))
+    return pen.glyph(), int(round(lsb + (adv - lsb) * k))
+
+
 def main(src: str, dst: str) -> None:
     f = TTFont(src)
     cm = f.getBestCmap()
+    if f["glyf"][cm[0x03D1]].isComposite():  # «ϑ» refers to «θ»: it keeps its own (script) strokes
+        glyph, adv = copied(f, cm[0x03D1])
+        glyph.recalcBounds(f["glyf"])
+        f["glyf"][cm[0x03D1]] = glyph
+        f["hmtx"][cm[0x03D1]] = (adv, glyph.xMin)
     for code, how, base in ((0x042D, mirrored, 0x0404), (0x044D, mirrored, 0x0454),
-                            (0x0401, copied, 0x00CB), (0x0451, copied, 0x00EB)):
+                            (0x0401, copied, 0x00CB), (0x0451, copied, 0x00EB), (0x03B8, narrowed, 0x0398)):
         name = cm[code]
         glyph, adv = how(f, cm[base])
         glyph.recalcBounds(f["glyf"])
@@ -83,7 +101,7 @@ def main(src: str, dst: str) -> None:
     for rec in f["name"].names:
         if rec.nameID == 5:
             text = rec.toUnicode().split("; tmm:")[0]
-            rec.string = text + "; tmm: U+042D U+044D U+0401 U+0451 added, U+044C small"
+            rec.string = text + "; tmm: U+042D U+044D U+0401 U+0451 added, U+044C small, U+03B8 closed"
     f.save(dst)
 
 

@@ -111,6 +111,15 @@ def _click_invalid(lang: str):
     return re.compile(rf"({head}(?: [^:]*)?: )(.*)\Z", re.S)
 
 
+_DECIMAL = re.compile(r"[+-]?\d+\.\d+(?:e[+-]?\d+)?")
+
+
+def _decimal(field: str, lang: str) -> str:
+    """A field that is a number alone ("0.3", "34.88") with the reader's decimal sign ("0,3" under
+    ru); any other field (a path, a key, a list) as it stands."""
+    return field.replace(".", ",") if lang == "ru" and _DECIMAL.fullmatch(field) else field
+
+
 def translate_error(message: str, lang: str = "ru") -> str:
     """Our English error sentence in `lang`, if the catalogue knows it (else unchanged).
 
@@ -125,7 +134,7 @@ def translate_error(message: str, lang: str = "ru") -> str:
     for pattern, template in _templates(lang):
         m = pattern.match(text)
         if m:  # "table.csv line 3" inside a quoted place → "table.csv, строка 3"
-            parts = {k: _place(v or "", lang) for k, v in m.groupdict().items()}
+            parts = {k: _decimal(_place(v or "", lang), lang) for k, v in m.groupdict().items()}
             if "rest" in parts:  # a message inside a message ("roster line 3: <the row's error>")
                 parts["rest"] = translate_error(parts["rest"], lang)
             return template.format(**parts)

@@ -35,7 +35,9 @@ MESSAGES: dict[str, str] = {
     # tmm synth (issue 33): the synthesis of a lever mechanism from its task
     "synth_best_pivot": N_("The crank's pivot A is the point of the locus of θ where the smallest transmission angle is largest: γ_min = {gamma_deg:.2f}° (the book leaves the point to the designer; give frame = … to choose another)."),
     "synth_frame_pivot": N_("The crank's pivot A is where the circle of radius l_AD = {frame_mm:.1f} mm about D meets the locus of θ (of the points there, the one with the larger γ_min = {gamma_deg:.2f}°; the best on the locus is {best_deg:.2f}°)."),
-    "synth_low_transmission": N_("The smallest transmission angle is {gamma_deg:.1f}° (less than {limit_deg:.0f}°): the rocker is driven at a poor angle; give min_transmission_deg = {limit_deg:.0f} or another frame."),
+    "synth_low_transmission": N_("The smallest transmission angle is {gamma_deg:.1f}° (less than {limit_deg:.0f}°), the largest any crank's pivot on the locus of θ gives: the rocker is driven at a poor angle; lower time_ratio or swing_deg."),
+    "synth_low_transmission_frame": N_("The smallest transmission angle is {gamma_deg:.1f}° (less than {limit_deg:.0f}°): the rocker is driven at a poor angle; give {frame_toml} (γ_min = {best_deg:.1f}° there), or remove frame and give min_transmission_deg = {limit_deg:.0f}."),
+    "synth_slider_pressure": N_("The largest pressure angle on the slider is {alpha_deg:.1f}° with λ = l_OA/l_AB = {lam:.3f}: near or above the usual {limit_deg:.0f}° (λ usually 0.2 … 0.35) — a legal but poor design, the slider wedges in its guide; lower time_ratio or offset, or give a smaller lambda."),
     "synth_default_rpm": N_("The task gives no crank speed: the mechanism file has rpm = {rpm:g}; put the machine's speed there (the lengths do not depend on it)."),
     "synth_rod_ratio": N_("The task gives no rod_ratio: l_BC = {ratio:g}·l_O2B (the usual 0.25 … 0.35 of shaper schemes)."),
     "synth_slot": N_("The block slides up to {slot_mm:.1f} mm from O2, beyond B ({link_mm:.1f} mm): the slotted link must be at least {slot_mm:.1f} mm long."),

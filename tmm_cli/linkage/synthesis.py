@@ -375,6 +375,24 @@ def crank_rocker(rocker: float, swing: float, k: float, frame: float | None = No
                            gamma_best, gamma_task, 0j, put(d), put(fold), put(ext), put(centre), radius, int(side))
 
 
+def rocker_construction_frame(syn: RockerSynthesis) -> dict[str, complex]:
+    """The construction's points [m] — C₁, C₂, the pivot A and the locus centre O — with the origin
+    at D and the y axis along the bisector of the rocker's swing (the frame the derivation writes
+    its coordinates in: C₁,₂ = (∓l_CD·sin(ψ/2), l_CD·cos(ψ/2)), O on the y axis).
+
+    >>> p = rocker_construction_frame(crank_rocker(0.20, math.radians(40.0), 1.2, frame=0.30))
+    >>> round(abs(p["C1"].real) * 1000, 3), round(p["C1"].imag * 1000, 3), round(abs(p["O"].real), 12)
+    (68.404, 187.939, 0.0)
+    """
+    mid = (syn.C1 + syn.C2) / 2.0
+    rot = 1j * abs(mid - syn.D) / (mid - syn.D)
+
+    def put(z: complex) -> complex:
+        return complex((z - syn.D) * rot)
+
+    return {"C1": put(syn.C1), "C2": put(syn.C2), "A": put(syn.A), "O": put(syn.centre)}
+
+
 def _frame_range(c1, c2, d, theta, rocker, centres, radius) -> tuple[float, float]:
     """The least and the greatest l_AD over the valid arcs of the locus (for the error message)."""
     t = np.linspace(0.0, 2.0 * math.pi, 7200, endpoint=False)

@@ -15,7 +15,7 @@ import tomllib
 
 from ..notes import Note
 from ..records import record
-from .synthesis import RockerSynthesis, SliderSynthesis, SlottedSynthesis
+from .synthesis import RockerSynthesis, SliderSynthesis, SlottedSynthesis, crank_rocker
 
 DEFAULT_RPM = 60.0  # when the task gives no speed (the kinematics' shape does not depend on it)
 TASK_TABLES = ("point", "mass", "load", "dynamics")  # copied as they stand in the task
@@ -166,6 +166,9 @@ class Synthesised:
 
 
 LOW_TRANSMISSION_DEG = 40.0  # the usual smallest transmission angle of a lever mechanism
+PRESSURE_LIMIT_DEG = 45.0  # the usual largest pressure angle on a slider
+PRESSURE_WARN_DEG = 40.0  # a crank-slider is warned of from here (near the limit) …
+LAMBDA_WARN = 0.4  # … or from this λ = l_OA/l_AB (usual 0.2 … 0.35; at 0.5 the rod is twice the crank)
 
 
 def _notes(task, syn, chk: Check, mirrored: bool) -> tuple[Note, ...]:
@@ -178,7 +181,19 @@ def _notes(task, syn, chk: Check, mirrored: bool) -> tuple[Note, ...]:
             notes.append(Note.make("synth_frame_pivot", "assumption", frame_mm=syn.frame * 1000, gamma_deg=gamma,
                                    best_deg=math.degrees(syn.gamma_best)))
         if gamma < LOW_TRANSMISSION_DEG and syn.gamma_task is None:
-            notes.append(Note.make("synth_low_transmission", "warning", gamma_deg=gamma, limit_deg=LOW_TRANSMISSION_DEG))
+            if syn.mode == "frame":  # the advice the file can take: another frame, or no frame and a γ
+                best = crank_rocker(syn.rocker, syn.swing, syn.time_ratio)
+                notes.append(Note.make("synth_low_transmission_frame", "warning", gamma_deg=gamma,
+                                       limit_deg=LOW_TRANSMISSION_DEG, frame_toml=f"frame = {best.frame:.4g}",
+                                       best_deg=math.degrees(best.gamma_min)))
+            else:
+                notes.append(Note.make("synth_low_transmission", "warning", gamma_deg=gamma,
+                                       limit_deg=LOW_TRANSMISSION_DEG))
+    if isinstance(syn, SliderSynthesis):
+        alpha = 90.0 - math.degrees(chk.gamma_min)  # the largest pressure angle on the slider, tmm linkage's
+        if alpha >= PRESSURE_WARN_DEG or syn.lam >= LAMBDA_WARN:
+            notes.append(Note.make("synth_slider_pressure", "warning", alpha_deg=alpha, lam=syn.lam,
+                                   limit_deg=PRESSURE_LIMIT_DEG))
     if isinstance(syn, SlottedSynthesis):
         if "rod_ratio" not in task.values:
             notes.append(Note.make("synth_rod_ratio", "assumption", ratio=syn.rod_ratio))

@@ -22,7 +22,7 @@ from ...linkage.roles import link_roles
 from ..terminal.mechanism import ROLE_WORDS, pattern
 from .ctx import Ctx, V, sheet1_of
 from .model import Heading, literal
-from .synthesis_part import synthesis_section
+from .synthesis_part import chapter_title, synthesis_section
 
 _PAIR = {"R": N_("revolute"), "P": N_("prismatic")}
 _NAME = re.compile(r"[^\W\d_]\d*['′]*")
@@ -32,7 +32,7 @@ def linkage_chapter(c: Ctx) -> None:
     s = sheet1_of(c.r)
     if s is None:
         return
-    c.doc.add(Heading(1, c.t("Structural and kinematic analysis of the lever mechanism"), "chapter", "linkage"))
+    c.doc.add(Heading(1, chapter_title(c, s), "chapter", "linkage"))
     synthesis_section(c, s)  # «Синтез механизма» when the file records its task (tmm synth, issue 33)
     _structure(c, s)
     _positions(c, s)

@@ -11,10 +11,18 @@ from __future__ import annotations
 
 import math
 
-from ...linkage.synthesis import RockerSynthesis, SliderSynthesis
+from ...linkage.synthesis import RockerSynthesis, SliderSynthesis, rocker_construction_frame
 from ...linkage.synthesis_file import changed_lengths, recorded_synthesis
 from .ctx import Ctx, V
 from .model import Heading
+
+
+def chapter_title(c: Ctx, s) -> str:
+    """Chapter 1's title: the synthesis named too when the file records it (and still has its lengths)."""
+    rec = recorded_synthesis(s.mechanism)
+    if rec is not None and rec.matches:
+        return c.t("Synthesis, structural and kinematic analysis of the lever mechanism")
+    return c.t("Structural and kinematic analysis of the lever mechanism")
 
 
 def synthesis_section(c: Ctx, s) -> None:
@@ -33,9 +41,13 @@ def synthesis_section(c: Ctx, s) -> None:
     elif isinstance(syn, RockerSynthesis):
         _rocker(c, syn, mm)
     else:
-        _slotted(c, syn, mm)
-    c.p(t("The mechanism with these lengths is analysed below; the stroke (or swing) and the time ratio found there "
-          "are those of the task."))
+        _slotted(c, syn, mm, "rod_ratio" not in rec.task.values)
+    if isinstance(syn, RockerSynthesis):
+        c.p(t("The mechanism with these lengths is analysed below; the rocker's swing and the time ratio found there "
+              "are those of the task."))
+    else:
+        c.p(t("The mechanism with these lengths is analysed below; the stroke and the time ratio found there are those "
+              "of the task."))
 
 
 SYMBOLS = {"l_OA": "l_(O A)", "l_AB": "l_(A B)", "l_BC": "l_(B C)", "l_CD": "l_(C D)", "l_AD": "l_(A D)",
@@ -127,15 +139,8 @@ def _slider(c: Ctx, syn, mm: str) -> None:
 
 
 def _rocker_frame(syn) -> dict:
-    """The construction's points [mm] with the origin at D and the y axis along the bisector of the
-    rocker's swing (the frame the note writes the coordinates in)."""
-    mid = (syn.C1 + syn.C2) / 2.0
-    rot = 1j * abs(mid - syn.D) / (mid - syn.D)
-
-    def put(z: complex) -> complex:
-        return (z - syn.D) * rot * 1000.0
-
-    return {"C1": put(syn.C1), "C2": put(syn.C2), "A": put(syn.A), "O": put(syn.centre)}
+    """The construction's points [mm] in the derivation's frame (origin D, y along the bisector)."""
+    return {k: z * 1000.0 for k, z in rocker_construction_frame(syn).items()}
 
 
 def _rocker(c: Ctx, syn, mm: str) -> None:
@@ -226,26 +231,34 @@ def _rocker(c: Ctx, syn, mm: str) -> None:
                                  "angle θ and the locus of the crank's centre"))
 
 
-def _slotted(c: Ctx, syn, mm: str) -> None:
+def _slotted(c: Ctx, syn, mm: str, assumed: bool) -> None:
     t = c.t
     c.p(t("The task gives the stroke of the ram $H = {h}$ mm, the time ratio $K = {k}$ and the distance between the "
           "crank's centre and the slotted link's pivot $l_(O_1 O_2) = {d}$ mm.").format(
         h=c.q(syn.stroke * 1000, sig=6), k=c.q(syn.time_ratio, sig=6), d=c.q(syn.frame * 1000, sig=6)))
     _theta(c, syn)
-    half = math.degrees(syn.theta / 2.0)
-    c.p(t("In its extreme positions the slotted link is tangent to the crank circle: it swings by ψ = θ, and the crank "
-          "is"))
-    c.formula(c.calc("l_(O_1 A) = l_(O_1 O_2) sin(θ/2)", "{0} dot sin {1}",
-                     [_given(syn.frame * 1000), V(half, decimals=3, deg=True)], _mm(syn.crank), mm))
-    c.p(t("The point B of the link moves on an arc whose chord is the stroke of the ram; the arc's sagitta f and the "
-          "height of the ram's guide above $O_2$, through the middle of the sagitta:"))
-    c.formula(c.calc("l_(O_2 B) = H/(2 sin(ψ/2))", "{0}/(2 dot sin {1})",
-                     [_given(syn.stroke * 1000), V(half, decimals=3, deg=True)], _mm(syn.link), mm))
-    c.formula(c.calc("f = l_(O_2 B) (1 - cos(ψ/2))", "{0} dot (1 - cos {1})",
-                     [_mm(syn.link), V(half, decimals=3, deg=True)], _mm(syn.sagitta), mm),
-              c.calc("h = l_(O_2 B) - f/2", "{0} - {1}/2", [_mm(syn.link), _mm(syn.sagitta)], _mm(syn.guide), mm))
-    c.formula(c.calc("l_(B C) = k l_(O_2 B)", "{0} dot {1}", [_given(syn.rod_ratio), _mm(syn.link)],
-                     _mm(syn.rod), mm),
+    half = V(math.degrees(syn.theta / 2.0), decimals=3, deg=True)
+    c.p(t("In its extreme positions the slotted link is tangent to the crank circle, so the link swings by the angle "
+          "between the crank's extreme positions:"))
+    c.formula(f"ψ = θ = {c.leaf(V(math.degrees(syn.theta), decimals=3, deg=True))}")
+    c.p(t("and the crank is"))
+    c.formula(c.calc("l_(O_1 A) = l_(O_1 O_2) sin(θ/2)", "{0} dot sin {1}", [_given(syn.frame * 1000), half],
+                     _mm(syn.crank), mm))
+    c.p(t("The point B of the link moves on an arc whose chord is the stroke of the ram:"))
+    link, sag = V(syn.link * 1000.0, decimals=3), V(syn.sagitta * 1000.0, decimals=3)
+    c.formula(c.calc("l_(O_2 B) = H/(2 sin(ψ/2))", "{0}/(2 dot sin {1})", [_given(syn.stroke * 1000), half], link, mm))
+    c.p(t("The sagitta of that arc (the height of the arc over its chord):"))
+    c.formula(c.calc("f = l_(O_2 B) (1 - cos(ψ/2))", "{0} dot (1 - cos {1})", [link, half], sag, mm),
+              where=[("f", t("the sagitta of the arc of B"))])
+    c.p(t("The ram's guide passes through the middle of the sagitta, at the height above $O_2$"))
+    c.formula(c.calc("h = l_(O_2 B) - f/2", "{0} - {1}/2", [link, sag], _mm(syn.guide), mm))
+    if assumed:
+        c.p(t("The task does not give the ratio of the rod to the slotted link; it is assumed $k = {k}$, within the "
+              "usual {lo} … {hi} of shaper schemes:").format(k=c.q(syn.rod_ratio, sig=6), lo=c.n(0.25), hi=c.n(0.35)))
+    else:
+        c.p(t("The task gives the ratio of the rod to the slotted link $k = {k}$ (within the usual {lo} … {hi} of "
+              "shaper schemes):").format(k=c.q(syn.rod_ratio, sig=6), lo=c.n(0.25), hi=c.n(0.35)))
+    c.formula(c.calc("l_(B C) = k l_(O_2 B)", "{0} dot {1}", [_given(syn.rod_ratio), link], _mm(syn.rod), mm),
               where=[("k", t("the ratio of the rod to the slotted link"))])
     c.p(t("The rod then leans from the guide by at most $α_\"max\" = {a}$, where $sin α_\"max\" = f/(2 l_(B C))$.").format(
         a=c.qd(math.degrees(syn.rod_angle), decimals=2)))

@@ -54,7 +54,7 @@ from .lever_parts import (
     wrap_items,
 )
 from .paper import FRAME, H_LABEL, H_MIN_LABEL, TB_BOX, TB_H, Sheet, thin_out
-from .synthesis_overlay import draw_construction
+from .synthesis_overlay import draw_construction, sheet_name
 
 SCHEME_PAD = (16.0, 16.0, 16.0, 12.0)  # [mm] around the scheme: pivots, sliders, labels
 PLAN_PAD = (12.0, 10.0, 12.0, 8.0)  # around a plan: its labels
@@ -522,7 +522,7 @@ def sheet1(s: Sheet1, lang: str, title, variant: int = 0) -> Sheet:
         _plan_field(sh, s, pl.velocity, boxes[0], pl.position.label, pl.position.index, lang)
         _plan_field(sh, s, pl.acceleration, boxes[1], pl.position.label, pl.position.index, lang)
     _results(sh, s, lang, lay.table)
-    sh.title_block(title, name=tr(lang, "Kinematic analysis of the lever mechanism"),
+    sh.title_block(title, name=sheet_name(s, lang),
                    designation=title.designation_for(1, variant), scale=scheme.scale_label)
     sh.finish()
     return sh

@@ -13,10 +13,19 @@ import math
 
 import numpy as np
 
+from ...i18n import tr
 from ...i18n.numbers import num
 from ...linkage.synthesis_file import recorded_synthesis
 
 MM = 1000.0
+
+
+def sheet_name(s, lang: str) -> str:
+    """Sheet 1's name in the title block: the synthesis named too when the file records it."""
+    rec = recorded_synthesis(s.mechanism)
+    if rec is not None and rec.matches:
+        return tr(lang, "Synthesis and kinematic analysis of the lever mechanism")
+    return tr(lang, "Kinematic analysis of the lever mechanism")
 
 
 def _extreme_points(s, joint: str) -> list[complex]:

@@ -7,7 +7,7 @@ import math
 
 from ...i18n import N_, tr
 from ...i18n.numbers import num
-from ...linkage.synthesis import RockerSynthesis, SliderSynthesis
+from ...linkage.synthesis import RockerSynthesis, SliderSynthesis, rocker_construction_frame
 from ..data.synth import checks
 
 TITLES = {"crank-slider": N_("Synthesis of the crank-slider mechanism"),
@@ -28,6 +28,45 @@ def _deg(x: float, lang: str, decimals: int = 3) -> str:
 
 def _k(x: float, lang: str) -> str:
     return num(x, lang, sig=6)
+
+
+def _m3(x: float, lang: str) -> str:
+    return num(x * 1000.0, lang, decimals=3)
+
+
+def _pivot_lines(syn, lang: str, mm: str) -> list[str]:
+    """The pivot A on the locus and the distances AC₁, AC₂, l_AD from its coordinates (origin D, y
+    along the bisector of the swing), each formula = substitution = result."""
+    p = rocker_construction_frame(syn)
+    c1, c2, a, o = p["C1"], p["C2"], p["A"], p["O"]
+    half, th = _deg(syn.swing / 2.0, lang), _deg(syn.theta, lang)
+    sign = "−" if o.imag < c1.imag else "+"
+    phi = math.atan2(a.imag - o.imag, a.real - o.real)
+    xa, ya = _m3(a.real, lang), _m3(a.imag, lang)
+
+    def dist(name, c):
+        return (f"{name} = √((x_A − x_{name[1:]})² + (y_A − y_C)²) = √(({xa} − ({_m3(c.real, lang)}))² + "
+                f"({ya} − {_m3(c.imag, lang)})²) = {_m3(abs(a - c), lang)} {mm}")
+
+    return [f"y_C = l_CD·cos(ψ/2) = {_mm(syn.rocker, lang)}·cos {half} = {_m3(c1.imag, lang)} {mm}, "
+            f"x_C₁ = {_m3(c1.real, lang)} {mm}, x_C₂ = {_m3(c2.real, lang)} {mm}",
+            f"y_O = y_C {sign} R·cos θ = {_m3(c1.imag, lang)} {sign} {_m3(syn.radius, lang)}·cos {th} = "
+            f"{_m3(o.imag, lang)} {mm}",
+            f"φ_A = {_deg(phi, lang)}: x_A = R·cos φ_A = {xa} {mm}, y_A = y_O + R·sin φ_A = {ya} {mm}",
+            dist("AC₁", c1), dist("AC₂", c2),
+            f"l_AD = √(x_A² + y_A²) = √({xa}² + {ya}²) = {_mm(syn.frame, lang)} {mm}"]
+
+
+def _mu_lines(syn, lang: str) -> list[str]:
+    out = []
+    for i, (sign, bd) in enumerate((("−", syn.frame - syn.crank), ("+", syn.frame + syn.crank)), 1):
+        cos_mu = (syn.coupler ** 2 + syn.rocker ** 2 - bd ** 2) / (2.0 * syn.coupler * syn.rocker)
+        mu = math.acos(max(-1.0, min(1.0, cos_mu)))
+        out.append(f"cos μ{'₁₂'[i - 1]} = (l_BC² + l_CD² − (l_AD {sign} l_AB)²)/(2·l_BC·l_CD) = "
+                   f"({_mm(syn.coupler, lang)}² + {_mm(syn.rocker, lang)}² − ({_mm(syn.frame, lang)} {sign} "
+                   f"{_mm(syn.crank, lang)})²)/(2·{_mm(syn.coupler, lang)}·{_mm(syn.rocker, lang)}) = "
+                   f"{num(cos_mu, lang, decimals=4)}, μ{'₁₂'[i - 1]} = {_deg(mu, lang, 2)}")
+    return out
 
 
 def derivation(result, lang: str) -> list[str]:
@@ -63,12 +102,13 @@ def derivation(result, lang: str) -> list[str]:
         chord = 2.0 * syn.rocker * math.sin(syn.swing / 2.0)
         a1, a2 = abs(syn.A - syn.C1), abs(syn.A - syn.C2)
         lines += [theta_line,
-                  f"C₁C₂ = 2·l_CD·sin(ψ/2) = 2·{c}·sin {_deg(syn.swing / 2.0, lang)} = {_mm(chord, lang)} {mm}",
-                  f"R = C₁C₂/(2·sin θ) = {_mm(chord, lang)}/(2·sin {_deg(syn.theta, lang)}) = {_mm(syn.radius, lang)} {mm}",
-                  f"AC₁ = {_mm(a1, lang)} {mm}, AC₂ = {_mm(a2, lang)} {mm}, l_AD = {_mm(syn.frame, lang)} {mm}",
-                  f"l_AB = (AC₂ − AC₁)/2 = ({_mm(a2, lang)} − {_mm(a1, lang)})/2 = {_mm(syn.crank, lang)} {mm}",
-                  f"l_BC = (AC₂ + AC₁)/2 = ({_mm(a2, lang)} + {_mm(a1, lang)})/2 = {_mm(syn.coupler, lang)} {mm}",
-                  f"γ_min = {_deg(syn.gamma_min, lang, 2)}" + (
+                  f"C₁C₂ = 2·l_CD·sin(ψ/2) = 2·{c}·sin {_deg(syn.swing / 2.0, lang)} = {_m3(chord, lang)} {mm}",
+                  f"R = C₁C₂/(2·sin θ) = {_m3(chord, lang)}/(2·sin {_deg(syn.theta, lang)}) = {_m3(syn.radius, lang)} {mm}",
+                  *_pivot_lines(syn, lang, mm),
+                  f"l_AB = (AC₂ − AC₁)/2 = ({_m3(a2, lang)} − {_m3(a1, lang)})/2 = {_mm(syn.crank, lang)} {mm}",
+                  f"l_BC = (AC₂ + AC₁)/2 = ({_m3(a2, lang)} + {_m3(a1, lang)})/2 = {_mm(syn.coupler, lang)} {mm}",
+                  *_mu_lines(syn, lang),
+                  "γ_min = min(μ₁, 180° − μ₁, μ₂, 180° − μ₂) = " + f"{_deg(syn.gamma_min, lang, 2)}" + (
                       f" ≥ γ = {num(v['min_transmission_deg'], lang, sig=6)}°" if syn.gamma_task is not None else "")]
     else:
         half = _deg(syn.theta / 2.0, lang)
