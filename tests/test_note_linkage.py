@@ -322,3 +322,22 @@ def test_project_with_a_mechanism_draws_the_plans_into_the_note(tmp_path):
     typ = (folder / "note.typ").read_text(encoding="utf-8")
     assert typ.count("note_linkage_plans.svg") == 1
     assert typ.index("note_linkage_plans.svg") < typ.index("note_cam_motion.svg")  # in chapter 1, before the cam's
+
+
+def test_an_offset_slot_has_the_pressure_angle_of_its_offset():
+    """A slot at d from the pivot C: the block presses across the slot, the slotted link's point A
+    moves across CA, so the pressure angle is arctan(d/t), t = √(|CA|² − d²) — largest where |CA| is
+    least, |O1O2| − l_OA for a crank about O1 (a reviewer found «угол давления равен 0°» printed for
+    every ВПВ group). Recomputed from the file's numbers, not from the code's pressure_angle."""
+    data = tomllib.loads((EXAMPLES / "shaper_offset.toml").read_text(encoding="utf-8"))
+    (x1, y1), (x2, y2) = data["frame"]["O1"], data["frame"]["O2"]
+    d = data["group"][0]["offset"]
+    ca_min = math.hypot(x2 - x1, y2 - y1) - data["crank"]["length"]
+    expected = math.degrees(math.atan(abs(d) / math.sqrt(ca_min ** 2 - d ** 2)))
+    s2 = analyse_linkage(data, "shaper_offset.toml")
+    doc = build_note(run_project(get_variant("17"), linkage=s2, linkage_name="shaper_offset.toml"), "ru", {})
+    (claim,) = [c for c in doc.claims if c["kind"] == "linkage_pressure" and c["group"] == 1]
+    assert claim["worst_deg"] == pytest.approx(expected, abs=1e-6)
+    text = "\n".join(b.text for b in doc.blocks if hasattr(b, "text") and isinstance(b.text, str))
+    assert "угол давления равен 0°" not in text
+    assert f"{expected:.2f}".replace(".", ",") + "°" in text

@@ -265,7 +265,7 @@ def _positions(c: Ctx, s) -> None:
     for p in cy.pressure:
         g = m.groups[p.group - 1]
         worst = math.degrees(p.worst)
-        if g.kind == "RPR":
+        if g.kind == "RPR" and not g.offset:  # a slot through the pivot; with an offset d, arctan(|d|/t)
             c.p(t("In group {group} ({kind}) the block acts on the slotted link at right angles to it: its pressure "
                   "angle is 0°.").format(group=p.group, kind=pattern(g.kind, c.lang)))
         else:
