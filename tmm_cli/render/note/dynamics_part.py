@@ -371,11 +371,17 @@ def _groups(c: Ctx, s) -> None:
             ja, jc = g.joints
             rho = abs(z[ja] - z[jc])
             m3 = known_moment(s, n3, z[jc], i)
-            c.p(t("Unknown are the reaction ${a}$ on the block at ${A}$, the block's pressure ${b}$ on the slotted link "
-                  "(across the slot: the slide is frictionless) and the reaction ${c}$ at the pivot ${C}$. The moments "
-                  "of link {n3} about ${C}$ give the pressure of the block, ${l}$ being the distance from the pivot "
-                  "to the block:").format(l=seg(jc, ja), a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label), A=pt(ja),
-                                          C=pt(jc), n3=n3))
+            if g.offset == 0.0:
+                c.p(t("Unknown are the reaction ${a}$ on the block at ${A}$, the block's pressure ${b}$ on the slotted link "
+                      "(across the slot: the slide is frictionless) and the reaction ${c}$ at the pivot ${C}$. The moments "
+                      "of link {n3} about ${C}$ give the pressure of the block, ${l}$ being the distance from the pivot "
+                      "to the block:").format(l=seg(jc, ja), a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label),
+                                              A=pt(ja), C=pt(jc), n3=n3))
+            else:  # the arm is not the distance to the block: it is said below
+                c.p(t("Unknown are the reaction ${a}$ on the block at ${A}$, the block's pressure ${b}$ on the slotted link "
+                      "(across the slot: the slide is frictionless) and the reaction ${c}$ at the pivot ${C}$. The moments "
+                      "of link {n3} about ${C}$ give the pressure of the block.").format(
+                    a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label), A=pt(ja), C=pt(jc), n3=n3))
             mb = float(rb.couple[i]) if rb.couple is not None else 0.0
             arm_sym = seg(jc, ja)
             if g.offset != 0.0:  # an offset slot: the pressure's arm about C is the block's place along the slot
