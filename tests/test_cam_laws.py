@@ -160,3 +160,6 @@ def test_phase_index_follows_the_phase_angles(rise, far, ret):
     got = p.phase_index(np.radians(deg))
     assert np.array_equal(got[inner], want[inner])
     assert {0, 2, 3} <= set(got.tolist()) and (1 in got) == (far > 0)
+    # an end belongs to the rise or the return (the table's rows there are named after them)
+    ends_rad = np.radians([0.0, rise, rise + far, rise + far + ret])
+    assert p.phase_index(ends_rad).tolist() == [0, 0, 2 if far > 0 else 0, 2]  # no far dwell: the rise ends there
