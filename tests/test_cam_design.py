@@ -299,3 +299,15 @@ def test_one_cam_turn_takes_60_over_n_seconds(results, table):
         t = 60.0 / abs(table[n].n_cam_rpm)
         assert r.motion.period_s == pytest.approx(t, rel=1e-12), n
         assert r.motion.time[-1] == pytest.approx(t, rel=1e-9), n
+
+
+@pytest.mark.parametrize("share, tight", [(0.75, False), (0.85, True), (0.95, True)])
+def test_a_students_roller_near_the_cusp_limit_is_flagged(table, share, tight):
+    """A roller above 0.8 of the pitch curve's smallest convex radius still cuts a profile, but a
+    tight one: the warning says so; below 0.8 nothing is said (variant 1, --roller)."""
+    from tmm_cli.cam.design import CamChoice
+
+    rho = design_cam(table[1]).profile.roller_max_m
+    cam = design_cam(table[1], choice=CamChoice(roller_mm=share * rho * 1000))
+    assert cam.profile.roller_max_m == pytest.approx(rho, rel=1e-9)  # the roller leaves the pitch curve as it is
+    assert ("cam_roller_tight" in [x.code for x in cam.notes]) == tight

@@ -160,3 +160,18 @@ def test_phase_index_follows_the_phase_angles(rise, far, ret):
     got = p.phase_index(np.radians(deg))
     assert np.array_equal(got[inner], want[inner])
     assert {0, 2, 3} <= set(got.tolist()) and (1 in got) == (far > 0)
+    # an end belongs to the rise or the return (the table's rows there are named after them)
+    ends_rad = np.radians([0.0, rise, rise + far, rise + far + ret])
+    assert p.phase_index(ends_rad).tolist() == [0, 0, 2 if far > 0 else 0, 2]  # no far dwell: the rise ends there
+
+
+def test_the_ends_of_the_rise_and_return_take_the_laws_end_values():
+    """At φ_у exactly (the motion table's last rise row) the program gives the law's end: law 2,
+    f = 3t² − 2t³, has f″(1) = −6, so d²s/dφ² = −6h/φ_у² there (the far dwell would give 0); at
+    the end of the return +6h/φ_в²."""
+    h, rise, far, ret = 0.05, math.radians(100), math.radians(20), math.radians(100)
+    p = CamProgram(law=2, stroke=h, phi_rise=rise, phi_far=far, phi_return=ret)
+    s, d1, d2, _ = p.at(np.array([rise, rise + far + ret]))
+    assert s.tolist() == pytest.approx([h, 0.0], abs=1e-15)
+    assert d1.tolist() == pytest.approx([0.0, 0.0], abs=1e-12)
+    assert d2.tolist() == pytest.approx([-6 * h / rise ** 2, 6 * h / ret ** 2], rel=1e-12)

@@ -103,13 +103,14 @@ def test_offset_alone_takes_the_smallest_r0_on_that_axis(tmp_path):
     assert translating_nu_deg(d, d["r0_mm"] * 0.98, 0.0, "rise") > d["nu_max_deg"]
 
 
+@pytest.mark.parametrize("variant, n_rpm", [(1, 800), (17, -1000)])
 @pytest.mark.parametrize("offset", [-8.0, 0.0, 8.0])
-def test_offset_alone_on_a_counter_clockwise_cam(offset, tmp_path):
-    """Variant 1 turns counter-clockwise (n_k = +800): the offset the student gives is the one the
-    cam carries, and r0 is the smallest on that axis that keeps ν ≤ ν_max on the rise (the formula
-    above: on the edge, and 2 % smaller breaks it)."""
-    d = json.loads(run(["cam", "--variant", "1", "--offset", str(offset), "--json"], tmp_path).stdout)["cam"]
-    assert d["n_cam_rpm"] == 800  # counter-clockwise
+def test_offset_alone_either_way_round(variant, n_rpm, offset, tmp_path):
+    """Variant 1 turns counter-clockwise (n_k = +800), 17 clockwise: the offset the student gives
+    is the one the cam carries, and r0 is the smallest on that axis that keeps ν ≤ ν_max on the
+    rise (the formula above: on the edge, and 2 % smaller breaks it)."""
+    d = json.loads(run(["cam", "--variant", str(variant), "--offset", str(offset), "--json"], tmp_path).stdout)["cam"]
+    assert d["n_cam_rpm"] == n_rpm
     assert d["e_mm"] == pytest.approx(offset, abs=1e-6)
     assert translating_nu_deg(d, d["r0_mm"], offset, "rise") == pytest.approx(d["nu_max_deg"], abs=0.05)
     assert translating_nu_deg(d, d["r0_mm"] * 0.98, offset, "rise") > d["nu_max_deg"]

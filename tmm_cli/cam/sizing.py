@@ -36,8 +36,6 @@ SAMPLE_DEG = 0.2  # spacing of the sampled wedges
 CHECK_DEG = 0.05  # spacing of the pressure-angle check
 TOL_DEG = 0.005  # allowed excess over ν_max between samples before re-solving
 
-_J = np.array([[0.0, -1.0], [1.0, 0.0]])  # rotation by +90°
-
 
 def rot90(v: np.ndarray) -> np.ndarray:
     """Rotate vectors (…, 2) by +90° (counter-clockwise)."""
