@@ -638,3 +638,29 @@ def test_the_crank_speed_of_the_analysis_and_of_the_drive_are_both_said(name):
         assert said and ru(g.crank_rpm_actual, 1) in said[0], items
     else:
         assert not said
+
+
+def test_the_docx_title_page_labels_the_blanks_as_the_pdf_does(tmp_path):
+    """No --org, no --city: note.docx prints the ГОСТ 7.32 labels under the blank lines (organisation,
+    department, city) as the typst title page does; given, the labels go."""
+    import docx
+
+    from tmm_cli.inputs.titleblock import TitleFields
+    from tmm_cli.render.note import write_note
+
+    r, _ = variant_doc(52)
+
+    def title_texts(folder, title):
+        folder.mkdir()
+        write_note(folder, r, "ru", title, {}, docx=True, pdf=False)
+        d = docx.Document(str(folder / "note.docx"))
+        body = "\n".join(p.text for p in d.paragraphs[:12])
+        foot = "\n".join(p.text for p in d.sections[0].first_page_footer.paragraphs)
+        return body, foot
+
+    body, foot = title_texts(tmp_path / "blank", TitleFields())
+    assert "(наименование организации)" in body and "(наименование кафедры)" in body, body
+    assert "(город)" in foot and "____" in foot, foot
+    body, foot = title_texts(tmp_path / "given", TitleFields(org="УрФУ, кафедра ТММ", city="Челябинск"))
+    assert "(наименование организации)" not in body and "УрФУ" in body, body
+    assert "(город)" not in foot and "Челябинск" in foot, foot

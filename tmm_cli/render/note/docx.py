@@ -352,8 +352,14 @@ class DocxWriter:
 
         if f.get("ministry"):
             line(f["ministry"], space=6)
-        for ln in f["org-lines"] or ["_" * 50, "_" * 50]:
-            line(ln, space=6)
+        if f["org-lines"]:
+            for ln in f["org-lines"]:
+                line(ln, space=6)
+        else:  # the lines to fill in, each with its ГОСТ 7.32 label under it (as the typst title page)
+            for key in ("org-label", "dept-label"):
+                line("_" * 50, space=0)
+                label = line("(" + f.get(key, "") + ")", space=6)
+                label.runs[0].font.size = Pt(10)
         line(f["doc-kind"].upper(), bold=True, before=5.0, space=6)
         line(f["discipline"], space=6)
         line(f["topic"], bold=True, space=6)
@@ -372,7 +378,13 @@ class DocxWriter:
         foot = self.d.sections[0].first_page_footer.paragraphs[0]
         foot.alignment = A.CENTER
         foot.paragraph_format.first_line_indent = Cm(0)
-        foot.add_run(((f["city"] + " ") if f["city"] else "") + f["year"])
+        if f["city"]:
+            foot.add_run(f["city"] + " " + f["year"])
+        else:  # a blank for the city with its ГОСТ 7.32 label, then the year
+            foot.add_run("____________ " + f["year"])
+            foot.add_run().add_break()
+            label = foot.add_run("(" + f.get("city-label", "") + ")")
+            label.font.size = Pt(10)
 
     def abstract(self, b: Abstract) -> None:
         c = self.doc.counts()
