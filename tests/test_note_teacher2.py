@@ -13,6 +13,7 @@
 from __future__ import annotations
 
 import json
+import math
 import re
 import tomllib
 from pathlib import Path
@@ -664,3 +665,22 @@ def test_the_docx_title_page_labels_the_blanks_as_the_pdf_does(tmp_path):
     body, foot = title_texts(tmp_path / "given", TitleFields(org="УрФУ, кафедра ТММ", city="Челябинск"))
     assert "(наименование организации)" not in body and "УрФУ" in body, body
     assert "(город)" not in foot and "Челябинск" in foot, foot
+
+
+@pytest.mark.parametrize("name", WITH_SHEET2)
+def test_phi_means_one_thing_in_the_notes_tables(name):
+    """The kinematics table gives $φ$, the crank angle from the axis x (position 0 at φ_0); the table of
+    the reduced quantities counts the turn from position 0, so its column is $Δ φ$ (0 at position 0),
+    never the same heading for the two meanings."""
+    from tmm_cli.render.note.model import Table
+
+    r, doc = case(name)
+    tables = {b.name: b for b in doc.blocks if isinstance(b, Table)}
+    kin, dyn = tables["linkage_positions"], tables["dyn_reduced"]
+    assert kin.header[1] == "$φ$, °" and dyn.header[1] == "$Δ φ$, °"
+    phi0 = math.degrees(r.linkage.sheet1.cycle.positions[0].phi) % 360.0
+    assert dyn.rows[0][0] == kin.rows[0][0] == "0"
+    assert float(dyn.rows[0][1].replace(",", ".")) == 0.0
+    assert abs(float(kin.rows[0][1].replace(",", ".").replace("−", "-")) % 360.0 - phi0) < 0.01
+    said = [t for t in _all_texts(doc) if "$Δ φ$" in t and "{tab:dyn_reduced}" in t]
+    assert said and "$φ$" in said[0], said  # the text says which angle each table gives

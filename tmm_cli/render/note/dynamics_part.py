@@ -574,8 +574,9 @@ def _reduction(c: Ctx, s) -> None:
               where=['J_"пр"', ("v_(S i)", t("the velocity of the centre of mass of link $i$, m/s")),
                      ('J_"рот"', t("the moment of inertia of the rotor and the gears reduced to the crank, kg·m²"))])
     sense = t("counter-clockwise") if d.sense > 0 else t("clockwise")
-    c.p(t("Here the moments and works are taken positive when they drive the crank (it turns {sense}); $φ$ is the "
-          "angle the crank has turned from position 0. The values at the positions (from the grid of every 0,5° on "
+    c.p(t("Here the moments and works are taken positive when they drive the crank (it turns {sense}); $Δ φ$ is the "
+          "angle the crank has turned from position 0 (not the crank angle $φ$ from the axis $x$ of Table "
+          "{{tab:linkage_positions}}). The values at the positions (from the grid of every 0,5° on "
           "which the works are computed) are given in Table {{tab:dyn_reduced}}.").format(sense=sense))
     rows = []
     for p in positions:
@@ -587,7 +588,7 @@ def _reduction(c: Ctx, s) -> None:
                  n(float(d.dT[-1]), decimals=2)])
     c.table("dyn_reduced", t("Reduced moment, reduced moment of inertia, work of the resistances and change of the "
                              "kinetic energy"),
-            ["№", "$φ$, °", '$M_"пр"$, ' + t("N·m"), '$J_"пр"$, ' + t("kg·m²"), '$A_"с"$, ' + t("J"),
+            ["№", "$Δ φ$, °", '$M_"пр"$, ' + t("N·m"), '$J_"пр"$, ' + t("kg·m²"), '$A_"с"$, ' + t("J"),
              "$Δ T$, " + t("J")], rows,
             align=["center"] + ["right"] * 5, widths=[0.6, 0.8, 1.1, 1.2, 1.1, 1.1])
     # the work of the resistances over the cycle
