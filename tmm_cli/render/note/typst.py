@@ -133,6 +133,22 @@ def inline_math(math: str) -> str:
     return "".join(out)
 
 
+WORD_JOINER = "\u2060"
+
+
+def unit_on_one_line(text: str) -> str:
+    """A header's unit kept on one line: no break after a slash of its text («рад/с», not «рад/ с»),
+    by a word joiner after it (the math is left as it is).
+
+    >>> unit_on_one_line("$ω$, рад/с") == "$ω$, рад/" + WORD_JOINER + "с"
+    True
+    >>> unit_on_one_line("$a/b$") == "$a/b$"
+    True
+    """
+    return "".join(f"${piece}$" if is_math else piece.replace("/", "/" + WORD_JOINER)
+                   for is_math, piece in split_math(text))
+
+
 SHORT_TABLE_ROWS = 10  # a table this short is kept on one page
 
 
@@ -236,7 +252,7 @@ class TypstWriter:
         n = len(b.header)
         cols = "(" + ", ".join(f"{w:g}fr" if w else "auto" for w in b.widths) + ",)" if b.widths else f"({'auto, ' * n})"
         align = "(" + ", ".join(a + " + horizon" for a in (b.align or ["left"] + ["center"] * (n - 1))) + ",)"
-        header = "(" + ", ".join(f"[{self.inline(h)}]" for h in b.header) + ",)"
+        header = "(" + ", ".join(f"[{self.inline(unit_on_one_line(h))}]" for h in b.header) + ",)"
         lines = [f"#gtable({string(label('tab', b.name))}, [{self.inline(b.caption)}], {cols}, {align}, {header}, ("]
         for row in b.rows:
             lines.append("  " + ", ".join(f"[{self.inline(c)}]" for c in row) + ",")
