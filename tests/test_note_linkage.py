@@ -302,6 +302,9 @@ def test_the_plans_figure_fits_its_boxes_at_a_round_scale(name):
         assert any(abs(mant - m) < 1e-9 for m in S.PLAN_SERIES)
         for z in plan.points.values():
             assert x.lo <= z.real <= x.hi and y.lo <= z.imag <= y.hi - S.LINKAGE_TITLE_MM * y.mu
+        if layout.get("own"):  # drawn at sheet 1's μ, the one of the note's segment lengths
+            assert x.mu == plan.scale
+            continue
         # the next smaller round scale would not fit: the plan is drawn as large as the series allows
         smaller = max(m * 10 ** e for e in range(-6, 4) for m in S.PLAN_SERIES if m * 10 ** e < x.mu * (1 - 1e-9))
         xs, ys = [z.real for z in plan.points.values()], [z.imag for z in plan.points.values()]

@@ -709,3 +709,24 @@ def test_a_tables_header_keeps_its_unit_on_one_line(name):
                 assert text[m.end():m.end() + 1] == "\u2060", (b.name, cell)
                 seen += 1
     assert seen  # the units «рад/с», «м/с» are in the headers
+
+
+@pytest.mark.parametrize("name", WITH_SHEET2)
+def test_the_plans_figure_is_drawn_at_the_texts_scales(name, tmp_path):
+    """Figure «Планы скоростей и ускорений»: the μ_v, μ_a written on it are those of the text and of the
+    table of vectors (sheet 1's, which the segment lengths use), read from the SVG the note embeds."""
+    from tmm_cli.render.figures.note import save_note_figure
+    from tmm_cli.render.note.model import Table
+
+    r, doc = case(name)
+    plan = r.linkage.sheet1.plans[0]
+    save_note_figure(tmp_path, r, "ru", "linkage_plans")
+    svg = next(tmp_path.glob("*linkage_plans*.svg")).read_text(encoding="utf-8")
+    written = re.findall(r"<!-- \$μ_\\text\{([va])\}\$ = ([\d,]+) ", svg)  # matplotlib's comment of each text
+    assert sorted(written) == [("a", ru(plan.acceleration.scale, 4).rstrip("0").rstrip(",")),
+                               ("v", ru(plan.velocity.scale, 4).rstrip("0").rstrip(","))], written
+    table = next(b for b in doc.blocks if isinstance(b, Table) and b.name == "linkage_plans")
+    assert f'$μ_v = {ru(plan.velocity.scale, 4).rstrip("0").rstrip(",")}$' in table.caption.replace('"', ""), \
+        table.caption
+    body = "\n".join(_all_texts(doc))
+    assert "каждый в своём масштабе" not in doc.resolve(body)

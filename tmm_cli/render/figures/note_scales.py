@@ -94,7 +94,7 @@ ASSEMBLY_MM = 100.0  # one stage's plan, square (two stages: 76 mm each)
 LINKAGE_SIDE = {"size": (TEXT_WIDTH_MM, 96.0), "velocity": Box(2.0, 2.0, 78.0, 86.0),
                 "acceleration": Box(85.0, 2.0, 78.0, 86.0)}
 LINKAGE_STACKED = {"size": (TEXT_WIDTH_MM, 166.0), "velocity": Box(2.0, 84.0, 161.0, 80.0),
-                   "acceleration": Box(2.0, 2.0, 161.0, 80.0)}
+                   "acceleration": Box(2.0, 2.0, 161.0, 80.0), "stacked": True}
 PLAN_SERIES = (1.0, 1.5, 2.0, 2.5, 4.0, 5.0, 7.5)  # ГОСТ 2.302's ratios 1:1 … 1:75 per decade
 LINKAGE_TITLE_MM = 9.0  # the room for the scale's line at the top of a plan
 
@@ -108,21 +108,59 @@ def _plan_nice(x: float) -> float:
     return nice(x, PLAN_SERIES)
 
 
+PLAN_PAD = 0.08  # the margin around a plan, a share of its extent on each side
+PLAN_MIN_MM = 40.0  # the least width of a plan's box (its scale's line)
+
+
+def _extent_mm(plan, mu: float) -> tuple[float, float]:
+    """Width and height [mm] of a plan's points drawn at μ, with the margins."""
+    pts = list(plan.points.values())
+    xs, ys = [z.real for z in pts], [z.imag for z in pts]
+    return (max(xs) - min(xs)) * (1 + 2 * PLAN_PAD) / mu, (max(ys) - min(ys)) * (1 + 2 * PLAN_PAD) / mu
+
+
 def linkage_plan_axes(plan, box: Box) -> tuple[Axis, Axis]:
-    """The round scale (the same on both axes) that shows a plan's points [m/s or m/s²] in `box`,
-    the room of the scale's line at the top kept free, the plan centred below it."""
+    """The scale (the same on both axes) that shows a plan's points [m/s or m/s²] in `box`, the
+    room of the scale's line at the top kept free, the plan centred below it: the plan's own μ
+    (sheet 1's, the one the note's segment lengths use) when it fits the box, else the smallest
+    round μ that does."""
     pts = list(plan.points.values())
     xs, ys = [z.real for z in pts], [z.imag for z in pts]
     h = box.height - LINKAGE_TITLE_MM
-    pad = 0.08
-    mu = _plan_nice(max((max(xs) - min(xs)) * (1 + 2 * pad) / box.width, (max(ys) - min(ys)) * (1 + 2 * pad) / h, 1e-12))
+    w_mm, h_mm = _extent_mm(plan, plan.scale)
+    if w_mm <= box.width + 1e-6 and h_mm <= h + 1e-6:
+        mu = plan.scale
+    else:
+        mu = _plan_nice(max((max(xs) - min(xs)) * (1 + 2 * PLAN_PAD) / box.width,
+                            (max(ys) - min(ys)) * (1 + 2 * PLAN_PAD) / h, 1e-12))
     cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
     return Axis(cx - mu * box.width / 2, mu, box.width), Axis(cy - mu * h / 2, mu, box.height)
 
 
+LINKAGE_MAX_MM = 230.0  # the tallest figure of the plans (a page's text height less the caption)
+
+
 def linkage_layout(s1) -> dict:
-    """LINKAGE_SIDE or LINKAGE_STACKED: the one whose smaller plan comes out larger."""
+    """The figure of the plans of the first plan position, each plan at sheet 1's scale μ_v, μ_a
+    (the note's text gives its segments at those): side by side when both fit the text's width,
+    else one above the other (``"stacked"``), each box as tall as its plan; when even that is taller
+    than a page, :data:`LINKAGE_SIDE` or :data:`LINKAGE_STACKED` at scales of their own."""
     pl = s1.plans[0]
+    (wv, hv), (wa, ha) = (_extent_mm(p, p.scale) for p in (pl.velocity, pl.acceleration))
+    wv, wa = max(wv, PLAN_MIN_MM), max(wa, PLAN_MIN_MM)
+    hv, ha = max(hv, 10.0) + LINKAGE_TITLE_MM, max(ha, 10.0) + LINKAGE_TITLE_MM
+    full = TEXT_WIDTH_MM - 4.0
+    if wv + wa + 5.0 <= full:
+        h = max(hv, ha)
+        if h + 4.0 <= LINKAGE_MAX_MM:
+            half = (full - 5.0) / 2
+            if wv <= half and wa <= half:
+                wv = wa = half
+            return {"size": (TEXT_WIDTH_MM, h + 4.0), "velocity": Box(2.0, 2.0, wv, h),
+                    "acceleration": Box(2.0 + wv + 5.0, 2.0, wa, h), "own": True}
+    if max(wv, wa) <= full and hv + ha + 6.0 <= LINKAGE_MAX_MM:
+        return {"size": (TEXT_WIDTH_MM, hv + ha + 6.0), "velocity": Box(2.0, ha + 4.0, full, hv),
+                "acceleration": Box(2.0, 2.0, full, ha), "stacked": True, "own": True}
 
     def smallest(layout):
         return min(1.0 / linkage_plan_axes(plan, layout[kind])[0].mu * max(abs(z) for z in plan.points.values())

@@ -405,13 +405,18 @@ def _plans(c: Ctx, s, pl) -> None:
             align=["center", "center", "right", "right", "left"], widths=[0.4, 0.8, 1.0, 1.0, 3.2])
     _vector_table(c, P)
     if c.has("linkage_plans"):
-        c.p(t("The plans are shown in Figure {fig:linkage_plans}, each at a scale of its own that fits the page (written "
-              "on it): the normal components dashed green, the tangential ones dashed orange, the relative ones blue, "
-              "the Coriolis ones red."))
-    if c.has("linkage_plans"):
-        from ..figures.note_scales import LINKAGE_STACKED, linkage_layout
+        from ..figures.note_scales import linkage_layout
 
-        stacked = linkage_layout(s) is LINKAGE_STACKED
+        layout = linkage_layout(s)
+        stacked = bool(layout.get("stacked"))
+        if layout.get("own"):  # drawn at μ_v and μ_a above, the scales of the segments
+            c.p(t("The plans are shown in Figure {fig:linkage_plans} at the scales $μ_v$ and $μ_a$ above (written on "
+                  "it): the normal components dashed green, the tangential ones dashed orange, the relative ones "
+                  "blue, the Coriolis ones red."))
+        else:
+            c.p(t("The plans are shown in Figure {fig:linkage_plans}, each at a scale of its own that fits the page "
+                  "(written on it): the normal components dashed green, the tangential ones dashed orange, the "
+                  "relative ones blue, the Coriolis ones red."))
         c.fig("linkage_plans", (t("Velocity plan (above) and acceleration plan (below) of position {label}") if stacked
                                 else t("Velocity plan (left) and acceleration plan (right) of position {label}")).format(
             label=pos.label))
