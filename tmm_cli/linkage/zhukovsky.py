@@ -70,14 +70,27 @@ def couple_as_forces(x, y, m):
     return 1j * d / np.abs(d) ** 2 * m
 
 
+def pair_arm(mech: Mechanism) -> float:
+    """The arm l [m] of the pair of forces that replaces the couple on a slider turning with its
+    moving guide: the slider's pin B and the point B′ of the slider at l along the guide (a link
+    without an axis has no second joint; any l gives the same moments, −M·ω, so the mechanism's
+    size is taken, which keeps B′ off b on the lever)."""
+    return mech.scale_m
+
+
+def pair_point(pin: str) -> str:
+    """The name of the second point of a slider's pair: 'B' → 'B′'."""
+    return pin + "′"
+
+
 def _ends(mech: Mechanism, kin: Kinematics, link: str):
     """Two points of a turning link and their names: its axis' ends (the slotted link: its pivot
     and its point under the block; a block: its joint and its point over the slotted link's pivot)."""
     ln = mech.link(link)
-    if ln.axis is None:  # a slider turning with its moving guide: its pin and a point along the guide
+    if ln.axis is None:  # a slider turning with its moving guide: its pin B and B′ at l along the guide
         pin = ln.pins[0]
         unit = np.exp(1j * kin.angle[link])
-        return (pin, kin.z[pin]), (pin + "″", kin.z[pin] + mech.scale_m * unit)
+        return (pin, kin.z[pin]), (pair_point(pin), kin.z[pin] + pair_arm(mech) * unit)
     a, b = ln.axis
     return (a, kin.z[a]), (b, kin.z[b])
 

@@ -257,6 +257,11 @@ def lever_figure(s: Sheet2, lang: str):
         a, b = turned[v.start], turned[v.end]
         if abs(b - a) > 1e-6:
             ax.plot([a.real, b.real], [a.imag, b.imag], color="#9a9a9a", lw=0.8, zorder=2)
+    for f in s.lever.forces:  # B′ of a slider's pair (its couple as forces at B and B′): b′ and its ray p b′
+        if f.point.lower() not in turned and f.point not in turned:
+            z = complex(f.lever[i]) / mu
+            turned[f.point.lower()] = z
+            ax.plot([0.0, z.real], [0.0, z.imag], color="#9a9a9a", lw=0.8, zorder=2)
     pts = list(turned.values())
     for n, z in turned.items():
         ax.plot(z.real, z.imag, "o", ms=2.5, color="#666666", zorder=3)

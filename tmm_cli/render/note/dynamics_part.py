@@ -510,6 +510,7 @@ def _lever(c: Ctx, s) -> None:
           "ends), and the plan, a rigid lever pivoted at the pole $p$, is in equilibrium with the balancing force "
           "$F_\"ур\"$ at the image $a$ of the crank pin, across the crank. The arms $h$ on the turned plan are found "
           "from the plan's coordinates (Table {{tab:dyn_lever}}).").format(label=plan.position.label, mu=c.q(mu, sig=3)))
+    _pairs(c, s)
     rows = []
     total = 0.0
     for f in s.lever.forces:
@@ -551,6 +552,40 @@ def _lever(c: Ctx, s) -> None:
            "velocity and acceleration plans, so they differ by rounding only.") if ok else
          t("The two differ by more than 1 % ({diff}).")).format(diff=c.pct_digits(abs(diff))))
     c.doc.claim(kind="linkage_zhukovsky", kinetostatic=mb, lever=mz, diff_pct=diff, ok=ok)
+
+
+def _pairs(c: Ctx, s) -> None:
+    """Where a couple stands on a link without a second joint (a slider turning with its moving
+    guide), the point B′ of its pair: what it is, its distance along the guide and the pair's
+    force M/l with the substitution (the lever's table names B′)."""
+    from ...linkage.zhukovsky import pair_arm
+
+    t = c.t
+    mech = s.sheet1.mechanism
+    kin = s.sheet1.cycle.kin
+    i = s.force_position
+    forces = s.lever.forces
+    for k, f in enumerate(forces):
+        if f.point in kin.z or k == 0 or not f.symbol.endswith("″"):
+            continue
+        first = forces[k - 1]
+        base = f.symbol[:-1]
+        couple = next((m for m in s.loading.couples if m.symbol == base), None)
+        if couple is None:
+            continue
+        m = abs(float(couple.m[i]))
+        size = abs(complex(f.force[i]))
+        l = pair_arm(mech)
+        c.p(t("The slider {n} turns with its moving guide and has no second joint, so its couple ${m}$ is replaced "
+              "by a pair of forces across the guide: ${f1}$ at its pin ${a}$ and ${f2}$ at the point ${b}$ — the "
+              "point of the slider {n} (of its guide line) at the distance $l = {l}$ m from ${a}$ along the guide. "
+              "On the lever ${b}$ is drawn at its image $\"b′\"$, the end of the ray $p \"b′\"$ of its velocity "
+              "$v_{bb} = v_{aa} + ω_{n} times {ab}$. The forces of the pair:").format(
+                  n=mech.link(couple.link).number, m=fsym(c, base), f1=fsym(c, first.symbol), f2=fsym(c, f.symbol),
+                  a=pt(first.point), b=pt(f.point), l=c.q(l, sig=4), bb=pt(f.point), aa=pt(first.point),
+                  ab=pt(first.point) + " " + pt(f.point)))
+        c.formula(c.calc(f"{fsym(c, first.symbol)} = {fsym(c, f.symbol)} = {fsym(c, base)}/l", "{0}/{1}",
+                         [V(m, sig=5), V(l, sig=4)], V(size, sig=4), t("N")))
 
 
 # --- 4. the reduction to the crank, the driving moment --------------------------------------------------

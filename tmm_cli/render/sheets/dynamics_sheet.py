@@ -317,7 +317,23 @@ def _polygon_field(sh: Sheet, s: Sheet2, pg, box, lang: str) -> None:
 def _lever_points(s: Sheet2) -> dict[str, complex]:
     """The velocity plan turned through 90° counter-clockwise [drawing mm from the pole]."""
     plan = s.sheet1.plans[0].velocity
-    return {n: 1j * z / plan.scale for n, z in plan.points.items()}
+    out = {n: 1j * z / plan.scale for n, z in plan.points.items()}
+    out.update(_pair_points(s))
+    return out
+
+
+def _pair_points(s: Sheet2) -> dict[str, complex]:
+    """The images of the points the lever's forces stand at that the velocity plan has not — the
+    point B′ of a slider's pair (its couple as two forces at B and B′) as b′ [drawing mm from the
+    pole]; each is drawn with its ray from p."""
+    i = s.force_position
+    plan = s.sheet1.plans[0].velocity
+    out = {}
+    for f in s.lever.forces:
+        name = f.point.lower()
+        if name not in plan.points and f.point not in plan.points:
+            out[name] = complex(f.lever[i]) / plan.scale
+    return out
 
 
 def _lever_forces(s: Sheet2, lang: str):
@@ -413,6 +429,9 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
         a, b = at(pts[v.start]), at(pts[v.end])
         if np.hypot(*(b - a)) > 0.3:
             sh.line(a, b, "Основные" if v.start == plan.pole else "Тонкие")
+    for z in _pair_points(s).values():  # b′ of a slider's pair: its ray p b′, as the plan's other rays
+        if abs(z) * k > 0.3:
+            sh.line(at(0j), at(z), "Основные")
     sh.dot(at(0j), 0.8)
     draw_arrows(sh, origin, _lever_placed(s, k, lang), room)
     named = set()

@@ -81,6 +81,20 @@ def _scheme_extent(s: Sheet1):
     return np.array([z.real.min(), z.imag.min()]), np.array([z.real.max(), z.imag.max()])
 
 
+def _away_side(m, kin, pin: str, e: complex) -> float:
+    """+1 when the guide's surface goes on the right of its direction e (the side −i·e), −1 on the
+    left: the side away from the links hinged at the slider's pin (the rod B–C of a shaper comes from
+    below its ram: the ram's guide is hatched above), judged over every position of the cycle."""
+    zs = kin.z[pin]
+    side = 0.0
+    for ln in m.links:
+        if ln.axis is None or pin not in ln.axis:
+            continue
+        other = ln.axis[1] if ln.axis[0] == pin else ln.axis[0]
+        side += float(np.sum(((kin.z[other] - zs) * np.conj(e)).imag))
+    return 1.0 if side >= 0.0 else -1.0
+
+
 def _reach(s: Sheet1) -> dict[str, float]:
     """How far each slotted link is drawn from its pivot [real mm]: the block's farthest place."""
     m = s.mechanism
@@ -281,7 +295,7 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
         a = zs[0] + (t.min() - 8.0 * unit) * e
         b = zs[0] + (t.max() + 8.0 * unit) * e
         f.poly([[a.real, a.imag], [b.real, b.imag]], "Осевые")
-        n = 1j * e
+        n = 1j * e * _away_side(m, c.curve.kin, m.link(slider).pins[0], e)
         off = (3.5 + 0.8) * unit
         pa, pb = np.array(f.p((a - off * n).real, (a - off * n).imag)), np.array(f.p((b - off * n).real, (b - off * n).imag))
         nn = np.array([-(n.real), -(n.imag)])
