@@ -78,7 +78,7 @@ def _zone_room_fit(r, width: float, height: float):
 
 
 ZONE_HEAD = 16.0 + 8.0  # heading and its scale
-ZONE_CAPS = 2.5 + LINE * 4 + 2.0  # four caption lines: the data, the hatching, the book's lines, O_b
+ZONE_CAPS = 2.5 + LINE * 5 + 2.0  # five caption lines: the data, the hatching, the book's lines, O_b, the numbers left out
 ZONE_MARGIN = (12.0, 10.0, 12.0, 8.0)
 
 
@@ -337,8 +337,15 @@ def _zone_field(sh: Sheet, r, lang: str, box):
         dirv = out / nrm if nrm > 1e-9 else np.array([1.0, 0.0])
         from .paper import _dirs_towards
 
-        f.label(str(idx_), d, H_MIN_LABEL, within=within, dirs=_dirs_towards(dirv)[:5], dists=(1.0, 2.5), priority=2,
-                dot=False)
+        # its own candidates, outward along its ray B_i D_i and around D_i, then on a leader that
+        # crosses no other leader; a number that finds no free place is left out, and said so
+        txt_ = str(idx_)
+        w_ = sh.text_width(txt_, H_MIN_LABEL)
+        ds = np.array(f.p(*d))
+        pos = [(float(c[0] - w_ / 2), float(c[1] - H_MIN_LABEL / 2), 0.0)
+               for c in (ds + t * dirv for t in (2.5, 3.5, 4.5))]
+        f.label(txt_, d, H_MIN_LABEL, within=within, dirs=_dirs_towards(dirv)[:5], dists=(1.0, 2.5), priority=2,
+                positions=pos, optional=True)
     # the book's bounding lines A and B/C
     for L in zn.lines:
         p0 = np.array(L.point) * k
@@ -412,8 +419,17 @@ def _zone_field(sh: Sheet, r, lang: str, box):
             names=", ".join(L.name for L in zn.lines)))
     if not fit.fits:
         txt[-1] += tr(lang, " (the construction is cut at the field's edge)")
-    sh.caption(box[0], box[2], box[1] + 2.5, txt, H_NOTE, LINE)
-    return f
+    numbers = {str(i) for i, *_ in nums}
+
+    def caption():
+        """The caption, written once the labels are placed: it names the position numbers left out."""
+        left = sorted((t for t in sh.omitted if t in numbers), key=int)
+        lines = list(txt)
+        if left:
+            lines.append(tr(lang, "Positions {list} not numbered (no room)").format(list=", ".join(left)))
+        sh.caption(box[0], box[2], box[1] + 2.5, lines, H_NOTE, LINE)
+
+    return f, caption
 
 
 def _unit_normal(a, b, away):
@@ -684,6 +700,7 @@ def _profile_field(sh: Sheet, r, lang: str, box):
     _field_scale_text(sh, f, lang, name)
     x0b, y0b, x1b, y1b = f.inner
     f.clip = (x0b, y0b + 2.5 + LINE * 2, x1b, y1b)
+    n_before = len(list(sh.msp))
     within = f.clip
     P = p.pitch * k
     n = len(p.phi) - 1
@@ -766,7 +783,16 @@ def _profile_field(sh: Sheet, r, lang: str, box):
     if not d.fits:
         scale = d.scale if lang == "ru" else d.scale.replace(",", ".")
         txt.append(tr(lang, "({scale}: beyond Table 1.1, the cam is too large for 1:10)").format(scale=scale))
-    sh.caption(box[0], box[2], box[1] + 2.5, txt, H_NOTE, LINE)
+    # under the profile it describes (not at the foot of the field): the drawing's lowest point
+    from ezdxf import bbox as _bbox
+
+    ext = _bbox.extents(list(sh.msp)[n_before:], fast=False)
+    y_cap = box[1] + 2.5
+    xa, xb = box[0], box[2]
+    if ext.has_data:
+        y_cap = max(y_cap, ext.extmin.y - 3.0 - H_NOTE - LINE * (len(txt) - 1))
+        xa, xb = max(box[0], ext.extmin.x - 2.0), min(box[2], max(ext.extmax.x, ext.extmin.x + 200.0) + 2.0)
+    sh.caption(xa, xb, y_cap, txt, H_NOTE, LINE)
     return f
 
 
@@ -783,16 +809,21 @@ def _dirs(v) -> tuple[str, ...]:
 def _pressure_field(sh: Sheet, r, lang: str, box):
     v, m, p, z = r.variant, r.motion, r.profile, r.sizing
     sc = m.scales
-    f = sh.add_field("pressure", box, tr(lang, "Pressure angle against cam position"))
-    x0b, y0b, x1b, y1b = f.inner
+    heading = tr(lang, "Pressure angle against cam position")
+    hh = sh.heading_height(heading, box[2] - box[0])
+    x0b, y0b = box[0] + 1.0, box[1] + 1.0
     xo = x0b + 22.0
     yo = y0b + 2.5 + LINE * 2 + 12.0
     phw = v.phi_working_deg
     keep = np.degrees(p.phi) <= phw + 1e-9
     nu = p.nu_deg[keep]
     top = max(float(nu.max()), v.nu_max_deg)
-    room = y1b - yo - 16.0
+    room = box[3] - hh - yo - 16.0
     k_nu = nice_scale(top / room)  # °/mm, a round drawing scale
+    # the field ends just above its plot (the ordinate's arrow at yo + top/k_nu + 10): the heading
+    # stands over the diagram it names, not over the room a round k_ν leaves unused
+    box = (box[0], box[1], box[2], min(box[3], yo + top / k_nu + 10.0 + 4.0 + hh))
+    f = sh.add_field("pressure", box, heading)
     xs = xo + np.degrees(p.phi[keep]) / sc.k_phi_deg_mm
     _axis(sh, f.inner, xo, yo, sc.b_mm, top / k_nu, 0.0, "φ", "ν")
     ph = m.program.phase_index(p.phi[keep])
@@ -915,10 +946,12 @@ def sheet3(result, lang: str, title) -> Sheet:
     _motion_field(sh, result, lang, lay.motion)
     _pressure_field(sh, result, lang, lay.pressure)
     prof = _profile_field(sh, result, lang, lay.profile)
-    _zone_field(sh, result, lang, lay.zone)
+    _, zone_caption = _zone_field(sh, result, lang, lay.zone)
     _results(sh, result, lang, lay.table, prof.scale_label)
     v = result.variant
     sh.title_block(title, name=tr(lang, "Cam mechanism synthesis"),
                    designation=title.designation_for(3, v.number), scale=prof.scale_label)
+    sh.place_labels()
+    zone_caption()  # below the labels' room: it names the numbers they left out
     sh.finish()
     return sh

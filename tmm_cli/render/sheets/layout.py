@@ -287,6 +287,7 @@ class Label:
     dot: bool = False  # a leader ends on a dot (a point inside an outline) instead of an arrow-less end
     order: int = 0
     anchors: tuple = ()  # further points a leader may start from (along a dimension line)
+    optional: bool = False  # no free place: left out (the sheet lists it in `omitted`), not forced
 
 
 # a direction -> (unit vector towards the text, the text box's alignment point: fx, fy in 0..1)

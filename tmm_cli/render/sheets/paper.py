@@ -418,6 +418,8 @@ class Sheet:
         self.obstacles = Obstacles()
         self.labels: list[Label] = []
         self.unplaced: list[str] = []  # labels no free place was found for (tests fail on them)
+        self.leaders: list[tuple] = []  # the labels' leaders (start, end) [sheet mm]
+        self.omitted: list[str] = []  # optional labels left out for want of a free place (the caller says so)
         self.finished = False
 
     # ------------------------------------------------------------------ primitives (sheet mm)
@@ -706,13 +708,14 @@ class Sheet:
     # ---------------------------------------------------------------------------- labels
     def label(self, text: str, anchor, h: float = H_LABEL, *, within=None, rot: float = 0.0, dirs=None,
               dists=None, leader: bool = True, priority: int = 0, positions=(), dot: bool = False,
-              anchors=()) -> Label:
+              anchors=(), optional: bool = False) -> Label:
         """Queue a label near `anchor` [sheet mm]; :meth:`place_labels` puts it where it touches no
         line and no text (candidates: `positions` first — (x, y, rot) insertion points —, then
         the directions `dirs` at the distances `dists`, then rings farther out with a leader)."""
         lab = Label(text=text, anchor=(float(anchor[0]), float(anchor[1])), h=h, within=within or FRAME_INNER,
                     rot=readable(rot), leader=leader, priority=priority, positions=tuple(positions), dot=dot,
-                    order=len(self.labels), anchors=tuple(tuple(map(float, a)) for a in anchors))
+                    order=len(self.labels), anchors=tuple(tuple(map(float, a)) for a in anchors),
+                    optional=optional)
         if dirs is not None:
             lab.dirs = tuple(dirs)
         if dists is not None:
@@ -768,6 +771,9 @@ class Sheet:
             for room in (ROOM, 1.0):
                 if self._leader_spot(lab, text, w, h, sub, room) is not None:
                     return
+        if lab.optional:  # a label that may be left out rather than crowd another (the caller says so)
+            self.omitted.append(lab.text)
+            return
         # nowhere free: the least crowded candidate, and the sheet remembers it (tests fail on it)
         x, y, r, ww, align = min(cands, key=lambda c: self._cost(text_corners(c[0], c[1], c[3], h, c[2], sub=sub,
                                                                                pad=CLEAR), lab))
@@ -807,6 +813,9 @@ class Sheet:
                 start = np.array([ax, ay]) + 0.4 * np.array([math.cos(t), math.sin(t)])
                 if self.obstacles.segment_hits_text(start, (ex, ey)) or self.obstacles.segment_hits_text(*shelf):
                     continue
+                if lab.optional and any(_segments_cross(start, (ex, ey), a, b) for a, b in self.leaders):
+                    continue  # a leader that crosses another's is not read
+                self.leaders.append((tuple(map(float, start)), (float(ex), float(ey))))
                 self.line(start, (ex, ey), "Тонкие")
                 self.line(*shelf, "Тонкие")
                 if lab.dot:
@@ -951,6 +960,17 @@ class Sheet:
 FRAME_INNER = (FRAME[0] + 1.0, FRAME[1] + 1.0, FRAME[2] - 1.0, FRAME[3] - 1.0)
 DESCENTS = 0.25  # = layout.DESCENT
 SUB_DESCENTS = 0.45  # = layout.SUB_DESCENT
+
+
+def _segments_cross(a, b, c, d) -> bool:
+    """Whether the segments a–b and c–d cross (touching ends do not count)."""
+    a, b, c, d = (np.asarray(q, dtype=float) for q in (a, b, c, d))
+
+    def side(p, q, r):
+        return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+
+    d1, d2, d3, d4 = side(c, d, a), side(c, d, b), side(a, b, c), side(a, b, d)
+    return d1 * d2 < -1e-12 and d3 * d4 < -1e-12
 
 
 def _dirs_towards(v) -> tuple[str, ...]:
