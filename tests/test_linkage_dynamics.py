@@ -22,6 +22,7 @@ from tmm_cli.linkage.forces import applied
 from tmm_cli.linkage.loads import stroke_of
 from tmm_cli.linkage.mechanism_file import parse_mechanism
 from tmm_cli.linkage.motion import cross
+from linkage_check import assert_every_link_in_equilibrium
 from tmm_cli.linkage.power import balancing_moment_by_power, reduced_inertia, total_power
 from tmm_cli.linkage.sheet1 import analyse_mechanism
 from tmm_cli.linkage.sheet2 import analyse_sheet2
@@ -83,33 +84,7 @@ def test_zhukovsky_lever_gives_the_same_moment(name):
 @pytest.mark.parametrize("name", WITH_MASSES)
 def test_every_link_is_in_equilibrium_with_its_reactions(name):
     """Rebuild each link's free body from the reactions the analysis found: ΣF = 0 and ΣM = 0."""
-    s = sheet2(name)
-    m = s.sheet1.mechanism
-    k = s.sheet1.cycle.kin
-    n = len(k.phi)
-    for ln in m.links:
-        force = np.zeros(n, complex)
-        moment = np.zeros(n)
-        ref = k.z[ln.pins[0]]
-        forces, couples = s.loading.on(ln.number)
-        for f in forces:
-            force += f.f
-            moment += cross(f.z - ref, f.f)
-        for c in couples:
-            moment += c.m
-        for r in s.forces.reactions:
-            i, j = r.pair.links
-            sign = 1.0 if j == ln.number else -1.0 if i == ln.number else 0.0
-            if sign:
-                force += sign * r.force
-                moment += sign * cross(r.at - ref, r.force)
-                if r.couple is not None:
-                    moment += sign * r.couple
-        if ln.number == 1:
-            moment += s.balancing
-        big = max(float(np.max(np.abs(s.balancing))), 1.0) * 1e-9
-        assert np.max(np.abs(force)) < big * 1e3, (name, ln.name)
-        assert np.max(np.abs(moment)) < big * 1e2, (name, ln.name)
+    assert_every_link_in_equilibrium(sheet2(name), name)
 
 
 def test_reaction_components_are_along_and_across_their_links():

@@ -22,6 +22,7 @@ from tmm_cli.linkage.power import balancing_moment_by_power
 from tmm_cli.linkage.sheet1 import analyse_mechanism
 from tmm_cli.linkage.sheet2 import analyse_sheet2
 from tmm_cli.linkage.sheet2_file import parse_sheet2
+from linkage_check import with_start
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
 
@@ -58,17 +59,8 @@ FILES = _files()
 STARTS = (None, 0.0, 45.0, 200.0, 310.0)
 
 
-def _with_start(data, start):
-    d = dict(data)
-    d["crank"] = dict(data["crank"])
-    d["crank"].pop("start_deg", None)
-    if start is not None:
-        d["crank"]["start_deg"] = start
-    return d
-
-
 def _sheet2(data, start):
-    m = parse_mechanism(_with_start(data, start), "m.toml")
+    m = parse_mechanism(with_start(data, start), "m.toml")
     s1 = analyse_mechanism(m)
     return m, analyse_sheet2(s1, parse_sheet2(m, "m.toml"))
 
@@ -182,7 +174,7 @@ def _toml(data):
 def test_lengths_and_delta_below_a_physical_floor(tmp_path, where, key, value, words):
     from cli_helpers import assert_one_line_error, run
 
-    data = _with_start(OFFSET_CW, None)
+    data = with_start(OFFSET_CW, None)
     data = {k: (dict(v) if isinstance(v, dict) else [dict(x) for x in v] if isinstance(v, list) else v)
             for k, v in data.items()}
     if where == "group":
@@ -200,7 +192,7 @@ def test_lengths_and_delta_below_a_physical_floor(tmp_path, where, key, value, w
 
 
 def test_the_floor_itself_is_a_machine():
-    data = _with_start(OFFSET_CW, None)
+    data = with_start(OFFSET_CW, None)
     data["crank"]["length"] = 1e-4
     m = parse_mechanism(data, "m.toml")
     s = analyse_sheet2(analyse_mechanism(m), parse_sheet2(m, "m.toml"))

@@ -33,6 +33,7 @@ from tmm_cli.linkage.sheet2 import analyse_sheet2
 from tmm_cli.linkage.sheet2_file import parse_sheet2
 from tmm_cli.render.data.mechanism import mechanism_document
 from tmm_cli.render.note.linkage_part import position_rows
+from linkage_check import with_start
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
 TWO_PI = 2 * math.pi
@@ -50,17 +51,8 @@ def _examples():
 FILES = _examples()
 
 
-def _with_start(data, start):
-    d = dict(data)
-    d["crank"] = dict(data["crank"])
-    d["crank"].pop("start_deg", None)
-    if start is not None:
-        d["crank"]["start_deg"] = start
-    return d
-
-
 def _mech(name, start):
-    return parse_mechanism(_with_start(FILES[name], start), f"{name}.toml")
+    return parse_mechanism(with_start(FILES[name], start), f"{name}.toml")
 
 
 def _starts(name):
