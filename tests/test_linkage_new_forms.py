@@ -451,7 +451,7 @@ def _gas(change, i=0):
 
 @pytest.mark.parametrize("d,fragment", [
     (_gas({"pressure": [[0.0] * 8] * 3}), "'load[1].pressure' has 3 rows; give 2"),
-    (_gas({"pressure": [[0.0] * 8] * 4}), "'load[1].pressure' has 4 rows, a four-stroke engine's cycle"),
+    (_gas({"pressure": [[0.0] * 8] * 5}), "'load[1].pressure' has 5 rows; give 2 (one turn"),
     (_gas({"pressure": [[0.0] * 8, [0.0] * 7]}), "'load[1].pressure' row 2 has 7 values but 'load[1].travel' has 8"),
     (_gas({"head": [0.3, 0.2]}), "'load[1].head' is"),
     (_gas({"head": [0.15, 0.15]}), "'load[1].head' is reached by the piston B"),
