@@ -238,3 +238,74 @@ def test_hostile_four_stroke_files(d, fragment):
     assert "\n" not in text and text.startswith("m.toml: ") and fragment in text, text
     ru = translate_error(text)
     assert ru != text and any("а" <= ch <= "я" for ch in ru), ru
+
+
+# --- the JSON, the sheets and the note ----------------------------------------------------------
+
+
+def test_the_json_lists_both_turns(tmp_path):
+    """`tmm linkage --json`: 2·N positions in the order the crank turns, phi_deg the crank angle (+ 360°
+    in the second turn: 0 … 720), travel_deg from position 0, each turn's kinematics the first's; the
+    balancing moment of every position from its own applied forces' powers (recomputed here)."""
+    import json
+
+    from cli_helpers import run
+
+    r = run("linkage", EXAMPLES / "engine_4stroke.toml", "--json", "--no-plots", "--out", tmp_path)
+    assert r.exit_code == 0, r.output
+    doc = json.loads(r.output)
+    pos = doc["positions"]
+    assert doc["cycle"] == {"turns": 2, "cycle_deg": 720, "positions_per_turn": 12} and len(pos) == 24
+    assert [p["index"] for p in pos] == list(range(24)) and [p["label"] for p in pos] == [str(j) for j in range(24)]
+    assert all(0.0 <= p["phi_deg"] < 720.0 for p in pos)
+    assert [p["turn"] for p in pos] == [1] * 12 + [2] * 12
+    for a, b in zip(pos[:12], pos[12:]):
+        assert b["phi_deg"] == pytest.approx(a["phi_deg"] + 360.0, abs=1e-9)
+        assert b["travel_deg"] == pytest.approx(a["travel_deg"] + 360.0, abs=1e-9)
+        assert b["points"] == a["points"] and b["links"] == a["links"]
+        assert b["reduced"]["inertia_kgm2"] == a["reduced"]["inertia_kgm2"]
+    assert [p["travel_deg"] for p in pos] == pytest.approx([30.0 * j for j in range(24)], abs=1e-9)
+    # the gas force of each position: expansion in the first half turn, intake a turn later
+    d = data("engine_4stroke")
+    ld = d["load"][0]
+    area, t, rows = ld["area"], ld["travel"], np.array(ld["pressure"])
+    for j in (1, 2, 4, 13, 14, 16, 19, 22):
+        y = pos[j]["points"]["B"]["y"]
+        vy = pos[j]["points"]["B"]["vy"]
+        x = (0.225 - y) / 0.09  # s/H from the top dead centre (r + l = 0.225 m)
+        row = 2 * (j // 12) + (1 if vy > 0 else 0)  # moving up: towards the head
+        p = np.interp(x, t, rows[row])
+        assert pos[j]["applied_forces"]["P3"]["force"][1] == pytest.approx(-p * 1e6 * area, rel=1e-9, abs=1e-6)
+        # M_b from the powers of the applied forces at this position (no reaction works)
+        power = 0.0
+        for f in pos[j]["applied_forces"].values():
+            pt = pos[j]["points"][f["at"]] if f["at"] in pos[j]["points"] else None
+            if pt is None:
+                continue
+            power += f["force"][0] * pt["vx"] + f["force"][1] * pt["vy"]
+        # the crank's weight acts at O (still) and the rod's inertia moment: add M·ω
+        power += sum(m * pos[j]["links"]["AB"]["omega"] for k, m in pos[j]["applied_moments_Nm"].items() if k.endswith("2"))
+        assert pos[j]["balancing_moment_Nm"] == pytest.approx(-power / doc["crank"]["omega_rad_s"], rel=1e-6, abs=1e-6)
+    assert doc["forces"]["turn"] == 1 and doc["forces"]["gas"][0]["turns"] == 2
+    assert doc["dynamics"]["drive_moment_Nm"] == pytest.approx(
+        -loop_work(ld, 0.09) / (4 * math.pi), rel=1e-9)
+
+
+def test_the_note_explains_the_two_turns():
+    """The note's chapter 2: why two turns, the four rows of the diagram, the loop's work equal to
+    A_r(720°), M_д = |A_с|/(4π); every substitution of chapters 1–2 reproduces."""
+    from tmm_cli.project import analyse_linkage, run_project
+    from tmm_cli.render.note import build_note
+    from tmm_cli.render.note.markdown import markdown
+    from tmm_cli.variants import get_variant
+
+    s2 = analyse_linkage(data("engine_4stroke"), "engine_4stroke.toml")
+    doc = build_note(run_project(get_variant("17"), linkage=s2, linkage_name="engine_4stroke.toml"), "ru", {})
+    text = markdown(doc, "note")
+    assert "повторяется лишь через два оборота кривошипа (720°)" in text
+    assert "положения второго оборота нумеруются дальше, 12 … 23" in text
+    for word in ("расширение (от крышки)", "выпуск (к крышке)", "впуск (от крышки)", "сжатие (к крышке)"):
+        assert word in text
+    assert "(первый оборот цикла)" in text and "/(4 π)" in text
+    work = loop_work(data("engine_4stroke")["load"][0], 0.09)
+    assert s2.dynamics.A_r[-1] == pytest.approx(work, rel=1e-6)

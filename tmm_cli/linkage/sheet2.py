@@ -88,6 +88,16 @@ class Sheet2:
         angle φ0 + sense·travel as turned)."""
         return self.cycle_kin if self.cycle_kin is not None else self.sheet1.cycle.kin
 
+    def curve_kin(self):
+        """The kinematics on the dynamics' grid (:attr:`Dynamics.travel`): sheet 1's curve, or its
+        turns repeated over a two-turn cycle."""
+        c = self.sheet1.cycle
+        if self.turns == 1:
+            return c.curve.kin
+        from .turns import repeat_curve
+
+        return repeat_curve(c.curve.kin, c.curve.travel, self.turns, c.start, self.sheet1.mechanism.crank.sense)[0]
+
     @property
     def loading(self) -> Loading:
         return self.forces.loading
