@@ -706,10 +706,13 @@ def _reduction(c: Ctx, s) -> None:
                       "diagram: the area of its loop — under the rows of expansion and intake (away from the head) less "
                       "under those of exhaust and compression (towards it) — times the piston's area and stroke:")
                     .format(p=gl.link))
+                # each area after the first with its own sign folded into the operator: «− 0,0126», not «+ −0,0126»
+                signs = [(1 if k % 2 == 0 else -1) * (1 if a >= 0 else -1) for k, a in enumerate(areas)]
+                terms = "{2}" if s1 >= 0 else "-{2}"
+                terms += "".join(f" {'+' if sg > 0 else '-'} {{{k + 2}}}" for k, sg in enumerate(signs[1:], start=1))
                 c.formula(c.calc(f'A_(P {ln.number}) = A H (S_1 - S_2 + S_3 - S_4) dot 10^6',
-                                 "{0} dot {1} dot ({2} - {3} + {4} - {5}) dot 10^6",
-                                 [V(gl.area, exact=True), V(h, sig=6), V(s1, sig=6), V(s2, sig=6), V(s3, sig=6),
-                                  V(s4, sig=6)],
+                                 "{0} dot {1} dot (" + terms + ") dot 10^6",
+                                 [V(gl.area, exact=True), V(h, sig=6)] + [V(abs(a), sig=6) for a in areas],
                                  V(gl.area * h * (s1 - s2 + s3 - s4) * 1.0e6, sig=5), t("J")), numbered=False)
     c.p(t("Over a steady cycle the driving work equals the resistance work, so the constant driving moment of the "
           "motor reduced to the crank is"))
