@@ -152,9 +152,10 @@ def _loads(c: Ctx, s) -> None:
         lines = []
         for f in inertia:
             ms = mass_of[f.number]
-            a = abs(complex(centre_motion(kin, ms)[2][i]))
+            a = c.zero(abs(complex(centre_motion(kin, ms)[2][i])), "m/s²")
             lines.append(c.calc(f"Φ_{f.number} = m_{f.number} a_(S {f.number})", "{0} dot {1}",
-                                [V(ms.m, exact=True), V(a, sig=4)], V(abs(complex(f.f[i])), sig=4), t("N")))
+                                [V(ms.m, exact=True), V(a, sig=4)], V(abs(complex(f.f[i])) if a else 0.0, sig=4),
+                                t("N")))
         c.formula(*lines)
     if moments:
         c.p(t("The inertia moments act against the angular accelerations $ε$ of the links:"))
@@ -162,9 +163,10 @@ def _loads(c: Ctx, s) -> None:
         lines = []
         for m in moments:
             ms = mass_of[m.number]
-            eps = abs(float(kin.epsilon[m.link][i]))
+            eps = c.zero(abs(float(kin.epsilon[m.link][i])), "rad/s²")
             lines.append(c.calc(f"M_(Φ {m.number}) = J_(S {m.number}) ε_{m.number}", "{0} dot {1}",
-                                [V(ms.J, exact=True), V(eps, sig=4)], V(abs(float(m.m[i])), sig=4), t("N·m")))
+                                [V(ms.J, exact=True), V(eps, sig=4)], V(abs(float(m.m[i])) if eps else 0.0, sig=4),
+                                t("N·m")))
         c.formula(*lines)
     _load(c, s)
     _gas(c, s)
@@ -175,7 +177,7 @@ def _loads(c: Ctx, s) -> None:
                      n(abs(complex(f.f[i])), decimals=1) + " " + t("N")])
     for m in couples:
         rows.append([f"${fsym(c, m.symbol)}$", _kind(c, m.kind), str(m.number), "—",
-                     n(float(m.m[i]), decimals=2) + " " + t("N·m")])
+                     c.nz(float(m.m[i]), "N·m", decimals=2) + " " + t("N·m")])
     c.p(t("The forces and moments applied to the links in position {label} are collected in Table {{tab:dyn_loads}} "
           "(a moment is positive counter-clockwise).").format(label=p.label))
     c.table("dyn_loads", t("Forces and moments applied to the links, position {label}").format(label=p.label),
@@ -435,6 +437,10 @@ def _group_table(c: Ctx, s, g) -> None:
 
 
 def _crank(c: Ctx, s) -> None:
+    """The crank's equation of moments about its pivot with every reaction on it: R21 of the first
+    group's link and, where several groups hang on the crank pin (a V compressor), R41, … each with
+    its arm and its sign (counter-clockwise positive), the couple of a slide on the crank, and the
+    crank's own loads where they have a moment: M_ур = −Σ M_O."""
     from ...linkage.motion import cross
 
     t = c.t
@@ -442,30 +448,51 @@ def _crank(c: Ctx, s) -> None:
     kin = s.sheet1.cycle.kin
     i = s.force_position
     r01 = s.forces.reaction(_label(mech.pairs[0]))
-    r12 = next(r for r in s.forces.reactions if r.pair.links[0] == 1)
+    on_crank = [r for r in s.forces.reactions if r.pair.links[0] == 1]  # R12, R14, …: their opposites act on it
     zo = complex(kin.z[mech.crank.pivot][i])
-    moment_r = float(cross(complex(r12.at[i]) - zo, -complex(r12.force[i])))
-    others = known_moment(s, 1, zo, i) - moment_r
     mb = float(s.balancing[i])
-    size = abs(complex(r12.force[i]))
-    h = abs(moment_r) / size if size > 0 else 0.0
-    r21 = "R_21"
-    c.p(t("The crank comes last. On it act the reaction ${r21} = -{r12}$ of link 2, its own loads and the balancing "
-          "moment $M_\"ур\"$ of the motor; the frame's reaction ${r01}$ closes its polygon. The moments about "
-          "${O}$:").format(r21="arrow(R)_21", r12=vsym(c, r12.label), r01=vsym(c, r01.label), O=pt(mech.crank.pivot)))
-    if abs(others) <= 1e-9 * max(1.0, abs(moment_r)):
-        c.formula(c.calc(f'abs(M_"ур") = {r21} h_21', "{0} dot {1}", [V(size, sig=5), V(h, sig=4)], V(abs(mb), sig=4),
-                         t("N·m")),
-                  where=['M_"ур"', ("h_21", t("the arm of $R_21$ about the crank's pivot, m"))])
+    terms, vals, where, names = [], [], ['M_"ур"'], []
+    total = 0.0
+    for r in on_crank:
+        k = r.pair.links[1]
+        moment = float(cross(complex(r.at[i]) - zo, -complex(r.force[i])))  # the moment of R_k1 about O
+        size = abs(complex(r.force[i]))
+        h = abs(moment) / size if size > 0 else 0.0
+        sym = fsym(c, f"R{k}1") if k < 10 else fsym(c, f"R{k},1")
+        hs = f"h_({k}1)" if k < 10 else f"h_({k},1)"
+        names.append((vsym(c, f"R{k}1" if k < 10 else f"R{k},1"), vsym(c, r.label), k))
+        total += moment
+        if c.zero(moment, "N·m") == 0.0:
+            continue
+        terms.append(("-" if moment > 0 else "+", f"{sym} {hs}", "{%d} dot {%d}" % (len(vals), len(vals) + 1)))
+        vals += [V(size, sig=5), V(h, decimals=4 - math.floor(math.log10(h)) if h > 0 else 4)]  # 5 digits, no 10⁻⁴
+        where.append((hs, t("the arm of ${r}$ about the crank's pivot, m").format(r=sym)))
+        if r.couple is not None and c.zero(float(r.couple[i]), "N·m") != 0.0:  # a slide on the crank: its couple
+            mk = -float(r.couple[i])
+            total += mk
+            msym = f"M_({k} 1)"
+            terms.append(("-" if mk > 0 else "+", msym, "{%d}" % len(vals)))
+            vals.append(V(abs(mk), sig=5))
+            where.append((msym, t("the moment of the slide's couple on the crank, N·m")))
+    own = known_moment(s, 1, zo, i) - total  # the crank's own weight, inertia force and moment
+    if c.zero(own, "N·m") != 0.0:
+        sm = f"Σ M_({pt(mech.crank.pivot)})^((1))"
+        terms.append(("-" if own > 0 else "+", sm, "{%d}" % len(vals)))
+        vals.append(V(abs(own), sig=5))
+        where.append((sm, t("the moment about the crank's pivot of the crank's own loads (its weight and inertia "
+                            "force), N·m")))
+    reactions = ", ".join(t("${r} = -{q}$ of link {k}").format(r=a, q=b, k=k) for a, b, k in names)
+    c.p(t("The crank comes last. On it act the reactions {reactions}, its own loads and the balancing moment "
+          "$M_\"ур\"$ of the motor; the frame's reaction ${r01}$ closes its polygon. From the equation of its moments "
+          "about ${O}$ (counter-clockwise positive), $M_\"ур\" + Σ M_({O}) = 0$:").format(
+        reactions=reactions, r01=vsym(c, r01.label), O=pt(mech.crank.pivot)))
+    if not terms:
+        c.formula('M_"ур" = 0', where=where)
     else:
-        other = others if moment_r >= 0 else -others
-        c.formula(c.calc(f'abs(M_"ур") = abs({r21} h_21 plus.minus Σ M_({pt(mech.crank.pivot)})^((1)))',
-                         "abs({0} - {1})" if other < 0 else "abs({0} + {1})", [V(abs(moment_r), sig=5), V(abs(other), sig=5)],
-                         V(abs(mb), sig=4), t("N·m")),
-                  where=['M_"ур"', ("h_21", t("the arm of $R_21$ about the crank's pivot, m")),
-                         (f"Σ M_({pt(mech.crank.pivot)})^((1))",
-                          t("the moment about the crank's pivot of the crank's own loads (its weight and inertia force), "
-                            "N·m"))])
+        lhs = "M_\"ур\" = " + " ".join((sg if k or sg == "-" else "") + " " + body
+                                        for k, (sg, body, _) in enumerate(terms)).strip()
+        sub = " ".join((sg if k or sg == "-" else "") + " " + leaf for k, (sg, _, leaf) in enumerate(terms)).strip()
+        c.formula(c.calc(lhs, sub, vals, V(mb, sig=4), t("N·m")), where=where)
     w = kin.omega1
     drives = mb * w > 0
     sense = t("counter-clockwise") if mb > 0 else t("clockwise")

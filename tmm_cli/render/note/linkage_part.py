@@ -128,6 +128,12 @@ def _lengths(m) -> dict[str, float]:
     return size
 
 
+def role_name(c: Ctx, s, link: str) -> str:
+    """A link by its role and name, the one name it has everywhere in the note: «кулиса Y»,
+    «кулисный камень B», «коромысло DB» (the words of Table 1, :func:`~tmm_cli.linkage.roles.link_roles`)."""
+    return f"{c.t(ROLE_WORDS[link_roles(s)[link]])} {link}"
+
+
 def _link_words(c: Ctx, s) -> str:
     roles = link_roles(s)
     return ", ".join(f"{ln.number} — {c.t(ROLE_WORDS[roles[ln.name]])} {ln.name}" for ln in s.mechanism.links)
@@ -204,9 +210,13 @@ def _positions(c: Ctx, s) -> None:
                      t("rad/s")), where=["ω_1", "n_1"])
     out = m.output
     slider = out.kind == "slider"
-    what = (t("the slider {link}").format(link=out.link) if slider else t("the rocker {link}").format(link=out.link))
+    what = role_name(c, s, out.link)  # the output link by its role, as in Table 1 (кулиса Y, кулисный камень B, …)
     rule = cy.start_rule
-    if rule == "working":
+    if rule == "gas":  # a piston of an engine or a compressor: its dead centre nearest the cylinder's head
+        text = t("The output link is {what}, the piston of a cylinder. Position 0 is its dead centre nearest the "
+                 "cylinder head, where its indicator diagram begins (the piston then moves away from the head); the "
+                 "gas force acts on both strokes. The crank angle of position 0 is $φ_0 = {start}°$.")
+    elif rule == "working":
         text = t("The output link is {what}. Position 0 is its extreme position where the working stroke begins; the "
                  "working stroke is the slower one (it takes the larger crank angle). The crank angle of position 0 "
                  "is $φ_0 = {start}°$.")
@@ -397,9 +407,9 @@ def _plans(c: Ctx, s, pl) -> None:
         label=pos.label))
     rows = []
     for ln in m.links:
-        w, e = P.w[ln.name], P.e[ln.name]
+        w, e = c.zero(P.w[ln.name], "rad/s"), c.zero(P.e[ln.name], "rad/s²")
         rows.append([str(ln.number), ln.name, c.n(w, sig=4), c.n(e, sig=4),
-                     (_sense(c, w) if abs(w) > 1e-12 else "—") + " / " + (_sense(c, e) if abs(e) > 1e-12 else "—")])
+                     (_sense(c, w) if w != 0.0 else "—") + " / " + (_sense(c, e) if e != 0.0 else "—")])
     c.table("linkage_omega", t("Angular velocities and accelerations of the links, position {label}").format(label=pos.label),
             ["№", t("Link"), f"$ω$, {rad_s}", f"$ε$, {rad_s2}", t("Sense of ω / of ε")], rows,
             align=["center", "center", "right", "right", "left"], widths=[0.4, 0.8, 1.0, 1.0, 3.2])
@@ -656,7 +666,7 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
 def _vector_table(c: Ctx, P: _Plans) -> None:
     t = c.t
     rows = []
-    for plan, unit in ((P.pl.velocity, t("m/s")), (P.pl.acceleration, t("m/s²"))):
+    for plan, unit, kind in ((P.pl.velocity, t("m/s"), "m/s"), (P.pl.acceleration, t("m/s²"), "m/s²")):
         for v in plan.vectors:
             if v.magnitude / plan.scale < 0.05 and not v.relation:
                 continue
@@ -664,7 +674,7 @@ def _vector_table(c: Ctx, P: _Plans) -> None:
                     " ".join(_split_points(v.line, P.sym.names)))
             rows.append([f"${P.sym.vec(v.symbol)}$", f"${label_math(v.start)} {label_math(v.end)}$",
                          f"{v.relation} {line}".strip() or "—", c.n(v.magnitude / plan.scale, decimals=1),
-                         c.n(v.magnitude, sig=4) + "\u00a0" + unit])
+                         c.nz(v.magnitude, kind, sig=4) + "\u00a0" + unit])
     c.table("linkage_plans", t("Vectors of the velocity plan ($μ_v = {mu_v}$ (m/s)/mm) and of the acceleration plan "
                                "($μ_a = {mu_a}$ (m/s²)/mm), position {label}").format(
         mu_v=c.q(P.pl.velocity.scale), mu_a=c.q(P.pl.acceleration.scale), label=P.pl.position.label),
