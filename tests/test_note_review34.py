@@ -197,3 +197,99 @@ def test_the_zero_rule_in_one_place():
     assert c.zero(1e-8 * va, "m/s") == 1e-8 * va
     assert c.zero(1.183e-30, "N") == 0.0 and c.zero(0.002, "N") == 0.002
     assert Ctx(NS(linkage=None), "ru").zero(1e-30, "N") == 1e-30
+
+
+# --- B3, C16: the slides' couples and the numbered vector equations of every group ---------------------
+
+
+def formulas(doc) -> list:
+    return [b for b in chapters(doc) if isinstance(b, Formula)]
+
+
+@pytest.mark.parametrize("name", NEW + ("shaper", "four_bar"))
+def test_every_group_has_its_numbered_vector_polygon_and_the_text_refers_to_it(name):
+    r, doc, md = case(name)
+    polys = {b.label: b for b in formulas(doc) if (b.label or "").startswith("dyn_poly_")}
+    groups = r.linkage.sheet1.mechanism.groups
+    assert sorted(polys) == sorted(f"dyn_poly_{g.index}" for g in groups)
+    for b in polys.values():
+        assert b.numbered
+        assert not re.search(r"(?<!arrow\()\bR_", b.math.replace("arrow(R)_", "")), b.math  # every R an arrow
+        assert "Σ F^" not in b.math, b.math
+    for g in groups:  # the group's reactions cite their polygon's number
+        assert any(f"{{eq:dyn_poly_{g.index}}}" in getattr(b, "text", "") for b in chapters(doc)), g.index
+
+
+@pytest.mark.parametrize("name", ("tangent", "scotch_yoke", "rocking_block"))
+def test_the_slides_couples_are_given_as_exported(name):
+    """Every slide couple of linkage.json that is not zero is in the reactions' table with its value
+    and has its equation of moments in the text, which gives the exported value."""
+    _, doc, md = case(name)
+    data = exported(name)
+    pos = next(p for p in data["positions"] if p["label"] == data["forces"]["position"])
+    couples = {k: part["couple_Nm"] for k, part in pos["reaction_parts"].items()
+               if part.get("couple_Nm") is not None and abs(part["couple_Nm"]) > 1e-9}
+    assert couples, "an example of a slide on a moving link or a yoke carries a couple"
+    rows = next(b for b in doc.blocks if getattr(b, "name", None) == "dyn_reactions").rows
+    printed = {re.sub(r"[^0-9,]", "", row[0]): row[3] for row in rows if row[0].startswith("$M_(")}
+    assert set(printed) == {k[1:] for k in couples}
+    from tmm_cli.render.note.mathsyntax import number_value as nv
+
+    for key, m in couples.items():
+        value = nv(printed[key[1:]].split("\u00a0")[0])[0]
+        assert value == pytest.approx(m, rel=5e-3, abs=1e-6)
+        line = next(p for b in formulas(doc) for p in re.split(r"; quad | \\ ", b.math) if p.startswith(f"M_({key[1:]}) = "))
+        assert numbers(line.split(" = ")[-1])[0] == pytest.approx(m, rel=5e-4, abs=1e-6), line
+    if name == "scotch_yoke":  # the yoke's guide holds the block's push R23 = 3000 N at 0,05 m from Y
+        assert abs(couples["R03"]) == pytest.approx(150.0, rel=1e-6)
+
+
+# --- B4: a translating yoke has no Coriolis term; one block is one --------------------------------------
+
+
+def test_the_scotch_yoke_translates_and_its_block_is_one():
+    r, doc, md = case("scotch_yoke")
+    data = exported("scotch_yoke")
+    yoke = r.linkage.sheet1.mechanism.groups[-1].links[1]
+    assert max(abs(p["links"][yoke]["omega"]) for p in data["positions"]) < 1e-9  # the yoke never turns
+    assert "Камни" not in md and "кориолисовы составляющие" not in md
+    assert "кулиса 3 движется поступательно" in md and "кориолисово ускорение камня относительно неё отсутствует" in md
+    assert not any("a^k" in b.math for b in formulas(doc))
+
+
+def test_the_tangent_has_one_coriolis_term_on_its_turning_guide():
+    _, doc, md = case("tangent")
+    assert "Камни скользят по вращающимся направляющим" not in md
+    assert "Камень скользит по вращающейся направляющей звена 3" in md
+
+
+# --- B8: a gas force is driving or resisting by the sign of its work ------------------------------------
+
+
+def test_the_gas_forces_are_driving_or_resisting_as_their_pistons_move():
+    _, doc, md = case("v_compressor")
+    data = exported("v_compressor")
+    k = next(j for j, p in enumerate(data["positions"]) if p["label"] == data["forces"]["position"])
+    now, nxt = data["positions"][k], data["positions"][k + 1]
+    rows = {row[0]: row[1] for row in next(b for b in doc.blocks if getattr(b, "name", None) == "dyn_loads").rows}
+    for sym, f in now["applied_forces"].items():
+        if not sym.startswith("P"):
+            continue
+        move = point(nxt["points"][f["at"]]) - point(now["points"][f["at"]])  # where the piston goes from here
+        work = f["force"][0] * move.real + f["force"][1] * move.imag
+        kind = rows[f"$P_{sym[1:]}$"]
+        assert kind == ("движущая сила (давление газов)" if work > 0 else "сила сопротивления (давление газов)"), sym
+    assert "полезное сопротивление" not in " ".join(rows.values())
+    assert "приведённый момент сил сопротивления и сил тяжести" not in md
+    assert "A<sub>с</sub> = A<sub>P 3</sub> + A<sub>P 5</sub>" in md
+
+
+# --- C13, C20 ---------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", NEW + ("shaper",))
+def test_the_extremes_of_delta_t_are_at_delta_phi_and_the_last_row_is_360_0(name):
+    _, doc, md = case(name)
+    assert "наибольшее при Δ φ = " in md and "наибольшее при φ" not in md
+    rows = next(b for b in doc.blocks if getattr(b, "name", None) == "dyn_reduced").rows
+    assert rows[-1][1] == "360,0" and all(re.fullmatch(r"\d+,\d", row[1]) for row in rows)

@@ -79,6 +79,15 @@ class Ctx:
         """:meth:`n` of :meth:`zero`: a number of the kind `kind` ("m/s", "N", …) for the text."""
         return self.n(self.zero(x, kind), **kw)
 
+    def nf(self, x, kind: str = "N") -> str:
+        """A force (`kind` "N") or a moment ("N·m") for a table or a list: one decimal from 10 up,
+        three significant digits below it in decimals (0,00228, not 0,00 nor 2,28·10⁻³), 0 where
+        it is zero (:meth:`zero`)."""
+        x = self.zero(x, kind)
+        if x == 0.0:
+            return "0"
+        return self.n(x, decimals=1) if abs(x) >= 10.0 else self.n(x, sig=3, sci=False)
+
     def n(self, x, **kw) -> str:
         """A number for the text: decimal comma (ru), typographic minus, narrow space in thousands."""
         text = num(x, self.lang, minus="−", **kw)

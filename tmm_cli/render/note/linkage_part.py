@@ -553,7 +553,10 @@ def _sliding_group(c: Ctx, P: _Plans, g, plan, unit: str, mu: str) -> None:
         turning[f"a^k_{p3}{ja}{n2}"] = g.links[1]
         if g.guide.moving:
             turning[f"a^k_{p3}{p3}{P.m.link(g.guide.link).number}"] = g.guide.link
+    still = {sym: ln for sym, ln in turning.items() if _never_turns(P, ln)}  # a translating yoke: no Coriolis term
     for v in dict((v.symbol, v) for v in vecs).values():
+        if v.symbol in still:
+            continue
         if v.symbol in turning:
             rel = P.vel["v_" + v.symbol[4:]]
             num = P.m.link(turning[v.symbol]).number
@@ -566,20 +569,40 @@ def _sliding_group(c: Ctx, P: _Plans, g, plan, unit: str, mu: str) -> None:
             continue  # a guide's point found by similarity
         else:
             lines.append(P.measured(plan, v, unit, mu))
+    moving = sorted({P.m.link(ln).number for sym, ln in turning.items() if sym not in still})
     if known:
-        c.p(t("The blocks slide along turning guides, so their accelerations relative to them have Coriolis "
-              "components (the relative velocity turned by 90° in the sense of the guide's ω). The known components "
-              "and their segments on the plan:"))
+        c.p((t("A block slides along the turning guide of link {k}, so its acceleration relative to the guide has a "
+               "Coriolis component (the relative velocity turned by 90° in the sense of $ω_{k}$). The known "
+               "components and their segments on the plan:") if len(moving) == 1 else
+             t("The blocks slide along turning guides, so their accelerations relative to them have Coriolis "
+               "components (the relative velocity turned by 90° in the sense of the guide's ω). The known components "
+               "and their segments on the plan:")).format(k=moving[0] if moving else ""))
         c.formula(*known)
     if plan.kind == "velocity":
         same = [f"{q}_{n} = {q}_{P.m.link(gd.link).number}" if gd.moving else f"{q}_{n} = 0"
                 for q in ("ω",) for n, gd in zip((n2, n3), g.guides or (g.guide, g.guide))]
-        c.p(t("The blocks of the group only slide: each turns with the link of its guide."))
+        if g.kind == "PRP":
+            c.p(t("Links {n2} and {n3} of the group only slide: each turns with the link of its guide (on a fixed guide "
+                  "it does not turn).").format(n2=n2, n3=n3))
+        else:
+            c.p(t("The block {n2} only slides in the slot of the yoke {n3} and turns with it; the yoke slides along its "
+                  "guide and turns with the guide's link.").format(n2=n2, n3=n3))
     else:
+        if still and g.kind == "RPP":
+            c.p(t("The yoke's guide is fixed: the yoke {n3} translates ($ω_{n3} = 0$), so the block's acceleration "
+                  "relative to it has no Coriolis component.").format(n3=n3))
         same = [f"{q}_{n} = {q}_{P.m.link(gd.link).number}" if gd.moving else f"{q}_{n} = 0"
                 for q in ("ε",) for n, gd in zip((n2, n3), g.guides or (g.guide, g.guide))]
         c.p(t("From the plan:"))
     c.formula(*(lines + same))
+
+
+def _never_turns(P: _Plans, link: str) -> bool:
+    """Whether `link` does not turn over the whole cycle (a yoke on a fixed guide: ω ≡ 0)."""
+    import numpy as np
+
+    w = np.asarray(P.s.cycle.kin.omega[link], dtype=float)
+    return float(np.max(np.abs(w))) <= 1e-9 * abs(P.m.crank.omega)
 
 
 def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
