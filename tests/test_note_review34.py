@@ -293,3 +293,82 @@ def test_the_extremes_of_delta_t_are_at_delta_phi_and_the_last_row_is_360_0(name
     assert "наибольшее при Δ φ = " in md and "наибольшее при φ" not in md
     rows = next(b for b in doc.blocks if getattr(b, "name", None) == "dyn_reduced").rows
     assert rows[-1][1] == "360,0" and all(re.fullmatch(r"\d+,\d", row[1]) for row in rows)
+
+
+# --- C21: decimals among decimals; a «;» after a reference survives typst ------------------------------------
+
+
+def test_the_masses_table_has_no_powers_of_ten():
+    r, doc, _ = case("shaper")
+    rows = next(b for b in doc.blocks if getattr(b, "name", None) == "dyn_masses").rows
+    assert rows and not any("10⁻" in cell for row in rows for cell in row)
+    small = [ms for ms in r.linkage.input.masses if 0 < ms.J < 1e-3]
+    from types import SimpleNamespace as NS
+
+    from tmm_cli.render.note.ctx import Ctx
+
+    assert Ctx(NS(linkage=None), "ru").n(6e-4, sig=4, sci=False) == "0,0006"
+    for ms in small:
+        assert any(cell.startswith("0,000") for row in rows for cell in row)
+
+
+def test_a_semicolon_after_a_reference_is_kept_in_typst():
+    """typst ends an embedded expression (#ref(<…>)) at a «;» and swallows it: «таблице 6 звенья»."""
+    from tmm_cli.render.note.model import Document, Paragraph, Table
+    from tmm_cli.render.note.typst import TypstWriter
+
+    doc = Document("ru")
+    doc.add(Table("dyn_masses", "Массы", ["a"], [["1"]]))
+    doc.add(Paragraph("приведены в таблице {tab:dyn_masses}; звенья, не указанные в ней"))
+    doc.number()
+    w = TypstWriter(doc)
+    src = "\n".join(w.block(doc.blocks[-1]))
+    assert re.search(r"#ref\([^)]*\)\\; звенья", src), src
+
+
+# --- C11: one role name per link; C12: the couple's second point has a letter of its own ----------------------
+
+
+def _forms(role: str) -> list[str]:
+    """The Russian nominative and genitive of a role's word."""
+    from tmm_cli.i18n import tr, trc
+    from tmm_cli.render.terminal.mechanism import ROLE_WORDS
+
+    return [tr("ru", ROLE_WORDS[role]), trc("ru", "genitive", ROLE_WORDS[role])]
+
+
+@pytest.mark.parametrize("name", NEW + ("shaper", "four_bar"))
+def test_every_link_has_one_role_name_everywhere(name):
+    from tmm_cli.linkage.roles import ROLES, link_roles
+
+    r, doc, md = case(name)
+    s1 = r.linkage.sheet1
+    roles = link_roles(s1)
+    text = md.lower()
+    for ln in s1.mechanism.links:
+        mine = roles[ln.name]
+        assert f"| {ln.number} | {ln.name} | {_forms(mine)[0]} |" in md  # Table 1
+        for other in ROLES:
+            if other == mine or set(_forms(other)) & set(_forms(mine)):
+                continue
+            for word in _forms(other):
+                for tag in (ln.name, str(ln.number)):
+                    hit = re.search(rf"(?<![\w]){re.escape(word)} {re.escape(tag)}(?![\w′'])", text)
+                    assert not hit, (ln.name, mine, text[max(0, hit.start() - 80):hit.end() + 40])
+
+
+@pytest.mark.parametrize("name", ("tangent", "rocking_block"))
+def test_the_couples_second_point_is_a_letter_of_its_own_on_the_note_and_the_sheet(name):
+    from tmm_cli.render.sheets.dynamics_sheet import _lever_points
+
+    r, doc, md = case(name)
+    s2 = r.linkage
+    mech = s2.sheet1.mechanism
+    names = set(mech.joint_names) | {ln.name for ln in mech.links} | {p.name for p in mech.points}
+    extra = [f for f in s2.lever.forces if f.point not in s2.sheet1.cycle.kin.z]
+    assert extra  # a slider turning with its moving guide: its couple as two forces, one at a point of its own
+    for f in extra:
+        assert f.point not in names and f.point not in ("K", "L", "M", "N", "T", "V", "W"), f.point
+        assert f.point.lower() in _lever_points(s2)  # sheet 2 draws its image under the same letter
+        assert f"точкой {f.point.lower()} — концом луча p {f.point.lower()}" in md  # the note names it so
+    assert "b′" not in md and "точкой \"b′\"" not in md

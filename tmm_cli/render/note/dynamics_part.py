@@ -126,7 +126,7 @@ def _loads(c: Ctx, s) -> None:
     rows = []
     for ms in s.input.masses:
         ln = mech.link(ms.link)
-        rows.append([str(ms.number), _link_name(c, ln), n(ms.m, sig=4), n(ms.J, sig=4) if ms.J > 0 else "—",
+        rows.append([str(ms.number), _link_name(c, ln), n(ms.m, sig=4, sci=False), n(ms.J, sig=4, sci=False) if ms.J > 0 else "—",
                      f"${pt(ms.label)}$"])
     if rows:
         c.p(t("The masses of the links, their moments of inertia about the centres of mass and the centres are given in "
@@ -230,13 +230,15 @@ def _load(c: Ctx, s) -> None:
     f, on = float(fraction[i]), bool(working[i])
     sym = fsym(c, "Fc" if ld.kind == "force" else "Mc")
     unit = t("N") if ld.kind == "force" else t("N·m")
-    what = (t("The useful resistance ${sym}$ acts on the output slider along its guide against the working stroke; "
-              "its diagram (Table {{tab:dyn_load}}) gives it against the share of the working stroke covered; it is "
-              "linear between these points and zero on the return stroke.") if ld.kind == "force" else
+    what = (t("The useful resistance ${sym}$ acts on the output link ({what}) along its guide against the working "
+              "stroke; its diagram (Table {{tab:dyn_load}}) gives it against the share of the working stroke covered; "
+              "it is linear between these points and zero on the return stroke.") if ld.kind == "force" else
             t("The useful resistance moment ${sym}$ acts on the output rocker against its working swing; its diagram "
               "(Table {{tab:dyn_load}}) gives it against the share of the swing covered; it is linear between these "
               "points and zero on the return stroke."))
-    c.p(what.format(sym=sym))
+    from .linkage_part import role_name
+
+    c.p(what.format(sym=sym, what=role_name(c, s.sheet1, mech.output.link)))
     if ld.direction is not None:
         c.p(t("Its direction is its own, fixed at {deg}° from the $x$ axis (not along the guide): its part across the "
               "guide does no work but loads the pairs.").format(deg=n(math.degrees(ld.direction), decimals=1)))
@@ -685,11 +687,14 @@ def _pairs(c: Ctx, s) -> None:
         m = abs(float(couple.m[i]))
         size = abs(complex(f.force[i]))
         l = pair_arm(mech)
-        c.p(t("The slider {n} turns with its moving guide and has no second joint, so its couple ${m}$ is replaced "
+        from .linkage_part import role_name
+
+        c.p(t("The {what} ({n}) turns with its moving guide and has no second joint, so its couple ${m}$ is replaced "
               "by a pair of forces across the guide: ${f1}$ at its pin ${a}$ and ${f2}$ at the point ${b}$ — the "
-              "point of the slider {n} (of its guide line) at the distance $l = {l}$ m from ${a}$ along the guide. "
-              "On the lever ${b}$ is drawn at its image $\"b′\"$, the end of the ray $p \"b′\"$ of its velocity "
+              "point of link {n} (of its guide line) at the distance $l = {l}$ m from ${a}$ along the guide. "
+              "On the lever ${b}$ is drawn at its image ${img}$, the end of the ray $p {img}$ of its velocity "
               "$v_{bb} = v_{aa} + ω_{n} times {ab}$. The forces of the pair:").format(
+                  what=role_name(c, s.sheet1, couple.link), img=f.point.lower(),
                   n=mech.link(couple.link).number, m=fsym(c, base), f1=fsym(c, first.symbol), f2=fsym(c, f.symbol),
                   a=pt(first.point), b=pt(f.point), l=c.q(l, sig=4), bb=pt(f.point), aa=pt(first.point),
                   ab=pt(first.point) + " " + pt(f.point)))
@@ -757,7 +762,7 @@ def _reduction(c: Ctx, s) -> None:
                   "stroke $H$:"))
             c.formula(c.calc('A_"с" = H S_F cos α', "{0} dot {1} dot ({2})", [V(st.length, sig=5), V(area, sig=6),
                                                                              V(k, sig=6)], V(a_c, sig=5), t("J")),
-                      where=['A_"с"', ("H", t("the stroke of the output slider, m")),
+                      where=['A_"с"', ("H", t("the stroke of the output link, m")),
                              ("S_F", t("the area under the diagram of the useful resistance against the share of the "
                                        "stroke, N"))])
         elif ld.kind == "force":
@@ -765,7 +770,7 @@ def _reduction(c: Ctx, s) -> None:
                   "resistance takes the area $S_F$ under its diagram times the stroke $H$:"))
             c.formula(c.calc('A_"с" = -H S_F', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)], V(a_c, sig=5),
                              t("J")),
-                      where=['A_"с"', ("H", t("the stroke of the output slider, m")),
+                      where=['A_"с"', ("H", t("the stroke of the output link, m")),
                              ("S_F", t("the area under the diagram of the useful resistance against the share of the "
                                        "stroke, N"))])
         else:

@@ -134,6 +134,16 @@ def role_name(c: Ctx, s, link: str) -> str:
     return f"{c.t(ROLE_WORDS[link_roles(s)[link]])} {link}"
 
 
+def role_genitive(c: Ctx, s, link: str, named: bool = True) -> str:
+    """The same name in the genitive, for «ход ползуна B», «ход кулисы Y» (en: "slider B"); without
+    the link's name where a symbol follows («ход ползуна H»)."""
+    role = link_roles(s)[link]
+    word = {"crank": c.tc("genitive", "crank"), "rocker": c.tc("genitive", "rocker"),
+            "coupler": c.tc("genitive", "connecting rod"), "slider": c.tc("genitive", "slider"),
+            "slotted": c.tc("genitive", "slotted link"), "block": c.tc("genitive", "slotted-link block")}[role]
+    return f"{word} {link}" if named else word
+
+
 def _link_words(c: Ctx, s) -> str:
     roles = link_roles(s)
     return ", ".join(f"{ln.number} — {c.t(ROLE_WORDS[roles[ln.name]])} {ln.name}" for ln in s.mechanism.links)
@@ -254,10 +264,11 @@ def _positions(c: Ctx, s) -> None:
         last = next(p for p in cy.positions if p.extreme == "end")
         wk, rt = math.degrees(cy.working), math.degrees(cy.returning)
         if slider:
-            c.p(t("The stroke of the slider (the distance between its extreme positions {a} and {b}):").format(
-                a=first.label, b=last.label))
+            c.p(t("The stroke of the {whose} (the distance between its extreme positions {a} and {b}):").format(
+                whose=role_genitive(c, s, out.link), a=first.label, b=last.label))
             mm = t("mm")
-            c.formula(f"H = {c.q(cy.stroke * 1000, decimals=2)} {c.u(mm)}", where=["H"])
+            c.formula(f"H = {c.q(cy.stroke * 1000, decimals=2)} {c.u(mm)}",
+                      where=[("H", t("the stroke of the {whose}, mm").format(whose=role_genitive(c, s, out.link)))])
         else:
             c.p(t("The swing of the rocker (the angle between its extreme positions {a} and {b}):").format(
                 a=first.label, b=last.label))
@@ -499,10 +510,10 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
         if g.guide.moving:
             kn = P.m.link(g.guide.link).number
             lines.append(P.measured(vp, P.vel[f"v_{jb}{jb}{kn}"], ms, "μ_v"))
-            c.p(t("The slider {b} slides along a guide of link {k}, which turns: {bk} is the point of link {k} under the "
-                  "slider (found on the plan by similarity), the slider's velocity relative to it is along the guide, "
-                  "and the slider turns with link {k} ($ω_{n3} = ω_{k}$).").format(
-                b=jm(jb), k=kn, bk=jm(f"{jb}{kn}"), n3=n3))
+            c.p(t("The {what} ({n3}) slides along a guide of link {k}, which turns: {bk} is the point of link {k} under "
+                  "it (found on the plan by similarity), its velocity relative to that point is along the guide, "
+                  "and it turns with link {k} ($ω_{n3} = ω_{k}$).").format(
+                what=role_name(c, P.s, g.links[1]), k=kn, bk=jm(f"{jb}{kn}"), n3=n3))
         lines += [_omega_line(c, P, g.links[0], v1, g.lengths[0], True, "l" + sub(ja, jb))]
     else:
         ja, jc = g.joints
@@ -646,9 +657,9 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
             kn = P.m.link(g.guide.link).number
             rel, cor = P.vel[f"v_{jb}{jb}{kn}"], P.acc[f"a^k_{jb}{jb}{kn}"]
             wk = abs(P.w[g.guide.link]) if not P.tiny(P.w[g.guide.link]) else 0.0
-            c.p(t("The slider moves along the turning guide of link {k}: the acceleration of {b} relative to {bk} has a "
-                  "Coriolis component across the guide (the relative velocity turned by 90° in the sense of $ω_{k}$).")
-                .format(k=kn, b=jm(jb), bk=jm(f"{jb}{kn}")))
+            c.p(t("The {what} ({n3}) moves along the turning guide of link {k}: the acceleration of {b} relative to {bk} "
+                  "has a Coriolis component across the guide (the relative velocity turned by 90° in the sense of "
+                  "$ω_{k}$).").format(what=role_name(c, P.s, g.links[1]), n3=n3, k=kn, b=jm(jb), bk=jm(f"{jb}{kn}")))
             known.append(c.calc(f"{P.sym.mag(cor.symbol)} = 2 ω_{kn} {P.sym.mag(rel.symbol)}", "2 dot {0} dot {1}",
                                 [V(wk, sig=5), V(0.0 if P.tiny(rel.magnitude, P.pl.velocity) else rel.magnitude, sig=4)],
                                 V(0.0 if P.tiny(cor.magnitude, ap) else cor.magnitude, sig=4), ms2))
@@ -735,10 +746,10 @@ def _table(c: Ctx, s) -> None:
     moved = first is not None and first.index != 0  # crank.start_deg: s counts from the working stroke's start
     if slider:
         head = ["№", "$φ$, °", f"$s$, {mm}", f"$v$, {ms}", f"$a$, {ms2}"]
-        what = (t("the displacement $s$ of the slider {link} from the extreme position {start} where the working "
+        what = (t("the displacement $s$ of the {whose} from the extreme position {start} where the working "
                   "stroke starts, its velocity $v$ and acceleration $a$ (positive along the working stroke)") if moved
-                else t("the displacement $s$ of the slider {link} from position 0, its velocity $v$ and acceleration "
-                       "$a$ (positive along the working stroke)")).format(link=m.output.link,
+                else t("the displacement $s$ of the {whose} from position 0, its velocity $v$ and acceleration "
+                       "$a$ (positive along the working stroke)")).format(whose=role_genitive(c, s, m.output.link),
                                                                           start=first.label if moved else "")
     else:
         head = ["№", "$φ$, °", "$ψ$, °", f"$ω$, {rs}", f"$ε$, {rs2}"]
