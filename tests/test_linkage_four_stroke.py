@@ -309,3 +309,41 @@ def test_the_note_explains_the_two_turns():
     assert "(первый оборот цикла)" in text and "/(4 π)" in text
     work = loop_work(data("engine_4stroke")["load"][0], 0.09)
     assert s2.dynamics.A_r[-1] == pytest.approx(work, rel=1e-6)
+
+
+def test_the_dynamics_csv_runs_over_720(tmp_path):
+    """linkage_dynamics.csv: the 0.5° grid over both turns; J_r repeats, ΔT closes, A_r ends at the loop's work."""
+    import csv
+
+    from cli_helpers import run
+
+    r = run("linkage", EXAMPLES / "engine_4stroke.toml", "--no-plots", "--out", tmp_path)
+    assert r.exit_code == 0, r.output
+    rows = list(csv.DictReader((tmp_path / "linkage" / "linkage_dynamics.csv").open(encoding="utf-8")))
+    assert len(rows) == 1441
+    travel = np.array([float(x["travel_deg"]) for x in rows])
+    assert travel[0] == 0.0 and travel[-1] == pytest.approx(720.0) and np.allclose(np.diff(travel), 0.5)
+    jr = np.array([float(x["J_r_kgm2"]) for x in rows])
+    assert np.array_equal(jr[1:721], jr[721:])
+    assert all(0.0 <= float(x["phi_deg"]) < 360.0 for x in rows)
+    assert float(rows[-1]["A_r_J"]) == pytest.approx(loop_work(data("engine_4stroke")["load"][0], 0.09), rel=1e-9)
+    assert abs(float(rows[-1]["dT_J"])) < 1e-6
+
+
+def test_sheet2_draws_the_cycle_over_720(tmp_path):
+    """Sheet 2's diagrams: the positions of both turns numbered 0 … 23 under them, 360° and 720° marked,
+    μ_φ for 720° on the same axis; everything inside the frame."""
+    from test_sheets import FRAME, TITLE, check_layout, reopen
+
+    from tmm_cli.render.sheets.dynamics_sheet import sheet2 as build
+
+    _, s = sheet2(data("engine_4stroke"))
+    doc = reopen(build(s, "ru", TITLE), tmp_path, "sheet2")
+    assert {"lever", "dynamics_diagrams", "wittenbauer"} <= set(check_layout(doc))
+    texts = [e.dxf.text for e in doc.modelspace().query("TEXT")]
+    for e in doc.modelspace().query("TEXT"):
+        assert FRAME[0] <= e.dxf.insert[0] <= FRAME[2] and FRAME[1] <= e.dxf.insert[1] <= FRAME[3], e.dxf.text
+    assert {str(j) for j in range(24)} <= set(texts) and "360°" in texts and "720°" in texts
+    mtexts = " ".join(e.text for e in doc.modelspace().query("MTEXT")) + " ".join(texts)
+    assert "720°, цикл из 2 оборотов" in mtexts  # the caption (the DXF writes … as ...)
+    assert math.degrees(s.scales.phi) * s.scales.axis_mm == pytest.approx(720.0)
