@@ -307,6 +307,7 @@ def test_the_note_explains_the_two_turns():
     for word in ("расширение (от крышки)", "выпуск (к крышке)", "впуск (от крышки)", "сжатие (к крышке)"):
         assert word in text
     assert "(первый оборот цикла)" in text and "/(4 π)" in text
+    assert "Двигатель четырёхтактный: его рабочий цикл занимает два оборота кривошипа" in text  # chapter 1
     work = loop_work(data("engine_4stroke")["load"][0], 0.09)
     assert s2.dynamics.A_r[-1] == pytest.approx(work, rel=1e-6)
 

@@ -274,7 +274,7 @@ def _gas(c: Ctx, s) -> None:
           "$A$ the piston's area. It drives the crank where the piston moves away from the head and resists where it "
           "comes back."))
     if s.turns > 1:  # a four-stroke engine: why its cycle takes two turns
-        per = len(s.sheet1.cycle.positions)
+        per = s.sheet1.mechanism.positions  # the regular positions a turn (the second turn numbered on from it)
         c.p(t("The piston of a four-stroke engine makes four strokes in its working cycle — expansion (the working "
               "stroke), exhaust, intake and compression — a stroke each half turn of the crank, so the cycle, and with "
               "it the gas force and the reduced moment, repeats only after two turns of the crank (720°). Its "
