@@ -348,3 +348,26 @@ def test_sheet2_draws_the_cycle_over_720(tmp_path):
     mtexts = " ".join(e.text for e in doc.modelspace().query("MTEXT")) + " ".join(texts)
     assert "720°, цикл из 2 оборотов" in mtexts  # the caption (the DXF writes … as ...)
     assert math.degrees(s.scales.phi) * s.scales.axis_mm == pytest.approx(720.0)
+
+
+@pytest.mark.parametrize("start", [None, 250.0])
+def test_a_table_load_repeats_each_turn_of_the_cycle(start):
+    """A stroke/force table beside the four-stroke gas load (a pump on the piston's rod): it acts on each
+    turn's working stroke, so over the 720° cycle its work is twice −H·(area under its table); mean M_b = M_d."""
+    d = data("engine_4stroke")
+    d["load"].append({"on": "B", "stroke": [0.0, 0.5, 1.0], "force": [0.0, 800.0, 400.0], "working": "towards"})
+    if start is not None:
+        d["crank"]["start_deg"] = start
+    m, s = sheet2(d)
+    assert s.turns == 2 and s.input.load is not None
+    table = -2 * 0.09 * float(np.sum(np.diff([0.0, 0.5, 1.0]) * (np.array([0.0, 800.0]) + np.array([800.0, 400.0])) / 2))
+    gas = loop_work(d["load"][0], 0.09)
+    assert s.dynamics.A_r[-1] == pytest.approx(gas + table, rel=1e-9)
+    k = 36000
+    t = (np.arange(k) + 0.5) * 2 * TWO_PI / k
+    kk = solve(m, s.sheet1.cycle.start + m.crank.sense * t)
+    mb = balancing_moment_by_power(kk, applied(m, s.input, s.stroke, kk))
+    assert float(np.mean(mb)) == pytest.approx(s.dynamics.drive_moment_ccw, rel=1e-4)
+    scale = float(np.max(np.abs(s.balancing)))
+    assert np.max(np.abs(s.balancing - s.power_balance)) <= 1e-8 * scale
+    assert np.max(np.abs(s.balancing - s.lever.balancing)) <= 1e-8 * scale
