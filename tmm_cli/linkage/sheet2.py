@@ -45,8 +45,9 @@ class DynamicsScales:
 
 def dynamics_scales(dyn: Dynamics, fw: Flywheel | None, axis_mm: float = DIAGRAM_AXIS_MM,
                     height_mm: float = DIAGRAM_HEIGHT_MM) -> DynamicsScales:
-    """μ of the diagrams M_r and M_d, A_r and A_d, ΔT (and ΔT_I), J_r over the turn."""
-    m = max(float(np.max(np.abs(dyn.M_r))), abs(dyn.M_d))  # the axis: the whole cycle (a turn, or two)
+    """μ of the diagrams M_r and M_d, A_r and A_d, ΔT (and ΔT_I), J_r over the cycle (a turn; a
+    four-stroke engine's two on the same axis length)."""
+    m = max(float(np.max(np.abs(dyn.M_r))), abs(dyn.M_d))
     a = max(float(np.max(np.abs(dyn.A_r))), float(np.max(np.abs(dyn.A_d))))
     t = float(np.max(np.abs(dyn.dT)))
     if fw is not None:
@@ -61,7 +62,7 @@ class Sheet2:
     sheet1: Sheet1
     input: Sheet2Input
     stroke: Stroke | None
-    forces: Kinetostatics  # at sheet 1's positions (its cycle.kin), with their loading
+    forces: Kinetostatics  # at the cycle's positions (:attr:`positions`: sheet 1's, or two turns of them)
     power_balance: np.ndarray  # M_b from the power balance at the positions [N·m]
     lever: Lever  # Zhukovsky's lever at the positions
     force_position: int  # the position of the force polygons and of the lever's drawing (list index)
