@@ -339,7 +339,7 @@ def test_pdf_and_docx_carry_the_chapter(name, tmp_path):
     m = abs(r.linkage.dynamics.M_d)
     assert f"{m:.2f}".replace(".", ",") in text
     d = docx.Document(str(tmp_path / "note.docx"))
-    body = "\n".join(p.text for p in d.paragraphs)
+    body = "\n".join(p.text for p in d.paragraphs).replace("\u2060", "")
     assert "Силовой анализ и динамика рычажного механизма" in body and "Момент инерции маховика" in body
     _audit(tmp_path / "note.docx")
     assert len(pypdf.PdfReader(tmp_path / "note.pdf").pages) > 20
