@@ -66,12 +66,18 @@ def _limits(ax, x: S.Axis, y: S.Axis) -> None:
     ax.set_ylim(y.lo, y.hi)
 
 
-def _mu(ax, text: str, where: str = "upper left") -> None:
-    """The scale written on the plan or diagram, in a white box."""
-    x, ha = (0.01, "left") if "left" in where else (0.99, "right")
-    y, va = (0.985, "top") if "upper" in where else (0.015, "bottom")
-    ax.text(x, y, text, transform=ax.transAxes, ha=ha, va=va, fontsize=MIN_PT, zorder=20,
-            bbox=dict(boxstyle="square,pad=0.25", fc="white", ec="0.6", lw=0.5))
+def _mu(ax, text: str, where: str = "upper left"):
+    """The scale written on the plan or diagram, in a white box: in the corner `where`, or in the
+    first other corner where it hides no curve and no label (placed by kit.settle once the
+    figure is drawn)."""
+    from .kit import corner_places
+
+    places = corner_places(where)
+    t = ax.annotate(text, places[0]["xy"], xycoords="axes fraction", xytext=places[0]["xyann"],
+                    textcoords="offset points", ha=places[0]["ha"], va=places[0]["va"], fontsize=MIN_PT, zorder=20,
+                    bbox=dict(boxstyle="square,pad=0.25", fc="white", ec="0.6", lw=0.5))
+    t._tmm_places = places
+    return t
 
 
 def _n(x, lang, **kw) -> str:
@@ -411,7 +417,7 @@ def _assembly(g, lang: str):
 def _mesh(g, lang: str):
     from matplotlib.lines import Line2D
 
-    from .gears import C_PLANET, C_SUN, _draw_mesh
+    from .gears import C_PLANET, C_SUN, _draw_mesh, pair_names
     from .kit import mt
 
     sp = g.spur
@@ -427,8 +433,8 @@ def _mesh(g, lang: str):
         Line2D([], [], color="0.3", ls="--", label=mt(tr(lang, "base circles d_b"))),
         Line2D([], [], color="0.3", ls=":", label=mt(tr(lang, "tip circles d_a"))),
         Line2D([], [], color="0.3", ls="-.", label=mt(tr(lang, "root circles d_f"))),
-        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=tr(lang, "two-pair zones P1U2, U1P2")),
-        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=tr(lang, "single-pair mesh U2U1")),
+        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=pair_names(tr(lang, "two-pair zones P1U2, U1P2"))),
+        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=pair_names(tr(lang, "single-pair mesh U2U1"))),
         Line2D([], [], color=C_SUN, lw=2.4, label=tr(lang, "active profiles, gear 1")),
         Line2D([], [], color=C_PLANET, lw=2.4, label=tr(lang, "active profiles, gear 2")),
     ]
@@ -568,12 +574,13 @@ def _synthesis(s1, lang: str):
 
 def note_figure(result, lang: str, name: str):
     """One note figure (a matplotlib Figure); call inside :func:`note_style`."""
-    from .kit import decimal_commas
+    from .kit import decimal_commas, settle
 
     part, make = MAKERS[name]
     fig = make({"cam": result.cam, "gears": result.gears, "linkage": result.linkage}[part], lang)
     decimal_commas(fig, lang)
     legible(fig)
+    settle(fig)
     return fig
 
 
