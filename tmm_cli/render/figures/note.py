@@ -382,13 +382,17 @@ def _planetary(g, lang: str):
     for t in list(ax_a.texts):
         if "=" in t.get_text():
             t.remove()
-    # the planetary's module is not chosen by the book's synthesis: the radii are drawn for m = 1 mm
-    # (as on sheet 4), so the scales are numbers (per module they scale with m)
-    m1 = tr(lang, "(m = 1 mm)")
-    _mu(ax_s, mt(f"μ_l = {_mus(sc.mu_l_per_module, lang)} " + tr(lang, "mm/mm") + " " + m1))
-    _mu(ax_v, mt(f"μ_V = {_n(sc.mu_v_per_module, lang, sig=3)} " + tr(lang, "(m/s)/mm") + " " + m1))
+    # the planetary's module is not chosen by the book's synthesis: drawn with sheet 4's module, the
+    # scales stated at it (as sheet 4 does)
+    _mu(ax_s, mt(f"μ_l = {_mus(sc.mu_l / 1000, lang)} " + tr(lang, "m/mm") + " " + module_text(sc.module_mm, lang)))
+    _mu(ax_v, mt(f"μ_V = {_n(sc.mu_v, lang, sig=3)} " + tr(lang, "(m/s)/mm")))
     _mu(ax_a, mt(f"μ_ω = {_n(sc.mu_omega, lang, sig=3)} " + tr(lang, "(rad/s)/mm")), "upper right")
     return fig
+
+
+def module_text(m: float, lang: str) -> str:
+    """«(m = 2 мм)»: the reducer's module of the drawing, written as sheet 4 writes it."""
+    return tr(lang, "(m = {m} mm)").format(m=num(m, lang, sig=3))
 
 
 def _assembly(g, lang: str):
@@ -398,6 +402,7 @@ def _assembly(g, lang: str):
     d = g.planetary
     n = len(d.stages)
     mu = S.assembly_scale(g)
+    mu_l = S.assembly_mu_l(g)
     w_cm, h_cm = S.figure_size_cm("gears_assembly", g)
     size = (w_cm * 10, h_cm * 10)
     fig = _new(size)
@@ -410,7 +415,8 @@ def _assembly(g, lang: str):
         ax.set_title(title, y=1.0, pad=4)
         ax.set_xlim(-mu * side / 2, mu * side / 2)
         ax.set_ylim(-mu * side / 2, mu * side / 2)
-    _mu(fig.axes[0], mt(f"μ_l = {_mus(mu, lang)} " + tr(lang, "mm/mm") + " " + tr(lang, "(m = 1 mm)")), "lower left")
+    _mu(fig.axes[0], mt(f"μ_l = {_mus(mu_l / 1000, lang)} " + tr(lang, "m/mm") + " " + module_text(S.drawing_module(g), lang)),
+        "lower left")
     return fig
 
 
@@ -574,10 +580,16 @@ def _synthesis(s1, lang: str):
 
 def note_figure(result, lang: str, name: str):
     """One note figure (a matplotlib Figure); call inside :func:`note_style`."""
+    part, _ = MAKERS[name]
+    return note_figure_of(name, {"cam": result.cam, "gears": result.gears, "linkage": result.linkage}[part], lang)
+
+
+def note_figure_of(name: str, part, lang: str):
+    """The note figure `name` from its chapter's result alone (the cam's, the gears', the linkage's):
+    drawn, its tick labels with decimal commas, every text legible, the labels settled."""
     from .kit import decimal_commas, settle
 
-    part, make = MAKERS[name]
-    fig = make({"cam": result.cam, "gears": result.gears, "linkage": result.linkage}[part], lang)
+    fig = MAKERS[name][1](part, lang)
     decimal_commas(fig, lang)
     legible(fig)
     settle(fig)
