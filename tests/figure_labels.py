@@ -97,3 +97,19 @@ def boxed_labels_on_curves(fig) -> list[tuple[str, int]]:
             if inside.any():
                 out.append((t.get_text(), int(inside.sum())))
     return out
+
+
+def texts_leaving_the_figure(fig) -> list[str]:
+    """The labels, the axes' names and the legends' texts whose box runs past the figure's edge —
+    cut off on the page (the printed figure is exactly its size)."""
+    r = fig.canvas.get_renderer()
+    frame = fig.bbox
+    texts = [(t, label_box(t, r)) for ax in fig.axes for t in labels(ax)]
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            if axis.get_visible() and axis.label.get_visible() and axis.label.get_text().strip():
+                texts.append((axis.label, axis.label.get_window_extent(r)))
+    for lg in fig.legends + [ax.get_legend() for ax in fig.axes if ax.get_legend()]:
+        texts += [(t, t.get_window_extent(r)) for t in lg.get_texts()]
+    return [t.get_text() for t, b in texts
+            if b.x0 < frame.x0 - PAD or b.x1 > frame.x1 + PAD or b.y0 < frame.y0 - PAD or b.y1 > frame.y1 + PAD]

@@ -1,6 +1,7 @@
 """The note's figures keep their labels apart (issue 32): the «μ_ε = 400 (рад/с²)/мм» box hid the
 return's ε peak (Figure 1, v52), «к кривошипу» touched its panel's border (Figure 5), «N2», «P2» and
-«α_w = 20°» overlapped and the points were named without subscripts (Figure 7).
+«α_w = 20°» overlapped and the points were named without subscripts (Figure 7); and the name of the
+ε axis ran past the figure's left edge beside «−40000» (Figure 1 of 33 variants: now in thousands).
 
 Read from matplotlib's renderer (tests/figure_labels.py: each label's box as drawn), not from
 pixels: on the figures of the motion diagrams, the planetary reducer and the mesh no two labels of a
@@ -13,7 +14,13 @@ import re
 
 import pytest
 
-from figure_labels import boxed_labels_on_curves, labels, labels_leaving_their_panel, overlapping_labels
+from figure_labels import (
+    boxed_labels_on_curves,
+    labels,
+    labels_leaving_their_panel,
+    overlapping_labels,
+    texts_leaving_the_figure,
+)
 from tmm_cli.project import run_project
 from tmm_cli.variants import get_variant
 
@@ -33,6 +40,8 @@ def _problems(variant: str) -> list[str]:
             fig.canvas.draw()
             out += [f"{name}: overlap {a!r} / {b!r}" for a, b in overlapping_labels(fig)]
             out += [f"{name}: {t!r} leaves its panel" for t in labels_leaving_their_panel(fig)]
+            # nothing cut at the figure's edge («ε, рад/с²» beside «−40000» ran past it on 33 variants)
+            out += [f"{name}: {t!r} runs past the figure's edge" for t in texts_leaving_the_figure(fig)]
             # the scales' boxes on the diagrams and the reducer; on the mesh the gears' outlines fill
             # the panel (its μ_l takes the corner that covers least, α_w's box is translucent)
             if name != "gears_mesh":

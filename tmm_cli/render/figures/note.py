@@ -169,7 +169,7 @@ def _motion(r, lang: str):
         ax.set_xlim(sc.phi.lo, sc.phi.hi)
         ax.set_ylim(axis.lo, axis.hi)
         ax.set_xticks(np.arange(0, 361, 30))
-        ax.set_ylabel(ylabel)
+        _thousands(ax, ylabel, axis, lang)
         ax.grid(alpha=0.3, lw=0.4)
         if k < 2:
             ax.tick_params(labelbottom=False)
@@ -180,6 +180,21 @@ def _motion(r, lang: str):
                                                      lambda t: np.degrees(np.asarray(t) / 1000.0 * w)))
     top.set_xlabel(tr(lang, "time t, ms"))
     return fig
+
+
+def _thousands(ax, ylabel: str, axis: S.Axis, lang: str) -> None:
+    """The diagram's name on its y axis; values of 10 000 and more in thousands, «ε·10⁻³, рад/с²»
+    (the ГОСТ 2.319 way of a factor in the axis' name): «−40000» and the name ran past the figure's
+    left edge (the 17 mm margin holds four digits and a minus)."""
+    from matplotlib.ticker import FuncFormatter
+
+    if max(abs(axis.lo), abs(axis.hi)) < 9999.5:
+        ax.set_ylabel(ylabel)
+        return
+    head, _, unit = ylabel.partition(", ")
+    factor = r"$\cdot\mathrm{10}^{\mathrm{-3}}$"  # mathtext: Liberation Serif has no superscript minus
+    ax.set_ylabel(f"{head}{factor}, {unit}" if unit else head + factor)
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda x, pos: num(x / 1000.0, lang, minus="−", sig=6)))
 
 
 def _plan_frame(ax, xa, ya, lang: str, grid: float) -> None:
