@@ -367,7 +367,7 @@ def _mesh_figure(result, lang):
                   fontsize=10.5, y=1.0)
     zone = (f"ε_α = P1P2/p_b = {f(g.g_alpha_mm, decimals=1)}/{f(g.pb_mm, decimals=2)} = {f(g.eps_alpha, decimals=3)};  "
             f"φ_α1 = {f(g.phi_alpha1_deg, decimals=2)}°, φ_α2 = {f(g.phi_alpha2_deg, decimals=2)}°")
-    ax1.set_title(mt(tr(lang, "Mesh zone: ") + zone), fontsize=11, y=1.0)
+    ax1.set_title(pair_names(mt(tr(lang, "Mesh zone: ") + zone)), fontsize=11, y=1.0)
     for ax in (ax0, ax1):
         ax.set_xlabel(tr(lang, "mm"))
         ax.grid(alpha=0.15)
@@ -376,7 +376,7 @@ def _mesh_figure(result, lang):
         Line2D([], [], color="0.3", ls="--", label=mt(tr(lang, "base circle d_b"))),
         Line2D([], [], color="0.3", ls=":", label=mt(tr(lang, "tip circle d_a"))),
         Line2D([], [], color="0.3", ls="-.", label=mt(tr(lang, "root circle d_f"))),
-        Line2D([], [], color="k", lw=0.8, label=tr(lang, "line of action N1N2")),
+        Line2D([], [], color="k", lw=0.8, label=pair_names(tr(lang, "line of action N1N2"))),
         Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=pair_names(tr(lang, "double-pair zones P1U2, U1P2"))),
         Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=pair_names(trc(lang, "figure, short", "single-pair zone U2U1"))),
         Line2D([], [], color=C_SUN, lw=2.6, label=tr(lang, "active profiles")),
