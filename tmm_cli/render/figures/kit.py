@@ -442,20 +442,24 @@ def _set(t, props: dict) -> None:
             t.update({k: v})
 
 
-def place_free(ax, t, places, avoid_curves: bool = True, others=None, pts=None) -> int:
+def place_free(ax, t, places, avoid_curves: bool = True, others=None, pts=None, boxes=None) -> int:
     """Put the label `t` at the first of `places` where it stays inside its panel, overlaps no other
     label of the panel (or of `others`) and, with `avoid_curves`, covers no point of a curve; else at
     the place that does least of these, in this order (leaving the panel is worst, a curve under a
     label least bad). A place: a dict of Text properties (position, alignment,
-    offset …) set on `t`. Returns the index of the place taken."""
+    offset …) set on `t`. `pts` (the panel's :func:`curve_pixels`) and `boxes` ({label: its box}) may
+    be given when several labels are placed in turn. Returns the index of the place taken."""
     fig = ax.figure
     r = fig.canvas.get_renderer()
     frame = ax.get_window_extent(r)
     if avoid_curves and pts is None:
         pts = curve_pixels(ax)
-    rest = [o for o in (shown_labels(ax, r) if others is None else others) if o is not t]
-    boxes = [text_box(o, r) for o in rest]
     import numpy as np
+
+    rest = [o for o in (shown_labels(ax, r) if others is None else others) if o is not t]
+    if boxes is None:
+        boxes = {}
+    boxes = [boxes[o] if o in boxes else text_box(o, r) for o in rest]
 
     # a point's name nearer another named point than its own reads as that one's
     named = getattr(t, "xycoords", None) == "data"
@@ -507,9 +511,11 @@ def settle(fig) -> None:
         if not todo:
             continue
         pts = curve_pixels(ax)
+        shown = shown_labels(ax, r)
+        boxes = {o: text_box(o, r) for o in shown}
         for t in todo:
-            place_free(ax, t, t._tmm_places, pts=pts)
-    del r
+            place_free(ax, t, t._tmm_places, others=shown, pts=pts, boxes=boxes)
+            boxes[t] = text_box(t, r)
 
 
 def offset_places(directions, dist_pt: float = 6.0):
