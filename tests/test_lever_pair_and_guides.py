@@ -1,6 +1,6 @@
 """Issue 34 review: the pair of forces that replaces a turning slider's couple on Zhukovsky's lever
-stands at B and at a point B′ the note defines (what it is, its distance along the guide, the pair's
-force M/l with the substitution); sheet 2's lever draws b′ with its ray from p; the hatching of a
+stands at B and at a point Q the note defines (what it is, its distance along the guide, the pair's
+force M/l with the substitution); sheet 2's lever draws q with its ray from p; the hatching of a
 fixed guide (the shaper's ram guide) is on the side away from the rod B–C, in every position."""
 
 from __future__ import annotations
@@ -65,18 +65,18 @@ def test_every_point_of_the_levers_table_is_a_joint_or_defined_before_it(name):
     if name == "shaper":
         assert not strange  # every force stands at a joint or a centre of mass
         return
-    assert strange == {'$"B′"$'}
+    assert strange == {"$Q$"}  # the couple's second point: not a joint's letter (review C12: B′ named the PRP block)
     # defined: what it is, and its distance from B along the guide
-    m = re.search(r'точке \$"B′"\$ — точке ползуна 5 \(на линии его направляющей\) на расстоянии '
+    m = re.search(r'точке \$Q\$ — точке звена 5 \(на линии его направляющей\) на расстоянии '
                   r'\$l = "?([\d,]+)"?\$ м от \$B\$ вдоль направляющей', text)
     assert m, text[-900:]
     l_note = _number(m.group(1))
-    # independently, from the lever's own images: |b′ − b| = |ω5|·l (B′ is a point of the slider)
+    # independently, from the lever's own images: |q − b| = |ω5|·l (Q is a point of the slider)
     s = sheet2(name)
     i = s.force_position
     at = {f.point: complex(f.lever[i]) for f in s.lever.forces}
     w5 = float(s.sheet1.cycle.kin.omega["B"][i])
-    assert abs(at["B′"] - at["B"]) / abs(w5) == pytest.approx(l_note, rel=1e-3)
+    assert abs(at["Q"] - at["B"]) / abs(w5) == pytest.approx(l_note, rel=1e-3)
     # the pair's force M/l, with the substitution, right after the definition
     pair = next(b for b in before if isinstance(b, Formula) and "M_(Φ 5)/l" in b.math)
     nums = [_number(x) for x in re.findall(r'"([\d,\u202f]+)"', pair.math)]
@@ -88,10 +88,10 @@ def test_every_point_of_the_levers_table_is_a_joint_or_defined_before_it(name):
     assert nums[2] == pytest.approx(nums[0] / nums[1], rel=1e-3)
 
 
-# --- sheet 2: b′ on the lever --------------------------------------------------------------------------
+# --- sheet 2: q on the lever --------------------------------------------------------------------------
 
 
-def test_the_levers_points_include_b_prime_with_its_ray(tmp_path):
+def test_the_levers_points_include_q_with_its_ray(tmp_path):
     import ezdxf
 
     from tmm_cli.render.sheets.dynamics_sheet import _lever_points, sheet2 as build
@@ -101,23 +101,23 @@ def test_the_levers_points_include_b_prime_with_its_ray(tmp_path):
     kin = s.sheet1.cycle.kin
     plan = s.sheet1.plans[0].velocity
     pts = _lever_points(s)
-    assert "b′" in pts and "b" in pts
-    # b′ is the turned velocity of B′ = B + l·e (e along the slider's guide): v_B + i·ω·l·e
+    assert "q" in pts and "b" in pts
+    # q is the turned velocity of Q = B + l·e (e along the slider's guide): v_B + i·ω·l·e
     from tmm_cli.linkage.zhukovsky import pair_arm
 
     l = pair_arm(s.sheet1.mechanism)
     v = complex(kin.v["B"][i]) + 1j * float(kin.omega["B"][i]) * l * complex(np.exp(1j * kin.angle["B"][i]))
-    assert pts["b′"] == pytest.approx(1j * v / plan.scale, rel=1e-9)
+    assert pts["q"] == pytest.approx(1j * v / plan.scale, rel=1e-9)
     sh = build(s, "ru", TITLE)
     sh.doc.saveas(tmp_path / "s2.dxf")
     doc = ezdxf.readfile(tmp_path / "s2.dxf")
     texts = [e.dxf.text for e in doc.modelspace().query("TEXT")]
     mtexts = [e.text for e in doc.modelspace().query("MTEXT")]
-    assert "b'" in texts or "b′" in texts  # the sheet's font writes the prime as an apostrophe
-    # the ray p b′ (main line) with the same ratio to p b as on the plan
+    assert "q" in texts
+    # the ray p q (main line) with the same ratio to p b as on the plan
     lines = [(np.array([e.dxf.start[0], e.dxf.start[1]]), np.array([e.dxf.end[0], e.dxf.end[1]])) for e in doc.modelspace().query("LINE[layer=='Основные']")]
-    ratio = abs(pts["b′"]) / abs(pts["b"])
-    angle = math.degrees(math.atan2(pts["b′"].imag, pts["b′"].real))
+    ratio = abs(pts["q"]) / abs(pts["b"])
+    angle = math.degrees(math.atan2(pts["q"].imag, pts["q"].real))
     found = False
     for a, b in lines:
         d = b - a
@@ -126,7 +126,7 @@ def test_the_levers_points_include_b_prime_with_its_ray(tmp_path):
                 if np.allclose(c, a, atol=1e-6) and abs(np.hypot(*(e - c)) * ratio - np.hypot(*d)) < 0.05:
                     found = True
     assert found
-    # the pair's two arrows, at b and at b′, labelled M′Φ5 and M″Φ5
+    # the pair's two arrows, at b and at q, labelled M′Φ5 and M″Φ5
     assert {"M\\S^ Φ5;'", "M\\S^ Φ5;''"} <= set(mtexts)
 
 
