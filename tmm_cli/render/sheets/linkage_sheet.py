@@ -24,7 +24,7 @@ from ...i18n import tr
 from ...i18n.numbers import num
 from ...linkage.scales import SERIES
 from ...linkage.sheet1 import Sheet1
-from ...linkage.vector_plans import Plan
+from ...linkage.vector_plans import Plan, book_symbol
 from . import hatching
 from .cam_sheet import table
 from .layout import fit_view
@@ -410,7 +410,7 @@ def _plan_items(s: Sheet1, plan: Plan, i: int, lang: str) -> list[str]:
         if v.symbol in seen:
             continue
         seen.add(v.symbol)
-        vals.append(f"{_vec_symbol(v.symbol)} = {fixed(v.magnitude, top, lang)}")
+        vals.append(f"{_vec_symbol(book_symbol(s.mechanism, v.symbol))} = {fixed(v.magnitude, top, lang)}")
     unit = tr(lang, "m/s") if velocity else tr(lang, "m/s²")
     if vals:
         vals[-1] += f" {unit}"
