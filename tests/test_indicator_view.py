@@ -135,3 +135,31 @@ def test_english_and_no_gas_no_field():
     assert any("1 — away from the head" in t for t in all_texts(sh.doc))
     _, s2, sh = _sheet(_data("shaper"))
     assert s2.indicators == () and not any(k.startswith("indicator") for k in _fields(sh.doc))
+
+
+def test_the_notes_figure():
+    """Chapter 2's figure of the indicator diagrams: listed between the plans and the dynamics for a
+    file with gas loads (and not without), at its printed size, its lines the file's table [mm, MPa]."""
+    from types import SimpleNamespace
+
+    from tmm_cli.render.figures.note import note_figure, note_style
+    from tmm_cli.render.figures.note_scales import figure_size_cm
+    from tmm_cli.render.note import note_figures
+
+    d = _data("v_compressor")
+    m, s2, _ = _sheet(d)
+    r = SimpleNamespace(cam=None, gears=None, linkage=s2)
+    names = note_figures(r)
+    assert names.index("linkage_plans") < names.index("linkage_indicator") < names.index("linkage_dynamics")
+    _, plain, _ = _sheet(_data("shaper"))
+    assert "linkage_indicator" not in note_figures(SimpleNamespace(cam=None, gears=None, linkage=plain))
+    with note_style():
+        fig = note_figure(r, "ru", "linkage_indicator")
+        w, h = fig.get_size_inches()
+        assert (w * 2.54, h * 2.54) == pytest.approx(figure_size_cm("linkage_indicator", None, s2), abs=0.01)
+        H = 2000.0 * d["crank"]["length"]  # [mm]
+        for ax, ld in zip([a for a in fig.axes if a.get_ylabel().startswith("p")], d["load"]):
+            lines = [(ln.get_xdata(), ln.get_ydata()) for ln in ax.get_lines() if len(ln.get_xdata()) == len(ld["travel"])]
+            for row in ld["pressure"]:
+                assert any(np.allclose(np.sort(x), np.array(ld["travel"]) * H) and
+                           np.allclose(np.asarray(y)[np.argsort(x, kind="stable")], row) for x, y in lines)
