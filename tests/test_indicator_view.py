@@ -163,3 +163,36 @@ def test_the_notes_figure():
             for row in ld["pressure"]:
                 assert any(np.allclose(np.sort(x), np.array(ld["travel"]) * H) and
                            np.allclose(np.asarray(y)[np.argsort(x, kind="stable")], row) for x, y in lines)
+
+
+def test_a_four_stroke_diagram_draws_its_four_strokes():
+    """A two-turn cycle's diagram (4 rows: expansion, exhaust, intake, compression — what a
+    four-stroke engine's file gives) is drawn stroke by stroke, each named under the field; the
+    strokes away from the head run with s growing."""
+    import dataclasses
+
+    from tmm_cli.render.sheets import indicator_view
+    from tmm_cli.render.sheets.paper import Sheet
+
+    _, s2, _ = _sheet(_data("v_compressor"))
+    travel = (0.0, 0.1, 0.3, 0.6, 1.0)
+    rows = ((4.0, 2.5, 1.2, 0.6, 0.3), (0.3, 0.12, 0.1, 0.1, 0.1), (-0.02, -0.02, -0.02, -0.02, -0.02),
+            (-0.02, 0.05, 0.2, 0.6, 1.8))
+    ind = dataclasses.replace(s2.indicators[0], travel=travel, pressure=rows,
+                              strokes=("expansion", "exhaust", "intake", "compression"), mu_p=0.1)
+    sh = Sheet("ru")
+    sh.frame()
+    w, h = indicator_view.size(sh, ind, "ru")
+    indicator_view.draw(sh, ind, "ru", (40.0, 40.0, 40.0 + w, 40.0 + h))
+    sh.finish()
+    assert not sh.unplaced, sh.unplaced
+    texts = " | ".join(all_texts(sh.doc))
+    for k, word in enumerate(("расширение", "выпуск", "впуск", "сжатие"), start=1):
+        assert f"{k} — {word}" in texts
+    origin = _fields(sh.doc)["indicator_3"][1]
+    polys = [np.array(e.get_points("xy")) for e in sh.doc.modelspace().query("LWPOLYLINE")
+             if e.dxf.layer == "Основные" and len(e) == len(travel)]
+    for j, row in enumerate(rows):
+        hit = [p for p in polys if np.allclose((p[:, 1] - origin[1]) * 0.1, row if j % 2 == 0 else row[::-1])]
+        assert hit, j
+        assert (hit[0][-1, 0] > hit[0][0, 0]) == (j % 2 == 0)

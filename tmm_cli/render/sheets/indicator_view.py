@@ -17,8 +17,19 @@ import numpy as np
 from ...i18n import tr
 from ...i18n.numbers import num
 from ...linkage.scales import drafting_scale
-from .lever_parts import GAP, MM, NUMBERS_H, SCALE_H, caption, caption_height, field, head, position_numbers, \
-    wrap_items
+from .lever_parts import (
+    GAP,
+    MM,
+    NUMBERS_H,
+    SCALE_H,
+    caption,
+    caption_height,
+    field,
+    head,
+    position_numbers,
+    scale_line,
+    wrap_items,
+)
 from .paper import H_LABEL, H_MIN_LABEL
 
 LEFT = 20.0  # [mm] left of the p axis: its tick values
@@ -74,8 +85,6 @@ def draw(sh, ind, lang: str, box) -> None:
     the diagram's origin s = 0, p = 0, its scale 1 drawing mm per mm)."""
     f = field(sh, f"indicator_{ind.number}", box, heading(ind, lang))
     unit_p, unit_s = tr(lang, "MPa/mm"), tr(lang, "m/mm")
-    from .lever_parts import scale_line
-
     scale_line(sh, f, f"μ_{{s}} = {num(ind.mu_s, lang, sig=3)} {unit_s}; μ_{{p}} = {num(ind.mu_p, lang, sig=3)} {unit_p}")
     lines = wrap_items(sh, _items(ind, lang), box[2] - box[0] - 4.0)
     x0b, _, x1b, y1b = f.inner
