@@ -33,11 +33,13 @@ def blocked(sh: Sheet, a, b, within=None) -> bool:
     n = max(2, int(math.ceil(float(np.hypot(*(b - a))) / ob.STEP)) + 1)
     pts = a + np.outer(np.linspace(0.0, 1.0, n), b - a)
     iy, ix = ob._cells(pts)
-    for dy in (-1, 0, 1):  # the neighbouring cells too: two lines crossing at a cell's corner may
-        for dx in (-1, 0, 1):  # mark no common cell between their samples
-            if ob.lines[np.clip(iy + dy, 0, ob.ny - 1), np.clip(ix + dx, 0, ob.nx - 1)].any():
-                return True
-    return False
+    # the neighbouring cells too: two lines crossing at a cell's corner may mark no common cell
+    iy = np.clip((iy[:, None] + _DY).ravel(), 0, ob.ny - 1)
+    ix = np.clip((ix[:, None] + _DX).ravel(), 0, ob.nx - 1)
+    return bool(ob.lines[iy, ix].any())
+
+
+_DY, _DX = (a.ravel() for a in np.meshgrid((-1, 0, 1), (-1, 0, 1), indexing="ij"))
 
 
 def guide(sh: Sheet, a, b, normals, within) -> None:
@@ -149,14 +151,18 @@ def ground(sh: Sheet, q, within=None, layer="Основные") -> None:
         best = None
         for ang in angles:
             body, _ = _ground_parts(q, ang)
+            c, s_ = math.cos(ang + math.pi / 2), math.sin(ang + math.pi / 2)
             keep, last = [], -1e9
-            for x0 in np.arange(-4.5, 3.01, 0.25):
-                a, b = _ground_parts(q, ang, x0)[1][0]
+            for x0 in np.arange(-4.5, 3.01, 0.5):
+                a = (q[0] + c * (x0 + 1.5) + s_ * 5.0, q[1] + s_ * (x0 + 1.5) - c * 5.0)
+                b = (q[0] + c * x0 + s_ * 6.8, q[1] + s_ * x0 - c * 6.8)
                 if x0 - last >= 2.0 and not blocked(sh, a, b, within):
                     keep.append((a, b))
                     last = x0
             if best is None or len(keep) > len(best[1]):
                 best = (body, keep)
+            if len(keep) >= 4:  # as many as the base holds
+                break
         body, strokes = best
     sh.circle((float(q[0]), float(q[1])), 1.3, layer)
     for a, b in body:
