@@ -73,9 +73,10 @@ def stroke_names(rows: int) -> tuple[str, ...]:
     return STROKES[rows]
 
 
-def indicators(mech, gas: tuple[GasLoad, ...], cycle) -> tuple[Indicator, ...]:
-    """The indicator diagrams of the gas loads (sheet 1's `cycle` gives the positions marked on
-    them). One μ_s and one μ_p for all the pistons: their diagrams compare at a glance."""
+def indicators(mech, gas: tuple[GasLoad, ...], positions, kin) -> tuple[Indicator, ...]:
+    """The indicator diagrams of the gas loads, the `positions` (with `kin`, the kinematics at them:
+    the cycle's, a two-turn cycle's as turned) marked on them at the stroke :func:`.gas.state` says
+    acts. One μ_s and one μ_p for all the pistons: their diagrams compare at a glance."""
     if not gas:
         return ()
     pistons = [piston(gl, mech) for gl in gas]
@@ -83,18 +84,8 @@ def indicators(mech, gas: tuple[GasLoad, ...], cycle) -> tuple[Indicator, ...]:
     mu_p = drafting_scale(max(abs(v) for gl in gas for row in gl.pressure for v in row), INDICATOR_P_MM)
     out = []
     for gl, pst in zip(gas, pistons):
-        x, row, _ = state(gl, pst, mech, cycle.kin)
-        rows = len(gl.pressure)
-        turn = _turns(cycle, rows)
-        marks = tuple((p.label, int(row[k]) + 2 * int(turn[k]), float(x[k])) for k, p in enumerate(cycle.positions))
+        x, row, _ = state(gl, pst, mech, kin)
+        marks = tuple((p.label, int(r), float(xx)) for p, r, xx in zip(positions, row, x))
         out.append(Indicator(gl.link, mech.link(gl.link).number, gl.area, pst.stroke, tuple(gl.travel),
-                             tuple(tuple(r) for r in gl.pressure), stroke_names(rows), mu_s, mu_p, marks))
+                             tuple(tuple(r) for r in gl.pressure), stroke_names(len(gl.pressure)), mu_s, mu_p, marks))
     return tuple(out)
-
-
-def _turns(cycle, rows: int) -> np.ndarray:
-    """The crank's turn (0, 1) of each position within a cycle of rows/2 turns."""
-    travel = np.array([p.travel for p in cycle.positions], float)
-    if rows <= 2:
-        return np.zeros(len(travel), int)
-    return (np.floor(travel / (2.0 * np.pi) + 1e-12).astype(int) % (rows // 2))

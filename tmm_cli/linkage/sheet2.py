@@ -156,4 +156,5 @@ def analyse_sheet2(s1: Sheet1, inp: Sheet2Input, source: str = "mechanism") -> S
     fw = flywheel(dyn, inp.dynamics) if inp.dynamics is not None else None
     return Sheet2(s1, inp, stroke, ks, balancing_moment_by_power(kin, loading), lever(mech, loading, kin), i,
                   force_polygons(mech, ks, i), reduced_moment(kin, loading), reduced_inertia(kin, inp.masses, rotor),
-                  dyn, fw, dynamics_scales(dyn, fw), _notes(s1, inp, fw, dyn), indicators(mech, inp.gas, c))
+                  dyn, fw, dynamics_scales(dyn, fw), _notes(s1, inp, fw, dyn),
+                  indicators=indicators(mech, inp.gas, c.positions, kin))
