@@ -133,10 +133,10 @@ def test_the_levers_points_include_q_with_its_ray(tmp_path):
 # --- sheet 1: the guide's hatching away from the rod --------------------------------------------------
 
 
-def _segments(doc):
+def _segments(doc, layers=("Основные", "Тонкие")):
     out = []
     for e in doc.modelspace():
-        if e.dxf.layer not in ("Основные", "Тонкие"):
+        if e.dxf.layer not in layers:
             continue
         if e.dxftype() == "LINE":
             out.append((e.dxf.layer, [(e.dxf.start[0], e.dxf.start[1]), (e.dxf.end[0], e.dxf.end[1])]))
@@ -157,27 +157,58 @@ def _cross(p, q, r, s):
     return 1e-6 < t < 1 - 1e-6 and 1e-6 < u < 1 - 1e-6
 
 
-@pytest.mark.parametrize("name", ["shaper", "shaper_offset"])
-def test_the_ram_guides_hatching_crosses_no_line_of_sheet_1(name):
+def _examples() -> list[str]:
+    return [p.stem for p in sorted(EXAMPLES.glob("*.toml")) if "crank" in data(p.stem) and "frame" in data(p.stem)]
+
+
+def _turns_fully(m, kin, pivot: str) -> bool:
+    """Does a link pivoted at `pivot` turn through the whole circle over the cycle?"""
+    links = [ln.name for ln in m.links if ln.axis and pivot in ln.axis] + [m.link_between(m.crank.pivot, m.crank.joint).name
+                                                                            if pivot == m.crank.pivot else None]
+    return any(np.ptp(np.unwrap(np.asarray(kin.angle[x], float))) > 2 * math.pi - 0.1 for x in links if x in kin.angle)
+
+
+@pytest.mark.parametrize("name", _examples())
+def test_the_frames_hatching_crosses_no_line_of_sheet_1(name):
+    """No hatch stroke of a fixed guide or of a fixed pivot crosses any line of sheet 1 (the links of
+    every drawn position — main, thin, dashed —, the paths, the other symbols), read from the DXF;
+    every fixed guide keeps a hatched piece of 4 strokes at least, every fixed pivot 3 (the crank's 1)."""
     from tmm_cli.render.sheets.linkage_sheet import sheet1
 
     m = parse_mechanism(data(name), f"{name}.toml")
     sh = sheet1(analyse_mechanism(m, None, f"{name}.toml"), "ru", TITLE)
-    stroke = math.hypot(1.8, 1.4)  # lever_parts.hatched_guide's strokes
+    guide, pivot = math.hypot(1.8, 1.4), math.hypot(1.5, 1.8)  # hatching.STROKE, the pivot's strokes
 
-    def is_hatch(lay, p):
-        return lay == "Тонкие" and len(p) == 2 and abs(math.dist(*p) - stroke) < 0.05
+    def kind(lay, p):
+        if lay != "Тонкие" or len(p) != 2:
+            return None
+        d = math.dist(*p)
+        return "guide" if abs(d - guide) < 0.02 else "pivot" if abs(d - pivot) < 0.02 else None
 
-    segs = _segments(sh.doc)
-    hatch = [p for lay, p in segs if is_hatch(lay, p)]
-    assert len(hatch) > 20
-    # the rod B–C in every drawn position (and every other line) stays off the hatching
-    crossings = [(h, a, b) for h in hatch for lay, o in segs if not is_hatch(lay, o)
+    segs = _segments(sh.doc, ("Основные", "Тонкие", "Штриховые"))
+    hatch = [(kind(lay, p), p) for lay, p in segs if kind(lay, p)]
+    fixed = sum(1 for _, g in m.guided() if not g.moving)
+    assert sum(k == "guide" for k, _ in hatch) >= 4 * fixed
+    # each fixed pivot keeps its strokes near it: 3 of 5 at least; the pivot of a link that turns
+    # fully (the crank; Whitworth's slotted link), amid that link's positions, at least one
+    kin = analyse_mechanism(m, None, f"{name}.toml").cycle.curve.kin
+    head = next(e for e in sh.doc.modelspace() if e.has_xdata("TMM_FIELD")
+                and e.get_xdata("TMM_FIELD")[0].value == "scheme")
+    tags = [t.value for t in head.get_xdata("TMM_FIELD")]
+    origin, scale = np.array(tags[5:7]), tags[7]
+    for n, z in m.frame.items():
+        if not any(n in ln.pins or (ln.axis and n in ln.axis) for ln in m.links):
+            continue
+        q = origin + scale * 1000.0 * np.array([z.real, z.imag])
+        near = [p for k, p in hatch if k == "pivot" and math.dist(p[0], q) < 9.0]
+        assert len(near) >= (1 if _turns_fully(m, kin, n) else 3), (n, len(near))
+    crossings = [(k, h, a, b) for k, h in hatch for lay, o in segs if not kind(lay, o)
                  for a, b in zip(o[:-1], o[1:]) if _cross(h[0], h[1], a, b)]
     assert not crossings, crossings[:3]
+    if name not in ("shaper", "shaper_offset"):
+        return
     # and independently of the drawing: the rod's far end B is on one side of the guide in every
     # position (so a side free of it exists) — the hatching is on the other
-    kin = analyse_mechanism(m, None, f"{name}.toml").cycle.curve.kin
     e = dict(m.guided())["C"].unit
     side = ((kin.z["B"] - kin.z["C"]) * np.conj(e)).imag
     assert np.all(side > 0) or np.all(side < 0)
