@@ -84,6 +84,19 @@ def num(x, lang: str, decimals: int | None = None, sig: int = 4, sci: bool = Tru
     return (minus if x < 0 else "") + body
 
 
+def small_pct(x: float, lang: str, minus: str = "−") -> str:
+    """A difference in % to the digits it has (no «0,00 %» for 1,2·10⁻¹⁴ %): two decimals from
+    0,1 % up, else two significant digits; exactly 0 reads 0.
+
+    >>> small_pct(1.236e-14, "ru"), small_pct(-0.0042, "ru"), small_pct(0.4567, "ru"), small_pct(0.0, "ru")
+    ('1,2·10⁻¹⁴', '−0,0042', '0,46', '0')
+    """
+    x = float(x)
+    if x == 0.0:
+        return "0"
+    return num(x, lang, decimals=2, minus=minus) if abs(x) >= 0.1 else num(x, lang, sig=2, minus=minus)
+
+
 def _fixed(ax: float, decimals: int, lang: str, strip: bool) -> str:
     text = f"{ax:.{decimals}f}"
     if strip and "." in text:

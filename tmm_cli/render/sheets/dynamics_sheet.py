@@ -24,9 +24,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...i18n import tr
-from ...i18n.numbers import num
+from ...i18n.numbers import num, small_pct
 from ...linkage.scales import drafting_scale
 from ...linkage.sheet2 import Sheet2
+from ...linkage.zhukovsky import DECIMALS
 from .arrows import (
     LABEL_PAD,
     arrow,
@@ -368,19 +369,47 @@ def _lever_placed(s: Sheet2, k: float, lang: str = "en"):
             for (tail, tip), p, (_, _, lab, bal) in zip(placed, ps, items)]
 
 
-def _lever_items(s: Sheet2, lang: str) -> list[str]:
-    i = s.force_position
-    lv = s.lever
-    nm = tr(lang, "N·m")
-    return [tr(lang, "Σ M_{p}(F) = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)} " + tr(lang, "W"),
-            # ω_1 signed (counter-clockwise positive, as M_b): the substitution shows why M_b takes its sign
-            tr(lang, "M_{b} = ΣM_{p}/ω_{1} = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)}/"
-            + f"({num(s.sheet1.mechanism.crank.omega, lang, sig=5)}) = {num(float(lv.balancing[i]), lang, decimals=3)} {nm}",
-            tr(lang, "force analysis: ") + f"{num(float(s.balancing[i]), lang, decimals=3)} {nm}",
-            f"Δ = {num(float(s.difference_pct()[i]), lang, decimals=4)} %"]
+def lever_items(s: Sheet2, lang: str, drawn_mu: float | None = None) -> list[str]:
+    """The lever's table (:meth:`Sheet2.lever_table`, the note's too) as the caption's items: each
+    force's ±F·h [N·mm], ΣF·h, F_ур = |ΣF·h|/(pa), M_ур = F_ур·l_OA, the force analysis's M_ур and
+    the difference; the arms' scale when the drawing stands at another μ."""
+    t = s.lever_table()
+    d = DECIMALS
+    nm, nmm, n_ = tr(lang, "N·m"), tr(lang, "N·mm"), tr(lang, "N")
+    head = tr(lang, "moments about the pole p, ±F·h, N·mm (F, N; h, mm):")
+    if drawn_mu is not None and abs(drawn_mu - t.scale) > 1e-9 * t.scale:
+        head = tr(lang, "the arms h at μ_{{v}} = {mu} (m/s)/mm;").format(mu=num(t.scale, lang, sig=3)) + " " + head
+    out = [head]
+    for x in t.terms:
+        sign = "-" if x.sign < 0 else ""
+        out.append(f"{symbol(x.symbol, lang)}: {sign}{num(x.force, lang, decimals=d['force'])}·"
+                   f"{num(x.arm, lang, decimals=d['arm'])} = {num(x.moment, lang, decimals=d['moment'])}")
+    out.append(f"ΣF·h = {num(t.total, lang, decimals=d['moment'])} {nmm}")
+    fb, mb, mz = tr(lang, "F_{b}"), tr(lang, "M_{b}"), tr(lang, "M_{b}^{Zh}")
+    (tot, pa), res = _substituted([(abs(t.total), d["moment"]), (t.pa, d["pa"])], lambda a, b: a / b,
+                                  t.balancing_force, d["balancing_force"], lang)
+    out.append(f"{fb} = |ΣF·h|/(pa) = {tot}/{pa} = {res} {n_}")
+    (f_b, _), res = _substituted([(t.balancing_force, d["balancing_force"]), (t.crank, None)], lambda a, b: a * b,
+                                 t.balancing, d["balancing"], lang)
+    out.append(f"{mz} = {fb}·l_{{1}} = {f_b}·{num(t.crank, lang, sig=9)} = {res} {nm}")
+    out.append(tr(lang, "force analysis: ") + f"{mb} = {num(t.kinetostatic, lang, decimals=d['balancing'])} {nm}")
+    out.append(f"Δ = (|{mb}| − {mz})/|{mb}|·100 = {small_pct(t.difference_pct, lang, minus='-')} %")
+    return out
 
 
-LEVER_MM = 200.0  # the lever's drawing at most this large (a larger one only crowds its field)
+def _substituted(leaves, op, result: float, decimals: int, lang: str):
+    """The leaves of a substitution as printed (each (value, decimals), None: as given, to 9
+    significant digits) with as many more decimals as it takes for `op` of the printed leaves to
+    give the printed result to half a unit of its last digit (as the note's substitutions are
+    printed), and the result's text."""
+    shown = float(f"{result:.{decimals}f}")
+    texts = []
+    for extra in range(5):
+        texts = [num(x, lang, sig=9) if dec is None else num(x, lang, decimals=dec + extra) for x, dec in leaves]
+        vals = [float(x) if dec is None else round(x, dec + extra) for x, dec in leaves]
+        if abs(op(*vals) - shown) <= 0.5 * 10.0 ** -decimals * (1 + 1e-9):
+            break
+    return texts, num(result, lang, decimals=decimals)
 
 
 def _lever_arrows(s: Sheet2, k: float = 1.0):
@@ -411,10 +440,12 @@ def _lever_heading(s: Sheet2, lang: str) -> str:
 def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
     plan = s.sheet1.plans[0].velocity
     f = field(sh, "lever", box, _lever_heading(s, lang))
-    lines = wrap_items(sh, _lever_items(s, lang), box[2] - box[0] - 4.0)
+    lines = wrap_items(sh, lever_items(s, lang), box[2] - box[0] - 4.0)
     x0, _, x1, y1 = f.inner
     room = (x0, box[1] + caption_height(len(lines)), x1, y1 - SCALE_H)
     mu, fit = _lever_scale(s, room)
+    if abs(mu - s.lever_scale()) > 1e-9 * mu:  # drawn at another μ than the table's: the caption says so
+        lines = wrap_items(sh, lever_items(s, lang, mu), box[2] - box[0] - 4.0)
     k = fit.k
     sh.set_field_transform(f, fit.origin, k / plan.scale, "")
     scale_line(sh, f, f"μ_{{v}} = {num(mu, lang, sig=3)} " + tr(lang, "(m/s)/mm") +
@@ -605,13 +636,11 @@ def _series_mu() -> list[float]:
 
 
 def _lever_ks(s: Sheet2) -> list[tuple[float, float]]:
-    """(μ, drawing mm per plan mm) the lever may take, the largest drawing first: round μ from
-    μ_v/4 up to μ_v, at most LEVER_MM across (μ_v itself always)."""
+    """(μ, drawing mm per plan mm) the lever may take: the core's μ of its table
+    (:meth:`Sheet2.lever_scale`, the note's) first, then the smaller drawings up to μ_v."""
     mu_v = s.sheet1.plans[0].velocity.scale
-    lo, hi = _lever_extent(s)
-    size = float(max(hi[0] - lo[0], hi[1] - lo[1], 1e-9))
-    out = [(mu, mu_v / mu) for mu in _series_mu() if mu_v / 4.0 * (1 - 1e-9) <= mu <= mu_v * (1 + 1e-9)]
-    return [(mu, k) for mu, k in out if size * k <= LEVER_MM or k <= 1.0 + 1e-9]
+    mu0 = s.lever_scale()
+    return [(mu, mu_v / mu) for mu in _series_mu() if mu0 * (1 - 1e-9) <= mu <= mu_v * (1 + 1e-9)]
 
 
 def _lever_need(sh: Sheet, s: Sheet2, lang: str, k: float, width: float | None = None) -> tuple[float, float]:
@@ -621,7 +650,7 @@ def _lever_need(sh: Sheet, s: Sheet2, lang: str, k: float, width: float | None =
     ends += [v for _, v in _lever_arrows(s, k)]
     w = max(z.real for z in ends) - min(z.real for z in ends) + 2 * LABEL_PAD[0] + 4.0
     w = max(w, 150.0)
-    cap = caption_height(len(wrap_items(sh, _lever_items(s, lang), (width or w) - 4.0)))
+    cap = caption_height(len(wrap_items(sh, lever_items(s, lang), (width or w) - 4.0)))
     h = max(z.imag for z in ends) - min(z.imag for z in ends) + 2 * LABEL_PAD[1] + 4.0 + SCALE_H + cap \
         + head(sh, _lever_heading(s, lang), width or w)
     return w, h
