@@ -125,10 +125,10 @@ def lever_table(mech: Mechanism, kin: Kinematics, lv: Lever, i: int, mu: float, 
 
     >>> from types import SimpleNamespace as N
     >>> f = LeverForce("F", "B", np.array([2j]), np.array([-10 + 0j]), np.array([20.0]))
-    >>> lv = Lever((f,), np.array([0j]), np.array([-2.0]))
+    >>> lv = Lever((f,), np.array([-20j]), np.array([-2.0]))   # as lever() finds them
     >>> t = lever_table(N(crank=N(length=0.1)), N(omega1=10.0), lv, 0, 0.01, -2.0)
-    >>> t.terms[0].arm, t.terms[0].moment, t.pa, t.balancing_force, t.balancing, t.sense
-    (200.0, 2000.0, 100.0, 20.0, 2.0, -1)
+    >>> t.terms[0].arm, t.terms[0].moment, t.pa, t.total / t.pa, t.balancing_force, t.balancing, t.sense
+    (200.0, 2000.0, 100.0, 20.0, 20.0, 2.0, -1)
     """
     terms = []
     biggest = max((abs(complex(f.force[i])) for f in lv.forces), default=0.0)
@@ -143,10 +143,9 @@ def lever_table(mech: Mechanism, kin: Kinematics, lv: Lever, i: int, mu: float, 
     total = sum(t.moment for t in terms)
     l1 = mech.crank.length
     pa = abs(kin.omega1) * l1 / mu
-    fb = abs(total) / pa
-    mb = float(lv.balancing[i])
-    return LeverTable(i, mu, tuple(terms), total, pa, l1, fb, fb * l1, 1 if mb > 0 else -1 if mb < 0 else 0,
-                      float(kinetostatic))
+    mb = float(lv.balancing[i])  # the lever's own F_ур and M_ур (:func:`lever`): |ΣF·h|/(pa) and F_ур·l_OA
+    return LeverTable(i, mu, tuple(terms), total, pa, l1, abs(complex(lv.balancing_force[i])), abs(mb),
+                      1 if mb > 0 else -1 if mb < 0 else 0, float(kinetostatic))
 
 
 def lever_moment(v, f):
