@@ -464,7 +464,7 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
         if abs(z) * k > 0.3:
             sh.line(at(0j), at(z), "Основные")
     sh.dot(at(0j), 0.8)
-    draw_arrows(sh, origin, _lever_placed(s, k, lang), room)
+    draw_arrows(sh, origin, _lever_placed(s, k, lang), room, wide=True)  # a crowded drawing: room for a wider font
     named = set()
     centre = np.mean([at(z) for z in pts.values()], axis=0)
     for n in sorted(pts, key=lambda q: (q != plan.pole, q)):
@@ -479,7 +479,7 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
         text = ", ".join(sub(g) for g in group)
         d = q - centre
         sh.label(text, tuple(q), H_LABEL, within=room, dirs=dirs_from(d if np.hypot(*d) > 1e-9 else (0, 1)),
-                 dists=(1.2, 2.5, 4.0), priority=8)
+                 dists=(1.2, 2.5, 4.0), priority=8, wide=True)
     caption(sh, box, lines)
 
 
