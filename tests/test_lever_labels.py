@@ -139,3 +139,24 @@ def test_the_levers_labels_are_free(name, text, tmp_path):
             assert not hits.any(), f"{name}: {ti!r} is crossed by a line of the lever (room {room})"
             for cj, tj in texts[i + 1:]:
                 assert not _boxes_overlap(ci, cj), f"{name}: {ti!r} and {tj!r} overlap (room {room})"
+
+
+@pytest.mark.parametrize("name,text", MECHANISMS, ids=[n for n, _ in MECHANISMS])
+def test_the_lever_figures_names_do_not_overlap(name, text):
+    """linkage_lever.png: the names of the points and forces, as matplotlib sets them, overlap no
+    other name."""
+    from tmm_cli.render.figures.dynamics import lever_figure
+
+    m = parse_mechanism(tomllib.loads(text), name)
+    s = analyse_sheet2(analyse_mechanism(m), parse_sheet2(m, name))
+    fig = lever_figure(s, "ru")
+    fig.canvas.draw()
+    r = fig.canvas.get_renderer()
+    ax = fig.axes[0]
+    boxes = [(t.get_text(), t.get_window_extent(r)) for t in ax.texts if t.get_text()]
+    assert len(boxes) >= 4
+    for i, (ti, bi) in enumerate(boxes):
+        for tj, bj in boxes[i + 1:]:
+            w = min(bi.x1, bj.x1) - max(bi.x0, bj.x0)
+            h = min(bi.y1, bj.y1) - max(bi.y0, bj.y0)
+            assert w <= 0.5 or h <= 0.5, f"{name}: {ti!r} and {tj!r} overlap in the figure"
