@@ -114,6 +114,10 @@ def test_the_levers_labels_are_free(name, text, tmp_path):
     sh.doc.saveas(path)
     doc = ezdxf.readfile(path)
     box = field_boxes(doc)["lever"]
+    # drawn at the μ of the lever's table (the note's): the field's scale is 1/μ [mm per m/s]
+    tags = next([t.value for t in e.get_xdata("TMM_FIELD")] for e in doc.modelspace()
+                if e.has_xdata("TMM_FIELD") and e.get_xdata("TMM_FIELD")[0].value == "lever")
+    assert 1.0 / tags[7] == pytest.approx(s.lever_scale(), rel=1e-9)
 
     def inside(pts, tol=0.5):
         return (pts[:, 0].min() >= box[0] - tol and pts[:, 0].max() <= box[2] + tol

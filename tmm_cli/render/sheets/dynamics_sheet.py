@@ -717,6 +717,9 @@ def _left(sh: Sheet, s: Sheet2, lang: str, x0: float, x1: float, column: bool):
         lab, fac, _, widths = _group_scale(sh, s, lang, needs, lever[0] - GAP - x0, h_groups)
     else:
         _, h_lever_min = _lever_need(sh, s, lang, ks[-1][1], x1 - x0)
+        _, h_lever = _lever_need(sh, s, lang, ks[0][1], x1 - x0)  # at the table's μ, if the groups keep 120 mm
+        if (y1 - y0) - 2 * GAP - h_poly - h_lever >= 120.0:
+            h_lever_min = h_lever
         rest = (y1 - y0) - 2 * GAP - h_poly
         if rest - h_lever_min < 120.0:  # the polygons give way (drawn at a larger μ_F, said under them)
             h_poly = max(90.0, (y1 - y0) - 2 * GAP - 120.0 - h_lever_min)
