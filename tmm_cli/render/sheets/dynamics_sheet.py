@@ -61,7 +61,7 @@ from .lever_parts import (
     sub,
     wrap_items,
 )
-from .paper import FRAME, H_LABEL, TB_BOX, Sheet
+from .paper import FRAME, H_LABEL, ROOM, TB_BOX, Sheet
 from ..terminal.mechanism import pattern
 
 POLY_PAD = (10.0, 8.0, 10.0, 8.0)  # [mm] around a force polygon: its names
@@ -397,6 +397,24 @@ def lever_items(s: Sheet2, lang: str, drawn_mu: float | None = None) -> list[str
     return out
 
 
+def _lever_scale_text(lang: str, mu: float, turned: bool = True) -> str:
+    text = f"μ_{{v}} = {num(mu, lang, sig=3)} " + tr(lang, "(m/s)/mm")
+    return text + tr(lang, "; the plan turned 90° counter-clockwise") if turned else text
+
+
+def _turned_in_caption(sh: Sheet, lang: str, width: float) -> bool:
+    """Whether the scale line with «the plan turned 90°» would shrink below its 5 mm in a field
+    `width` wide: the remark then opens the caption instead."""
+    return sh.text_width(_lever_scale_text(lang, 0.0025), H_LABEL) * ROOM > width
+
+
+def _lever_caption(sh: Sheet, s: Sheet2, lang: str, width: float, drawn_mu: float | None = None) -> list[str]:
+    """The caption's items: the lever's table (:func:`lever_items`), opened by «the plan turned 90°»
+    where the scale line has no room for it."""
+    head = [tr(lang, "the plan turned 90° counter-clockwise")] if _turned_in_caption(sh, lang, width) else []
+    return head + lever_items(s, lang, drawn_mu)
+
+
 def _substituted(leaves, op, result: float, decimals: int, lang: str):
     """The leaves of a substitution as printed (each (value, decimals), None: as given, to 9
     significant digits) with as many more decimals as it takes for `op` of the printed leaves to
@@ -440,16 +458,16 @@ def _lever_heading(s: Sheet2, lang: str) -> str:
 def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
     plan = s.sheet1.plans[0].velocity
     f = field(sh, "lever", box, _lever_heading(s, lang))
-    lines = wrap_items(sh, lever_items(s, lang), box[2] - box[0] - 4.0)
+    width = box[2] - box[0] - 4.0
+    lines = wrap_items(sh, _lever_caption(sh, s, lang, width), width)
     x0, _, x1, y1 = f.inner
     room = (x0, box[1] + caption_height(len(lines)), x1, y1 - SCALE_H)
     mu, fit = _lever_scale(s, room)
     if abs(mu - s.lever_scale()) > 1e-9 * mu:  # drawn at another μ than the table's: the caption says so
-        lines = wrap_items(sh, lever_items(s, lang, mu), box[2] - box[0] - 4.0)
+        lines = wrap_items(sh, _lever_caption(sh, s, lang, width, mu), width)
     k = fit.k
     sh.set_field_transform(f, fit.origin, k / plan.scale, "")
-    scale_line(sh, f, f"μ_{{v}} = {num(mu, lang, sig=3)} " + tr(lang, "(m/s)/mm") +
-               tr(lang, "; the plan turned 90° counter-clockwise"))
+    scale_line(sh, f, _lever_scale_text(lang, mu, not _turned_in_caption(sh, lang, width)))
     origin = np.array(fit.origin)
     pts = _lever_points(s)
 
@@ -650,7 +668,7 @@ def _lever_need(sh: Sheet, s: Sheet2, lang: str, k: float, width: float | None =
     ends += [v for _, v in _lever_arrows(s, k)]
     w = max(z.real for z in ends) - min(z.real for z in ends) + 2 * LABEL_PAD[0] + 4.0
     w = max(w, 150.0)
-    cap = caption_height(len(wrap_items(sh, lever_items(s, lang), (width or w) - 4.0)))
+    cap = caption_height(len(wrap_items(sh, _lever_caption(sh, s, lang, (width or w) - 4.0), (width or w) - 4.0)))
     h = max(z.imag for z in ends) - min(z.imag for z in ends) + 2 * LABEL_PAD[1] + 4.0 + SCALE_H + cap \
         + head(sh, _lever_heading(s, lang), width or w)
     return w, h
