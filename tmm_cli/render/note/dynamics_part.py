@@ -534,8 +534,8 @@ def _lever(c: Ctx, s) -> None:
                      ("l_1", t("the length of the crank, m"))])
     mb = lt.kinetostatic
     diff = lt.difference_pct
-    c.p(t("Its difference from the moment of the force analysis, $M_\"ур\" = {mb}$ N·m:").format(
-        mb=c.q(mb, decimals=D["balancing"])))
+    c.p(t("Its difference from the moment of the force analysis, $M_\"ур\"$ = {mb}:").format(
+        mb=c.qty(mb, t("N·m"), decimals=D["balancing"])))
     c.formula('Δ = (abs(M_"ур") - M_"ур"^"Ж")/abs(M_"ур") dot 100 = ' + mq(small_pct(diff, c.lang)) + " " + c.u("%"))
     ok = abs(diff) < 1.0
     c.p((t("The two agree within 1 %, as required: both rest on the same exact velocity and acceleration plans, so "
