@@ -72,11 +72,11 @@ def both(request, tmp_path_factory):
                                    "--lang", "ru"])
     assert res.exit_code == 0, res.output
     data = json.loads((folder / "linkage" / "linkage.json").read_text(encoding="utf-8"))
-    return name, doc, lever_caption(path), data
+    return name, doc, lever_caption(path), data, res.output
 
 
 def test_the_same_terms_in_the_sheet_and_the_note(both):
-    name, doc, caption, _ = both
+    name, doc, caption, _, _ = both
     text = " ".join(caption)
     rows = next(b for b in doc.blocks if isinstance(b, Table) and b.name == "dyn_lever").rows
     terms = rows[:-1]
@@ -99,7 +99,7 @@ def test_the_same_terms_in_the_sheet_and_the_note(both):
 
 
 def test_the_same_balancing_force_and_moment(both):
-    name, doc, caption, data = both
+    name, doc, caption, data, _ = both
     text = " ".join(caption)
     f_b = note_math(doc, 'F_"ур" =')
     m_b = note_math(doc, 'M_"ур"^"Ж" =')
@@ -119,7 +119,7 @@ def test_the_same_balancing_force_and_moment(both):
 
 
 def test_the_difference_is_given_to_its_digits(both):
-    _, doc, caption, data = both
+    _, doc, caption, data, _ = both
     pos = next(p for p in data["positions"] if p["label"] == data["forces"]["position"])
     # (|M_ур| − |M_ур by the lever|)/|M_ур|: the JSON's signed difference (its moments are rounded to 12 digits)
     diff = pos["zhukovsky_difference_pct"] * (1 if pos["balancing_moment_Nm"] > 0 else -1)
@@ -133,3 +133,17 @@ def test_the_difference_is_given_to_its_digits(both):
         mant, _, exp = shown.partition("·10")
         x = value(mant) * 10.0 ** int(exp.translate(str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")) or "0")
         assert x == pytest.approx(diff, rel=0.05)
+
+
+def test_the_terminal_gives_the_same_table(both):
+    """`tmm linkage`'s table of the lever: the note's F, h and ±F·h in each row, and its F_ур."""
+    name, doc, _, _, output = both
+    rows = next(b for b in doc.blocks if isinstance(b, Table) and b.name == "dyn_lever").rows
+    lines = [norm(x) for x in output.splitlines()]
+    start = next(k for k, x in enumerate(lines) if x.startswith("Рычаг Жуковского"))
+    body = lines[start:start + len(rows) + 12]
+    for _sym, _pt, f, h, fh in rows[:-1]:
+        assert any(re.search(rf"│ +{re.escape(norm(f))} │ +{re.escape(norm(h))} │ +{re.escape(norm(fh))} │", x)
+                   for x in body), (name, f, h, fh)
+    f_b = note_math(doc, 'F_"ур" =').split(" = ")[-1].split(" thin")[0]
+    assert f"= {norm(f_b)} Н" in re.sub(r"\s+", " ", " ".join(body))  # the caption wraps at the terminal's width
