@@ -372,7 +372,7 @@ def lever_figure(s: Sheet2, lang: str):
     lines.append(tr(lang, "$M_b$") + " = " + tr(lang, "$F_b$") + r"$\cdot l_1$" +
                  f" = {num(lt.balancing, lang, decimals=d['balancing'])} {nm}")
     lines.append(tr(lang, "force analysis: ") + f"{num(lt.kinetostatic, lang, decimals=d['balancing'], minus='−')} {nm}; "
-                 f"Δ = {small_pct(lt.difference_pct, lang)} %")
+                 f"Δ {small_pct(lt.difference_pct, lang)} %")
     tx.text(0.0, 0.98, "\n".join(lines), transform=tx.transAxes, ha="left", va="top", fontsize=8.5, linespacing=1.5)
     mu_t = num(mu, lang, sig=3)
     title = tr(lang, "Zhukovsky's lever, position {label}: the velocity plan turned 90° counter-clockwise (μ_v = {mu_t} (m/s)/mm), forces at their points").format(label=label_tex(p.label), mu_t=mu_t)

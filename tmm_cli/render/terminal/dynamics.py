@@ -59,7 +59,7 @@ def reactions_table(s: Sheet2, lang: str):
         i = p.index
         row = [p.label] + [num(abs(complex(r.force[i])), lang, decimals=1) for r in ks.reactions]
         row += [num(float(s.balancing[i]), lang, decimals=3), num(float(s.lever.balancing[i]), lang, decimals=3),
-                small_pct(float(diff[i]), lang, minus="-")]
+                small_pct(float(diff[i]), lang, minus="-").removeprefix("= ")]
         t.add_row(*row, style="bold" if p.index == s.force_position else None)
     t.caption = tr(lang, "M_b: the motor's moment on the crank, counter-clockwise positive; Δ = (M_b − M_b,Zhuk.)/M_b")
     t.caption_justify = "left"
@@ -82,7 +82,7 @@ def lever_table(s: Sheet2, lang: str):
                   num(x.arm, lang, decimals=D["arm"]), num(x.moment, lang, decimals=D["moment"]))
     t.add_row("Σ", "", "", "", num(lt.total, lang, decimals=D["moment"]), style="bold")
     t.caption = tr(lang, "F_b = |ΣF·h|/(pa) = {total}/{pa} = {fb} N; M_b = F_b·l_1 = {mb} N·m; force analysis: {mk} N·m; "
-                         "Δ = {d} %").format(
+                         "Δ {d} %").format(
         total=num(abs(lt.total), lang, decimals=D["moment"]), pa=num(lt.pa, lang, decimals=D["pa"]),
         fb=num(lt.balancing_force, lang, decimals=D["balancing_force"]), mb=num(lt.balancing, lang, decimals=D["balancing"]),
         mk=num(lt.kinetostatic, lang, decimals=D["balancing"]), d=small_pct(lt.difference_pct, lang, minus="-"))
