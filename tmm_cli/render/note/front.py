@@ -201,12 +201,13 @@ def linkage_requirements(c: Ctx) -> list[tuple[str, bool]]:
     """Sheet 2's checks, each (text, met): the balancing moment by the two methods within 1 %; the
     speed with the flywheel within the allowed δ."""
     t = c.t
+    out = _sheet1_requirements(c)
     s2 = _sheet2(c)
     if s2 is None:
-        return []
+        return out
     i = s2.force_position
     diff = float(s2.difference_pct()[i])
-    out = [(t("the balancing moments by the force analysis and by Zhukovsky's lever agree within 1 % ({diff})").format(
+    out += [(t("the balancing moments by the force analysis and by Zhukovsky's lever agree within 1 % ({diff})").format(
         diff=c.pct_digits(abs(diff))), abs(diff) < 1.0)]
     fw = s2.flywheel
     if fw is not None:
@@ -215,6 +216,39 @@ def linkage_requirements(c: Ctx) -> list[tuple[str, bool]]:
                        "allowed {delta}") if ok else
                      t("with the flywheel the coefficient of speed fluctuation $δ$ = {actual} exceeds the allowed "
                        "{delta}")).format(actual=c.n(fw.delta_actual, sig=3), delta=c.n(fw.delta, sig=4)), ok))
+    return out
+
+
+def _sheet1_requirements(c: Ctx) -> list[tuple[str, bool]]:
+    """Sheet 1's checks, each (text, met): every group's largest pressure angle within the usual limit
+    of a lever mechanism (45°: the transmission angle at least 45°, Artobolevsky), and a working stroke
+    not faster than the return (K ≥ 1: the output moves slowly under the load and returns fast)."""
+    from ...linkage.positions import PRESSURE_WARN_DEG
+    from ..terminal.mechanism import pattern
+
+    t, n = c.t, c.n
+    s1 = _sheet1(c)
+    if s1 is None:
+        return []
+    m, cy = s1.mechanism, s1.cycle
+    out = []
+    for p in cy.pressure:
+        g = m.groups[p.group - 1]
+        if g.kind == "RPR" and not g.offset:  # the block acts at right angles to the slot: 0°
+            continue
+        worst = math.degrees(p.worst)
+        ok = worst <= PRESSURE_WARN_DEG
+        out.append(((t("the largest pressure angle of group {group} ({kind}), {angle}°, does not exceed the usual "
+                       "limit of a lever mechanism, {limit}°") if ok else
+                     t("the largest pressure angle of group {group} ({kind}), {angle}° at $φ$ = {phi}°, exceeds the "
+                       "usual limit of a lever mechanism, {limit}°: the group transmits motion poorly there")).format(
+            group=p.group, kind=pattern(g.kind, c.lang), angle=n(worst, decimals=2), limit=n(PRESSURE_WARN_DEG),
+            phi=n(round(math.degrees(p.phi), 1) % 360.0, decimals=1)), ok))
+    if cy.time_ratio is not None and m.gas_head is None:
+        ok = cy.time_ratio >= 1.0 - 1e-9
+        out.append(((t("the working stroke is not faster than the return stroke: $K$ = {K} ≥ 1") if ok else
+                     t("$K$ = {K} < 1: the working stroke is faster than the return stroke (the output moves "
+                       "faster under the load than without it)")).format(K=n(cy.time_ratio, decimals=3)), ok))
     return out
 
 
