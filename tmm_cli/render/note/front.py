@@ -150,7 +150,7 @@ def _abstract(c: Ctx) -> None:
                  "dimensions and the profile of the cam and the tooth numbers of the planetary reducer and of the "
                  "spur pair that satisfy the conditions of the textbook."))
     results = t("Results: the cam with the base radius $r_0$ = {r0}, {geo}; the planetary reducer {teeth} with {planets}; "
-                "the spur pair $z_1$ = {z1}, $z_2$ = {z2} (its mesh drawn at the course's module $m$ = {m}).").format(
+                "the spur pair $z_1$ = {z1}, $z_2$ = {z2} (its mesh drawn at the drawing's module $m$ = {m} that the textbook gives in §2.1.1).").format(
         r0=c.qty(z.r0_m * 1000, mm, decimals=2), geo=geo, teeth=_teeth_text(g), planets=c.planets(g.planetary.planets),
         z1=g.spur.z1, z2=g.spur.z2, m=c.qty(g.spur.m_mm, mm))
     text = [obj, aim]
@@ -393,7 +393,7 @@ def conclusion(c: Ctx) -> None:
     sp = g.spur
     rpm = t("rpm")
     c.p(t("The drive: a motor of {speed}, {scheme_words} {teeth} {with_planets} ($i$ = {ratio}), the spur pair "
-          "$z_1$ = {z1}, $z_2$ = {z2} (its mesh drawn at the course's module $m$ = {m}).").format(
+          "$z_1$ = {z1}, $z_2$ = {z2} (its mesh drawn at the drawing's module $m$ = {m} that the textbook gives in §2.1.1).").format(
         speed=c.qty(g.motor_rpm, rpm), scheme_words=scheme_words, teeth=_teeth_text(g),
         with_planets=c.nt("with {k} planet", "with {k} planets", d.planets).format(k=d.planets),
         ratio=n(d.ratio, decimals=4), z1=sp.z1, z2=sp.z2, m=c.qty(sp.m_mm, mm)))
