@@ -273,6 +273,12 @@ def _gas(c: Ctx, s) -> None:
           "nearest the head (the first row while the piston moves away from the head, the second while it comes back), "
           "$A$ the piston's area. It drives the crank where the piston moves away from the head and resists where it "
           "comes back."))
+    if c.has("linkage_indicator"):
+        c.p(t("The indicator diagrams of the tables below, each stroke with its number in the order of the cycle and the "
+              "force $P = p A$ on the right-hand axis, are shown in Figure {fig:linkage_indicator}; sheet 2 draws them "
+              "at the scales it states."))
+        c.fig("linkage_indicator", t("Indicator diagrams of the pistons: gauge pressure against the piston's travel from "
+                                     "the dead centre nearest the head"))
     for gl in gas:
         ln = mech.link(gl.link)
         sym = fsym(c, f"P{ln.number}")

@@ -17,7 +17,7 @@ import re
 from ...i18n import N_
 from ...linkage.positions import PRESSURE_WARN_DEG, displacement, output_coordinate
 from ...linkage.scales import PLAN_MM, SCHEME_MM
-from ...linkage.vector_plans import DEGENERATE_MM, degeneracy, middle_of_working, plans as plans_of
+from ...linkage.vector_plans import DEGENERATE_MM, book_symbols, degeneracy, middle_of_working, plans as plans_of
 from ...linkage.roles import link_roles
 from ..terminal.mechanism import ROLE_WORDS, pattern
 from .ctx import Ctx, V, sheet1_of
@@ -101,10 +101,17 @@ class _Sym:
             for gd in ((g.guide,) if g.guide is not None else ()) + g.guides:
                 if gd.moving and point is not None:
                     names.append(f"{point}{mech.link(gd.link).number}")
+        self.book = book_symbols(mech)  # 'v_BB3' → 'v_B5B3': both points with their links' numbers
+        for core, book in self.book.items():
+            a, b = core.partition("_")[2], book.partition("_")[2]
+            k = 0
+            while k < min(len(a), len(b)) and a[-1 - k] == b[-1 - k]:
+                k += 1
+            names.append(b[:len(b) - k])  # 'B5': the point of the sliding link
         self.names = names
 
     def parts(self, symbol: str) -> tuple[str, str, list[str]]:
-        head, _, pts = symbol.partition("_")
+        head, _, pts = self.book.get(symbol, symbol).partition("_")
         base, _, sup = head.partition("^")
         return base, sup, _split_points(pts, self.names)
 
