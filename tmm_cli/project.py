@@ -65,7 +65,7 @@ def run_project(
     if linkage is not None:
         torque_nm, crank_rpm = linkage.motor_input()
         notes = (Note.make("project_mechanism_motor", "assumption", torque=torque_nm, rpm=crank_rpm,
-                           file=linkage_name),)
+                           file=linkage_name),) + linkage_warnings(linkage)
 
     gears = design_gears(
         variant.n_cam_rpm,
@@ -81,6 +81,13 @@ def run_project(
     )
     cam = design_cam(variant, step_deg=step_deg, choice=cam_choice)
     return ProjectResult(variant=variant, gears=gears, cam=cam, linkage=linkage, linkage_notes=notes)
+
+
+def linkage_warnings(s2) -> tuple[Note, ...]:
+    """The warnings of sheets 1 and 2 (a pressure angle above the usual limit, K < 1, a negative driving
+    moment …): a poor design is said in the project's terminal and results.json as well, not only in
+    linkage.json (their assumptions stay there)."""
+    return tuple(n for n in tuple(s2.sheet1.cycle.notes) + tuple(s2.notes) if n.level == "warning")
 
 
 def analyse_linkage(tables: dict, source: str = "mechanism"):
