@@ -199,7 +199,7 @@ def _kind(c: Ctx, f, s) -> str:
         pst = piston(gl, mech)
         _, row, _ = state(gl, pst, mech, kin)
         p = c.zero(float(gas_pressure(gl, pst, mech, kin)[0]) * gl.area, "N")  # the force away from the head
-        drives = p * (1.0 if int(row[0]) % 2 == 0 else -1.0)  # rows 0, 2 away from the head: it drives where it pushes (at a dead
+        drives = p * (1.0 if int(row[0]) % 2 == 0 else -1.0)  # rows 0, 2: away from the head, it drives (at a dead
         if drives > 0:                                     # centre: on the stroke that begins there)
             return c.t("driving force (gas pressure)")
         if drives < 0:
