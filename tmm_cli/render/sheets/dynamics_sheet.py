@@ -210,17 +210,19 @@ def _draw_group(sh: Sheet, f, s: Sheet2, group: int, i: int, lang: str, within) 
         else:
             sh.circle(q, 1.1, "Основные")
     centre = np.mean(list(pts.values()), axis=0)
-    draw_arrows(sh, f.origin, _group_arrows(s, group, i, f.scale, lang), within)
+    # a crowded drawing: every name with room for a CAD program's wider font (as the lever's)
+    draw_arrows(sh, f.origin, _group_arrows(s, group, i, f.scale, lang), within, wide=True)
     for z, mom, label in _couples_on(s, group, i, lang):
         c = np.array(f.p(z.real, z.imag))
         mid, out = rotation_arrow(sh, c, 6.5, 1 if mom > 0 else -1, 45.0, "Основные")
-        sh.label(label, tuple(mid), H_LABEL, within=within, dirs=dirs_from(out, 5), dists=(1.0, 2.5, 4.0), priority=6)
+        sh.label(label, tuple(mid), H_LABEL, within=within, dirs=dirs_from(out, 5), dists=(1.0, 2.5, 4.0), priority=6,
+                 wide=True)
     named = {n for n in pts}
     for n, q in pts.items():
         d = q - centre
         d = d / (np.hypot(*d) or 1.0)
         sh.label(sub(n), tuple(q), H_LABEL, within=within, dirs=dirs_from(-d if group else d), dists=(1.2, 2.5, 4.0),
-                 priority=8)
+                 priority=8, wide=True)
     for f_ in s.loading.forces:
         if f_.point in named or f_.number not in {ln.number for ln in _group_links(s, group)}:
             continue
@@ -228,7 +230,7 @@ def _draw_group(sh: Sheet, f, s: Sheet2, group: int, i: int, lang: str, within) 
         q = np.array(f.p(complex(f_.z[i]).real * MM, complex(f_.z[i]).imag * MM))
         sh.dot(q, 0.6)
         sh.label(sub(f_.point), tuple(q), H_LABEL, within=within, dirs=("sw", "se", "nw", "ne", "w", "e"),
-                 dists=(1.2, 2.5, 4.0), priority=7)
+                 dists=(1.2, 2.5, 4.0), priority=7, wide=True)
 
 
 def _polygon_tips(pg) -> np.ndarray:
@@ -306,7 +308,7 @@ def _polygon_field(sh: Sheet, s: Sheet2, pg, box, lang: str) -> None:
         if n >= SHORT_MM:
             side = np.array([-d[1], d[0]]) / n
             sh.label(symbol(v.symbol, lang), tuple((a + b) / 2), H_LABEL, within=room, dirs=dirs_from(side, 4) +
-                     dirs_from(-side, 4), dists=(0.8, 2.0, 3.5), priority=6)
+                     dirs_from(-side, 4), dists=(0.8, 2.0, 3.5), priority=6, wide=True)
     if note:
         lines = wrap_items(sh, _polygon_items(pg, lang) + [note], box[2] - box[0] - 4.0)
     caption(sh, box, lines)
