@@ -113,6 +113,42 @@ def nice_scale(value: float, up: bool = True) -> float:
     return float(max(c for c in cands if c <= value * (1 + 1e-12)))
 
 
+def largest_empty_square(frame, boxes, give_up: float = math.inf) -> float:
+    """[mm] The side of the largest square inside `frame` (x0, y0, x1, y1) that overlaps none of
+    `boxes`: how much of a sheet is left unused in one place (a layout keeps it small). Stops as
+    soon as a square of `give_up` is found (a search for the smallest need not look further).
+
+    >>> largest_empty_square((0, 0, 100, 50), [(0, 0, 30, 50)])
+    50.0
+    >>> largest_empty_square((0, 0, 100, 100), [(40, 40, 60, 60)])
+    40.0
+    """
+    x0, y0, x1, y1 = frame
+    bs = [(max(b[0], x0), max(b[1], y0), min(b[2], x1), min(b[3], y1)) for b in boxes]
+    bs = sorted((b for b in bs if b[2] > b[0] and b[3] > b[1]), key=lambda b: b[1])
+    xs = sorted({x0, x1, *(b[0] for b in bs), *(b[2] for b in bs)})
+    best = 0.0
+    for i, xa in enumerate(xs):  # every strip between two box edges: its longest free run of y
+        for xb in reversed(xs[i + 1:]):  # widest first: a narrower strip cannot do better than its width
+            if xb - xa <= best:
+                break
+            y = y0
+            run = 0.0
+            for b in bs:
+                if b[0] < xb and b[2] > xa:
+                    if b[1] - y > run:
+                        run = b[1] - y
+                    if b[3] > y:
+                        y = b[3]
+            if y1 - y > run:
+                run = y1 - y
+            if min(xb - xa, run) > best:
+                best = min(xb - xa, run)
+                if best >= give_up:
+                    return float(best)
+    return float(best)
+
+
 # ----------------------------------------------------------------------------------------------
 # text boxes and readability
 
