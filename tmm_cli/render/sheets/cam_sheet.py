@@ -955,16 +955,72 @@ def _profile_field(sh: Sheet, r, lang: str, box):
         scale = d.scale if lang == "ru" else d.scale.replace(",", ".")
         txt.append(tr(lang, "({scale}: beyond Table 1.1, the cam is too large for 1:10)").format(scale=scale))
     # under the profile it describes (not at the foot of the field): the drawing's lowest point
-    from ezdxf import bbox as _bbox
-
-    ext = _bbox.extents(list(sh.msp)[n_before:], fast=False)
+    ext = _extents_lxb(list(sh.msp)[n_before:])
     y_cap = box[1] + 2.5
     xa, xb = box[0], box[2]
-    if ext.has_data:
-        y_cap = max(y_cap, ext.extmin.y - 3.0 - H_NOTE - LINE * (len(txt) - 1))
-        xa, xb = max(box[0], ext.extmin.x - 2.0), min(box[2], max(ext.extmax.x, ext.extmin.x + 200.0) + 2.0)
+    if ext is not None:
+        y_cap = max(y_cap, ext[1] - 3.0 - H_NOTE - LINE * (len(txt) - 1))
+        xa, xb = max(box[0], ext[0] - 2.0), min(box[2], max(ext[2], ext[0] + 200.0) + 2.0)
     sh.caption(xa, xb, y_cap, txt, H_NOTE, LINE)
     return f
+
+
+def _extents_lxb(entities):
+    """(x_min, y_min, x_max) of ezdxf's exact bounding box of `entities` (``bbox.extents(…,
+    fast=False)``; None when empty), asking ezdxf only about the entities that can reach an extreme:
+    each entity's box is bounded from outside (its points grown by its width and 0.05 mm for the
+    flattening of a curve) and from inside (points the exact box surely holds: ends and vertices);
+    an entity whose outer bound cannot reach past the best inner bound of all cannot hold the
+    extreme. The same numbers as the whole call, at a fraction of its time (it flattens every
+    curve and traces every wide polyline)."""
+    from ezdxf import bbox as _bbox
+
+    tol = 0.05
+    rows = []  # (entity, outer (x0, y0, x1, y1) or None: always asked, inner (x0, y0, x1, y1))
+    for e in entities:
+        kind = e.dxftype()
+        outer = inner = None
+        ext = e.dxf.get("extrusion", (0.0, 0.0, 1.0))
+        if abs(ext[0]) < 1e-12 and abs(ext[1]) < 1e-12 and ext[2] > 0:
+            if kind == "LINE":
+                a, b = e.dxf.start, e.dxf.end
+                inner = (min(a.x, b.x), min(a.y, b.y), max(a.x, b.x), max(a.y, b.y))
+                outer = (inner[0] - tol, inner[1] - tol, inner[2] + tol, inner[3] + tol)
+            elif kind == "LWPOLYLINE" and len(e) > 0:
+                pts = np.asarray(e.get_points("xyseb"), float)
+                grow = max(float(np.abs(pts[:, 2:4]).max()), abs(e.dxf.get("const_width", 0.0))) / 2 + tol
+                if np.any(pts[:, 4] != 0.0):  # an arc segment bulges by at most half its chord
+                    grow += float(np.hypot(*np.diff(np.vstack([pts[:, :2], pts[:1, :2]]), axis=0).T).max()) / 2
+                lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
+                inner = (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
+                outer = (inner[0] - grow, inner[1] - grow, inner[2] + grow, inner[3] + grow)
+            elif kind in ("CIRCLE", "ARC"):
+                c, rad = e.dxf.center, e.dxf.radius
+                outer = (c.x - rad - tol, c.y - rad - tol, c.x + rad + tol, c.y + rad + tol)
+                if kind == "ARC":
+                    a, b = e.start_point, e.end_point
+                    inner = (min(a.x, b.x), min(a.y, b.y), max(a.x, b.x), max(a.y, b.y))
+            elif kind == "SOLID":
+                v = [e.dxf.get(f"vtx{i}") for i in range(4)]
+                v = [q for q in v if q is not None]
+                inner = (min(q.x for q in v), min(q.y for q in v), max(q.x for q in v), max(q.y for q in v))
+                outer = (inner[0] - tol, inner[1] - tol, inner[2] + tol, inner[3] + tol)
+        rows.append((e, outer, inner))
+    if not rows:
+        return None
+    inners = [i for _, _, i in rows if i is not None]
+    if inners:
+        bx0 = min(i[0] for i in inners)  # the exact box reaches at least this far
+        by0 = min(i[1] for i in inners)
+        bx1 = max(i[2] for i in inners)
+    else:
+        bx0 = by0 = math.inf
+        bx1 = -math.inf
+    ask = [e for e, o, _ in rows if o is None or o[0] <= bx0 or o[1] <= by0 or o[2] >= bx1]
+    got = _bbox.extents(ask, fast=False)
+    if not got.has_data:
+        return None
+    return (got.extmin.x, got.extmin.y, got.extmax.x)
 
 
 def _dirs(v) -> tuple[str, ...]:
