@@ -206,10 +206,13 @@ def layout(r) -> Layout3:
     ext = (float(hi[0] - lo[0]), float(hi[1] - lo[1]))
     scales = [g for _, g in GOST_SCALES]
     cands = []  # (scale, caption beside, profile, table)
+    best_i = -1  # the largest scale found so far: a place need only be tried at it and above
     for prof, tab in _fixed_places(r, right):
         taken = [_grown(b) for b in (motion, pressure, TB_BOX, prof, tab)]
         for side in (False, True):
-            lo_i, hi_i = -1, len(scales) - 1  # the largest scale with a free place: a bisection
+            if best_i >= 0 and not len(_free_places(*_zone_need(ext, scales[best_i], side), right, taken)):
+                continue  # not even the scale found: this place cannot do better
+            lo_i, hi_i = best_i, len(scales) - 1  # the largest scale with a free place: a bisection
             while lo_i < hi_i:
                 mid = (lo_i + hi_i + 1) // 2
                 if len(_free_places(*_zone_need(ext, scales[mid], side), right, taken)):
@@ -217,6 +220,7 @@ def layout(r) -> Layout3:
                 else:
                     hi_i = mid - 1
             if lo_i >= 0:
+                best_i = lo_i
                 cands.append((scales[lo_i], side, prof, tab, taken))
     if not cands:  # a zone too large even at 1:100: the room left of the profile, the drawing cut there
         prof, tab = _fixed_places(r, right)[0]
