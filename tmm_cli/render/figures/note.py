@@ -550,11 +550,66 @@ def _dynamics(s2, lang: str):
     return fig
 
 
+def _indicator(s2, lang: str):
+    """Each piston's indicator diagram (issue 34): p against s from the dead centre nearest the head,
+    a line a stroke with its arrow and number, the force F = p·A on the right-hand axis, sheet 1's
+    positions as points; the numbers of `Sheet2.indicators` (the sheet's), at round scales of its
+    own (the axes carry the units)."""
+    from .kit import mt
+
+    inds = s2.indicators
+    size = S.indicator_size(len(inds))
+    fig = _new(size)
+    left, width = S.INDICATOR["x"]
+    ph, gap, bottom = S.INDICATOR["panel"], S.INDICATOR["gap"], S.INDICATOR["bottom"]
+    mm, mpa = tr(lang, "mm"), tr(lang, "MPa")
+    colours = (C_RISE, C_RET, C_ZONE, C_BOOK)
+    for k, ind in enumerate(inds):
+        box = S.Box(left, bottom + (len(inds) - 1 - k) * (ph + gap), width, ph)
+        ax = _axes(fig, box, size)
+        H = ind.stroke * 1000.0
+        p_all = [v for row in ind.pressure for v in row]
+        sx = S.fit_axis(0.0, H, width, pad=0.03)
+        sy = S.fit_axis(min(p_all), max(p_all), ph)
+        _limits(ax, sx, sy)
+        for j, st in enumerate(ind.strokes):
+            s = np.asarray(ind.travel) * H
+            p = np.asarray(ind.pressure[j])
+            if not (st in ("away", "expansion", "intake")):
+                s, p = s[::-1], p[::-1]
+            words = {"away": tr(lang, "away from the head"), "back": tr(lang, "towards the head"),
+                     "expansion": tr(lang, "expansion"), "exhaust": tr(lang, "exhaust"), "intake": tr(lang, "intake"),
+                     "compression": tr(lang, "compression")}[st]
+            col = colours[j % len(colours)]
+            ax.plot(s, p, color=col, lw=1.3, label=f"{j + 1} — {words}")
+            m = len(s) // 2
+            a, b = (s[m - 1], p[m - 1]), (s[m], p[m])
+            ax.annotate("", xy=((a[0] + b[0]) / 2 + (b[0] - a[0]) * 0.2, (a[1] + b[1]) / 2 + (b[1] - a[1]) * 0.2),
+                        xytext=((a[0] + b[0]) / 2, (a[1] + b[1]) / 2),
+                        arrowprops=dict(arrowstyle="-|>", color=col, lw=1.2, mutation_scale=12))
+        for label, row, x in ind.marks:
+            if label.isdigit():
+                y = ind.pressure_at(row, x)
+                ax.plot(x * H, y, "o", ms=2.5, color="k", zorder=5)
+        ax.axhline(0.0, color="k", lw=0.5)
+        ax.set_xlabel(mt(f"s, {mm}"))
+        ax.set_ylabel(mt(f"p, {mpa}"))
+        twin = ax.twinx()
+        f = ind.area * 1.0e6
+        twin.set_ylim(sy.lo * f, sy.hi * f)
+        twin.set_ylabel(mt("F = pA, " + tr(lang, "N")))
+        ax.grid(alpha=0.3, lw=0.4)
+        ax.legend(loc="upper right", fontsize=MIN_PT, frameon=True, framealpha=0.9, edgecolor="0.6")
+        _mu(ax, tr(lang, "piston {n}; A = {a} m²; H = {h} mm").format(n=ind.number, a=_n(ind.area, lang, sig=4),
+                                                                      h=_n(H, lang, sig=4)), "upper left")
+    return fig
+
+
 MAKERS = {"cam_motion": ("cam", _motion), "cam_zone": ("cam", _zone), "cam_profile": ("cam", _profile),
           "cam_pressure_angle": ("cam", _pressure), "gears_planetary": ("gears", _planetary),
           "gears_assembly": ("gears", _assembly), "gears_mesh": ("gears", _mesh),
           "linkage_plans": ("linkage", lambda s2, lang: _linkage_plans(s2.sheet1, lang)),
-          "linkage_dynamics": ("linkage", _dynamics),
+          "linkage_dynamics": ("linkage", _dynamics), "linkage_indicator": ("linkage", _indicator),
           "linkage_synthesis": ("linkage", lambda s2, lang: _synthesis(s2.sheet1, lang))}
 
 

@@ -341,6 +341,15 @@ def assembly_scale(gears) -> float:
     return nice(2 * lim / assembly_side(gears))
 
 
+INDICATOR = {"x": (17.0, 124.0), "panel": 50.0, "gap": 16.0, "bottom": 14.0, "top": 4.0}
+
+
+def indicator_size(count: int) -> tuple[float, float]:
+    """The note's indicator diagrams, one panel a piston one over the other [mm]."""
+    i = INDICATOR
+    return TEXT_WIDTH_MM, i["bottom"] + count * i["panel"] + (count - 1) * i["gap"] + i["top"]
+
+
 def figure_size_cm(name: str, gears=None, linkage=None) -> tuple[float, float]:
     """Width and height of a note figure as printed [cm] (`linkage`: the result's sheets 1-2, for
     its figures)."""
@@ -350,6 +359,9 @@ def figure_size_cm(name: str, gears=None, linkage=None) -> tuple[float, float]:
     sizes = {"cam_motion": MOTION["size"], "cam_pressure_angle": PRESSURE["size"], "cam_zone": PLAN["size"],
              "cam_profile": PLAN["size"], "gears_mesh": MESH["size"], "gears_planetary": PLANETARY["size"],
              "linkage_dynamics": DYNAMICS["size"], "linkage_synthesis": SYNTHESIS["size"]}
+    if name == "linkage_indicator":
+        w, h = indicator_size(len(linkage.indicators))
+        return w / 10, h / 10
     if name == "gears_assembly":
         n = len(gears.planetary.stages)
         side = assembly_side(gears)
