@@ -279,12 +279,16 @@ def two_loads(draw):
     moments = draw(st.lists(st.floats(0.0, 80.0), min_size=3, max_size=3))
     assume(max(forces) > 10.0 and max(moments) > 1.0)
     pivot = [d * math.cos(math.radians(alpha)), d * math.sin(math.radians(alpha))]
+    crank = {"pivot": "O", "joint": "A", "length": r, "rpm": draw(st.sampled_from([60, 100, 150])),
+             "sense": draw(st.sampled_from(["ccw", "cw"]))}
+    start = draw(st.one_of(st.none(), st.floats(0.0, 359.9)))  # position 0 anywhere: the loads do not care
+    if start is not None:
+        crank["start_deg"] = start
     return {
         "gravity": draw(st.booleans()),
         "output": "B",
         "frame": {"O": [0.0, 0.0], "D": pivot},
-        "crank": {"pivot": "O", "joint": "A", "length": r, "rpm": draw(st.sampled_from([60, 100, 150])),
-                  "sense": draw(st.sampled_from(["ccw", "cw"]))},
+        "crank": crank,
         "group": [{"kind": "RRP", "joints": ["A", "B"], "length": draw(st.floats(0.2, 0.35)),
                    "guide": {"through": [0.0, e], "angle_deg": guide}, "branch": "ahead"},
                   {"kind": "RRR", "joints": ["A", "C", "D"], "lengths": [l_c, c],
@@ -335,6 +339,7 @@ HOSTILE = [
     (_hostile(lambda d: d.update(output=["A", "C"])), "'output' is AC, which none of the table loads is on"),
     (_hostile(lambda d: d["load"][1].update(on=["O", "A"])), "'load[2].on': no moving link joins O and A (the crank takes no load)"),
     (_hostile(lambda d: d["load"][1].update(working="up")), "'load[2].working' is 'up'; choose one of away, towards"),
+    (_hostile(lambda d: d["load"][0].update(working="up")), "'load[1].working' is 'up'; choose one of away, towards"),
     (_hostile(lambda d: d["load"][1].update(moment=[0.0, 1.0])), "'load[2].moment' has 2 values but 'load[2].stroke' has 3"),
     (_hostile(lambda d: d["load"][1].update(direction_deg=10.0)), "'load[2].direction_deg' gives a force its own direction"),
     (_hostile(lambda d: d["load"].__setitem__(1, {"working": "away"})), "'load[2]' gives no load (only 'working')"),

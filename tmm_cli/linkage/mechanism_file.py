@@ -442,12 +442,15 @@ def _on_output(on, links, output: Output) -> bool:
 
 def _working(r: _Reader, extra: dict, links=(), output: Output | None = None) -> str | None:
     load = extra.get("load")
+    key = "load.working"
     if isinstance(load, list):  # [[load]]: the table load's on the output (else the first's; gas loads have both
-        tables = [x for x in load if isinstance(x, dict) and "head" not in x]  # strokes)
-        load = next((x for x in tables if output is not None and _on_output(x.get("on"), links, output)),
-                    tables[0] if tables else None)
+        tables = [(i, x) for i, x in enumerate(load, start=1) if isinstance(x, dict) and "head" not in x]  # strokes)
+        i, load = next(((i, x) for i, x in tables if output is not None and _on_output(x.get("on"), links, output)),
+                       tables[0] if tables else (0, None))
+        if len(tables) > 1:
+            key = f"load[{i}].working"
     if isinstance(load, dict) and "working" in load:
-        return r.choice(load["working"], "load.working", ("away", "towards"), 'working = "away"')
+        return r.choice(load["working"], key, ("away", "towards"), 'working = "away"')
     return None
 
 

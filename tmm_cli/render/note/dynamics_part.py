@@ -781,13 +781,13 @@ def _several_works(c: Ctx, s) -> None:
         along = _along(ld, st)
         work = along * st.length * area
         if ld.kind == "moment":
-            lines.append(c.calc(f'A_("с" {k}) = -ψ_{k} S_(M {k})', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)],
+            lines.append(c.calc(f'A_("с{k}") = -ψ_{k} S_(M {k})', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)],
                                 V(work, sig=5), t("J")))
         elif ld.direction is not None:
-            lines.append(c.calc(f'A_("с" {k}) = H_{k} S_(F {k}) cos α_{k}', "{0} dot {1} dot ({2})",
+            lines.append(c.calc(f'A_("с{k}") = H_{k} S_(F {k}) cos α_{k}', "{0} dot {1} dot ({2})",
                                 [V(st.length, sig=5), V(area, sig=6), V(along, sig=6)], V(work, sig=5), t("J")))
         else:
-            lines.append(c.calc(f'A_("с" {k}) = -H_{k} S_(F {k})', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)],
+            lines.append(c.calc(f'A_("с{k}") = -H_{k} S_(F {k})', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)],
                                 V(work, sig=5), t("J")))
     c.formula(*lines, where=[("H_i, ψ_i", t("the stroke of link i, m, or its swing, rad")),
                              ("S_(F i), S_(M i)", t("the area under the diagram of its useful resistance against the share "
