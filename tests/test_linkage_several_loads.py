@@ -104,6 +104,8 @@ class Own:
         share = np.clip(self.direction * dq / self.H, 0.0, 1.0)
         key = "force" if isinstance(on, str) else "moment"
         size = np.where(working, np.interp(share, self.ld["stroke"], self.ld[key]), 0.0)
+        if u is not None and "direction_deg" in self.ld:  # its own direction, its size from the table
+            return size * np.exp(1j * math.radians(self.ld["direction_deg"])), k.v[on]
         if u is not None:
             return -self.direction * size * u, k.v[on]
         link = self.m.link_between(*on).name
@@ -248,6 +250,18 @@ def test_the_example_mean_balancing_moment_is_the_driving_moment(example):
 
 def test_the_example_is_the_sum_of_its_loads_alone(example):
     _check_superposition(EXAMPLE, example[2])
+
+
+def test_a_force_of_its_own_direction_beside_a_moment():
+    """direction_deg on one of several loads: its own direction, its size from its table, on its own
+    working stroke only; the balance, the table and mean(M_b) = M_d hold as for a load along the guide."""
+    d = deepcopy(EXAMPLE)
+    d["load"][0]["direction_deg"] = 160.0  # the forming force pushes back and up (the ram works towards +x)
+    m, s2, doc = _run(d)
+    assert doc["forces"]["loads"][0]["direction_deg"] == pytest.approx(160.0)
+    _check_power_balance(m, doc)
+    _check_loads_from_tables(m, d, doc)
+    _check_mean(m, d, s2, doc)
 
 
 def test_a_single_table_load_keeps_its_numbers():
