@@ -254,7 +254,7 @@ def parse_load(r, mech: Mechanism, raw, key: str = "load", anywhere: bool = Fals
         if ln is None:
             r.fail(f"'{key}.on': no moving link joins {ends[0]} and {ends[1]} (the crank takes no load); give a "
                    "turning link by two joints, e.g. on = [\"C\", \"B\"], or a slider's joint")
-        kind, joint = "moment", ends[1]
+        kind, joint = "moment", ends[1] if ends[1] not in mech.frame else ends[0]  # the end that moves
     if ln.name != mech.output.link and not anywhere:
         r.fail(f"'{key}.on' is the link {ln.name} but the output link is {mech.output.link}: the load follows the "
                f"output's working stroke; put output = {_output_key(ln)} at the top of the file")

@@ -415,7 +415,8 @@ def _output(r: _Reader, b: _Builder, groups: tuple[Group, ...], value) -> Output
         for ln in b.links:
             if ln.axis is not None and ln.kind not in ("crank", "block") and set(ln.axis) == {value[0].strip(),
                                                                                             value[1].strip()}:
-                return Output("rocker", ln.name, value[1].strip(), ln.group)
+                end = value[1].strip() if value[1].strip() not in b.frame else value[0].strip()  # the end that moves
+                return Output("rocker", ln.name, end, ln.group)
     r.fail(bad)
 
 
