@@ -1,6 +1,6 @@
 """Issue 34 review: the pair of forces that replaces a turning slider's couple on Zhukovsky's lever
-stands at B and at a point B′ the note defines (what it is, its distance along the guide, the pair's
-force M/l with the substitution); sheet 2's lever draws b′ with its ray from p; the hatching of a
+stands at B and at a point Q the note defines (what it is, its distance along the guide, the pair's
+force M/l with the substitution); sheet 2's lever draws q with its ray from p; the hatching of a
 fixed guide (the shaper's ram guide) is on the side away from the rod B–C, in every position."""
 
 from __future__ import annotations
@@ -65,18 +65,18 @@ def test_every_point_of_the_levers_table_is_a_joint_or_defined_before_it(name):
     if name == "shaper":
         assert not strange  # every force stands at a joint or a centre of mass
         return
-    assert strange == {'$"B′"$'}
+    assert strange == {"$Q$"}  # the couple's second point: not a joint's letter (review C12: B′ named the PRP block)
     # defined: what it is, and its distance from B along the guide
-    m = re.search(r'точке \$"B′"\$ — точке ползуна 5 \(на линии его направляющей\) на расстоянии '
+    m = re.search(r'точке \$Q\$ — точке звена 5 \(на линии его направляющей\) на расстоянии '
                   r'\$l = "?([\d,]+)"?\$ м от \$B\$ вдоль направляющей', text)
     assert m, text[-900:]
     l_note = _number(m.group(1))
-    # independently, from the lever's own images: |b′ − b| = |ω5|·l (B′ is a point of the slider)
+    # independently, from the lever's own images: |q − b| = |ω5|·l (Q is a point of the slider)
     s = sheet2(name)
     i = s.force_position
     at = {f.point: complex(f.lever[i]) for f in s.lever.forces}
     w5 = float(s.sheet1.cycle.kin.omega["B"][i])
-    assert abs(at["B′"] - at["B"]) / abs(w5) == pytest.approx(l_note, rel=1e-3)
+    assert abs(at["Q"] - at["B"]) / abs(w5) == pytest.approx(l_note, rel=1e-3)
     # the pair's force M/l, with the substitution, right after the definition
     pair = next(b for b in before if isinstance(b, Formula) and "M_(Φ 5)/l" in b.math)
     nums = [_number(x) for x in re.findall(r'"([\d,\u202f]+)"', pair.math)]
@@ -88,10 +88,10 @@ def test_every_point_of_the_levers_table_is_a_joint_or_defined_before_it(name):
     assert nums[2] == pytest.approx(nums[0] / nums[1], rel=1e-3)
 
 
-# --- sheet 2: b′ on the lever --------------------------------------------------------------------------
+# --- sheet 2: q on the lever --------------------------------------------------------------------------
 
 
-def test_the_levers_points_include_b_prime_with_its_ray(tmp_path):
+def test_the_levers_points_include_q_with_its_ray(tmp_path):
     import ezdxf
 
     from tmm_cli.render.sheets.dynamics_sheet import _lever_points, sheet2 as build
@@ -101,23 +101,23 @@ def test_the_levers_points_include_b_prime_with_its_ray(tmp_path):
     kin = s.sheet1.cycle.kin
     plan = s.sheet1.plans[0].velocity
     pts = _lever_points(s)
-    assert "b′" in pts and "b" in pts
-    # b′ is the turned velocity of B′ = B + l·e (e along the slider's guide): v_B + i·ω·l·e
+    assert "q" in pts and "b" in pts
+    # q is the turned velocity of Q = B + l·e (e along the slider's guide): v_B + i·ω·l·e
     from tmm_cli.linkage.zhukovsky import pair_arm
 
     l = pair_arm(s.sheet1.mechanism)
     v = complex(kin.v["B"][i]) + 1j * float(kin.omega["B"][i]) * l * complex(np.exp(1j * kin.angle["B"][i]))
-    assert pts["b′"] == pytest.approx(1j * v / plan.scale, rel=1e-9)
+    assert pts["q"] == pytest.approx(1j * v / plan.scale, rel=1e-9)
     sh = build(s, "ru", TITLE)
     sh.doc.saveas(tmp_path / "s2.dxf")
     doc = ezdxf.readfile(tmp_path / "s2.dxf")
     texts = [e.dxf.text for e in doc.modelspace().query("TEXT")]
     mtexts = [e.text for e in doc.modelspace().query("MTEXT")]
-    assert "b'" in texts or "b′" in texts  # the sheet's font writes the prime as an apostrophe
-    # the ray p b′ (main line) with the same ratio to p b as on the plan
+    assert "q" in texts
+    # the ray p q (main line) with the same ratio to p b as on the plan
     lines = [(np.array([e.dxf.start[0], e.dxf.start[1]]), np.array([e.dxf.end[0], e.dxf.end[1]])) for e in doc.modelspace().query("LINE[layer=='Основные']")]
-    ratio = abs(pts["b′"]) / abs(pts["b"])
-    angle = math.degrees(math.atan2(pts["b′"].imag, pts["b′"].real))
+    ratio = abs(pts["q"]) / abs(pts["b"])
+    angle = math.degrees(math.atan2(pts["q"].imag, pts["q"].real))
     found = False
     for a, b in lines:
         d = b - a
@@ -126,17 +126,17 @@ def test_the_levers_points_include_b_prime_with_its_ray(tmp_path):
                 if np.allclose(c, a, atol=1e-6) and abs(np.hypot(*(e - c)) * ratio - np.hypot(*d)) < 0.05:
                     found = True
     assert found
-    # the pair's two arrows, at b and at b′, labelled M′Φ5 and M″Φ5
+    # the pair's two arrows, at b and at q, labelled M′Φ5 and M″Φ5
     assert {"M\\S^ Φ5;'", "M\\S^ Φ5;''"} <= set(mtexts)
 
 
 # --- sheet 1: the guide's hatching away from the rod --------------------------------------------------
 
 
-def _segments(doc):
+def _segments(doc, layers=("Основные", "Тонкие")):
     out = []
     for e in doc.modelspace():
-        if e.dxf.layer not in ("Основные", "Тонкие"):
+        if e.dxf.layer not in layers:
             continue
         if e.dxftype() == "LINE":
             out.append((e.dxf.layer, [(e.dxf.start[0], e.dxf.start[1]), (e.dxf.end[0], e.dxf.end[1])]))
@@ -157,27 +157,58 @@ def _cross(p, q, r, s):
     return 1e-6 < t < 1 - 1e-6 and 1e-6 < u < 1 - 1e-6
 
 
-@pytest.mark.parametrize("name", ["shaper", "shaper_offset"])
-def test_the_ram_guides_hatching_crosses_no_line_of_sheet_1(name):
+def _examples() -> list[str]:
+    return [p.stem for p in sorted(EXAMPLES.glob("*.toml")) if "crank" in data(p.stem) and "frame" in data(p.stem)]
+
+
+def _turns_fully(m, kin, pivot: str) -> bool:
+    """Does a link pivoted at `pivot` turn through the whole circle over the cycle?"""
+    links = [ln.name for ln in m.links if ln.axis and pivot in ln.axis] + [m.link_between(m.crank.pivot, m.crank.joint).name
+                                                                            if pivot == m.crank.pivot else None]
+    return any(np.ptp(np.unwrap(np.asarray(kin.angle[x], float))) > 2 * math.pi - 0.1 for x in links if x in kin.angle)
+
+
+@pytest.mark.parametrize("name", _examples())
+def test_the_frames_hatching_crosses_no_line_of_sheet_1(name):
+    """No hatch stroke of a fixed guide or of a fixed pivot crosses any line of sheet 1 (the links of
+    every drawn position — main, thin, dashed —, the paths, the other symbols), read from the DXF;
+    every fixed guide keeps a hatched piece of 4 strokes at least, every fixed pivot 3 (the crank's 1)."""
     from tmm_cli.render.sheets.linkage_sheet import sheet1
 
     m = parse_mechanism(data(name), f"{name}.toml")
     sh = sheet1(analyse_mechanism(m, None, f"{name}.toml"), "ru", TITLE)
-    stroke = math.hypot(1.8, 1.4)  # lever_parts.hatched_guide's strokes
+    guide, pivot = math.hypot(1.8, 1.4), math.hypot(1.5, 1.8)  # hatching.STROKE, the pivot's strokes
 
-    def is_hatch(lay, p):
-        return lay == "Тонкие" and len(p) == 2 and abs(math.dist(*p) - stroke) < 0.05
+    def kind(lay, p):
+        if lay != "Тонкие" or len(p) != 2:
+            return None
+        d = math.dist(*p)
+        return "guide" if abs(d - guide) < 0.02 else "pivot" if abs(d - pivot) < 0.02 else None
 
-    segs = _segments(sh.doc)
-    hatch = [p for lay, p in segs if is_hatch(lay, p)]
-    assert len(hatch) > 20
-    # the rod B–C in every drawn position (and every other line) stays off the hatching
-    crossings = [(h, a, b) for h in hatch for lay, o in segs if not is_hatch(lay, o)
+    segs = _segments(sh.doc, ("Основные", "Тонкие", "Штриховые"))
+    hatch = [(kind(lay, p), p) for lay, p in segs if kind(lay, p)]
+    fixed = sum(1 for _, g in m.guided() if not g.moving)
+    assert sum(k == "guide" for k, _ in hatch) >= 4 * fixed
+    # each fixed pivot keeps its strokes near it: 3 of 5 at least; the pivot of a link that turns
+    # fully (the crank; Whitworth's slotted link), amid that link's positions, at least one
+    kin = analyse_mechanism(m, None, f"{name}.toml").cycle.curve.kin
+    head = next(e for e in sh.doc.modelspace() if e.has_xdata("TMM_FIELD")
+                and e.get_xdata("TMM_FIELD")[0].value == "scheme")
+    tags = [t.value for t in head.get_xdata("TMM_FIELD")]
+    origin, scale = np.array(tags[5:7]), tags[7]
+    for n, z in m.frame.items():
+        if not any(n in ln.pins or (ln.axis and n in ln.axis) for ln in m.links):
+            continue
+        q = origin + scale * 1000.0 * np.array([z.real, z.imag])
+        near = [p for k, p in hatch if k == "pivot" and math.dist(p[0], q) < 9.0]
+        assert len(near) >= (1 if _turns_fully(m, kin, n) else 3), (n, len(near))
+    crossings = [(k, h, a, b) for k, h in hatch for lay, o in segs if not kind(lay, o)
                  for a, b in zip(o[:-1], o[1:]) if _cross(h[0], h[1], a, b)]
     assert not crossings, crossings[:3]
+    if name not in ("shaper", "shaper_offset"):
+        return
     # and independently of the drawing: the rod's far end B is on one side of the guide in every
     # position (so a side free of it exists) — the hatching is on the other
-    kin = analyse_mechanism(m, None, f"{name}.toml").cycle.curve.kin
     e = dict(m.guided())["C"].unit
     side = ((kin.z["B"] - kin.z["C"]) * np.conj(e)).imag
     assert np.all(side > 0) or np.all(side < 0)

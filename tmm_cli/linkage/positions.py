@@ -72,7 +72,7 @@ class Cycle:
     positions: tuple[Position, ...]
     kin: Kinematics  # at the positions, in the same order
     start: float  # crank angle of position 0 [rad]
-    start_rule: str  # 'working' (slower stroke) | 'load' | 'far' (K = 1) | 'given' | 'turning'
+    start_rule: str  # 'working' (slower stroke) | 'load' | 'far' (K = 1) | 'given' | 'turning' | 'gas' (a piston's dead centre nearest its head)
     extremes: tuple[float, float] | None  # crank angles where the working stroke starts and ends
     stroke: float | None  # slider: H [m]; rocker: its swing [rad]
     working: float | None  # crank angle of the working stroke [rad]

@@ -19,6 +19,7 @@ from ..records import record
 from .dynamics import Dynamics, dynamics
 from .flywheel import Flywheel, flywheel
 from .forces import Loading, applied
+from .indicator import Indicator, indicators
 from .kinetostatics import Kinetostatics, kinetostatics
 from .loads import Stroke, load_strokes, stroke_of
 from .polygons import ForcePolygon, force_polygons
@@ -72,6 +73,7 @@ class Sheet2:
     flywheel: Flywheel | None  # None without a [dynamics] table
     scales: DynamicsScales  # of the diagrams
     notes: tuple[Note, ...]
+    indicators: tuple[Indicator, ...] = ()  # the gas loads' indicator diagrams as drawn (:mod:`.indicator`)
     strokes: tuple = ()  # each table load's Stroke (input.tables' order): its own link's working stroke
 
     @property
@@ -160,4 +162,5 @@ def analyse_sheet2(s1: Sheet1, inp: Sheet2Input, source: str = "mechanism") -> S
     fw = flywheel(dyn, inp.dynamics) if inp.dynamics is not None else None
     return Sheet2(s1, inp, stroke, ks, balancing_moment_by_power(kin, loading), lever(mech, loading, kin), i,
                   force_polygons(mech, ks, i), reduced_moment(kin, loading), reduced_inertia(kin, inp.masses, rotor),
-                  dyn, fw, dynamics_scales(dyn, fw), _notes(s1, inp, fw, dyn), strokes)
+                  dyn, fw, dynamics_scales(dyn, fw), _notes(s1, inp, fw, dyn),
+                  indicators=indicators(mech, inp.gas, c.positions, kin), strokes=strokes)

@@ -339,3 +339,43 @@ def plans(cycle: Cycle, index: int, room_mm: float = PLAN_MM) -> Plans:
     """Both plans of the cycle's position number `index` (a list index)."""
     return plans_at(cycle.mechanism, cycle.kin.at(index), cycle.positions[index], room_mm)
 
+
+
+def book_symbols(mech: Mechanism) -> dict[str, str]:
+    """The relative vectors the plans name by a joint alone — a slider on a moving guide 'v_BB3', a
+    PRP's block 'v_BB3' (and their 'a^k_…', 'a^r_…') — in the book's form, each point with the number
+    of its link, as 'v_A3A2' of a block in a slot: 'v_B5B3' (the point B of slider 5 relative to the
+    point B3 of the guide's link 3). What the sheets and the note write; the JSON and the equations
+    keep the plans' own symbols (they are keys). Kinematics of a point on a moving link: the relative
+    and the Coriolis accelerations of a point of one link relative to the coincident point of the
+    other (Artobolevsky, «Теория механизмов и машин», the velocity and acceleration plans of a
+    rocker mechanism).
+
+    >>> from .mechanism_file import parse_mechanism
+    >>> m = parse_mechanism({"frame": {"O": [0, 0], "C": [0, -0.3]}, "crank": {"pivot": "O", "joint": "A",
+    ...     "length": 0.1, "rpm": 60}, "group": [{"kind": "RPR", "joints": ["A", "C"]},
+    ...     {"kind": "PRP", "joints": ["B"], "guides": [{"link": ["C", "A"], "angle_deg": 0.0},
+    ...     {"through": [0.0, 0.22], "angle_deg": 0.0}]}]}, "t")
+    >>> book_symbols(m)["a^k_BB3"]
+    'a^k_B4B3'
+    """
+    out: dict[str, str] = {}
+    for g in mech.groups:
+        if g.kind == "RRP" and g.guide is not None and g.guide.moving:
+            jb = g.joints[1]
+            pairs = [(f"{jb}{mech.link(g.guide.link).number}", f"{jb}{g.numbers[1]}")]
+        elif g.kind == "PRP":
+            jb = g.joints[0]
+            pairs = [(f"{jb}{mech.link(gd.link).number}", f"{jb}{n}") for gd, n in zip(g.guides, g.numbers)
+                     if gd.moving]
+        else:
+            continue
+        for under, mine in pairs:
+            for head in ("v_", "a^k_", "a^r_"):
+                out[f"{head}{jb}{under}"] = f"{head}{mine}{under}"
+    return out
+
+
+def book_symbol(mech: Mechanism, symbol: str) -> str:
+    """`symbol` as the sheets and the note write it (:func:`book_symbols`)."""
+    return book_symbols(mech).get(symbol, symbol)

@@ -72,25 +72,41 @@ def couple_as_forces(x, y, m):
 
 def pair_arm(mech: Mechanism) -> float:
     """The arm l [m] of the pair of forces that replaces the couple on a slider turning with its
-    moving guide: the slider's pin B and the point B′ of the slider at l along the guide (a link
-    without an axis has no second joint; any l gives the same moments, −M·ω, so the mechanism's
-    size is taken, which keeps B′ off b on the lever)."""
+    moving guide: the slider's pin B and the point Q (:func:`pair_point`) of the slider at l along the
+    guide (a link without an axis has no second joint; any l gives the same moments, −M·ω, so the
+    mechanism's size is taken, which keeps Q off b on the lever)."""
     return mech.scale_m
 
 
-def pair_point(pin: str) -> str:
-    """The name of the second point of a slider's pair: 'B' → 'B′'."""
-    return pin + "′"
+PAIR_LETTERS = "QUZ"  # a slider's second point: letters the note gives no other meaning (K, L, M, N, T, V, W have one)
+
+
+def pair_point(mech: Mechanism, pin: str) -> str:
+    """The name of the second point of a slider's pair (its couple as two forces, at its pin and at
+    this point): a letter no joint or point of the mechanism has — not 'B′', which names a PRP's block
+    — Q for the first such slider, U for the next (in the links' order).
+
+    >>> from types import SimpleNamespace as NS
+    >>> m = NS(joint_names=("O", "A", "Q", "B"), points=(NS(name="S3"),),
+    ...        links=(NS(axis=("O", "A"), pins=("O", "A")), NS(axis=None, pins=("B",)), NS(axis=None, pins=("C",))))
+    >>> pair_point(m, "B"), pair_point(m, "C")
+    ('U', 'Z')
+    """
+    taken = set(mech.joint_names) | {p.name for p in mech.points}
+    free = [ch for ch in PAIR_LETTERS if ch not in taken]
+    pins = [ln.pins[0] for ln in mech.links if ln.axis is None]
+    k = pins.index(pin) if pin in pins else len(free)
+    return free[k] if k < len(free) else pin + "″"
 
 
 def _ends(mech: Mechanism, kin: Kinematics, link: str):
     """Two points of a turning link and their names: its axis' ends (the slotted link: its pivot
     and its point under the block; a block: its joint and its point over the slotted link's pivot)."""
     ln = mech.link(link)
-    if ln.axis is None:  # a slider turning with its moving guide: its pin B and B′ at l along the guide
+    if ln.axis is None:  # a slider turning with its moving guide: its pin B and Q at l along the guide
         pin = ln.pins[0]
         unit = np.exp(1j * kin.angle[link])
-        return (pin, kin.z[pin]), (pair_point(pin), kin.z[pin] + pair_arm(mech) * unit)
+        return (pin, kin.z[pin]), (pair_point(mech, pin), kin.z[pin] + pair_arm(mech) * unit)
     a, b = ln.axis
     return (a, kin.z[a]), (b, kin.z[b])
 

@@ -20,7 +20,7 @@ import numpy as np
 
 from ...linkage.chain import slider_pose, slot_axis
 from ...linkage.sheet1 import Sheet1
-from ...linkage.vector_plans import Plan, Plans
+from ...linkage.vector_plans import Plan, Plans, book_symbol
 from .kit import decimal_commas, literal_text, new_figure, suptitle, title_height
 from ...i18n import tr
 from ...i18n.numbers import num
@@ -434,7 +434,7 @@ def plan_figure(s: Sheet1, pl: Plans, kind: str, lang: str):
             continue
         where = f"  {v.relation} {line_tex(v.line)}" if v.line and v.line not in ("guide", "slot") else (
             f"  {v.relation or '∥'} " + tr(lang, v.line) if v.line in ("guide", "slot") else "")
-        lines.append(f"{symbol_tex(v.symbol)} = {num(v.magnitude, lang, sig=4)} {unit}"
+        lines.append(f"{symbol_tex(book_symbol(s.mechanism, v.symbol))} = {num(v.magnitude, lang, sig=4)} {unit}"
                      f"  ({num(v.magnitude / plan.scale, lang, decimals=1)} " + tr(lang, "mm") + f"){where}")
     cols = 2 if len(lines) > 11 else 1
     per = math.ceil(len(lines) / cols)

@@ -66,12 +66,18 @@ def _limits(ax, x: S.Axis, y: S.Axis) -> None:
     ax.set_ylim(y.lo, y.hi)
 
 
-def _mu(ax, text: str, where: str = "upper left") -> None:
-    """The scale written on the plan or diagram, in a white box."""
-    x, ha = (0.01, "left") if "left" in where else (0.99, "right")
-    y, va = (0.985, "top") if "upper" in where else (0.015, "bottom")
-    ax.text(x, y, text, transform=ax.transAxes, ha=ha, va=va, fontsize=MIN_PT, zorder=20,
-            bbox=dict(boxstyle="square,pad=0.25", fc="white", ec="0.6", lw=0.5))
+def _mu(ax, text: str, where: str = "upper left"):
+    """The scale written on the plan or diagram, in a white box: in the corner `where`, or in the
+    first other corner where it hides no curve and no label (placed by kit.settle once the
+    figure is drawn)."""
+    from .kit import corner_places
+
+    places = corner_places(where)
+    t = ax.annotate(text, places[0]["xy"], xycoords="axes fraction", xytext=places[0]["xyann"],
+                    textcoords="offset points", ha=places[0]["ha"], va=places[0]["va"], fontsize=MIN_PT, zorder=20,
+                    bbox=dict(boxstyle="square,pad=0.25", fc="white", ec="0.6", lw=0.5))
+    t._tmm_places = places
+    return t
 
 
 def _n(x, lang, **kw) -> str:
@@ -163,7 +169,7 @@ def _motion(r, lang: str):
         ax.set_xlim(sc.phi.lo, sc.phi.hi)
         ax.set_ylim(axis.lo, axis.hi)
         ax.set_xticks(np.arange(0, 361, 30))
-        ax.set_ylabel(ylabel)
+        _thousands(ax, ylabel, axis, lang)
         ax.grid(alpha=0.3, lw=0.4)
         if k < 2:
             ax.tick_params(labelbottom=False)
@@ -174,6 +180,21 @@ def _motion(r, lang: str):
                                                      lambda t: np.degrees(np.asarray(t) / 1000.0 * w)))
     top.set_xlabel(tr(lang, "time t, ms"))
     return fig
+
+
+def _thousands(ax, ylabel: str, axis: S.Axis, lang: str) -> None:
+    """The diagram's name on its y axis; values of 10 000 and more in thousands, «ε·10⁻³, рад/с²»
+    (the ГОСТ 2.319 way of a factor in the axis' name): «−40000» and the name ran past the figure's
+    left edge (the 17 mm margin holds four digits and a minus)."""
+    from matplotlib.ticker import FuncFormatter
+
+    if max(abs(axis.lo), abs(axis.hi)) < 9999.5:
+        ax.set_ylabel(ylabel)
+        return
+    head, _, unit = ylabel.partition(", ")
+    factor = r"$\cdot\mathrm{10}^{\mathrm{-3}}$"  # mathtext: Liberation Serif has no superscript minus
+    ax.set_ylabel(f"{head}{factor}, {unit}" if unit else head + factor)
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda x, pos: num(x / 1000.0, lang, minus="−", sig=6)))
 
 
 def _plan_frame(ax, xa, ya, lang: str, grid: float) -> None:
@@ -376,13 +397,17 @@ def _planetary(g, lang: str):
     for t in list(ax_a.texts):
         if "=" in t.get_text():
             t.remove()
-    # the planetary's module is not chosen by the book's synthesis: the radii are drawn for m = 1 mm
-    # (as on sheet 4), so the scales are numbers (per module they scale with m)
-    m1 = tr(lang, "(m = 1 mm)")
-    _mu(ax_s, mt(f"μ_l = {_mus(sc.mu_l_per_module, lang)} " + tr(lang, "mm/mm") + " " + m1))
-    _mu(ax_v, mt(f"μ_V = {_n(sc.mu_v_per_module, lang, sig=3)} " + tr(lang, "(m/s)/mm") + " " + m1))
+    # the planetary's module is not chosen by the book's synthesis: drawn with sheet 4's module, the
+    # scales stated at it (as sheet 4 does)
+    _mu(ax_s, mt(f"μ_l = {_mus(sc.mu_l / 1000, lang)} " + tr(lang, "m/mm") + " " + module_text(sc.module_mm, lang)))
+    _mu(ax_v, mt(f"μ_V = {_n(sc.mu_v, lang, sig=3)} " + tr(lang, "(m/s)/mm")))
     _mu(ax_a, mt(f"μ_ω = {_n(sc.mu_omega, lang, sig=3)} " + tr(lang, "(rad/s)/mm")), "upper right")
     return fig
+
+
+def module_text(m: float, lang: str) -> str:
+    """«(m = 2 мм)»: the reducer's module of the drawing, written as sheet 4 writes it."""
+    return tr(lang, "(m = {m} mm)").format(m=num(m, lang, sig=3))
 
 
 def _assembly(g, lang: str):
@@ -392,6 +417,7 @@ def _assembly(g, lang: str):
     d = g.planetary
     n = len(d.stages)
     mu = S.assembly_scale(g)
+    mu_l = S.assembly_mu_l(g)
     w_cm, h_cm = S.figure_size_cm("gears_assembly", g)
     size = (w_cm * 10, h_cm * 10)
     fig = _new(size)
@@ -404,14 +430,15 @@ def _assembly(g, lang: str):
         ax.set_title(title, y=1.0, pad=4)
         ax.set_xlim(-mu * side / 2, mu * side / 2)
         ax.set_ylim(-mu * side / 2, mu * side / 2)
-    _mu(fig.axes[0], mt(f"μ_l = {_mus(mu, lang)} " + tr(lang, "mm/mm") + " " + tr(lang, "(m = 1 mm)")), "lower left")
+    _mu(fig.axes[0], mt(f"μ_l = {_mus(mu_l / 1000, lang)} " + tr(lang, "m/mm") + " " + module_text(S.drawing_module(g), lang)),
+        "lower left")
     return fig
 
 
 def _mesh(g, lang: str):
     from matplotlib.lines import Line2D
 
-    from .gears import C_PLANET, C_SUN, _draw_mesh
+    from .gears import C_PLANET, C_SUN, _draw_mesh, pair_names
     from .kit import mt
 
     sp = g.spur
@@ -427,8 +454,8 @@ def _mesh(g, lang: str):
         Line2D([], [], color="0.3", ls="--", label=mt(tr(lang, "base circles d_b"))),
         Line2D([], [], color="0.3", ls=":", label=mt(tr(lang, "tip circles d_a"))),
         Line2D([], [], color="0.3", ls="-.", label=mt(tr(lang, "root circles d_f"))),
-        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=tr(lang, "two-pair zones P1U2, U1P2")),
-        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=tr(lang, "single-pair mesh U2U1")),
+        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=pair_names(tr(lang, "two-pair zones P1U2, U1P2"))),
+        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=pair_names(tr(lang, "single-pair mesh U2U1"))),
         Line2D([], [], color=C_SUN, lw=2.4, label=tr(lang, "active profiles, gear 1")),
         Line2D([], [], color=C_PLANET, lw=2.4, label=tr(lang, "active profiles, gear 2")),
     ]
@@ -550,11 +577,66 @@ def _dynamics(s2, lang: str):
     return fig
 
 
+def _indicator(s2, lang: str):
+    """Each piston's indicator diagram (issue 34): p against s from the dead centre nearest the head,
+    a line a stroke with its arrow and number, the force F = p·A on the right-hand axis, sheet 1's
+    positions as points; the numbers of `Sheet2.indicators` (the sheet's), at round scales of its
+    own (the axes carry the units)."""
+    from .kit import mt
+
+    inds = s2.indicators
+    size = S.indicator_size(len(inds))
+    fig = _new(size)
+    left, width = S.INDICATOR["x"]
+    ph, gap, bottom = S.INDICATOR["panel"], S.INDICATOR["gap"], S.INDICATOR["bottom"]
+    mm, mpa = tr(lang, "mm"), tr(lang, "MPa")
+    colours = (C_RISE, C_RET, C_ZONE, C_BOOK)
+    for k, ind in enumerate(inds):
+        box = S.Box(left, bottom + (len(inds) - 1 - k) * (ph + gap), width, ph)
+        ax = _axes(fig, box, size)
+        H = ind.stroke * 1000.0
+        p_all = [v for row in ind.pressure for v in row]
+        sx = S.fit_axis(0.0, H, width, pad=0.03)
+        sy = S.fit_axis(min(p_all), max(p_all), ph)
+        _limits(ax, sx, sy)
+        for j, st in enumerate(ind.strokes):
+            s = np.asarray(ind.travel) * H
+            p = np.asarray(ind.pressure[j])
+            if not (st in ("away", "expansion", "intake")):
+                s, p = s[::-1], p[::-1]
+            words = {"away": tr(lang, "away from the head"), "back": tr(lang, "towards the head"),
+                     "expansion": tr(lang, "expansion"), "exhaust": tr(lang, "exhaust"), "intake": tr(lang, "intake"),
+                     "compression": tr(lang, "compression")}[st]
+            col = colours[j % len(colours)]
+            ax.plot(s, p, color=col, lw=1.3, label=f"{j + 1} — {words}")
+            m = len(s) // 2
+            a, b = (s[m - 1], p[m - 1]), (s[m], p[m])
+            ax.annotate("", xy=((a[0] + b[0]) / 2 + (b[0] - a[0]) * 0.2, (a[1] + b[1]) / 2 + (b[1] - a[1]) * 0.2),
+                        xytext=((a[0] + b[0]) / 2, (a[1] + b[1]) / 2),
+                        arrowprops=dict(arrowstyle="-|>", color=col, lw=1.2, mutation_scale=12))
+        for label, row, x in ind.marks:
+            if label.isdigit():
+                y = ind.pressure_at(row, x)
+                ax.plot(x * H, y, "o", ms=2.5, color="k", zorder=5)
+        ax.axhline(0.0, color="k", lw=0.5)
+        ax.set_xlabel(mt(f"s, {mm}"))
+        ax.set_ylabel(mt(f"p, {mpa}"))
+        twin = ax.twinx()
+        f = ind.area * 1.0e6
+        twin.set_ylim(sy.lo * f, sy.hi * f)
+        twin.set_ylabel(mt("F = pA, " + tr(lang, "N")))
+        ax.grid(alpha=0.3, lw=0.4)
+        ax.legend(loc="upper right", fontsize=MIN_PT, frameon=True, framealpha=0.9, edgecolor="0.6")
+        _mu(ax, tr(lang, "piston {n}; A = {a} m²; H = {h} mm").format(n=ind.number, a=_n(ind.area, lang, sig=4),
+                                                                      h=_n(H, lang, sig=4)), "upper left")
+    return fig
+
+
 MAKERS = {"cam_motion": ("cam", _motion), "cam_zone": ("cam", _zone), "cam_profile": ("cam", _profile),
           "cam_pressure_angle": ("cam", _pressure), "gears_planetary": ("gears", _planetary),
           "gears_assembly": ("gears", _assembly), "gears_mesh": ("gears", _mesh),
           "linkage_plans": ("linkage", lambda s2, lang: _linkage_plans(s2.sheet1, lang)),
-          "linkage_dynamics": ("linkage", _dynamics),
+          "linkage_dynamics": ("linkage", _dynamics), "linkage_indicator": ("linkage", _indicator),
           "linkage_synthesis": ("linkage", lambda s2, lang: _synthesis(s2.sheet1, lang))}
 
 
@@ -568,12 +650,19 @@ def _synthesis(s1, lang: str):
 
 def note_figure(result, lang: str, name: str):
     """One note figure (a matplotlib Figure); call inside :func:`note_style`."""
-    from .kit import decimal_commas
+    part, _ = MAKERS[name]
+    return note_figure_of(name, {"cam": result.cam, "gears": result.gears, "linkage": result.linkage}[part], lang)
 
-    part, make = MAKERS[name]
-    fig = make({"cam": result.cam, "gears": result.gears, "linkage": result.linkage}[part], lang)
+
+def note_figure_of(name: str, part, lang: str):
+    """The note figure `name` from its chapter's result alone (the cam's, the gears', the linkage's):
+    drawn, its tick labels with decimal commas, every text legible, the labels settled."""
+    from .kit import decimal_commas, settle
+
+    fig = MAKERS[name][1](part, lang)
     decimal_commas(fig, lang)
     legible(fig)
+    settle(fig)
     return fig
 
 

@@ -46,7 +46,9 @@ def note_figures(result) -> tuple[str, ...]:
     from ...linkage.synthesis_file import recorded_synthesis
 
     rec = recorded_synthesis(linkage.sheet1.mechanism)
-    return (("linkage_synthesis",) if rec is not None and rec.matches else ()) + LINKAGE_NOTE_FIGURES + NOTE_FIGURES
+    gas = ("linkage_indicator",) if getattr(linkage, "indicators", ()) else ()  # chapter 2: the gas loads
+    return (("linkage_synthesis",) if rec is not None and rec.matches else ()) + LINKAGE_NOTE_FIGURES[:1] + gas \
+        + LINKAGE_NOTE_FIGURES[1:] + NOTE_FIGURES
 
 
 def note_figure_file(name: str, ext: str = "svg") -> str:

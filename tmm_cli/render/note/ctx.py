@@ -44,6 +44,7 @@ class Ctx:
     explained: set = field(default_factory=set)  # symbols already explained in a «где»
     glossary: dict = field(default_factory=dict)  # symbol -> its meaning (an English msgid)
     off: list = field(default_factory=list)  # substitutions that could not be made to reproduce
+    _scales: dict | None = None  # the scale of each kind of number (:func:`scales`), found when first asked
 
     def __post_init__(self):
         if self.doc is None:
@@ -64,6 +65,29 @@ class Ctx:
         return ntr(self.lang, singular, plural, n)
 
     # -- numbers -----------------------------------------------------------------------------------
+    def zero(self, x, kind: str) -> float:
+        """`x`, or 0 where it is zero to the problem's precision: below :data:`ZERO` of the scale of
+        its kind (:func:`scales`: v_A for a velocity, the largest force for a force, …) it is the
+        computer's rounding (3,8·10⁻¹⁷ m/s of a block at rest in its slot), not a value."""
+        if self._scales is None:
+            self._scales = scales(self.r)
+        scale = self._scales.get(kind)
+        x = float(x)
+        return 0.0 if scale is not None and abs(x) <= ZERO * scale else x
+
+    def nz(self, x, kind: str, **kw) -> str:
+        """:meth:`n` of :meth:`zero`: a number of the kind `kind` ("m/s", "N", …) for the text."""
+        return self.n(self.zero(x, kind), **kw)
+
+    def nf(self, x, kind: str = "N") -> str:
+        """A force (`kind` "N") or a moment ("N·m") for a table or a list: one decimal from 10 up,
+        three significant digits below it in decimals (0,00228, not 0,00 nor 2,28·10⁻³), 0 where
+        it is zero (:meth:`zero`)."""
+        x = self.zero(x, kind)
+        if x == 0.0:
+            return "0"
+        return self.n(x, decimals=1) if abs(x) >= 10.0 else self.n(x, sig=3, sci=False)
+
     def n(self, x, **kw) -> str:
         """A number for the text: decimal comma (ru), typographic minus, narrow space in thousands."""
         text = num(x, self.lang, minus="−", **kw)
@@ -180,6 +204,39 @@ class Ctx:
     def planets(self, k: int) -> str:
         """"4 сателлита" / "4 planets"."""
         return self.nt("{k} planet", "{k} planets", k).format(k=k)
+
+
+ZERO = 1e-9  # a number below this share of the scale of its kind prints as 0 (:meth:`Ctx.zero`)
+
+
+def scales(r) -> dict[str, float]:
+    """The scale of each kind of number of the lever mechanism's chapters, keyed by its unit: the
+    crank pin's velocity ω₁l₁ and acceleration ω₁²l₁, ω₁ and ω₁², the largest applied force of
+    the cycle and that force on the crank's arm (or the largest couple). Nothing without a mechanism.
+
+    >>> from types import SimpleNamespace as NS
+    >>> import numpy as np
+    >>> crank = NS(omega=-10.0, length=0.1)
+    >>> s1 = NS(mechanism=NS(crank=crank))
+    >>> s2 = NS(sheet1=s1, loading=NS(forces=[NS(f=np.array([3 + 4j, 1]))], couples=[NS(m=np.array([2.0]))]))
+    >>> sorted(scales(NS(linkage=s2)).items())
+    [('N', 5.0), ('N·m', 2.0), ('m/s', 1.0), ('m/s²', 10.0), ('rad/s', 10.0), ('rad/s²', 100.0)]
+    """
+    import numpy as np
+
+    s1 = sheet1_of(r)
+    if s1 is None:
+        return {}
+    cr = s1.mechanism.crank
+    w, l1 = abs(float(cr.omega)), float(cr.length)
+    out = {"m/s": w * l1, "m/s²": w * w * l1, "rad/s": w, "rad/s²": w * w}
+    loading = getattr(getattr(r, "linkage", None), "loading", None)
+    if loading is not None:
+        f = max((float(np.max(np.abs(np.asarray(x.f)))) for x in loading.forces), default=0.0)
+        m = max((float(np.max(np.abs(np.asarray(x.m)))) for x in loading.couples), default=0.0)
+        out["N"] = f
+        out["N·m"] = max(f * l1, m)
+    return out
 
 
 LINE_EM = 30.0  # the width of a display formula line in :func:`width`'s em: 16,5 cm (33 em) less the number «(NN)» and a gap, and the rough estimate's error

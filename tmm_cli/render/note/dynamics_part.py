@@ -15,7 +15,7 @@ import math
 import numpy as np
 
 from ...i18n import N_
-from .ctx import Ctx, V
+from .ctx import NBSP, Ctx, V, mq
 from .model import Heading
 
 # the kinds of Assur groups as the book writes them (В — a turning pair, П — a sliding pair)
@@ -126,7 +126,7 @@ def _loads(c: Ctx, s) -> None:
     rows = []
     for ms in s.input.masses:
         ln = mech.link(ms.link)
-        rows.append([str(ms.number), _link_name(c, ln), n(ms.m, sig=4), n(ms.J, sig=4) if ms.J > 0 else "—",
+        rows.append([str(ms.number), _link_name(c, ln), n(ms.m, sig=4, sci=False), n(ms.J, sig=4, sci=False) if ms.J > 0 else "—",
                      f"${pt(ms.label)}$"])
     if rows:
         c.p(t("The masses of the links, their moments of inertia about the centres of mass and the centres are given in "
@@ -152,9 +152,10 @@ def _loads(c: Ctx, s) -> None:
         lines = []
         for f in inertia:
             ms = mass_of[f.number]
-            a = abs(complex(centre_motion(kin, ms)[2][i]))
+            a = c.zero(abs(complex(centre_motion(kin, ms)[2][i])), "m/s²")
             lines.append(c.calc(f"Φ_{f.number} = m_{f.number} a_(S {f.number})", "{0} dot {1}",
-                                [V(ms.m, exact=True), V(a, sig=4)], V(abs(complex(f.f[i])), sig=4), t("N")))
+                                [V(ms.m, exact=True), V(a, sig=4)], V(abs(complex(f.f[i])) if a else 0.0, sig=4),
+                                t("N")))
         c.formula(*lines)
     if moments:
         c.p(t("The inertia moments act against the angular accelerations $ε$ of the links:"))
@@ -162,20 +163,21 @@ def _loads(c: Ctx, s) -> None:
         lines = []
         for m in moments:
             ms = mass_of[m.number]
-            eps = abs(float(kin.epsilon[m.link][i]))
+            eps = c.zero(abs(float(kin.epsilon[m.link][i])), "rad/s²")
             lines.append(c.calc(f"M_(Φ {m.number}) = J_(S {m.number}) ε_{m.number}", "{0} dot {1}",
-                                [V(ms.J, exact=True), V(eps, sig=4)], V(abs(float(m.m[i])), sig=4), t("N·m")))
+                                [V(ms.J, exact=True), V(eps, sig=4)], V(abs(float(m.m[i])) if eps else 0.0, sig=4),
+                                t("N·m")))
         c.formula(*lines)
     _load(c, s)
     _gas(c, s)
     # all the applied forces of the position
     rows = []
     for f in forces:
-        rows.append([f"${fsym(c, f.symbol)}$", _kind(c, f.kind), str(f.number), f"${pt(f.point)}$",
-                     n(abs(complex(f.f[i])), decimals=1) + " " + t("N")])
+        rows.append([f"${fsym(c, f.symbol)}$", _kind(c, f, s), str(f.number), f"${pt(f.point)}$",
+                     c.nf(abs(complex(f.f[i]))) + " " + t("N")])
     for m in couples:
-        rows.append([f"${fsym(c, m.symbol)}$", _kind(c, m.kind), str(m.number), "—",
-                     n(float(m.m[i]), decimals=2) + " " + t("N·m")])
+        rows.append([f"${fsym(c, m.symbol)}$", _kind(c, m, s), str(m.number), "—",
+                     c.nz(float(m.m[i]), "N·m", decimals=2) + " " + t("N·m")])
     c.p(t("The forces and moments applied to the links in position {label} are collected in Table {{tab:dyn_loads}} "
           "(a moment is positive counter-clockwise).").format(label=p.label))
     c.table("dyn_loads", t("Forces and moments applied to the links, position {label}").format(label=p.label),
@@ -183,8 +185,26 @@ def _loads(c: Ctx, s) -> None:
             align=["center", "left", "center", "center", "right"], widths=[1.3, 2.0, 0.7, 0.8, 1.2])
 
 
-def _kind(c: Ctx, kind: str) -> str:
-    return {"inertia": c.t("inertia"), "weight": c.t("weight"), "load": c.t("useful resistance")}[kind]
+def _kind(c: Ctx, f, s) -> str:
+    """The kind of an applied force or couple as the book names it: a gas force (P3, P5) by the sign
+    of its power in the position, «движущая сила» where it drives the crank, «сила сопротивления»
+    where it resists; the table's load is the useful resistance."""
+    gas = {gl.link: gl for gl in s.input.gas}
+    if f.kind == "load" and f.link in gas:
+        from ...linkage.gas import gas_pressure, piston, state
+
+        gl, mech = gas[f.link], s.sheet1.mechanism
+        kin = s.sheet1.cycle.kin.at(s.force_position)
+        pst = piston(gl, mech)
+        _, row, _ = state(gl, pst, mech, kin)
+        p = c.zero(float(gas_pressure(gl, pst, mech, kin)[0]) * gl.area, "N")  # the force away from the head
+        drives = p * (1.0 if int(row[0]) == 0 else -1.0)  # away from the head it drives where it pushes (at a dead
+        if drives > 0:                                     # centre: on the stroke that begins there)
+            return c.t("driving force (gas pressure)")
+        if drives < 0:
+            return c.t("resistance force (gas pressure)")
+        return c.t("gas pressure force")
+    return {"inertia": c.t("inertia"), "weight": c.t("weight"), "load": c.t("useful resistance")}[f.kind]
 
 
 def _link_name(c: Ctx, ln) -> str:
@@ -213,13 +233,15 @@ def _load(c: Ctx, s) -> None:
     f, on = float(fraction[i]), bool(working[i])
     sym = fsym(c, "Fc" if ld.kind == "force" else "Mc")
     unit = t("N") if ld.kind == "force" else t("N·m")
-    what = (t("The useful resistance ${sym}$ acts on the output slider along its guide against the working stroke; "
-              "its diagram (Table {{tab:dyn_load}}) gives it against the share of the working stroke covered; it is "
-              "linear between these points and zero on the return stroke.") if ld.kind == "force" else
+    what = (t("The useful resistance ${sym}$ acts on the output link ({what}) along its guide against the working "
+              "stroke; its diagram (Table {{tab:dyn_load}}) gives it against the share of the working stroke covered; "
+              "it is linear between these points and zero on the return stroke.") if ld.kind == "force" else
             t("The useful resistance moment ${sym}$ acts on the output rocker against its working swing; its diagram "
               "(Table {{tab:dyn_load}}) gives it against the share of the swing covered; it is linear between these "
               "points and zero on the return stroke."))
-    c.p(what.format(sym=sym))
+    from .linkage_part import role_name
+
+    c.p(what.format(sym=sym, what=role_name(c, s.sheet1, mech.output.link)))
     if ld.direction is not None:
         c.p(t("Its direction is its own, fixed at {deg}° from the $x$ axis (not along the guide): its part across the "
               "guide does no work but loads the pairs.").format(deg=n(math.degrees(ld.direction), decimals=1)))
@@ -320,6 +342,12 @@ def _gas(c: Ctx, s) -> None:
           "nearest the head (the first row while the piston moves away from the head, the second while it comes back), "
           "$A$ the piston's area. It drives the crank where the piston moves away from the head and resists where it "
           "comes back."))
+    if c.has("linkage_indicator"):
+        c.p(t("The indicator diagrams of the tables below, each stroke with its number in the order of the cycle and the "
+              "force $P = p A$ on the right-hand axis, are shown in Figure {fig:linkage_indicator}; sheet 2 draws them "
+              "at the scales it states."))
+        c.fig("linkage_indicator", t("Indicator diagrams of the pistons: gauge pressure against the piston's travel from "
+                                     "the dead centre nearest the head"))
     for gl in gas:
         ln = mech.link(gl.link)
         sym = fsym(c, f"P{ln.number}")
@@ -379,25 +407,34 @@ def _groups(c: Ctx, s) -> None:
                                                                         n3=n3)
         c.p(head + (t(" is solved first.") if first else t(" is solved next.")), indent=True)
         first = False
+        poly = f"dyn_poly_{g.index}"  # the label of the group's force polygon, which the text refers to
         if g.kind == "PRP":
             (jb,) = g.joints
             c.p(t("Unknown are the two guides' reactions ${a}$ and ${c}$, each across its guide, the slides' couples "
                   "(each block's own moment about ${B}$: a block cannot turn on its guide) and the inner reaction ${b}$ "
-                  "of the pin ${B}$. The force polygon of the group gives the two guides' reactions, the polygon of "
-                  "block {n3} the pin's:").format(a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label),
-                                                  B=pt(jb), n3=n3))
-            c.formula(f"{fsym(c, ra.label)} + Σ F^(({n2})) + Σ F^(({n3})) + {fsym(c, rc.label)} = 0; quad "
-                      f"{fsym(c, rb.label)} = -({fsym(c, rc.label)} + Σ F^(({n3})))", numbered=False)
+                  "of the pin ${B}$. The moments of each block about ${B}$ give the couples:").format(
+                a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label), B=pt(jb)))
+            c.formula(*[_couple_line(c, s, r, n, z[jb], jb) for r, n in ((ra, n2), (rc, n3))],
+                      where=[_sum_where(c, jb), ("M_(i j)", t("the couple of the slide, the moment of link $i$ on "
+                                                              "link $j$, N·m (counter-clockwise positive)"))])
+            c.p(t("The force polygon of the group gives the two guides' reactions, the polygon of link {n3} the "
+                  "pin's:").format(n3=n3))
+            c.formula(f"{vsym(c, ra.label)} + Σ arrow(F)^(({n2})) + Σ arrow(F)^(({n3})) + {vsym(c, rc.label)} = 0; "
+                      f"quad {vsym(c, rb.label)} = -({vsym(c, rc.label)} + Σ arrow(F)^(({n3})))", label=poly)
         elif g.kind == "RPP":
             ja, jy = g.joints
             c.p(t("Unknown are the reaction ${a}$ of the pin ${A}$ on the block, the block's pressure ${b}$ on the yoke "
                   "across its slot and the guide's reaction ${c}$ across the guide, with the slides' couples. The "
                   "polygon of the yoke {n3} gives ${b}$ and ${c}$ (their directions are known), the polygon of the "
-                  "block {n2} gives ${a}$; the couples follow from the moments of the block about ${A}$ and of the "
-                  "yoke about ${Y}$:").format(a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label), A=pt(ja),
-                                              Y=pt(jy), n2=n2, n3=n3))
-            c.formula(f"{fsym(c, rb.label)} + Σ F^(({n3})) + {fsym(c, rc.label)} = 0; quad "
-                      f"{fsym(c, ra.label)} = {fsym(c, rb.label)} - Σ F^(({n2}))", numbered=False)
+                  "block {n2} gives ${a}$:").format(a=fsym(c, ra.label), b=fsym(c, rb.label), c=fsym(c, rc.label),
+                                                   A=pt(ja), n2=n2, n3=n3))
+            c.formula(f"{vsym(c, rb.label)} + Σ arrow(F)^(({n3})) + {vsym(c, rc.label)} = 0; quad "
+                      f"{vsym(c, ra.label)} = {vsym(c, rb.label)} - Σ arrow(F)^(({n2}))", label=poly)
+            c.p(t("The couples follow from the moments of the block about ${A}$ and of the yoke about ${Y}$:").format(
+                A=pt(ja), Y=pt(jy)))
+            c.formula(_couple_line(c, s, rb, n2, z[ja], ja, own=True), _yoke_couple_line(c, s, g, rb, rc, z),
+                      where=[_sum_where(c, ja), ("M_(i j)", t("the couple of the slide, the moment of link $i$ on "
+                                                              "link $j$, N·m (counter-clockwise positive)"))])
         elif g.kind in ("RRR", "RRP"):
             ja, jb = g.joints[0], g.joints[1]
             l2 = abs(z[jb] - z[ja])
@@ -423,19 +460,26 @@ def _groups(c: Ctx, s) -> None:
                                     V(abs(complex(rc.tangential[i])), sig=4), N))
             c.formula(*lines, where=[_sum_where(c, jb)])
             if g.kind == "RRR":
-                poly = (f"{vsym(c, 'Rτ' + ra.label[1:])} + Σ arrow(F)^(({n2})) + Σ arrow(F)^(({n3})) + "
+                eq = (f"{vsym(c, 'Rτ' + ra.label[1:])} + Σ arrow(F)^(({n2})) + Σ arrow(F)^(({n3})) + "
                         f"{vsym(c, 'Rτ' + rc.label[1:])} + {vsym(c, 'Rn' + rc.label[1:])} + "
                         f"{vsym(c, 'Rn' + ra.label[1:])} = 0")
                 c.p(t("The normal components close the force polygon of the group; the inner reaction follows from "
                       "the polygon of link {n3}, ${b} = -({c} + Σ arrow(F)^(({n3})))$:").format(
                     n3=n3, b=vsym(c, rb.label), c=vsym(c, rc.label)))
             else:
-                poly = (f"{vsym(c, 'Rτ' + ra.label[1:])} + Σ arrow(F)^(({n2})) + Σ arrow(F)^(({n3})) + "
+                eq = (f"{vsym(c, 'Rτ' + ra.label[1:])} + Σ arrow(F)^(({n2})) + Σ arrow(F)^(({n3})) + "
                         f"{vsym(c, rc.label)} + {vsym(c, 'Rn' + ra.label[1:])} = 0")
                 c.p(t("The normal component and the guide's reaction close the force polygon of the group; the inner "
-                      "reaction follows from the polygon of the slider, ${b} = -({c} + Σ arrow(F)^(({n3})))$:").format(
+                      "reaction follows from the polygon of link {n3}, ${b} = -({c} + Σ arrow(F)^(({n3})))$:").format(
                     b=vsym(c, rb.label), c=vsym(c, rc.label), n3=n3))
-            c.formula(poly, numbered=False)
+            c.formula(eq, label=poly)
+            couple = c.zero(float(rc.couple[i]) if rc.couple is not None else 0.0, "N·m")
+            if g.kind == "RRP" and (g.guide.moving or couple != 0.0):  # the guide holds the slider against turning
+                c.p(t("The guide's reaction ${c}$ comes with the couple of the slide, from the moments of link {n3} "
+                      "about ${B}$:").format(c=fsym(c, rc.label), n3=n3, B=pt(jb)))
+                c.formula(_couple_line(c, s, rc, n3, z[jb], jb),
+                          where=[("M_(i j)", t("the couple of the slide, the moment of link $i$ on link $j$, N·m "
+                                               "(counter-clockwise positive)"))])
         else:
             ja, jc = g.joints
             rho = abs(z[ja] - z[jc])
@@ -472,10 +516,53 @@ def _groups(c: Ctx, s) -> None:
             c.formula(line, where=[_sum_where(c, jc)])
             c.p(t("The polygons of the block and of the slotted link give the other two:"))
             c.formula(f"{vsym(c, ra.label)} = {vsym(c, rb.label)} - Σ arrow(F)^(({n2})); quad "
-                      f"{vsym(c, rc.label)} = -({vsym(c, rb.label)} + Σ arrow(F)^(({n3})))", numbered=False)
-        _group_table(c, s, g)
+                      f"{vsym(c, rc.label)} = -({vsym(c, rb.label)} + Σ arrow(F)^(({n3})))", label=poly)
+        _group_table(c, s, g, poly)
     _crank(c, s)
     _reactions_table(c, s)
+
+
+def _couple_sym(r) -> str:
+    """The couple of a slide's reaction 'R34' as typst math: M_(34)."""
+    return f"M_({r.label[1:].replace(',', ' ')})"
+
+
+def _couple_line(c: Ctx, s, r, block: int, about: complex, joint: str, own: bool = False) -> str:
+    """The couple of a slide from the moments of its block `block` about `joint`: the guide's link on
+    the block holds it against the block's own moment, M_kn = −Σ M^(n); the block on the guide's
+    link (`own`, the pair's first link) passes its own moment on, M_nk = Σ M^(n)."""
+    i = s.force_position
+    total = c.zero(known_moment(s, block, about, i), "N·m")
+    value = c.zero(float(r.couple[i]) if r.couple is not None else 0.0, "N·m")
+    lhs = f"{_couple_sym(r)} = {'' if own else '-'}Σ M_({pt(joint)})^(({block}))"
+    if total == 0.0 and value == 0.0:
+        return lhs + " = 0"
+    vals = [_small(total, 5)]
+    sub = "{0}" if own else _neg("-{0}", vals, 0)
+    return c.calc(lhs, sub, vals, _small(value, 4), c.t("N·m"))
+
+
+def _small(x: float, sig: int) -> V:
+    """`x` to `sig` significant digits in decimals (0,0006849, not 6,849·10⁻⁴, among the other decimals)."""
+    if x == 0.0 or abs(x) >= 1e-3:
+        return V(x, sig=sig)
+    return V(x, decimals=sig - 1 - math.floor(math.log10(abs(x))))
+
+
+def _yoke_couple_line(c: Ctx, s, g, rb, rc, z) -> str:
+    """An RPP yoke's guide couple from the yoke's moments about Y: its loads, the block's pressure
+    R23 at A and the slide's couple M23, M_03 = −(Σ M_Y^(3) + M_23)."""
+    from ...linkage.motion import cross
+
+    i = s.force_position
+    ja, jy = g.joints
+    n3 = g.numbers[1]
+    loads = known_moment(s, n3, z[jy], i) + float(cross(z[ja] - z[jy], complex(rb.force[i])))
+    m23 = c.zero(float(rb.couple[i]) if rb.couple is not None else 0.0, "N·m")
+    value = c.zero(float(rc.couple[i]) if rc.couple is not None else 0.0, "N·m")
+    lhs = f"{_couple_sym(rc)} = -(Σ M_({pt(jy)})^(({n3})) + {_couple_sym(rb)})"
+    vals = [V(c.zero(loads, "N·m"), sig=5), V(m23, sig=5)]
+    return c.calc(lhs, _neg("-({0} + {1})", vals, 1), vals, V(value, sig=4), c.t("N·m"))
 
 
 def _sum_where(c: Ctx, joint: str):
@@ -489,7 +576,7 @@ def _label(pair) -> str:
     return pair_label(pair)
 
 
-def _group_table(c: Ctx, s, g) -> None:
+def _group_table(c: Ctx, s, g, poly: str) -> None:
     """The reactions of one group found: their components and sizes."""
     t, n = c.t, c.n
     i = s.force_position
@@ -497,13 +584,18 @@ def _group_table(c: Ctx, s, g) -> None:
     for q in g.pairs:
         r = s.forces.reaction(_label(q))
         if r.tangential is not None:
-            parts.append(f"${fsym(c, 'Rτ' + r.label[1:])} = {c.q(abs(complex(r.tangential[i])), decimals=1)}$")
-            parts.append(f"${fsym(c, 'Rn' + r.label[1:])} = {c.q(abs(complex(r.normal[i])), decimals=1)}$")
-        parts.append(f"${fsym(c, r.label)} = {c.q(abs(complex(r.force[i])), decimals=1)}$")
-    c.p(t("The group's reactions, N: {list}.").format(list=", ".join(parts)))
+            parts.append(f"${fsym(c, 'Rτ' + r.label[1:])} = {mq(c.nf(abs(complex(r.tangential[i]))))}$")
+            parts.append(f"${fsym(c, 'Rn' + r.label[1:])} = {mq(c.nf(abs(complex(r.normal[i]))))}$")
+        parts.append(f"${fsym(c, r.label)} = {mq(c.nf(abs(complex(r.force[i]))))}$")
+    c.p(t("The group's reactions from its polygons ({{eq:{poly}}}), N: {list}.").format(poly=poly,
+                                                                                     list=", ".join(parts)))
 
 
 def _crank(c: Ctx, s) -> None:
+    """The crank's equation of moments about its pivot with every reaction on it: R21 of the first
+    group's link and, where several groups hang on the crank pin (a V compressor), R41, … each with
+    its arm and its sign (counter-clockwise positive), the couple of a slide on the crank, and the
+    crank's own loads where they have a moment: M_ур = −Σ M_O."""
     from ...linkage.motion import cross
 
     t = c.t
@@ -511,30 +603,51 @@ def _crank(c: Ctx, s) -> None:
     kin = s.sheet1.cycle.kin
     i = s.force_position
     r01 = s.forces.reaction(_label(mech.pairs[0]))
-    r12 = next(r for r in s.forces.reactions if r.pair.links[0] == 1)
+    on_crank = [r for r in s.forces.reactions if r.pair.links[0] == 1]  # R12, R14, …: their opposites act on it
     zo = complex(kin.z[mech.crank.pivot][i])
-    moment_r = float(cross(complex(r12.at[i]) - zo, -complex(r12.force[i])))
-    others = known_moment(s, 1, zo, i) - moment_r
     mb = float(s.balancing[i])
-    size = abs(complex(r12.force[i]))
-    h = abs(moment_r) / size if size > 0 else 0.0
-    r21 = "R_21"
-    c.p(t("The crank comes last. On it act the reaction ${r21} = -{r12}$ of link 2, its own loads and the balancing "
-          "moment $M_\"ур\"$ of the motor; the frame's reaction ${r01}$ closes its polygon. The moments about "
-          "${O}$:").format(r21="arrow(R)_21", r12=vsym(c, r12.label), r01=vsym(c, r01.label), O=pt(mech.crank.pivot)))
-    if abs(others) <= 1e-9 * max(1.0, abs(moment_r)):
-        c.formula(c.calc(f'abs(M_"ур") = {r21} h_21', "{0} dot {1}", [V(size, sig=5), V(h, sig=4)], V(abs(mb), sig=4),
-                         t("N·m")),
-                  where=['M_"ур"', ("h_21", t("the arm of $R_21$ about the crank's pivot, m"))])
+    terms, vals, where, names = [], [], ['M_"ур"'], []
+    total = 0.0
+    for r in on_crank:
+        k = r.pair.links[1]
+        moment = float(cross(complex(r.at[i]) - zo, -complex(r.force[i])))  # the moment of R_k1 about O
+        size = abs(complex(r.force[i]))
+        h = abs(moment) / size if size > 0 else 0.0
+        sym = fsym(c, f"R{k}1") if k < 10 else fsym(c, f"R{k},1")
+        hs = f"h_({k}1)" if k < 10 else f"h_({k},1)"
+        names.append((vsym(c, f"R{k}1" if k < 10 else f"R{k},1"), vsym(c, r.label), k))
+        total += moment
+        if c.zero(moment, "N·m") == 0.0:
+            continue
+        terms.append(("-" if moment > 0 else "+", f"{sym} {hs}", "{%d} dot {%d}" % (len(vals), len(vals) + 1)))
+        vals += [V(size, sig=5), V(h, decimals=4 - math.floor(math.log10(h)) if h > 0 else 4)]  # 5 digits, no 10⁻⁴
+        where.append((hs, t("the arm of ${r}$ about the crank's pivot, m").format(r=sym)))
+        if r.couple is not None and c.zero(float(r.couple[i]), "N·m") != 0.0:  # a slide on the crank: its couple
+            mk = -float(r.couple[i])
+            total += mk
+            msym = f"M_({k} 1)"
+            terms.append(("-" if mk > 0 else "+", msym, "{%d}" % len(vals)))
+            vals.append(V(abs(mk), sig=5))
+            where.append((msym, t("the moment of the slide's couple on the crank, N·m")))
+    own = known_moment(s, 1, zo, i) - total  # the crank's own weight, inertia force and moment
+    if c.zero(own, "N·m") != 0.0:
+        sm = f"Σ M_({pt(mech.crank.pivot)})^((1))"
+        terms.append(("-" if own > 0 else "+", sm, "{%d}" % len(vals)))
+        vals.append(V(abs(own), sig=5))
+        where.append((sm, t("the moment about the crank's pivot of the crank's own loads (its weight and inertia "
+                            "force), N·m")))
+    reactions = ", ".join(t("${r} = -{q}$ of link {k}").format(r=a, q=b, k=k) for a, b, k in names)
+    c.p(t("The crank comes last. On it act the reactions {reactions}, its own loads and the balancing moment "
+          "$M_\"ур\"$ of the motor; the frame's reaction ${r01}$ closes its polygon. From the equation of its moments "
+          "about ${O}$ (counter-clockwise positive), $M_\"ур\" + Σ M_({O}) = 0$:").format(
+        reactions=reactions, r01=vsym(c, r01.label), O=pt(mech.crank.pivot)))
+    if not terms:
+        c.formula('M_"ур" = 0', where=where)
     else:
-        other = others if moment_r >= 0 else -others
-        c.formula(c.calc(f'abs(M_"ур") = abs({r21} h_21 plus.minus Σ M_({pt(mech.crank.pivot)})^((1)))',
-                         "abs({0} - {1})" if other < 0 else "abs({0} + {1})", [V(abs(moment_r), sig=5), V(abs(other), sig=5)],
-                         V(abs(mb), sig=4), t("N·m")),
-                  where=['M_"ур"', ("h_21", t("the arm of $R_21$ about the crank's pivot, m")),
-                         (f"Σ M_({pt(mech.crank.pivot)})^((1))",
-                          t("the moment about the crank's pivot of the crank's own loads (its weight and inertia force), "
-                            "N·m"))])
+        lhs = "M_\"ур\" = " + " ".join((sg if k or sg == "-" else "") + " " + body
+                                        for k, (sg, body, _) in enumerate(terms)).strip()
+        sub = " ".join((sg if k or sg == "-" else "") + " " + leaf for k, (sg, _, leaf) in enumerate(terms)).strip()
+        c.formula(c.calc(lhs, sub, vals, V(mb, sig=4), t("N·m")), where=where)
     w = kin.omega1
     drives = mb * w > 0
     sense = t("counter-clockwise") if mb > 0 else t("clockwise")
@@ -551,8 +664,12 @@ def _reactions_table(c: Ctx, s) -> None:
     rows = []
     for r in s.forces.reactions:
         what = t("pin") if r.pair.kind == "R" else t("slide")
-        rows.append([f"${fsym(c, r.label)}$", f"${pt(r.pair.joint)}$", what,
-                     c.qty(abs(complex(r.force[i])), t("N"), decimals=1)])
+        rows.append([f"${fsym(c, r.label)}$", f"${pt(r.pair.joint)}$", what, c.nf(abs(complex(r.force[i]))) + NBSP + t("N")])
+    for r in s.forces.reactions:  # the slides' couples, each beside its reaction's pair
+        couple = c.zero(float(r.couple[i]), "N·m") if r.couple is not None else 0.0
+        if couple != 0.0:
+            rows.append([f"${_couple_sym(r)}$", f"${pt(r.pair.joint)}$", t("couple of the slide"),
+                         c.n(couple, decimals=2 if abs(couple) >= 0.01 else None, sig=3, sci=False) + NBSP + t("N·m")])
     # the balancing moment in the same table, each value with its own unit (the column holds N and N·m)
     rows.append(['$M_"ур"$', "—", "—", c.qty(float(s.balancing[i]), t("N·m"), decimals=2)])
     c.p(t("The reactions of the pairs in position {label} are given in Table {{tab:dyn_reactions}}.").format(
@@ -645,11 +762,14 @@ def _pairs(c: Ctx, s) -> None:
         m = abs(float(couple.m[i]))
         size = abs(complex(f.force[i]))
         l = pair_arm(mech)
-        c.p(t("The slider {n} turns with its moving guide and has no second joint, so its couple ${m}$ is replaced "
+        from .linkage_part import role_name
+
+        c.p(t("The {what} ({n}) turns with its moving guide and has no second joint, so its couple ${m}$ is replaced "
               "by a pair of forces across the guide: ${f1}$ at its pin ${a}$ and ${f2}$ at the point ${b}$ — the "
-              "point of the slider {n} (of its guide line) at the distance $l = {l}$ m from ${a}$ along the guide. "
-              "On the lever ${b}$ is drawn at its image $\"b′\"$, the end of the ray $p \"b′\"$ of its velocity "
+              "point of link {n} (of its guide line) at the distance $l = {l}$ m from ${a}$ along the guide. "
+              "On the lever ${b}$ is drawn at its image ${img}$, the end of the ray $p {img}$ of its velocity "
               "$v_{bb} = v_{aa} + ω_{n} times {ab}$. The forces of the pair:").format(
+                  what=role_name(c, s.sheet1, couple.link), img=f.point.lower(),
                   n=mech.link(couple.link).number, m=fsym(c, base), f1=fsym(c, first.symbol), f2=fsym(c, f.symbol),
                   a=pt(first.point), b=pt(f.point), l=c.q(l, sig=4), bb=pt(f.point), aa=pt(first.point),
                   ab=pt(first.point) + " " + pt(f.point)))
@@ -667,11 +787,17 @@ def _reduction(c: Ctx, s) -> None:
     d = s.dynamics
     positions = s.sheet1.cycle.positions
     c.doc.add(Heading(2, t("Dynamic model: reduced moment and reduced moment of inertia")))
-    c.p(t("The mechanism is replaced by its dynamic model: the crank with the reduced moment of the resistance forces "
+    gas = bool(s.input.gas)  # gas forces drive on one stroke and resist on the other: M_пр is not of resistances only
+    c.p(t("The mechanism is replaced by its dynamic model: the crank with the reduced moment of the driving and "
+          "resisting gas forces, the useful resistance and the weights and the reduced moment of inertia of all the "
+          "links {cite:artobolevsky}, found from the equality of powers and of kinetic energies:") if gas else
+        t("The mechanism is replaced by its dynamic model: the crank with the reduced moment of the resistance forces "
           "and weights and the reduced moment of inertia of all the links {cite:artobolevsky}, found from the "
           "equality of powers and of kinetic energies:"))
+    m_pr = ('M_"пр"', t("the reduced moment of the gas forces (driving and resisting), the useful resistance and the "
+                        "weights, N·m")) if gas else 'M_"пр"'
     c.formula('M_"пр" = 1/ω_1 Σ (F_i v_i cos α_i + M_i ω_i)',
-              where=['M_"пр"', ("F_i, v_i", t("a force and the velocity of its point, N, m/s")),
+              where=[m_pr, ("F_i, v_i", t("a force and the velocity of its point, N, m/s")),
                      ("α_i", t("the angle between them")), ("M_i, ω_i", t("a moment and the angular velocity of its "
                                                                         "link, N·m, rad/s"))])
     c.formula('J_"пр" = Σ (m_i (v_(S i)/ω_1)^2 + J_(S i) (ω_i/ω_1)^2) + J_"рот"',
@@ -688,10 +814,11 @@ def _reduction(c: Ctx, s) -> None:
         at = lambda y: float(np.interp(p.travel, d.travel, y))  # noqa: E731
         rows.append([p.label, n(math.degrees(p.travel), decimals=1), n(d.sense * float(s.reduced_moment[k]), decimals=2),
                      n(float(s.reduced_inertia[k]), sig=5), n(at(d.A_r), decimals=2), n(at(d.dT), decimals=2)])
-    rows.append(["0", "360", n(float(d.M_r[-1]), decimals=2), n(float(d.J_r[-1]), sig=5), n(float(d.A_r[-1]), decimals=2),
+    rows.append(["0", n(math.degrees(float(d.travel[-1])), decimals=1), n(float(d.M_r[-1]), decimals=2), n(float(d.J_r[-1]), sig=5), n(float(d.A_r[-1]), decimals=2),
                  n(float(d.dT[-1]), decimals=2)])
-    c.table("dyn_reduced", t("Reduced moment, reduced moment of inertia, work of the resistances and change of the "
-                             "kinetic energy"),
+    c.table("dyn_reduced", t("Reduced moment, reduced moment of inertia, work of the gas forces, resistances and "
+                             "weights and change of the kinetic energy") if gas else
+            t("Reduced moment, reduced moment of inertia, work of the resistances and change of the kinetic energy"),
             ["№", "$Δ φ$, °", '$M_"пр"$, ' + t("N·m"), '$J_"пр"$, ' + t("kg·m²"), '$A_"с"$, ' + t("J"),
              "$Δ T$, " + t("J")], rows,
             align=["center"] + ["right"] * 5, widths=[0.6, 0.8, 1.1, 1.2, 1.1, 1.1])
@@ -712,7 +839,7 @@ def _reduction(c: Ctx, s) -> None:
                   "stroke $H$:"))
             c.formula(c.calc('A_"с" = H S_F cos α', "{0} dot {1} dot ({2})", [V(st.length, sig=5), V(area, sig=6),
                                                                              V(k, sig=6)], V(a_c, sig=5), t("J")),
-                      where=['A_"с"', ("H", t("the stroke of the output slider, m")),
+                      where=['A_"с"', ("H", t("the stroke of the output link, m")),
                              ("S_F", t("the area under the diagram of the useful resistance against the share of the "
                                        "stroke, N"))])
         elif ld.kind == "force":
@@ -720,7 +847,7 @@ def _reduction(c: Ctx, s) -> None:
                   "resistance takes the area $S_F$ under its diagram times the stroke $H$:"))
             c.formula(c.calc('A_"с" = -H S_F', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)], V(a_c, sig=5),
                              t("J")),
-                      where=['A_"с"', ("H", t("the stroke of the output slider, m")),
+                      where=['A_"с"', ("H", t("the stroke of the output link, m")),
                              ("S_F", t("the area under the diagram of the useful resistance against the share of the "
                                        "stroke, N"))])
         else:
@@ -734,6 +861,7 @@ def _reduction(c: Ctx, s) -> None:
     if s.input.gas:
         from ...linkage.gas import _row_integral, piston
 
+        works = []
         for gl in s.input.gas:
             ln = s.sheet1.mechanism.link(gl.link)
             h = piston(gl, s.sheet1.mechanism).stroke
@@ -744,6 +872,18 @@ def _reduction(c: Ctx, s) -> None:
             c.formula(c.calc(f'A_(P {ln.number}) = A H (S_1 - S_2) dot 10^6', "{0} dot {1} dot ({2} - {3}) dot 10^6",
                              [V(gl.area, exact=True), V(h, sig=6), V(s1, sig=6), V(s2, sig=6)],
                              V(gl.area * h * (s1 - s2) * 1.0e6, sig=5), t("J")), numbered=False)
+            works.append((f"A_(P {ln.number})", gl.area * h * (s1 - s2) * 1.0e6))
+        if ld is None:  # the gas forces alone: their works are A_с, driving on one stroke, resisting on the other
+            c.p(t("The weights do no work over a cycle (their centres come back), so the work of the applied forces "
+                  "over the cycle is the gas forces' (negative: over the cycle they take work from the motor):")
+                if a_c < 0 else
+                t("The weights do no work over a cycle (their centres come back), so the work of the applied forces "
+                  "over the cycle is the gas forces' (positive: over the cycle they drive the machine):"))
+            vals = [V(w, sig=5) for _, w in works]
+            sub = " + ".join("({%d})" % k if w < 0 and k else "{%d}" % k for k, (_, w) in enumerate(works))
+            c.formula(c.calc('A_"с" = ' + " + ".join(sym for sym, _ in works), sub, vals, V(a_c, sig=5), t("J")),
+                      where=[('A_"с"', t("the work of the gas forces, the resistances and the weights over a cycle, "
+                                         "J"))])
     c.p(t("Over a steady cycle the driving work equals the resistance work, so the constant driving moment of the "
           "motor reduced to the crank is"))
     m = abs(d.M_d)
@@ -752,7 +892,7 @@ def _reduction(c: Ctx, s) -> None:
     c.p(t("This is the mean reduced moment $M$ = {m} by which the power of the motor is chosen in the chapter on the "
           "gear mechanisms.").format(m=c.qty(m, t("N·m"), sig=5)))
     c.doc.claim(kind="linkage_drive_moment", moment=m, work=a_c)
-    c.p(t("The driving work grows linearly, $A_\"д\" = M_\"д\" φ$, and the kinetic energy of the machine changes by "
+    c.p(t("The driving work grows linearly, $A_\"д\" = M_\"д\" Δ φ$, and the kinetic energy of the machine changes by "
           "$Δ T = A_\"д\" + A_\"с\"$ (Table {tab:dyn_reduced}); over the cycle $Δ T$ comes back to zero."))
     if c.has("linkage_dynamics"):
         c.p(t("The diagrams of $M_\"пр\"$ and $M_\"д\"$, of $Δ T$ (with $Δ T_\"I\"$ of the flywheel's calculation) and of "
@@ -821,7 +961,7 @@ def _flywheel(c: Ctx, s) -> None:
                      ('J_"II"', t("the reduced moment of inertia of the second group, kg·m²"))])
     hi, lo = float(me.dT_I[me.i_max]), float(me.dT_I[me.i_min])
     deg = lambda k: c.qd(math.degrees(float(d.travel[k])), decimals=1)  # noqa: E731
-    c.p(t("Over the turn $Δ T_\"I\"$ is largest at $φ = {phi_max}$ and smallest at $φ = {phi_min}$; the moment of "
+    c.p(t("Over the turn $Δ T_\"I\"$ is largest at $Δ φ = {phi_max}$ and smallest at $Δ φ = {phi_min}$; the moment of "
           "inertia the first group needs and the flywheel's:").format(phi_max=deg(me.i_max), phi_min=deg(me.i_min)))
     vals = [V(hi, sig=6), V(lo, sig=6), V(fw.delta, exact=True), V(fw.omega_mean, sig=5)]
     c.formula(c.calc('J_"I" = (Δ T_("I" max) - Δ T_("I" min))/(δ ω_1^2)', _neg("({0} - {1})/({2} dot {3}^2)", vals, 1),

@@ -171,7 +171,10 @@ def linkage_results(c: Ctx) -> list[str]:
         return out
     cy = s1.cycle
     if cy.stroke is not None:
-        move = (t("the stroke of the slider $H$ = {h}").format(h=c.qty(cy.stroke * 1000, t("mm"), decimals=2))
+        from .linkage_part import role_genitive
+
+        move = (t("the stroke of the {whose} $H$ = {h}").format(whose=role_genitive(c, s1, s1.mechanism.output.link, False),
+                                                                  h=c.qty(cy.stroke * 1000, t("mm"), decimals=2))
                 if s1.mechanism.output.kind == "slider" else
                 t("the swing of the rocker $ψ$ = {psi}°").format(psi=n(math.degrees(cy.stroke), decimals=2)))
         if cy.working is not None:

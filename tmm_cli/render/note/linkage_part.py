@@ -17,7 +17,7 @@ import re
 from ...i18n import N_
 from ...linkage.positions import PRESSURE_WARN_DEG, displacement, output_coordinate
 from ...linkage.scales import PLAN_MM, SCHEME_MM
-from ...linkage.vector_plans import middle_of_working
+from ...linkage.vector_plans import book_symbols, middle_of_working
 from ...linkage.roles import link_roles
 from ..terminal.mechanism import ROLE_WORDS, pattern
 from .ctx import Ctx, V, sheet1_of
@@ -101,10 +101,17 @@ class _Sym:
             for gd in ((g.guide,) if g.guide is not None else ()) + g.guides:
                 if gd.moving and point is not None:
                     names.append(f"{point}{mech.link(gd.link).number}")
+        self.book = book_symbols(mech)  # 'v_BB3' → 'v_B5B3': both points with their links' numbers
+        for core, book in self.book.items():
+            a, b = core.partition("_")[2], book.partition("_")[2]
+            k = 0
+            while k < min(len(a), len(b)) and a[-1 - k] == b[-1 - k]:
+                k += 1
+            names.append(b[:len(b) - k])  # 'B5': the point of the sliding link
         self.names = names
 
     def parts(self, symbol: str) -> tuple[str, str, list[str]]:
-        head, _, pts = symbol.partition("_")
+        head, _, pts = self.book.get(symbol, symbol).partition("_")
         base, _, sup = head.partition("^")
         return base, sup, _split_points(pts, self.names)
 
@@ -126,6 +133,22 @@ def _lengths(m) -> dict[str, float]:
         for name, length in zip(g.links, g.lengths):
             size[name] = length
     return size
+
+
+def role_name(c: Ctx, s, link: str) -> str:
+    """A link by its role and name, the one name it has everywhere in the note: «кулиса Y»,
+    «кулисный камень B», «коромысло DB» (the words of Table 1, :func:`~tmm_cli.linkage.roles.link_roles`)."""
+    return f"{c.t(ROLE_WORDS[link_roles(s)[link]])} {link}"
+
+
+def role_genitive(c: Ctx, s, link: str, named: bool = True) -> str:
+    """The same name in the genitive, for «ход ползуна B», «ход кулисы Y» (en: "slider B"); without
+    the link's name where a symbol follows («ход ползуна H»)."""
+    role = link_roles(s)[link]
+    word = {"crank": c.tc("genitive", "crank"), "rocker": c.tc("genitive", "rocker"),
+            "coupler": c.tc("genitive", "connecting rod"), "slider": c.tc("genitive", "slider"),
+            "slotted": c.tc("genitive", "slotted link"), "block": c.tc("genitive", "slotted-link block")}[role]
+    return f"{word} {link}" if named else word
 
 
 def _link_words(c: Ctx, s) -> str:
@@ -204,9 +227,13 @@ def _positions(c: Ctx, s) -> None:
                      t("rad/s")), where=["ω_1", "n_1"])
     out = m.output
     slider = out.kind == "slider"
-    what = (t("the slider {link}").format(link=out.link) if slider else t("the rocker {link}").format(link=out.link))
+    what = role_name(c, s, out.link)  # the output link by its role, as in Table 1 (кулиса Y, кулисный камень B, …)
     rule = cy.start_rule
-    if rule == "working":
+    if rule == "gas":  # a piston of an engine or a compressor: its dead centre nearest the cylinder's head
+        text = t("The output link is {what}, the piston of a cylinder. Position 0 is its dead centre nearest the "
+                 "cylinder head, where its indicator diagram begins (the piston then moves away from the head); the "
+                 "gas force acts on both strokes. The crank angle of position 0 is $φ_0 = {start}°$.")
+    elif rule == "working":
         text = t("The output link is {what}. Position 0 is its extreme position where the working stroke begins; the "
                  "working stroke is the slower one (it takes the larger crank angle). The crank angle of position 0 "
                  "is $φ_0 = {start}°$.")
@@ -244,10 +271,11 @@ def _positions(c: Ctx, s) -> None:
         last = next(p for p in cy.positions if p.extreme == "end")
         wk, rt = math.degrees(cy.working), math.degrees(cy.returning)
         if slider:
-            c.p(t("The stroke of the slider (the distance between its extreme positions {a} and {b}):").format(
-                a=first.label, b=last.label))
+            c.p(t("The stroke of the {whose} (the distance between its extreme positions {a} and {b}):").format(
+                whose=role_genitive(c, s, out.link), a=first.label, b=last.label))
             mm = t("mm")
-            c.formula(f"H = {c.q(cy.stroke * 1000, decimals=2)} {c.u(mm)}", where=["H"])
+            c.formula(f"H = {c.q(cy.stroke * 1000, decimals=2)} {c.u(mm)}",
+                      where=[("H", t("the stroke of the {whose}, mm").format(whose=role_genitive(c, s, out.link)))])
         else:
             c.p(t("The swing of the rocker (the angle between its extreme positions {a} and {b}):").format(
                 a=first.label, b=last.label))
@@ -397,9 +425,9 @@ def _plans(c: Ctx, s, pl) -> None:
         label=pos.label))
     rows = []
     for ln in m.links:
-        w, e = P.w[ln.name], P.e[ln.name]
+        w, e = c.zero(P.w[ln.name], "rad/s"), c.zero(P.e[ln.name], "rad/s²")
         rows.append([str(ln.number), ln.name, c.n(w, sig=4), c.n(e, sig=4),
-                     (_sense(c, w) if abs(w) > 1e-12 else "—") + " / " + (_sense(c, e) if abs(e) > 1e-12 else "—")])
+                     (_sense(c, w) if w != 0.0 else "—") + " / " + (_sense(c, e) if e != 0.0 else "—")])
     c.table("linkage_omega", t("Angular velocities and accelerations of the links, position {label}").format(label=pos.label),
             ["№", t("Link"), f"$ω$, {rad_s}", f"$ε$, {rad_s2}", t("Sense of ω / of ε")], rows,
             align=["center", "center", "right", "right", "left"], widths=[0.4, 0.8, 1.0, 1.0, 3.2])
@@ -489,10 +517,10 @@ def _group_velocity(c: Ctx, P: _Plans, g) -> None:
         if g.guide.moving:
             kn = P.m.link(g.guide.link).number
             lines.append(P.measured(vp, P.vel[f"v_{jb}{jb}{kn}"], ms, "μ_v"))
-            c.p(t("The slider {b} slides along a guide of link {k}, which turns: {bk} is the point of link {k} under the "
-                  "slider (found on the plan by similarity), the slider's velocity relative to it is along the guide, "
-                  "and the slider turns with link {k} ($ω_{n3} = ω_{k}$).").format(
-                b=jm(jb), k=kn, bk=jm(f"{jb}{kn}"), n3=n3))
+            c.p(t("The {what} ({n3}) slides along a guide of link {k}, which turns: {bk} is the point of link {k} under "
+                  "it (found on the plan by similarity), its velocity relative to that point is along the guide, "
+                  "and it turns with link {k} ($ω_{n3} = ω_{k}$).").format(
+                what=role_name(c, P.s, g.links[1]), k=kn, bk=jm(f"{jb}{kn}"), n3=n3))
         lines += [_omega_line(c, P, g.links[0], v1, g.lengths[0], True, "l" + sub(ja, jb))]
     else:
         ja, jc = g.joints
@@ -543,7 +571,10 @@ def _sliding_group(c: Ctx, P: _Plans, g, plan, unit: str, mu: str) -> None:
         turning[f"a^k_{p3}{ja}{n2}"] = g.links[1]
         if g.guide.moving:
             turning[f"a^k_{p3}{p3}{P.m.link(g.guide.link).number}"] = g.guide.link
+    still = {sym: ln for sym, ln in turning.items() if _never_turns(P, ln)}  # a translating yoke: no Coriolis term
     for v in dict((v.symbol, v) for v in vecs).values():
+        if v.symbol in still:
+            continue
         if v.symbol in turning:
             rel = P.vel["v_" + v.symbol[4:]]
             num = P.m.link(turning[v.symbol]).number
@@ -556,20 +587,40 @@ def _sliding_group(c: Ctx, P: _Plans, g, plan, unit: str, mu: str) -> None:
             continue  # a guide's point found by similarity
         else:
             lines.append(P.measured(plan, v, unit, mu))
+    moving = sorted({P.m.link(ln).number for sym, ln in turning.items() if sym not in still})
     if known:
-        c.p(t("The blocks slide along turning guides, so their accelerations relative to them have Coriolis "
-              "components (the relative velocity turned by 90° in the sense of the guide's ω). The known components "
-              "and their segments on the plan:"))
+        c.p((t("A block slides along the turning guide of link {k}, so its acceleration relative to the guide has a "
+               "Coriolis component (the relative velocity turned by 90° in the sense of $ω_{k}$). The known "
+               "components and their segments on the plan:") if len(moving) == 1 else
+             t("The blocks slide along turning guides, so their accelerations relative to them have Coriolis "
+               "components (the relative velocity turned by 90° in the sense of the guide's ω). The known components "
+               "and their segments on the plan:")).format(k=moving[0] if moving else ""))
         c.formula(*known)
     if plan.kind == "velocity":
         same = [f"{q}_{n} = {q}_{P.m.link(gd.link).number}" if gd.moving else f"{q}_{n} = 0"
                 for q in ("ω",) for n, gd in zip((n2, n3), g.guides or (g.guide, g.guide))]
-        c.p(t("The blocks of the group only slide: each turns with the link of its guide."))
+        if g.kind == "PRP":
+            c.p(t("Links {n2} and {n3} of the group only slide: each turns with the link of its guide (on a fixed guide "
+                  "it does not turn).").format(n2=n2, n3=n3))
+        else:
+            c.p(t("The block {n2} only slides in the slot of the yoke {n3} and turns with it; the yoke slides along its "
+                  "guide and turns with the guide's link.").format(n2=n2, n3=n3))
     else:
+        if still and g.kind == "RPP":
+            c.p(t("The yoke's guide is fixed: the yoke {n3} translates ($ω_{n3} = 0$), so the block's acceleration "
+                  "relative to it has no Coriolis component.").format(n3=n3))
         same = [f"{q}_{n} = {q}_{P.m.link(gd.link).number}" if gd.moving else f"{q}_{n} = 0"
                 for q in ("ε",) for n, gd in zip((n2, n3), g.guides or (g.guide, g.guide))]
         c.p(t("From the plan:"))
     c.formula(*(lines + same))
+
+
+def _never_turns(P: _Plans, link: str) -> bool:
+    """Whether `link` does not turn over the whole cycle (a yoke on a fixed guide: ω ≡ 0)."""
+    import numpy as np
+
+    w = np.asarray(P.s.cycle.kin.omega[link], dtype=float)
+    return float(np.max(np.abs(w))) <= 1e-9 * abs(P.m.crank.omega)
 
 
 def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
@@ -613,9 +664,9 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
             kn = P.m.link(g.guide.link).number
             rel, cor = P.vel[f"v_{jb}{jb}{kn}"], P.acc[f"a^k_{jb}{jb}{kn}"]
             wk = abs(P.w[g.guide.link]) if not P.tiny(P.w[g.guide.link]) else 0.0
-            c.p(t("The slider moves along the turning guide of link {k}: the acceleration of {b} relative to {bk} has a "
-                  "Coriolis component across the guide (the relative velocity turned by 90° in the sense of $ω_{k}$).")
-                .format(k=kn, b=jm(jb), bk=jm(f"{jb}{kn}")))
+            c.p(t("The {what} ({n3}) moves along the turning guide of link {k}: the acceleration of {b} relative to {bk} "
+                  "has a Coriolis component across the guide (the relative velocity turned by 90° in the sense of "
+                  "$ω_{k}$).").format(what=role_name(c, P.s, g.links[1]), n3=n3, k=kn, b=jm(jb), bk=jm(f"{jb}{kn}")))
             known.append(c.calc(f"{P.sym.mag(cor.symbol)} = 2 ω_{kn} {P.sym.mag(rel.symbol)}", "2 dot {0} dot {1}",
                                 [V(wk, sig=5), V(0.0 if P.tiny(rel.magnitude, P.pl.velocity) else rel.magnitude, sig=4)],
                                 V(0.0 if P.tiny(cor.magnitude, ap) else cor.magnitude, sig=4), ms2))
@@ -656,7 +707,7 @@ def _group_acceleration(c: Ctx, P: _Plans, g) -> None:
 def _vector_table(c: Ctx, P: _Plans) -> None:
     t = c.t
     rows = []
-    for plan, unit in ((P.pl.velocity, t("m/s")), (P.pl.acceleration, t("m/s²"))):
+    for plan, unit, kind in ((P.pl.velocity, t("m/s"), "m/s"), (P.pl.acceleration, t("m/s²"), "m/s²")):
         for v in plan.vectors:
             if v.magnitude / plan.scale < 0.05 and not v.relation:
                 continue
@@ -664,7 +715,7 @@ def _vector_table(c: Ctx, P: _Plans) -> None:
                     " ".join(_split_points(v.line, P.sym.names)))
             rows.append([f"${P.sym.vec(v.symbol)}$", f"${label_math(v.start)} {label_math(v.end)}$",
                          f"{v.relation} {line}".strip() or "—", c.n(v.magnitude / plan.scale, decimals=1),
-                         c.n(v.magnitude, sig=4) + "\u00a0" + unit])
+                         c.nz(v.magnitude, kind, sig=4) + "\u00a0" + unit])
     c.table("linkage_plans", t("Vectors of the velocity plan ($μ_v = {mu_v}$ (m/s)/mm) and of the acceleration plan "
                                "($μ_a = {mu_a}$ (m/s²)/mm), position {label}").format(
         mu_v=c.q(P.pl.velocity.scale), mu_a=c.q(P.pl.acceleration.scale), label=P.pl.position.label),
@@ -702,10 +753,10 @@ def _table(c: Ctx, s) -> None:
     moved = first is not None and first.index != 0  # crank.start_deg: s counts from the working stroke's start
     if slider:
         head = ["№", "$φ$, °", f"$s$, {mm}", f"$v$, {ms}", f"$a$, {ms2}"]
-        what = (t("the displacement $s$ of the slider {link} from the extreme position {start} where the working "
+        what = (t("the displacement $s$ of the {whose} from the extreme position {start} where the working "
                   "stroke starts, its velocity $v$ and acceleration $a$ (positive along the working stroke)") if moved
-                else t("the displacement $s$ of the slider {link} from position 0, its velocity $v$ and acceleration "
-                       "$a$ (positive along the working stroke)")).format(link=m.output.link,
+                else t("the displacement $s$ of the {whose} from position 0, its velocity $v$ and acceleration "
+                       "$a$ (positive along the working stroke)")).format(whose=role_genitive(c, s, m.output.link),
                                                                           start=first.label if moved else "")
     else:
         head = ["№", "$φ$, °", "$ψ$, °", f"$ω$, {rs}", f"$ε$, {rs2}"]

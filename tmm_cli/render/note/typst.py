@@ -189,6 +189,9 @@ class TypstWriter:
                         if k % 2:
                             resolved = self.doc.resolve(part, ref=ref, cite=cite)
                             out.append(resolved if resolved.startswith("#ref") else escape(resolved, start=False))
+                        elif k and part.startswith(";") and out[-1].startswith("#"):
+                            # typst ends an embedded expression at a ";" and swallows it: «таблице 6; звенья»
+                            out.append("\\;" + escape(part[1:], start=False))
                         else:
                             out.append(escape(part, start=first and j == 0 and k == 0))
             first = False

@@ -36,6 +36,7 @@ from .arrows import (
     fit_arrows,
     place_arrows,
 )
+from . import indicator_view
 from .cam_sheet import table
 from .layout import GOST_SCALES, fit_view
 from .lever_parts import (
@@ -599,6 +600,7 @@ class Layout2:
     wittenbauer: tuple | None
     table: tuple
     group_scale: tuple  # (label, paper mm per real mm) of the groups' drawings
+    indicators: tuple = ()  # a box per indicator diagram (indicator_view.place)
 
 
 def _series_mu() -> list[float]:
@@ -730,7 +732,9 @@ def layout(sh: Sheet, s: Sheet2, lang: str, rows: int) -> Layout2:
     options = [o for o in (_left(sh, s, lang, xl0, xl1, False), _left(sh, s, lang, xl0, xl1, True)) if o is not None]
     best = max(options, key=lambda o: 2.0 * math.log(o[3][1]) + math.log(o[4]) - 1e-6 * options.index(o))
     groups, polygons, lever, scale, _ = best
-    return Layout2(tuple(groups), tuple(polygons), lever, diagrams, witt, table_box, scale)
+    lever, witt, inds = indicator_view.place(sh, s, lang, lever, witt,
+                                             lambda w: _lever_need(sh, s, lang, _lever_ks(s)[-1][1], w))
+    return Layout2(tuple(groups), tuple(polygons), lever, diagrams, witt, table_box, scale, inds)
 
 
 def _group_fields(sh: Sheet, s: Sheet2, lang: str, lay: Layout2) -> None:
@@ -791,6 +795,7 @@ def sheet2(s: Sheet2, lang: str, title, variant: int = 0) -> Sheet:
     _diagrams_field(sh, s, lang, lay.diagrams)
     if lay.wittenbauer is not None:
         _wittenbauer_field(sh, s, lang, lay.wittenbauer)
+    indicator_view.fields(sh, s, lang, lay.indicators)
     _results(sh, s, lang, lay.table)
     sh.title_block(title, name=tr(lang, "Force analysis of the lever mechanism and the flywheel"),
                    designation=title.designation_for(2, variant), scale=lay.group_scale[0])

@@ -100,19 +100,6 @@ def ground(sh: Sheet, q, layer="Основные") -> None:
         sh.line((xx + 1.5, y - 5.0), (xx, y - 6.8), "Тонкие")
 
 
-def hatched_guide(sh: Sheet, a, b, side) -> None:
-    """A fixed guide's surface a–b [sheet mm] with short hatch strokes towards `side` (a unit vector)."""
-    a, b, side = (np.asarray(v, float) for v in (a, b, side))
-    sh.line(a, b, "Основные")
-    L = float(np.hypot(*(b - a)))
-    if L < 1e-6:
-        return
-    u = (b - a) / L
-    for t in np.arange(1.0, L, 2.5):
-        p = a + u * t
-        sh.line(p, p + side * 1.8 - u * 1.4, "Тонкие")
-
-
 def link_segments(mech, kin, i: int, names=None, unit: float = 1.0, reach: dict | None = None):
     """What the links of `names` (all when None) look like at position number i of `kin` [real mm]:
     ('line', p0, p1) for bars (from the farthest pins and points on their axis), ('poly', pts) the

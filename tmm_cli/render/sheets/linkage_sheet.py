@@ -24,7 +24,8 @@ from ...i18n import tr
 from ...i18n.numbers import num
 from ...linkage.scales import SERIES
 from ...linkage.sheet1 import Sheet1
-from ...linkage.vector_plans import Plan
+from ...linkage.vector_plans import Plan, book_symbol
+from . import hatching
 from .cam_sheet import table
 from .layout import fit_view
 from .lever_parts import (
@@ -41,8 +42,6 @@ from .lever_parts import (
     draw_links,
     field,
     fixed,
-    ground,
-    hatched_guide,
     head,
     link_segments,
     pins,
@@ -285,7 +284,8 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
     within = room
     unit = 1.0 / factor  # one paper millimetre in real millimetres
     reach = _reach(s)
-    # the guides: their axes over the sliders' travel, the guide's surface hatched under it
+    # the guides: their axes over the sliders' travel (their surfaces hatched after the links, below)
+    surfaces = []
     for slider, gd in m.guided():
         if gd.moving:  # a moving guide is drawn with its link
             continue
@@ -296,10 +296,7 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
         b = zs[0] + (t.max() + 8.0 * unit) * e
         f.poly([[a.real, a.imag], [b.real, b.imag]], "Осевые")
         n = 1j * e * _away_side(m, c.curve.kin, m.link(slider).pins[0], e)
-        off = (3.5 + 0.8) * unit
-        pa, pb = np.array(f.p((a - off * n).real, (a - off * n).imag)), np.array(f.p((b - off * n).real, (b - off * n).imag))
-        nn = np.array([-(n.real), -(n.imag)])
-        hatched_guide(sh, pa, pb, nn)
+        surfaces.append((f.p(a.real, a.imag), f.p(b.real, b.imag), [(-n.real, -n.imag), (n.real, n.imag)]))
     # the paths: of the joints thin, of the points that are not joints (centres of mass) dashed
     joints = set(pins(m)) | {m.crank.joint}
     for n in m.joint_names:
@@ -319,15 +316,17 @@ def _scheme_field(sh: Sheet, s: Sheet1, lang: str, box):
     for n in pins(m):
         q = f.p(*(_xy(c.kin.z[n][0])))
         sh.circle(q, 1.2, "Основные")
-    # fixed pivots
-    for name, z in m.frame.items():
-        if any(name in ln.pins or (ln.axis and name in ln.axis) for ln in m.links):
-            ground(sh, f.p(z.real * MM, z.imag * MM))
     # the sense of rotation ω1 about the crank's pivot
     o = np.array(f.p(*(_xy(m.frame[m.crank.pivot]))))
     r = max(0.4 * m.crank.length * MM * factor, 7.0)
     mid, out = rotation_arrow(sh, o, r, m.crank.sense, 225.0)
     sh.label("ω_{1}", mid, H_LABEL, within=within, dirs=dirs_from(out, 5), dists=(1.0, 2.5, 4.5), priority=7)
+    # fixed pivots and the guides' surfaces, hatched where the links of every position leave room
+    for name, z in m.frame.items():
+        if any(name in ln.pins or (ln.axis and name in ln.axis) for ln in m.links):
+            hatching.ground(sh, f.p(z.real * MM, z.imag * MM), within)
+    for pa, pb, normals in surfaces:
+        hatching.guide(sh, pa, pb, normals, within)
     # the position numbers at the crank pin (outward from the pivot), the joints named in position 0
     for p in drawn:
         a = np.array(f.p(*(_xy(c.kin.z[m.crank.joint][p.index]))))
@@ -411,7 +410,7 @@ def _plan_items(s: Sheet1, plan: Plan, i: int, lang: str) -> list[str]:
         if v.symbol in seen:
             continue
         seen.add(v.symbol)
-        vals.append(f"{_vec_symbol(v.symbol)} = {fixed(v.magnitude, top, lang)}")
+        vals.append(f"{_vec_symbol(book_symbol(s.mechanism, v.symbol))} = {fixed(v.magnitude, top, lang)}")
     unit = tr(lang, "m/s") if velocity else tr(lang, "m/s²")
     if vals:
         vals[-1] += f" {unit}"

@@ -10,6 +10,7 @@ import numpy as np
 from . import escape
 from ...linkage.positions import output_coordinate
 from ...linkage.sheet1 import Sheet1
+from ...linkage.vector_plans import book_symbol
 from ...i18n import N_, tr
 from ...i18n.numbers import num
 
@@ -179,7 +180,7 @@ def plans_table(s: Sheet1, lang: str, which: int = 0):
         t.add_row(f"[bold]{mu} = {num(plan.scale, lang, sig=3)} {su}[/]", "", "", "", "")
         for v in plan.vectors:
             line = tr(lang, "guide") if v.line == "guide" else tr(lang, "slot") if v.line == "slot" else v.line
-            t.add_row(v.symbol, v.start + v.end, f"{v.relation} {line}".strip(),
+            t.add_row(book_symbol(s.mechanism, v.symbol), v.start + v.end, f"{v.relation} {line}".strip(),
                       num(v.magnitude / plan.scale, lang, decimals=1), num(v.magnitude, lang, sig=4) + " " + unit)
     return t
 
