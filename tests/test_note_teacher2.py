@@ -26,7 +26,7 @@ from tmm_cli.cli import cli
 from tmm_cli.i18n.lang import name_script_notes
 from tmm_cli.project import analyse_linkage, run_project
 from tmm_cli.render.note import build_note
-from tmm_cli.render.note.model import Abstract, Heading, ListBlock, Paragraph, plain
+from tmm_cli.render.note.model import Abstract, Formula, Heading, ListBlock, Paragraph, plain
 from tmm_cli.variants import get_variant
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
@@ -157,7 +157,8 @@ def test_the_lever_check_gives_the_difference_with_its_digits():
     text = "\n".join(b.text for b in doc.blocks if isinstance(b, Paragraph))
     assert "Плечи $h$ измерены" not in text
     assert "Плечи $h$ определены" in text
-    assert "без округления оно составляет" in text
+    delta = next(b.math for b in doc.blocks if isinstance(b, Formula) and b.math.startswith("Δ ="))
+    assert "0,00" not in delta  # the difference to its digits (1,2·10⁻¹⁴ %), or 0 when it is exactly 0
 
 
 # --- Russian letters for the groups' kinds ---------------------------------------------------------------

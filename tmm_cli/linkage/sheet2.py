@@ -27,7 +27,7 @@ from .power import balancing_moment_by_power, reduced_inertia, reduced_moment
 from .scales import DIAGRAM_AXIS_MM, DIAGRAM_HEIGHT_MM, drafting_scale
 from .sheet1 import Sheet1
 from .sheet2_file import Sheet2Input
-from .zhukovsky import Lever, lever
+from .zhukovsky import Lever, LeverTable, lever, lever_scale, lever_table
 
 
 @record
@@ -91,6 +91,33 @@ class Sheet2:
         scale = max(float(np.max(np.abs(mb))), 1e-300)
         size = np.maximum(np.abs(mb), 1e-9 * scale)
         return np.where(np.abs(mb) <= 1e-12 * scale, 0.0, 100.0 * (mb - mz) / size)
+
+    def lever_points(self) -> dict[str, complex]:
+        """The lever's points of the force position [mm from the pole at sheet 1's μ_v]: the velocity
+        plan turned through 90° counter-clockwise, the images of the forces' points (a slider's
+        pair's B′ as 'b′') and of the crank's point a."""
+        i = self.force_position
+        plan = self.sheet1.plans[0].velocity
+        out = {n: 1j * z / plan.scale for n, z in plan.points.items()}
+        for f in self.lever.forces:
+            name = f.point.lower()
+            if name not in plan.points and f.point not in plan.points:
+                out[name] = complex(f.lever[i]) / plan.scale
+        for f in self.lever.forces:
+            out.setdefault("@" + f.symbol, complex(f.lever[i]) / plan.scale)
+        out.setdefault("a", 1j * complex(self.sheet1.cycle.kin.v[self.sheet1.mechanism.crank.joint][i]) / plan.scale)
+        return out
+
+    def lever_scale(self) -> float:
+        """μ [(m/s)/mm] of Zhukovsky's lever as drawn on sheet 2 and read in the note."""
+        return lever_scale(self.sheet1.plans[0].velocity.scale, self.lever_points().values())
+
+    def lever_table(self) -> LeverTable:
+        """Zhukovsky's lever of the force position at :meth:`lever_scale`: the one table of its
+        forces' arms and moments, F_ур and M_ур that sheet 2 and the note print."""
+        i = self.force_position
+        return lever_table(self.sheet1.mechanism, self.sheet1.cycle.kin, self.lever, i, self.lever_scale(),
+                           float(self.balancing[i]))
 
     def motor_input(self) -> tuple[float, float]:
         """(M [N·m], n [rpm]) for sheet 4: the driving moment's size and the crank's mean speed (the

@@ -15,6 +15,7 @@ import math
 import numpy as np
 
 from ...i18n import N_
+from ...i18n.numbers import small_pct
 from .ctx import NBSP, Ctx, V, mq
 from .model import Heading
 
@@ -683,61 +684,52 @@ def _reactions_table(c: Ctx, s) -> None:
 
 
 def _lever(c: Ctx, s) -> None:
+    """Zhukovsky's lever as sheet 2 draws it: one table (:meth:`Sheet2.lever_table`) of the forces'
+    arms h and moments ±F·h about the pole, F_ур and M_ур — the same numbers as the sheet's."""
+    from ...linkage.zhukovsky import DECIMALS as D
+
     t, n = c.t, c.n
-    mech = s.sheet1.mechanism
-    kin = s.sheet1.cycle.kin
-    i = s.force_position
+    lt = s.lever_table()
     plan = s.sheet1.plans[0]
-    mu = plan.velocity.scale
     c.doc.add(Heading(2, t("Balancing moment by Zhukovsky's lever")))
     c.p(t("The balancing moment is checked by N. E. Zhukovsky's theorem {{cite:artobolevsky}}: the velocity plan of "
-          "position {label} ($μ_v = {mu}$ (m/s)/mm) is turned through 90°, every force is applied at the image of "
-          "its point, parallel to itself (an inertia moment as two forces $M_Φ/l$ across its link at the link's "
-          "ends), and the plan, a rigid lever pivoted at the pole $p$, is in equilibrium with the balancing force "
-          "$F_\"ур\"$ at the image $a$ of the crank pin, across the crank. The arms $h$ on the turned plan are found "
-          "from the plan's coordinates (Table {{tab:dyn_lever}}).").format(label=plan.position.label, mu=c.q(mu, sig=3)))
+          "position {label}, turned through 90° and drawn at $μ_v = {mu}$ (m/s)/mm (as on sheet 2), has every force "
+          "applied at the image of its point, parallel to itself (an inertia moment as two forces $M_Φ/l$ across its "
+          "link at the link's ends); the plan, a rigid lever pivoted at the pole $p$, is in equilibrium with the "
+          "balancing force $F_\"ур\"$ at the image $a$ of the crank pin, across $p a$. The arms $h$ of the forces "
+          "about $p$ are determined from the coordinates of the turned plan's points (Table {{tab:dyn_lever}}).")
+        .format(label=plan.position.label, mu=c.q(lt.scale, sig=3)))
     _pairs(c, s)
-    rows = []
-    total = 0.0
-    for f in s.lever.forces:
-        size = abs(complex(f.force[i]))
-        mom = float(f.moment[i]) / mu  # N·mm on the plan
-        if size <= 1e-12:
-            continue
-        total += mom
-        rows.append([f"${fsym(c, f.symbol)}$", f"${pt(f.point)}$", n(size, decimals=2),
-                     n(abs(mom) / size, decimals=2), n(mom, decimals=1)])
-    rows.append([t("Sum"), "", "", "", n(total, decimals=1)])
+    rows = [[f"${fsym(c, x.symbol)}$", f"${pt(x.point)}$", n(x.force, decimals=D["force"]),
+             n(x.arm, decimals=D["arm"]), n(x.moment, decimals=D["moment"])] for x in lt.terms]
+    rows.append([t("Sum"), "", "", "", n(lt.total, decimals=D["moment"])])
     c.table("dyn_lever", t("Moments of the forces about the pole of the turned velocity plan (counter-clockwise "
                            "positive)"),
             [t("Force"), t("Point"), "$F$, " + t("N"), "$h$, " + t("mm"), "$F h$, " + t("N·mm")], rows,
             align=["center", "center", "right", "right", "right"], widths=[1, 0.8, 1.1, 1, 1.3])
-    r = complex(kin.z[mech.crank.joint][i] - kin.z[mech.crank.pivot][i])
-    pa = abs(kin.omega1) * abs(r) / mu
-    fb = abs(complex(s.lever.balancing_force[i]))
-    mz = float(s.lever.balancing[i])
-    l1 = mech.crank.length
     c.p(t("The balancing force from the equilibrium of the lever, $F_\"ур\" dot p a = abs(Σ F_i h_i)$, and the "
           "balancing moment:"))
-    c.formula(c.calc('F_"ур" = abs(Σ F_i h_i)/(p a)', "{0}/{1}", [V(abs(total), sig=6), V(pa, sig=5)], V(fb, sig=4),
-                     t("N")),
-              c.calc('M_"ур"^"Ж" = F_"ур" l_1', "{0} dot {1}", [V(fb, sig=5), V(l1, exact=True)], V(abs(mz), sig=4),
-                     t("N·m")),
+    c.formula(c.calc('F_"ур" = abs(Σ F_i h_i)/(p a)', "{0}/{1}",
+                     [V(abs(lt.total), decimals=D["moment"]), V(lt.pa, decimals=D["pa"])],
+                     V(lt.balancing_force, decimals=D["balancing_force"]), t("N")),
+              c.calc('M_"ур"^"Ж" = F_"ур" l_1', "{0} dot {1}",
+                     [V(lt.balancing_force, decimals=D["balancing_force"]), V(lt.crank, exact=True)],
+                     V(lt.balancing, decimals=D["balancing"]), t("N·m")),
               where=[('F_"ур"', t("the balancing force at the crank pin, N")),
                      ("p a", t("the image of the crank pin's velocity on the plan, mm")),
                      ("l_1", t("the length of the crank, m"))])
-    mb = float(s.balancing[i])
-    diff = float(s.difference_pct()[i])
-    c.p(t("Its difference from the moment of the force analysis:"))
-    same = c.n(abs(mb), sig=6) == c.n(abs(mz), sig=6)  # equal to the printed digits: Δ is 0 there
-    c.formula(c.calc('Δ = (abs(M_"ур") - abs(M_"ур"^"Ж"))/abs(M_"ур") dot 100', "({0} - {1})/{0} dot 100",
-                     [V(abs(mb), sig=6), V(abs(mz), sig=6)],
-                     V(0.0, decimals=0) if same else V(abs(diff) if abs(diff) < 5e-3 else diff, decimals=2), "%"))
+    mb = lt.kinetostatic
+    diff = lt.difference_pct
+    c.p(t("Its difference from the moment of the force analysis, $M_\"ур\"$ = {mb}:").format(
+        mb=c.qty(mb, t("N·m"), decimals=D["balancing"])))
+    rel, val = small_pct(diff, c.lang).split(" ", 1)  # to its digits; below 10⁻⁹ % a bound (rounding is no value)
+    c.formula('Δ = (abs(M_"ур") - M_"ур"^"Ж")/abs(M_"ур") dot 100 ' + rel + " "
+              + ("10^(-9)" if rel == "<" else mq(val)) + " " + c.u("%"))
     ok = abs(diff) < 1.0
-    c.p((t("The two agree within 1 %, as required (unrounded, the difference is {diff}): both rest on the same exact "
-           "velocity and acceleration plans, so they differ by rounding only.") if ok else
+    c.p((t("The two agree within 1 %, as required: both rest on the same exact velocity and acceleration plans, so "
+           "they differ by the computer's rounding only.") if ok else
          t("The two differ by more than 1 % ({diff}).")).format(diff=c.pct_digits(abs(diff))))
-    c.doc.claim(kind="linkage_zhukovsky", kinetostatic=mb, lever=mz, diff_pct=diff, ok=ok)
+    c.doc.claim(kind="linkage_zhukovsky", kinetostatic=mb, lever=lt.sense * lt.balancing, diff_pct=diff, ok=ok)
 
 
 def _pairs(c: Ctx, s) -> None:

@@ -183,10 +183,10 @@ def linkage_results(c: Ctx) -> list[str]:
     if s2 is None:
         return out
     i = s2.force_position
-    mb, diff = float(s2.balancing[i]), float(s2.difference_pct()[i])
+    mb = float(s2.balancing[i])
     out.append(t("the balancing moment in position {label} $M_\"ур\"$ = {mb} (by Zhukovsky's lever, a difference of "
                  "{diff})").format(label=s2.sheet1.cycle.positions[i].label, mb=c.qty(mb, t("N·m"), decimals=2),
-                                   diff=c.pct_digits(abs(diff))))
+                                   diff=_lever_difference(c, s2)))
     out.append(t("the driving moment $M_\"д\"$ = {md}").format(md=c.qty(abs(s2.dynamics.M_d), t("N·m"), sig=4)))
     fw = s2.flywheel
     if fw is not None:
@@ -200,6 +200,11 @@ def linkage_results(c: Ctx) -> list[str]:
     return out
 
 
+def _lever_difference(c: Ctx, s2) -> str:
+    """Zhukovsky's difference as §2.3 and sheet 2 give it (the lever's table, to its digits)."""
+    return c.pct_digits(abs(s2.lever_table().difference_pct))
+
+
 def linkage_requirements(c: Ctx) -> list[tuple[str, bool]]:
     """Sheet 2's checks, each (text, met): the balancing moment by the two methods within 1 %; the
     speed with the flywheel within the allowed δ."""
@@ -207,10 +212,9 @@ def linkage_requirements(c: Ctx) -> list[tuple[str, bool]]:
     s2 = _sheet2(c)
     if s2 is None:
         return []
-    i = s2.force_position
-    diff = float(s2.difference_pct()[i])
+    diff = s2.lever_table().difference_pct
     out = [(t("the balancing moments by the force analysis and by Zhukovsky's lever agree within 1 % ({diff})").format(
-        diff=c.pct_digits(abs(diff))), abs(diff) < 1.0)]
+        diff=_lever_difference(c, s2)), abs(diff) < 1.0)]
     fw = s2.flywheel
     if fw is not None:
         ok = fw.delta_actual <= fw.delta * (1 + 1e-6)
