@@ -76,8 +76,9 @@ def symbol(sym: str, lang: str) -> str:
     tick = ""
     if sym[-1] in "′″":
         tick, sym = ("'" if sym[-1] == "′" else "''"), sym[:-1]
-    if sym in ("Fc", "Mc"):
-        return (tr(lang, "F_{c}") if sym == "Fc" else tr(lang, "M_{c}")) + tick
+    if sym[:2] in ("Fc", "Mc") and sym[2:].isdigit() or sym in ("Fc", "Mc"):  # Fc, or Fc3 of several loads
+        base = tr(lang, "F_{c}") if sym[:2] == "Fc" else tr(lang, "M_{c}")
+        return (base[:-1] + sym[2:] + "}" if sym[2:] and base.endswith("}") else base) + tick
     if sym.startswith("MΦ"):
         return f"M_{{Φ{sym[2:]}}}" + tick
     if sym.startswith(("Rτ", "Rn")):
