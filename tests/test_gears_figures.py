@@ -100,12 +100,12 @@ def test_line_of_action_follows_the_motor(drawn, key):
     assert float(v_p @ u) > 0
     # N1 (on gear 1's base circle) and N2 as drawn in the zoomed mesh
     ax = figs["gears_mesh"].axes[1]
-    x_n1 = _annotation(ax, "N1")[0]
-    x_n2 = _annotation(ax, "N2")[0]
+    x_n1 = _annotation(ax, "$N_1$")[0]
+    x_n2 = _annotation(ax, "$N_2$")[0]
     assert (x_n1 < x_n2) == (motor == "cw")
-    assert np.allclose(_annotation(ax, "N1"), n1)
+    assert np.allclose(_annotation(ax, "$N_1$"), n1)
     # P1 (gear 2's tip circle) is on N1's side of the pole, P2 on N2's
-    assert (_annotation(ax, "P1")[0] - p[0]) * (x_n1 - p[0]) > 0
+    assert (_annotation(ax, "$P_1$")[0] - p[0]) * (x_n1 - p[0]) > 0
 
 
 @pytest.mark.parametrize("key", ["s1", "ccw_cam"])

@@ -258,7 +258,7 @@ def test_title_block_text_is_literal_in_the_dxf_and_the_word_note(tmp_path):
     shown = [e.plain_text() for e in ezdxf.readfile(folder / "sheet3.dxf").modelspace().query("TEXT MTEXT")]
     assert student in shown and any(group in t for t in shown), [t for t in shown if "Ivanov" in t or "G" in t]
     d = docx.Document(folder / "note.docx")
-    body = "\n".join(p.text for p in d.paragraphs)
+    body = "\n".join(p.text for p in d.paragraphs).replace("\u2060", "")
     assert f"Student: {student}, group {group}." in body
     xml = d.element.xml
     assert "oMath" not in xml.split("Student:")[1].split("Topic")[0]  # no Word equation in the task's line
@@ -291,7 +291,7 @@ def test_a_mechanism_name_that_is_broken_math_draws_and_typesets(tmp_path):
               "--out", tmp_path / "p", "--lang", "en")
     assert res.exit_code == 0, res.stderr
     docx = pytest.importorskip("docx")
-    body = "\n".join(p.text for p in docx.Document(tmp_path / "p" / "variant-17" / "note.docx").paragraphs)
+    body = "\n".join(p.text for p in docx.Document(tmp_path / "p" / "variant-17" / "note.docx").paragraphs).replace("\u2060", "")
     assert r"A $\undefinedmacro{x}$ $x^$ B" in body
 
 

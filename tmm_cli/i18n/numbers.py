@@ -84,6 +84,23 @@ def num(x, lang: str, decimals: int | None = None, sig: int = 4, sci: bool = Tru
     return (minus if x < 0 else "") + body
 
 
+def small_pct(x: float, lang: str, minus: str = "−") -> str:
+    """A difference in % to the digits it has, with its relation: two decimals from 0,1 % up, else
+    two significant digits (no «0,00 %» for 0,0042 %); below 10⁻⁹ % — a computer's rounding, not a
+    value — «< 10⁻⁹»; exactly 0 «= 0» (the note's :meth:`Ctx.pct_digits` keeps the same rule).
+
+    >>> small_pct(-0.0042, "ru"), small_pct(0.4567, "ru"), small_pct(0.0, "ru"), small_pct(1.2e-14, "ru")
+    ('= −0,0042', '= 0,46', '= 0', '< 10⁻⁹')
+    """
+    x = float(x)
+    a = abs(x)
+    if a == 0.0:
+        return "= 0"
+    if a < 1e-9:
+        return "< 10⁻⁹"
+    return "= " + num(x, lang, decimals=2 if a >= 0.1 else 1 - math.floor(math.log10(a)), minus=minus)
+
+
 def _fixed(ax: float, decimals: int, lang: str, strip: bool) -> str:
     text = f"{ax:.{decimals}f}"
     if strip and "." in text:

@@ -11,6 +11,12 @@ balancing moment is replaced by the force F_b at the crank's pin a, across OA:
 
 The numbers are those of the exact plans (:mod:`.chain`), so the lever gives the force analysis's
 M_b to rounding; on paper the difference is the drawing's error (the book asks for < 1 %).
+
+On paper the course works the lever in one way, which :func:`lever_table` gives for one position
+and both the sheet and the note print: the plan drawn at μ [(m/s)/mm] (:func:`lever_scale`), each
+force's arm h [mm] about the pole p on that drawing, its moment ±F·h [N·mm] (counter-clockwise
+positive), the balancing force F_ур = |ΣF·h|/(pa) at the crank's point a across pa, and
+M_ур = F_ур·l_OA, compared with the force analysis's M_ур.
 """
 
 from __future__ import annotations
@@ -47,6 +53,99 @@ class Lever:
     def moment_sum(self):
         """Σ of the forces' moments about the pole [W]."""
         return sum((f.moment for f in self.forces), np.zeros(self.balancing.shape))
+
+
+# the digits the lever's table is read with (sheet 2 and the note print the same): forces [N] and
+# arms [mm] to 0.01, moments F·h [N·mm] to 0.1, pa [mm] and F_ур [N] to 0.01, M_ур [N·m] to 0.001
+DECIMALS = {"force": 2, "arm": 2, "moment": 1, "pa": 2, "balancing_force": 2, "balancing": 3}
+
+LEVER_MM = 220.0  # the lever's drawing at most this large [mm]: larger only crowds its field
+ROUND_MU = (1.0, 2.0, 2.5, 4.0, 5.0)  # a drafter's round scales ×10ⁿ
+
+
+@record
+class LeverTerm:
+    """One force of the lever's table: its moment about the pole p of the drawn lever."""
+
+    symbol: str  # as :class:`LeverForce`
+    point: str
+    force: float  # |F| [N]
+    arm: float  # h [mm] on the lever drawn at the table's μ: the distance from p to the force's line
+    moment: float  # ±F·h [N·mm], counter-clockwise positive
+    sign: int  # +1 counter-clockwise, −1 clockwise, 0 (the line through p)
+
+
+@record
+class LeverTable:
+    """Zhukovsky's lever of one position as the course works it on paper (one table for the sheet
+    and the note)."""
+
+    position: int  # list index of the position
+    scale: float  # μ [(m/s)/mm] of the drawn lever (the arms' scale)
+    terms: tuple[LeverTerm, ...]
+    total: float  # ΣF·h [N·mm]
+    pa: float  # the crank point's image, (pa) = ω₁·l_OA/μ [mm]
+    crank: float  # l_OA [m]
+    balancing_force: float  # F_ур = |ΣF·h|/(pa) [N], across pa at a
+    balancing: float  # M_ур = F_ур·l_OA [N·m] (its size)
+    sense: int  # the sense of M_ур by the lever: +1 counter-clockwise, −1 clockwise
+    kinetostatic: float  # M_ур by the force analysis [N·m], counter-clockwise positive
+
+    @property
+    def difference_pct(self) -> float:
+        """Δ = (|M_ур| − |M_ур by the lever|)/|M_ур|·100 [%] (0 where M_ур is 0)."""
+        k = abs(self.kinetostatic)
+        return 0.0 if k == 0.0 else 100.0 * (k - self.balancing) / k
+
+
+def lever_scale(mu_v: float, points) -> float:
+    """The scale μ [(m/s)/mm] of the lever's drawing: the velocity plan (drawn at μ_v; `points` its
+    and the forces' points [mm from the pole]) turned and drawn at the smallest round μ from μ_v/4
+    to μ_v at which its longest side is at most LEVER_MM; μ_v itself when none (the lever may be
+    drawn at any scale: only the arms' ratios count).
+
+    >>> lever_scale(0.01, [0j, 78j])   # 312 mm at 0,0025, 195 mm at 0,004
+    0.004
+    >>> lever_scale(0.02, [0j, 200 + 0j])
+    0.02
+    """
+    z = np.asarray(list(points), complex)
+    size = float(max(np.ptp(z.real), np.ptp(z.imag), 1e-12))
+    for mu in sorted(float(f"{c * 10.0 ** e:.6g}") for c in ROUND_MU for e in range(-9, 10)):
+        if mu_v / 4.0 * (1 - 1e-9) <= mu <= mu_v * (1 + 1e-9) and size * mu_v / mu <= LEVER_MM:
+            return mu
+    return mu_v
+
+
+def lever_table(mech: Mechanism, kin: Kinematics, lv: Lever, i: int, mu: float, kinetostatic: float) -> LeverTable:
+    """The lever of position i drawn at μ [(m/s)/mm]: each force's arm h = |M_p|/(μ·F) [mm] and
+    moment M_p/μ = ±F·h [N·mm] (M_p [W] its moment about the pole), ΣF·h, (pa) = |ω₁|·l_OA/μ [mm],
+    F_ур = |ΣF·h|/(pa) [N] (the lever's equilibrium F_ур·(pa) = |ΣF·h|, F_ур across pa),
+    M_ур = F_ур·l_OA [N·m]; the force analysis's M_ур beside it.
+
+    >>> from types import SimpleNamespace as N
+    >>> f = LeverForce("F", "B", np.array([2j]), np.array([-10 + 0j]), np.array([20.0]))
+    >>> lv = Lever((f,), np.array([-20j]), np.array([-2.0]))   # as lever() finds them
+    >>> t = lever_table(N(crank=N(length=0.1)), N(omega1=10.0), lv, 0, 0.01, -2.0)
+    >>> t.terms[0].arm, t.terms[0].moment, t.pa, t.total / t.pa, t.balancing_force, t.balancing, t.sense
+    (200.0, 2000.0, 100.0, 20.0, 20.0, 2.0, -1)
+    """
+    terms = []
+    biggest = max((abs(complex(f.force[i])) for f in lv.forces), default=0.0)
+    largest = max((abs(float(f.moment[i])) for f in lv.forces), default=0.0) / mu
+    for f in lv.forces:
+        size = abs(complex(f.force[i]))
+        if size <= 1e-12 * max(biggest, 1e-300):
+            continue
+        m = float(f.moment[i]) / mu  # [W]/[(m/s)/mm] = [N·mm]
+        sign = 0 if abs(m) <= 1e-12 * largest else int(np.sign(m))  # a line through p to rounding: no sense
+        terms.append(LeverTerm(f.symbol, f.point, size, abs(m) / size, m, sign))
+    total = sum(t.moment for t in terms)
+    l1 = mech.crank.length
+    pa = abs(kin.omega1) * l1 / mu
+    mb = float(lv.balancing[i])  # the lever's own F_ур and M_ур (:func:`lever`): |ΣF·h|/(pa) and F_ур·l_OA
+    return LeverTable(i, mu, tuple(terms), total, pa, l1, abs(complex(lv.balancing_force[i])), abs(mb),
+                      1 if mb > 0 else -1 if mb < 0 else 0, float(kinetostatic))
 
 
 def lever_moment(v, f):

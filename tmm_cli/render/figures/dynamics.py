@@ -18,9 +18,10 @@ import math
 import numpy as np
 
 from ...i18n import tr
-from ...i18n.numbers import num
+from ...i18n.numbers import num, small_pct
 from ...linkage.chain import slider_pose, slot_axis
 from ...linkage.sheet2 import Sheet2
+from ...linkage.zhukovsky import DECIMALS as LEVER_DECIMALS
 from ..terminal.dynamics import symbol as book_symbol
 from .kit import decimal_commas, mt, new_figure, suptitle, title_height
 from .mechanism import _block, joint_tex, label_tex, span_mm
@@ -139,6 +140,76 @@ def _arrows(ax, items, size_mm: float, biggest: float) -> list[complex]:
     return tips
 
 
+def _lever_arrows(ax, items, span: float, biggest: float):
+    """The lever's force arrows (point, force, colour, label), not to scale (as the book draws
+    them): from 0.08 to 0.3 of the plan's span by the force's size, so that a small force shows;
+    returns (tail, tip, label, colour) of each drawn."""
+    out = []
+    for z, f, colour, label in items:
+        if abs(f) < 1e-9 * biggest:
+            continue
+        v = f / abs(f) * span * (0.08 + 0.22 * math.sqrt(abs(f) / biggest))
+        ax.annotate("", xy=(z.real + v.real, z.imag + v.imag), xytext=(z.real, z.imag), zorder=5,
+                    arrowprops=dict(arrowstyle="-|>", color=colour, lw=1.2, shrinkA=0, shrinkB=0, mutation_scale=9))
+        out.append((z, z + v, label, colour))
+    return out
+
+
+def _hits(box, a, b) -> bool:
+    """Whether the segment a–b (display px) crosses the box (x0, y0, x1, y1)."""
+    x0, y0, x1, y1 = box
+    t0, t1 = 0.0, 1.0
+    d = b - a
+    for p, q in ((-d[0], a[0] - x0), (d[0], x1 - a[0]), (-d[1], a[1] - y0), (d[1], y1 - a[1])):
+        if abs(p) < 1e-12:
+            if q < 0:
+                return False
+            continue
+        r = q / p
+        if p < 0:
+            t0 = max(t0, r)
+        else:
+            t1 = min(t1, r)
+        if t0 > t1:
+            return False
+    return True
+
+
+def _place_names(fig, ax, names, segs) -> None:
+    """Each name (anchor [data], text, colour, size) at the first of 8 directions × 3 distances
+    around its anchor where it overlaps no name placed before and crosses no segment [data];
+    else where it touches fewest."""
+    ax.apply_aspect()
+    r = fig.canvas.get_renderer()
+    tr_ = ax.transData
+    lines = [(tr_.transform((a.real, a.imag)), tr_.transform((b.real, b.imag))) for a, b in segs]
+    placed = []
+    dirs = [(1, 1), (-1, 1), (1, -1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1)]
+    ha = {1: "left", 0: "center", -1: "right"}
+    va = {1: "bottom", 0: "center", -1: "top"}
+    for z, text, colour, size in names:
+        best = None
+        for dist in (3, 7, 12, 18):
+            for dx, dy in dirs:
+                t = ax.annotate(text, (z.real, z.imag), xytext=(dx * dist, dy * dist), textcoords="offset points",
+                                ha=ha[dx], va=va[dy], fontsize=size, color=colour, zorder=7)
+                e = t.get_window_extent(r).expanded(1.08, 1.15)
+                box = (e.x0, e.y0, e.x1, e.y1)
+                cost = sum(1 for p in placed if not (box[2] <= p[0] or p[2] <= box[0] or box[3] <= p[1] or p[3] <= box[1]))
+                cost = 3 * cost + sum(1 for a, b in lines if _hits(box, a, b))
+                if best is None or cost < best[0]:
+                    if best is not None:
+                        best[1].remove()
+                    best = (cost, t, box)
+                else:
+                    t.remove()
+                if cost == 0:
+                    break
+            if best[0] == 0:
+                break
+        placed.append(best[2])
+
+
 def _group_items(s: Sheet2, group: int, i: int, lang: str):
     """What acts on the group's links at position i: applied forces, the groups' before, the reactions found."""
     numbers = {ln.number for ln in _group_links(s, group)}
@@ -244,7 +315,7 @@ def lever_figure(s: Sheet2, lang: str):
     i = s.force_position
     pl = s.sheet1.plans[0]
     plan = pl.velocity
-    mu = plan.scale
+    mu = s.lever_scale()  # the lever's μ (its table's arms are at it)
     p = pl.position
     width, height = 12.0, 7.5
     top = title_height(2, 11)
@@ -257,44 +328,51 @@ def lever_figure(s: Sheet2, lang: str):
         a, b = turned[v.start], turned[v.end]
         if abs(b - a) > 1e-6:
             ax.plot([a.real, b.real], [a.imag, b.imag], color="#9a9a9a", lw=0.8, zorder=2)
+    rays = []
     for f in s.lever.forces:  # B′ of a slider's pair (its couple as forces at B and B′): b′ and its ray p b′
         if f.point.lower() not in turned and f.point not in turned:
             z = complex(f.lever[i]) / mu
             turned[f.point.lower()] = z
+            rays.append(f.point.lower())
             ax.plot([0.0, z.real], [0.0, z.imag], color="#9a9a9a", lw=0.8, zorder=2)
     pts = list(turned.values())
+    segs = [(turned[v.start], turned[v.end]) for v in plan.vectors] + [(0j, turned[n]) for n in rays]
     for n, z in turned.items():
         ax.plot(z.real, z.imag, "o", ms=2.5, color="#666666", zorder=3)
-        label = r"$p$" if n == plan.pole else f"${joint_tex(n)}$"
-        ax.annotate(label, (z.real, z.imag), xytext=(-10, -10), textcoords="offset points", fontsize=9, color="#555555")
     lv = s.lever
     items = [(complex(f.lever[i]) / mu, complex(f.force[i]), C_APPLIED, force_tex(f.symbol, lang)) for f in lv.forces]
     a_pt = 1j * complex(s.sheet1.cycle.kin.v[s.sheet1.mechanism.crank.joint][i]) / mu
     items.append((a_pt, complex(lv.balancing_force[i]), C_UNKNOWN, tr(lang, "$F_b$")))
     biggest = max((abs(f) for _, f, _, _ in items), default=1.0) or 1.0
     span = max(float(np.ptp(np.real(pts))), float(np.ptp(np.imag(pts))), 1.0)
-    pts += _arrows(ax, items, 0.3 * span, biggest)
+    arrows = _lever_arrows(ax, items, span, biggest)
+    pts += [tip for _, tip, _, _ in arrows]
+    segs += [(tail, tip) for tail, tip, _, _ in arrows]
     xy = np.array(pts)
     pad = 0.1 * span
     ax.set_xlim(xy.real.min() - pad, xy.real.max() + pad)
     ax.set_ylim(xy.imag.min() - pad, xy.imag.max() + pad)
     ax.set_aspect("equal", adjustable="box")
     ax.axis("off")
-    lines = [tr(lang, "Moments about the pole: M = (i·v) × F = −F·v")]
-    nm = tr(lang, "N·m")
-    for f in lv.forces:
-        force = complex(f.force[i])
-        if abs(force) < 1e-12:
-            continue
-        h = float(f.moment[i]) / abs(force) / mu  # the arm on the drawing [mm], signed
-        lines.append(f"{force_tex(f.symbol, lang)}: {num(abs(force), lang, decimals=1)} " + tr(lang, "N") +
-                     f", h = {num(h, lang, decimals=1)} " + tr(lang, "mm") +
-                     f", M = {num(float(f.moment[i]), lang, decimals=2)} " + tr(lang, "W"))
-    lines.append(tr(lang, "Σ = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)} " + tr(lang, "W"))
-    lines.append(tr(lang, "$M_b$") + " = Σ/ω₁ = " +
-                 f"{num(float(lv.balancing[i]), lang, decimals=3)} {nm}")
-    lines.append(tr(lang, "force analysis: ") + f"{num(float(s.balancing[i]), lang, decimals=3)} {nm}; "
-                 f"Δ = {num(float(s.difference_pct()[i]), lang, decimals=4)} %")
+    # the names where they overlap no other name and no line: the points', then the forces' at their tips
+    names = [(z, r"$p$" if n == plan.pole else f"${joint_tex(n)}$", "#555555", 9) for n, z in turned.items()]
+    names += [(tip, label, colour, 8.5) for _, tip, label, colour in arrows]
+    _place_names(fig, ax, names, segs)
+    # the lever's table (Sheet2.lever_table), as sheet 2 and the note give it: ±F·h about p, F_ур, M_ур
+    lt = s.lever_table()
+    d = LEVER_DECIMALS
+    nm, nmm, n_ = tr(lang, "N·m"), tr(lang, "N·mm"), tr(lang, "N")
+    lines = [tr(lang, "moments about the pole p, ±F·h, N·mm (F, N; h, mm):")]
+    for x in lt.terms:
+        sign = "−" if x.sign < 0 else ""
+        lines.append(f"{force_tex(x.symbol, lang)}: {sign}{num(x.force, lang, decimals=d['force'])}·"
+                     f"{num(x.arm, lang, decimals=d['arm'])} = {num(x.moment, lang, decimals=d['moment'], minus='−')}")
+    lines.append(f"ΣF·h = {num(lt.total, lang, decimals=d['moment'], minus='−')} {nmm}")
+    lines.append(tr(lang, "$F_b$") + f" = |ΣF·h|/(pa) = {num(lt.balancing_force, lang, decimals=d['balancing_force'])} {n_}")
+    lines.append(tr(lang, "$M_b$") + " = " + tr(lang, "$F_b$") + r"$\cdot l_1$" +
+                 f" = {num(lt.balancing, lang, decimals=d['balancing'])} {nm}")
+    lines.append(tr(lang, "force analysis: ") + f"{num(lt.kinetostatic, lang, decimals=d['balancing'], minus='−')} {nm}; "
+                 f"Δ {small_pct(lt.difference_pct, lang)} %")
     tx.text(0.0, 0.98, "\n".join(lines), transform=tx.transAxes, ha="left", va="top", fontsize=8.5, linespacing=1.5)
     mu_t = num(mu, lang, sig=3)
     title = tr(lang, "Zhukovsky's lever, position {label}: the velocity plan turned 90° counter-clockwise (μ_v = {mu_t} (m/s)/mm), forces at their points").format(label=label_tex(p.label), mu_t=mu_t)

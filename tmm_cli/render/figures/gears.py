@@ -21,6 +21,8 @@ from .kit import (
     legend_height,
     mt,
     new_figure,
+    offset_places,
+    settle,
     suptitle,
     title_height,
 )
@@ -220,6 +222,27 @@ def _sense_text(sense, lang):
     return (trc(lang, "figure, short", "counter-clockwise") if sense == "ccw" else trc(lang, "figure, short", "clockwise"))
 
 
+def pair_names(text: str) -> str:
+    """The mesh's segments in a (translated) text with the book's subscripts: «P1U2, U1P2» →
+    «$P_1U_2$, $U_1P_2$» (mathtext: a plain «P1U2» read as one word).
+
+    >>> pair_names("zones P1U2, U1P2; U2U1")
+    'zones $P_1U_2$, $U_1P_2$; $U_2U_1$'
+    """
+    import re
+
+    return re.sub(r"\b([NPU])([12])([NPU])([12])\b", r"$\1_\2\3_\4$", text)
+
+
+def point_name(name: str) -> str:
+    """A point's name as the book writes it, its digit a subscript: N1 → $N_1$, P → $P$.
+
+    >>> point_name("N1"), point_name("P"), point_name("O2")
+    ('$N_1$', '$P$', '$O_2$')
+    """
+    return f"${name[0]}_{{{name[1:]}}}$" if len(name) > 2 else f"${name[0]}_{name[1]}$" if len(name) == 2 else f"${name}$"
+
+
 def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
     from matplotlib.patches import Arc, Polygon
 
@@ -250,7 +273,7 @@ def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
             ax.plot(centre[0] + dw / 2 * np.cos(t), centre[1] + dw / 2 * np.sin(t), ls=(0, (1, 2)), lw=1.0, color="k",
                     alpha=0.6)
         ax.plot(*centre, "o", color=col, ms=4)
-        ax.annotate(f"O{idx}", centre, xytext=(6, 4), textcoords="offset points", color=col, fontsize=10)
+        ax.annotate(point_name(f"O{idx}"), centre, xytext=(6, 4), textcoords="offset points", color=col, fontsize=10)
     ax.plot([o1[0], o2[0]], [o1[1], o2[1]], color="0.4", lw=0.7, ls=(0, (8, 3, 2, 3)))
     # line of action and its points
     s_pts = {"N1": 0.0, "P1": g.p1_mm, "U2": g.u2_mm, "P": g.pole_mm, "U1": g.u1_mm, "P2": g.p2_mm, "N2": g.n1n2_mm}
@@ -266,16 +289,25 @@ def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
     n2 = at(g.n1n2_mm)
     ax.plot([o1[0], n1[0]], [o1[1], n1[1]], color=C_SUN, lw=0.7)
     ax.plot([o2[0], n2[0]], [o2[1], n2[1]], color=C_PLANET, lw=0.7)
-    off = {"N1": (-14, 6), "N2": (4, -12), "P1": (-6, 8), "P2": (2, -14), "U1": (2, -14), "U2": (-6, 8), "P": (6, -14)}
     fs = 10 if zoom else 8
     pts = np.array([at(s) for s in s_pts.values()])
     ax.plot(pts[:, 0], pts[:, 1], "o", color="k", ms=3.5 if zoom else 2.5, zorder=5)  # one line of seven markers
+    # the names as the book writes them (N₁, P₂, U₁ …), each on the side of the line of action where it
+    # hides no other name and least of the drawing (kit.settle places them once the figure is drawn):
+    # first across the line, the two ends' names beyond their ends
+    nrm = np.array([-u[1], u[0]])
+    across = [tuple(nrm), tuple(-nrm), tuple((nrm + u) / np.hypot(*(nrm + u))), tuple((nrm - u) / np.hypot(*(nrm - u))),
+              tuple((-nrm + u) / np.hypot(*(-nrm + u))), tuple((-nrm - u) / np.hypot(*(-nrm - u)))]
     for name, s in s_pts.items():
         q = at(s)
         if zoom or name in ("N1", "N2", "P"):
-            dx, dy = off[name]
-            ax.annotate(name, q, xytext=(sx * dx, dy), textcoords="offset points", fontsize=fs, fontweight="bold",
-                        ha="left" if sx > 0 else "right")
+            dirs = across + ([tuple(-u)] if name == "N1" else [tuple(u)] if name == "N2" else [])
+            if name in ("N1", "N2"):
+                dirs = dirs[-1:] + dirs[:-1]
+            places = offset_places(dirs, 5.0) + offset_places(dirs, 10.0)
+            t = ax.annotate(point_name(name), q, xytext=places[0]["xyann"], textcoords="offset points", fontsize=fs,
+                            ha=places[0]["ha"], va=places[0]["va"], zorder=6)
+            t._tmm_places = places
     # α_w: between the tangent to the pitch circles at P (horizontal) and the line of action
     if zoom:
         rr = 0.6 * g.g_alpha_mm
@@ -283,9 +315,15 @@ def _draw_mesh(ax, g, lang, zoom: bool, motor_sense: str = "cw"):
         ax.add_patch(Arc(tuple(p), 2 * rr, 2 * rr, theta1=th0, theta2=th1, color="k", lw=0.9))
         ax.plot([p[0], p[0] + sx * 1.3 * rr], [p[1], p[1]], color="k", lw=0.7, ls="--")
         mid = math.radians(g.alpha_w_deg / 2)
-        ax.annotate(mt(f"α_w = {num(g.alpha_w_deg, lang, sig=4)}°"), (p[0] + sx * rr * math.cos(mid), p[1] + rr * math.sin(mid)),
-                    xytext=(sx * 10, -3), textcoords="offset points", fontsize=fs, ha="left" if sx > 0 else "right",
-                    bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
+        # beside its arc, below the tangent, or past the arc's end: where it covers no name and least
+        # of the drawing (kit.settle); the arc's end on the line of action is where N₂ and P₂ stand
+        side = "left" if sx > 0 else "right"
+        places = [{"xyann": (sx * d, dy), "ha": side, "va": va} for d, dy, va in
+                  ((10, -3, "center"), (4, -6, "top"), (18, -6, "top"), (10, 6, "bottom"), (30, -3, "center"))]
+        t = ax.annotate(mt(f"α_w = {num(g.alpha_w_deg, lang, sig=4)}°"), (p[0] + sx * rr * math.cos(mid), p[1] + rr * math.sin(mid)),
+                        xytext=places[0]["xyann"], textcoords="offset points", fontsize=fs, ha=side, va="center",
+                        bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8), zorder=6)
+        t._tmm_places = places
         # the active profile parts (double line in the book): radii of P1 from O1 and P2 from O2
         r_p1_on_1 = float(np.hypot(*(at(g.p1_mm) - o1)))
         r_p2_on_2 = float(np.hypot(*(at(g.p2_mm) - o2)))
@@ -329,7 +367,7 @@ def _mesh_figure(result, lang):
                   fontsize=10.5, y=1.0)
     zone = (f"ε_α = P1P2/p_b = {f(g.g_alpha_mm, decimals=1)}/{f(g.pb_mm, decimals=2)} = {f(g.eps_alpha, decimals=3)};  "
             f"φ_α1 = {f(g.phi_alpha1_deg, decimals=2)}°, φ_α2 = {f(g.phi_alpha2_deg, decimals=2)}°")
-    ax1.set_title(mt(tr(lang, "Mesh zone: ") + zone), fontsize=11, y=1.0)
+    ax1.set_title(pair_names(mt(tr(lang, "Mesh zone: ") + zone)), fontsize=11, y=1.0)
     for ax in (ax0, ax1):
         ax.set_xlabel(tr(lang, "mm"))
         ax.grid(alpha=0.15)
@@ -338,12 +376,13 @@ def _mesh_figure(result, lang):
         Line2D([], [], color="0.3", ls="--", label=mt(tr(lang, "base circle d_b"))),
         Line2D([], [], color="0.3", ls=":", label=mt(tr(lang, "tip circle d_a"))),
         Line2D([], [], color="0.3", ls="-.", label=mt(tr(lang, "root circle d_f"))),
-        Line2D([], [], color="k", lw=0.8, label=tr(lang, "line of action N1N2")),
-        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=tr(lang, "double-pair zones P1U2, U1P2")),
-        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=trc(lang, "figure, short", "single-pair zone U2U1")),
+        Line2D([], [], color="k", lw=0.8, label=pair_names(tr(lang, "line of action N1N2"))),
+        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=pair_names(tr(lang, "double-pair zones P1U2, U1P2"))),
+        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=pair_names(trc(lang, "figure, short", "single-pair zone U2U1"))),
         Line2D([], [], color=C_SUN, lw=2.6, label=tr(lang, "active profiles")),
     ]
     bottom_legend(fig, handles, [h.get_label() for h in handles], ncol=4, fontsize=9)
+    settle(fig)
     return fig
 
 
@@ -410,8 +449,16 @@ def _scheme(ax, result, lang):
     ax.plot([shaft_in0 - 0.05 * rmax, prev_out + 0.3 * rmax], [0, 0], color="0.5", lw=0.7, ls=(0, (10, 3, 2, 3)))
     ax.annotate(tr(lang, "from the motor"), (shaft_in0, 0), xytext=(0, 8), textcoords="offset points",
                 fontsize=9)
-    ax.annotate(tr(lang, "to the crank"), (prev_out + 0.25 * rmax, 0), xytext=(-30, 8),
-                textcoords="offset points", fontsize=9)
+    # over the output shaft, from the carrier's arm or ending at the shaft's end, else under it:
+    # inside the panel (kit.settle; it touched the border)
+    end = prev_out + 0.25 * rmax
+    places = [{"xy": (prev_out, 0), "xyann": (4, 6), "ha": "left", "va": "bottom"},
+              {"xy": (end, 0), "xyann": (0, 6), "ha": "right", "va": "bottom"},
+              {"xy": (prev_out, 0), "xyann": (4, -6), "ha": "left", "va": "top"},
+              {"xy": (end, 0), "xyann": (0, -6), "ha": "right", "va": "top"}]
+    t = ax.annotate(tr(lang, "to the crank"), places[0]["xy"], xytext=places[0]["xyann"], textcoords="offset points",
+                    fontsize=9, ha="left", va="bottom")
+    t._tmm_places = places
     ax.set_xlim(shaft_in0 - 0.1 * rmax, prev_out + 0.35 * rmax)
     ax.set_ylim(-1.3 * rmax, 1.3 * rmax)
     ax.set_ylabel(tr(lang, "radius r = z/2, modules"))

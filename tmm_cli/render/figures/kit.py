@@ -352,3 +352,178 @@ def hide_axis(*axes_axis) -> None:
     for axis in axes_axis:
         axis.set_major_locator(NullLocator())
         axis.set_visible(False)
+
+
+# --------------------------------------------------------------------------------------------------
+# labels placed from their boxes as drawn (issue 32: a scale's box hid a diagram's peak, a point's
+# name sat on another's): matplotlib's renderer measures each candidate place
+
+
+def text_box(t, renderer):
+    """A label's box as drawn [px]: its background box when it has one, else the text's extent (an
+    annotation's arrow not counted)."""
+    from matplotlib.text import Text
+
+    if hasattr(t, "update_positions"):  # an annotation: its text's place from its point and offset
+        t.update_positions(renderer)
+    patch = t.get_bbox_patch()
+    if patch is not None:
+        t.update_bbox_position_size(renderer)
+        return patch.get_window_extent(renderer)
+    return Text.get_window_extent(t, renderer)
+
+
+def shown_labels(ax, renderer=None):
+    """The labels a panel shows: texts and annotations with text (an annotation whose point lies
+    outside the panel is not drawn)."""
+    from matplotlib.text import Annotation
+
+    out = []
+    for t in ax.texts:
+        if not (t.get_visible() and t.get_text().strip()):
+            continue
+        if isinstance(t, Annotation) and renderer is not None and not t._check_xy(renderer):
+            continue
+        out.append(t)
+    return out
+
+
+def curve_pixels(ax, step_px: float = 2.0):
+    """The points of a panel's curves in pixels, each segment sampled every `step_px` (the lines in
+    data coordinates: not the grid, a phase border or a zero line across the whole panel)."""
+    import numpy as np
+
+    segs = []
+    for line in ax.get_lines():
+        if line.get_transform() != ax.transData or not line.get_visible() or line.get_alpha() == 0:
+            continue
+        xy = ax.transData.transform(np.asarray(line.get_xydata(), dtype=float))
+        if line.get_linestyle() in ("None", "none", "", " "):
+            ok = np.isfinite(xy).all(axis=1)
+            segs.append((xy[ok], xy[ok]))
+            continue
+        a, b = xy[:-1], xy[1:]
+        ok = np.isfinite(a).all(axis=1) & np.isfinite(b).all(axis=1)
+        segs.append((a[ok], b[ok]))
+    if not segs:
+        return np.zeros((0, 2))
+    a = np.concatenate([s[0] for s in segs])
+    b = np.concatenate([s[1] for s in segs])
+    n = np.maximum(2, (np.hypot(*(b - a).T) / step_px).astype(int) + 1)
+    seg = np.repeat(np.arange(len(a)), n)
+    first = np.repeat(np.cumsum(n) - n, n)
+    f = (np.arange(len(seg)) - first) / np.repeat(n - 1, n)
+    return a[seg] + f[:, None] * (b[seg] - a[seg])
+
+
+def _covered(box, pts, pad: float = 1.0) -> int:
+    if not len(pts):
+        return 0
+    return int(((pts[:, 0] > box.x0 - pad) & (pts[:, 0] < box.x1 + pad) & (pts[:, 1] > box.y0 - pad)
+                & (pts[:, 1] < box.y1 + pad)).sum())
+
+
+def _overlap_area(a, b, pad: float = 1.0) -> float:
+    w = min(a.x1, b.x1) - max(a.x0, b.x0) + pad
+    h = min(a.y1, b.y1) - max(a.y0, b.y0) + pad
+    return w * h if w > 0 and h > 0 else 0.0
+
+
+def _outside(box, frame, margin: float = 1.5) -> float:
+    return max(0.0, frame.x0 + margin - box.x0) + max(0.0, box.x1 - frame.x1 + margin) \
+        + max(0.0, frame.y0 + margin - box.y0) + max(0.0, box.y1 - frame.y1 + margin)
+
+
+def _set(t, props: dict) -> None:
+    for k, v in props.items():
+        if k in ("xy", "xyann"):  # an annotation's point and its text's offset
+            setattr(t, k, v)
+        else:
+            t.update({k: v})
+
+
+def place_free(ax, t, places, avoid_curves: bool = True, others=None, pts=None, boxes=None) -> int:
+    """Put the label `t` at the first of `places` where it stays inside its panel, overlaps no other
+    label of the panel (or of `others`) and, with `avoid_curves`, covers no point of a curve; else at
+    the place that does least of these, in this order (leaving the panel is worst, a curve under a
+    label least bad). A place: a dict of Text properties (position, alignment,
+    offset …) set on `t`. `pts` (the panel's :func:`curve_pixels`) and `boxes` ({label: its box}) may
+    be given when several labels are placed in turn. Returns the index of the place taken."""
+    fig = ax.figure
+    r = fig.canvas.get_renderer()
+    frame = ax.get_window_extent(r)
+    if avoid_curves and pts is None:
+        pts = curve_pixels(ax)
+    import numpy as np
+
+    rest = [o for o in (shown_labels(ax, r) if others is None else others) if o is not t]
+    if boxes is None:
+        boxes = {}
+    boxes = [boxes[o] if o in boxes else text_box(o, r) for o in rest]
+
+    # a point's name nearer another named point than its own reads as that one's
+    named = getattr(t, "xycoords", None) == "data"
+    if named:
+        t_xy = np.asarray(t._get_xy(r, t.xy, "data"), dtype=float)
+        near = [np.asarray(o._get_xy(r, o.xy, "data"), dtype=float) for o in rest
+                if getattr(o, "xycoords", None) == "data"]
+    best, cost_best = 0, None
+    for i, props in enumerate(places):
+        _set(t, props)
+        b = text_box(t, r)
+        strange = 0
+        if named and near:
+            c = np.array([(b.x0 + b.x1) / 2, (b.y0 + b.y1) / 2])
+            strange = int(min(np.hypot(*(c - q)) for q in near) < np.hypot(*(c - t_xy)))
+        cost = (_outside(b, frame), sum(_overlap_area(b, o) for o in boxes), strange,
+                _covered(b, pts) if avoid_curves else 0)
+        if not any(cost):
+            return i
+        if cost_best is None or cost < cost_best:
+            best, cost_best = i, cost
+    _set(t, places[best])
+    return best
+
+
+def corner_places(first: str = "upper left", inset_pt: float = 4.0):
+    """The four corners of a panel as places for a boxed label (:func:`place_free`), `first` first:
+    the label `inset_pt` inside the frame (its box, padded 0,25 em, stays inside)."""
+    corners = {"upper left": ((0, 1), (inset_pt, -inset_pt), "left", "top"),
+               "upper right": ((1, 1), (-inset_pt, -inset_pt), "right", "top"),
+               "lower right": ((1, 0), (-inset_pt, inset_pt), "right", "bottom"),
+               "lower left": ((0, 0), (inset_pt, inset_pt), "left", "bottom")}
+    order = [first] + [c for c in corners if c != first]
+    out = [{"xy": corners[c][0], "xyann": corners[c][1], "ha": corners[c][2], "va": corners[c][3]} for c in order]
+    # then a line lower at the top (under the phases' names) and a line higher at the bottom
+    for c in order:
+        (x, y), (dx, dy), ha, va = corners[c]
+        out.append({"xy": (x, y), "xyann": (dx, dy + (-14.0 if y else 14.0)), "ha": ha, "va": va})
+    return out
+
+
+def settle(fig) -> None:
+    """Each label given places (``t._tmm_places``: a list of :func:`place_free` places, the first
+    preferred) put where it hides nothing, after every curve and label of the figure is there and at
+    its final size; the labels of a panel in the order they were written."""
+    r = fig.canvas.get_renderer()
+    for ax in fig.axes:
+        todo = [t for t in ax.texts if getattr(t, "_tmm_places", None)]
+        if not todo:
+            continue
+        pts = curve_pixels(ax)
+        shown = shown_labels(ax, r)
+        boxes = {o: text_box(o, r) for o in shown}
+        for t in todo:
+            place_free(ax, t, t._tmm_places, others=shown, pts=pts, boxes=boxes)
+            boxes[t] = text_box(t, r)
+
+
+def offset_places(directions, dist_pt: float = 6.0):
+    """Places around an annotation's point at `dist_pt` in each direction (unit vectors (dx, dy),
+    y up), aligned away from the point."""
+    out = []
+    for dx, dy in directions:
+        ha = "left" if dx > 0.3 else "right" if dx < -0.3 else "center"
+        va = "bottom" if dy > 0.3 else "top" if dy < -0.3 else "center"
+        out.append({"xyann": (dist_pt * dx, dist_pt * dy), "ha": ha, "va": va})
+    return out

@@ -66,12 +66,18 @@ def _limits(ax, x: S.Axis, y: S.Axis) -> None:
     ax.set_ylim(y.lo, y.hi)
 
 
-def _mu(ax, text: str, where: str = "upper left") -> None:
-    """The scale written on the plan or diagram, in a white box."""
-    x, ha = (0.01, "left") if "left" in where else (0.99, "right")
-    y, va = (0.985, "top") if "upper" in where else (0.015, "bottom")
-    ax.text(x, y, text, transform=ax.transAxes, ha=ha, va=va, fontsize=MIN_PT, zorder=20,
-            bbox=dict(boxstyle="square,pad=0.25", fc="white", ec="0.6", lw=0.5))
+def _mu(ax, text: str, where: str = "upper left"):
+    """The scale written on the plan or diagram, in a white box: in the corner `where`, or in the
+    first other corner where it hides no curve and no label (placed by kit.settle once the
+    figure is drawn)."""
+    from .kit import corner_places
+
+    places = corner_places(where)
+    t = ax.annotate(text, places[0]["xy"], xycoords="axes fraction", xytext=places[0]["xyann"],
+                    textcoords="offset points", ha=places[0]["ha"], va=places[0]["va"], fontsize=MIN_PT, zorder=20,
+                    bbox=dict(boxstyle="square,pad=0.25", fc="white", ec="0.6", lw=0.5))
+    t._tmm_places = places
+    return t
 
 
 def _n(x, lang, **kw) -> str:
@@ -163,7 +169,7 @@ def _motion(r, lang: str):
         ax.set_xlim(sc.phi.lo, sc.phi.hi)
         ax.set_ylim(axis.lo, axis.hi)
         ax.set_xticks(np.arange(0, 361, 30))
-        ax.set_ylabel(ylabel)
+        _thousands(ax, ylabel, axis, lang)
         ax.grid(alpha=0.3, lw=0.4)
         if k < 2:
             ax.tick_params(labelbottom=False)
@@ -174,6 +180,21 @@ def _motion(r, lang: str):
                                                      lambda t: np.degrees(np.asarray(t) / 1000.0 * w)))
     top.set_xlabel(tr(lang, "time t, ms"))
     return fig
+
+
+def _thousands(ax, ylabel: str, axis: S.Axis, lang: str) -> None:
+    """The diagram's name on its y axis; values of 10 000 and more in thousands, «ε·10⁻³, рад/с²»
+    (the ГОСТ 2.319 way of a factor in the axis' name): «−40000» and the name ran past the figure's
+    left edge (the 17 mm margin holds four digits and a minus)."""
+    from matplotlib.ticker import FuncFormatter
+
+    if max(abs(axis.lo), abs(axis.hi)) < 9999.5:
+        ax.set_ylabel(ylabel)
+        return
+    head, _, unit = ylabel.partition(", ")
+    factor = r"$\cdot\mathrm{10}^{\mathrm{-3}}$"  # mathtext: Liberation Serif has no superscript minus
+    ax.set_ylabel(f"{head}{factor}, {unit}" if unit else head + factor)
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda x, pos: num(x / 1000.0, lang, minus="−", sig=6)))
 
 
 def _plan_frame(ax, xa, ya, lang: str, grid: float) -> None:
@@ -376,13 +397,17 @@ def _planetary(g, lang: str):
     for t in list(ax_a.texts):
         if "=" in t.get_text():
             t.remove()
-    # the planetary's module is not chosen by the book's synthesis: the radii are drawn for m = 1 mm
-    # (as on sheet 4), so the scales are numbers (per module they scale with m)
-    m1 = tr(lang, "(m = 1 mm)")
-    _mu(ax_s, mt(f"μ_l = {_mus(sc.mu_l_per_module, lang)} " + tr(lang, "mm/mm") + " " + m1))
-    _mu(ax_v, mt(f"μ_V = {_n(sc.mu_v_per_module, lang, sig=3)} " + tr(lang, "(m/s)/mm") + " " + m1))
+    # the planetary's module is not chosen by the book's synthesis: drawn with sheet 4's module, the
+    # scales stated at it (as sheet 4 does)
+    _mu(ax_s, mt(f"μ_l = {_mus(sc.mu_l / 1000, lang)} " + tr(lang, "m/mm") + " " + module_text(sc.module_mm, lang)))
+    _mu(ax_v, mt(f"μ_V = {_n(sc.mu_v, lang, sig=3)} " + tr(lang, "(m/s)/mm")))
     _mu(ax_a, mt(f"μ_ω = {_n(sc.mu_omega, lang, sig=3)} " + tr(lang, "(rad/s)/mm")), "upper right")
     return fig
+
+
+def module_text(m: float, lang: str) -> str:
+    """«(m = 2 мм)»: the reducer's module of the drawing, written as sheet 4 writes it."""
+    return tr(lang, "(m = {m} mm)").format(m=num(m, lang, sig=3))
 
 
 def _assembly(g, lang: str):
@@ -392,6 +417,7 @@ def _assembly(g, lang: str):
     d = g.planetary
     n = len(d.stages)
     mu = S.assembly_scale(g)
+    mu_l = S.assembly_mu_l(g)
     w_cm, h_cm = S.figure_size_cm("gears_assembly", g)
     size = (w_cm * 10, h_cm * 10)
     fig = _new(size)
@@ -404,14 +430,15 @@ def _assembly(g, lang: str):
         ax.set_title(title, y=1.0, pad=4)
         ax.set_xlim(-mu * side / 2, mu * side / 2)
         ax.set_ylim(-mu * side / 2, mu * side / 2)
-    _mu(fig.axes[0], mt(f"μ_l = {_mus(mu, lang)} " + tr(lang, "mm/mm") + " " + tr(lang, "(m = 1 mm)")), "lower left")
+    _mu(fig.axes[0], mt(f"μ_l = {_mus(mu_l / 1000, lang)} " + tr(lang, "m/mm") + " " + module_text(S.drawing_module(g), lang)),
+        "lower left")
     return fig
 
 
 def _mesh(g, lang: str):
     from matplotlib.lines import Line2D
 
-    from .gears import C_PLANET, C_SUN, _draw_mesh
+    from .gears import C_PLANET, C_SUN, _draw_mesh, pair_names
     from .kit import mt
 
     sp = g.spur
@@ -427,8 +454,8 @@ def _mesh(g, lang: str):
         Line2D([], [], color="0.3", ls="--", label=mt(tr(lang, "base circles d_b"))),
         Line2D([], [], color="0.3", ls=":", label=mt(tr(lang, "tip circles d_a"))),
         Line2D([], [], color="0.3", ls="-.", label=mt(tr(lang, "root circles d_f"))),
-        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=tr(lang, "two-pair zones P1U2, U1P2")),
-        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=tr(lang, "single-pair mesh U2U1")),
+        Line2D([], [], color="#ff7f0e", lw=5, alpha=0.75, label=pair_names(tr(lang, "two-pair zones P1U2, U1P2"))),
+        Line2D([], [], color="#2ca02c", lw=5, alpha=0.75, label=pair_names(tr(lang, "single-pair mesh U2U1"))),
         Line2D([], [], color=C_SUN, lw=2.4, label=tr(lang, "active profiles, gear 1")),
         Line2D([], [], color=C_PLANET, lw=2.4, label=tr(lang, "active profiles, gear 2")),
     ]
@@ -623,12 +650,19 @@ def _synthesis(s1, lang: str):
 
 def note_figure(result, lang: str, name: str):
     """One note figure (a matplotlib Figure); call inside :func:`note_style`."""
-    from .kit import decimal_commas
+    part, _ = MAKERS[name]
+    return note_figure_of(name, {"cam": result.cam, "gears": result.gears, "linkage": result.linkage}[part], lang)
 
-    part, make = MAKERS[name]
-    fig = make({"cam": result.cam, "gears": result.gears, "linkage": result.linkage}[part], lang)
+
+def note_figure_of(name: str, part, lang: str):
+    """The note figure `name` from its chapter's result alone (the cam's, the gears', the linkage's):
+    drawn, its tick labels with decimal commas, every text legible, the labels settled."""
+    from .kit import decimal_commas, settle
+
+    fig = MAKERS[name][1](part, lang)
     decimal_commas(fig, lang)
     legible(fig)
+    settle(fig)
     return fig
 
 

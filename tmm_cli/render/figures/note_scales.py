@@ -6,8 +6,8 @@ axes boxes in millimetres, so each plan and diagram has an exact, round scale: t
 from here.
 
 A scale is "so much per millimetre of the printed figure": μ_l [m/mm], μ_S [mm/mm], μ_φ [°/mm], …
-The planetary reducer is drawn in modules (its module is not part of the course's synthesis):
-its μ_l and μ_V are given per module m.
+The planetary reducer is drawn with the module sheet 4 chooses for it (the synthesis gives tooth
+numbers only): its μ_l and μ_V are stated with that module.
 """
 
 from __future__ import annotations
@@ -287,8 +287,9 @@ class PlanetaryScales:
     x_velocity: Axis  # drawn velocity lengths, in the same units per mm as y
     x_angular: Axis
     y_angular: Axis
-    mu_l_per_module: float  # mm of the reducer per mm of the figure, per mm of module: μ_l = this·m
-    mu_v_per_module: float  # (m/s)/mm per mm of module: μ_V = this·m
+    module_mm: float  # the module the reducer is drawn with: sheet 4's (gears_sheet.reducer_fit)
+    mu_l: float  # mm of the reducer per mm of the figure at that module (a ГОСТ 2.302 scale)
+    mu_v: float  # (m/s)/mm at that module
     mu_omega: float  # (rad/s)/mm
     ok_mm: float  # the segments of the angular plan as drawn [mm]
     oh_mm: float
@@ -310,7 +311,10 @@ def planetary_scales(gears) -> PlanetaryScales:
          [vp.pole * math.tan(math.radians(s.phi_h_deg)) for s in vp.stages] + \
          [vp.pole * (-s.v_a / (s.r_b - s.r_a)) for s in vp.stages]
     aspan = max(xs + [0.0]) - min(xs + [0.0])
-    mu = nice(max(2.6 * rmax / sb.height, length / sb.width, vspan / vb.width))
+    # the module of sheet 4's drawing, and the round scale μ_l (mm/mm) that shows the reducer at it
+    m = drawing_module(gears)
+    mu_l = nice(max(2.6 * rmax / sb.height, length / sb.width, vspan / vb.width) * m)
+    mu = mu_l / m  # modules per mm
     mu_a = nice(max(aspan * 1.15 / ab.width, vp.pole * 1.3 / ab.height))  # the angular plan's own scale
     y = Axis(-mu * sb.height / 2, mu, sb.height)
     x_scheme = Axis(-0.22 * rmax - 0.1 * rmax - (mu * sb.width - length) / 2, mu, sb.width)
@@ -322,9 +326,17 @@ def planetary_scales(gears) -> PlanetaryScales:
     omega_d = math.pi * gears.motor_rpm / 30.0
     s0 = vp.stages[0]
     # V_A = ω_д·r_k: r_k = r_a modules = r_a·m mm; drawn v_a/μ mm long
-    mu_v = omega_d * s0.r_a * 1e-3 / (s0.v_a / mu)
+    mu_v = omega_d * s0.r_a * m * 1e-3 / (s0.v_a / mu)
     mu_omega = omega_d / (vp.ok / mu_a)
-    return PlanetaryScales(y, x_scheme, x_vel, x_ang, y_ang, mu, mu_v, mu_omega, vp.ok / mu_a, vp.oh / mu_a)
+    return PlanetaryScales(y, x_scheme, x_vel, x_ang, y_ang, m, mu_l, mu_v, mu_omega, vp.ok / mu_a, vp.oh / mu_a)
+
+
+def drawing_module(gears) -> float:
+    """The planetary reducer's module of the drawing [mm]: sheet 4's choice (the largest standard
+    module at which the scheme fits its field at a ГОСТ scale), which the note's figures state too."""
+    from ..sheets.gears_sheet import reducer_fit
+
+    return reducer_fit(gears)[1]
 
 
 def assembly_side(gears) -> float:
@@ -332,13 +344,18 @@ def assembly_side(gears) -> float:
     return ASSEMBLY_MM if len(gears.planetary.stages) == 1 else 76.0
 
 
-def assembly_scale(gears) -> float:
-    """Modules per mm of the assembly plan."""
+def assembly_mu_l(gears) -> float:
+    """mm of the reducer per mm of the assembly plan at the drawing's module (a ГОСТ 2.302 scale)."""
     lim = 0.0
     for st in gears.planetary.stages:
         big = max(st.z_planet, st.zc2) / 2
         lim = max(lim, st.z_ring / 2, st.z_sun / 2 + st.z_planet / 2 + big) + 4
-    return nice(2 * lim / assembly_side(gears))
+    return nice(2 * lim * drawing_module(gears) / assembly_side(gears))
+
+
+def assembly_scale(gears) -> float:
+    """Modules per mm of the assembly plan."""
+    return assembly_mu_l(gears) / drawing_module(gears)
 
 
 INDICATOR = {"x": (17.0, 124.0), "panel": 50.0, "gap": 16.0, "bottom": 14.0, "top": 4.0}

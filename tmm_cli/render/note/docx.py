@@ -14,6 +14,7 @@ them for every other reader.
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 from ...i18n import tr
@@ -44,6 +45,28 @@ FONT = "Times New Roman"
 SVG_EXT = "{96DAC541-7B7A-43D3-8B79-37D633B846F1}"
 ASVG = "http://schemas.microsoft.com/office/drawing/2016/SVG/main"
 TEXT_CM = 16.5
+WORD_JOINER = "\u2060"
+_SLASH = re.compile(r"(?<=[^\s/])/(?=[^\s/])")
+
+
+def no_break_after_slash(text: str) -> str:
+    """A unit kept on one line: a word joiner (U+2060) after a slash between two characters, so
+    «рад/с» and «(м/с)/мм» never break as «рад/ с» (LibreOffice 7.4 honours U+2060 and breaks at the
+    space before the unit instead; a zero-width joiner U+200D it ignores, and U+00A0 would print a
+    space). A text with an address (``://``) is left alone: its joiners would go into the link.
+
+    >>> no_break_after_slash("ε, рад/с²") == "ε, рад/" + WORD_JOINER + "с²"
+    True
+    >>> no_break_after_slash("(м/с)/мм").count(WORD_JOINER), no_break_after_slash("и / или")
+    (2, 'и / или')
+    >>> no_break_after_slash("https://e.lanbook.com/book/1")
+    'https://e.lanbook.com/book/1'
+    """
+    return text if "://" in text else _SLASH.sub("/" + WORD_JOINER, text)
+# the text after an inline formula that goes on with a relation and a number («$n_к$ = 1100 об/мин»):
+# LibreOffice may break a line after a formula whatever space follows it (it put «= 1100» on the next
+# line of the task, «90 / мм» in another), so the sign, the number and its unit join the formula as upright text
+RELATION_AFTER_MATH = re.compile(r'[ \u00a0]([=≈≠<>≤≥])[ \u00a0]([−\-]?\d[\d\u202f]*(?:,\d+)?(?:°|\u00a0[^\s;,.()«»"$\\]+)?)')
 
 
 class DocxWriter:
@@ -234,11 +257,21 @@ class DocxWriter:
         p.append(char("end"))
 
     # -- inline ------------------------------------------------------------------------------------
-    def inline(self, paragraph, text: str, bold: bool = False, size: float | None = None, in_table: bool = False) -> None:
+    def inline(self, paragraph, text: str, bold: bool = False, size: float | None = None, in_table: bool = False,
+               joined: bool = True) -> None:
+        """`joined`: no break after a unit's slash in the program's text (:func:`no_break_after_slash`);
+        off for the list of sources, whose addresses are copied as they are."""
         from docx.shared import Pt
 
         text = self.doc.resolve(text)
-        for is_math, piece in split_math(text):
+        pieces = [list(x) for x in split_math(text)]
+        for k in range(len(pieces) - 1):  # «$n_к$ = 1100 об/мин»: the sign and the number join the formula
+            (is_math, src), (_, after) = pieces[k], pieces[k + 1]
+            m = RELATION_AFTER_MATH.match(after) if is_math and after else None
+            if m:
+                pieces[k][1] = f'{src} {m[1]} "{m[2]}"'
+                pieces[k + 1][1] = after[m.end():]
+        for is_math, piece in pieces:
             if is_math:  # in a table at the table's 12 pt, fractions on the line (no tall rows)
                 paragraph._p.append(omath(piece, size=12 if in_table else 14, linear=in_table))
             elif piece:
@@ -249,7 +282,7 @@ class DocxWriter:
                         if size:
                             r.font.size = Pt(size)
                     else:
-                        self._runs(paragraph, run, bold, size)
+                        self._runs(paragraph, no_break_after_slash(run) if joined else run, bold, size)
 
     def _runs(self, paragraph, piece: str, bold: bool, size: float | None) -> None:
         """The program's text: a power of ten, "1,458·10⁻⁴", as a superscript run."""
@@ -275,7 +308,8 @@ class DocxWriter:
             p._p.get_or_add_pPr().get_or_add_pStyle().val = self.STYLE_IDS[style]
         return p
 
-    def para(self, text: str = "", style: str | None = None, indent: bool = True, align=None, bold: bool = False):
+    def para(self, text: str = "", style: str | None = None, indent: bool = True, align=None, bold: bool = False,
+             joined: bool = True):
         from docx.shared import Cm
 
         p = self._styled(self.d.add_paragraph(), style)
@@ -284,7 +318,7 @@ class DocxWriter:
         if align is not None:
             p.alignment = align
         if text:
-            self.inline(p, text, bold=bold)
+            self.inline(p, text, bold=bold, joined=joined)
         return p
 
     # -- blocks ------------------------------------------------------------------------------------
@@ -323,7 +357,7 @@ class DocxWriter:
             self.figure(b)
         elif isinstance(b, ReferenceList):
             for i, src in enumerate(self.doc.references(), 1):
-                self.para(f"{i}. {src.text}")
+                self.para(f"{i}. {src.text}", joined=False)
         elif isinstance(b, PageBreak):
             from docx.enum.text import WD_BREAK
 
@@ -367,11 +401,11 @@ class DocxWriter:
         line(f["designation"], space=12)
         date = ("«___» __________ 20__ " + f["date-label"]).strip()
         first = True
-        for label, name, extra in ((f["teacher-label"], f["teacher"], date),
-                                   (f["student-label"] + (", " + f["group-label"] + " " + f["group"] if f["group"] else ""),
-                                    f["student"], date)):
+        for label, name, extra in ((f["teacher-label"], f["teacher"], date), (f["student-label"], f["student"], date)):
             line(f"{label}  ____________  {name or '____________'}", align=A.RIGHT, before=3.5 if first else 0.0,
                  space=6)
+            if not first:  # «студент группы» and the group, or a blank for it (as the typst title page)
+                line(f"{f['group-label']}  {f['group'] or '____________'}", align=A.RIGHT, space=6)
             line(extra, align=A.RIGHT, space=12)
             first = False
         line(f"{f['grade-label']} ____________", align=A.RIGHT)
@@ -653,7 +687,8 @@ def write_docx(doc: Document, path: Path, folder: Path, title, pages: dict | Non
 
 
 def docx_text(path: Path) -> str:
-    """The text of a DOCX (paragraphs, tables, equations as their plain text) — for the tests."""
+    """The text of a DOCX (paragraphs, tables, equations as their plain text, without the units' word
+    joiners) — for the tests."""
     import docx
     from docx.oxml.ns import qn
 
@@ -664,7 +699,7 @@ def docx_text(path: Path) -> str:
         text = "".join(t.text or "" for t in p.iter() if t.tag in (qn("w:t"), qn("m:t")))
         if text.strip():
             out.append(text)
-    return "\n".join(out)
+    return "\n".join(out).replace(WORD_JOINER, "")  # as it reads
 
 
 

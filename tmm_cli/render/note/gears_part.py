@@ -469,7 +469,7 @@ def _ratio_checks(c: Ctx) -> None:
     c.p(t("The synthesis of the reducer gives its tooth numbers only, not its module: the ratio and the angles of "
           "the velocity pictures do not depend on it. Sheet 4 draws the reducer with the largest standard module "
           "(GOST 9563, series 1) at which it fits its field at 1:1, and takes the scale of the velocities from that "
-          "module; the figure of this note gives its scales per 1 mm of module."))
+          "module; the figures of this note are drawn with the same module and give their scales at it."))
     c.fig("gears_planetary", t("Kinematic scheme of the planetary reducer, the picture of linear velocities and the plan of angular velocities"))
     k = g.planetary.planets
     c.p(t("The {k} stand at the angle $2β = 360°/k = {v}°$").format(k=c.planets(k), v=c.q(360 / k, sig=4))

@@ -37,13 +37,14 @@ def arrow_len(size: float, biggest: float) -> float:
     return ARROW_MIN + (ARROW_MM - ARROW_MIN) * math.sqrt(max(size, 0.0) / biggest)
 
 
-def force_label(sh: Sheet, tail, tip, text: str, within, priority=6) -> None:
-    """A force's name beside its arrow's tip (a leader may start anywhere along the arrow)."""
+def force_label(sh: Sheet, tail, tip, text: str, within, priority=6, wide: bool = False) -> None:
+    """A force's name beside its arrow's tip (a leader may start anywhere along the arrow); `wide`:
+    see :meth:`Sheet.label`."""
     tail, tip = np.asarray(tail, float), np.asarray(tip, float)
     u = tip - tail
     u = u / (np.hypot(*u) or 1.0)
     sh.label(text, tuple(tip), H_LABEL, within=within, dirs=dirs_from(u, 6), dists=(0.8, 2.0, 3.5), priority=priority,
-             anchors=[tuple(tail + (tip - tail) * t) for t in (0.7, 0.45)])
+             anchors=[tuple(tail + (tip - tail) * t) for t in (0.7, 0.45)], wide=wide)
 
 
 LABEL_PAD = (13.0, 9.0)  # [mm] beyond an arrow's tip: its name (sideways, up or down)
@@ -119,14 +120,15 @@ def place_arrows(items, segs) -> list[tuple[np.ndarray, np.ndarray]]:
     return out
 
 
-def draw_arrows(sh: Sheet, origin, arrows, within, priority=6) -> None:
+def draw_arrows(sh: Sheet, origin, arrows, within, priority=6, wide: bool = False) -> None:
     """Draw placed arrows (tail, tip, point [mm from `origin`], label, kind) and name each at its
-    free end (the tip, or the tail when the tip is at the force's point)."""
+    free end (the tip, or the tail when the tip is at the force's point); `wide`: see
+    :meth:`Sheet.label`."""
     origin = np.asarray(origin, float)
     for tail, tip, point, label, kind in arrows:
         a, b = origin + tail, origin + tip
         arrow(sh, a, b, "Тонкие" if kind == "reaction" else "Основные")
         if np.hypot(*(tip - point)) < 1e-6:
-            force_label(sh, b, a, label, within, priority)
+            force_label(sh, b, a, label, within, priority, wide)
         else:
-            force_label(sh, a, b, label, within, priority)
+            force_label(sh, a, b, label, within, priority, wide)

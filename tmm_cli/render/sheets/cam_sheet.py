@@ -570,7 +570,7 @@ def _zone_field(sh: Sheet, r, lang: str, box, beside: bool = False):
         left = sorted((t for t in sh.omitted if t in numbers), key=int)
         lines = list(txt)
         if left:
-            lines.append(tr(lang, "Positions {list} not numbered (no room)").format(list=", ".join(left)))
+            lines.append(tr(lang, "Positions {list} are not marked").format(list=", ".join(left)))
         sh.caption(box[2] - ZONE_CAP_W if beside else box[0], box[2], box[1] + 2.5, lines, H_NOTE, LINE)
 
     return f, caption

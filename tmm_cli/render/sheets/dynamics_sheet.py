@@ -24,9 +24,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...i18n import tr
-from ...i18n.numbers import num
+from ...i18n.numbers import num, small_pct
 from ...linkage.scales import drafting_scale
 from ...linkage.sheet2 import Sheet2
+from ...linkage.zhukovsky import DECIMALS
 from .arrows import (
     LABEL_PAD,
     arrow,
@@ -61,7 +62,7 @@ from .lever_parts import (
     sub,
     wrap_items,
 )
-from .paper import FRAME, H_LABEL, TB_BOX, Sheet
+from .paper import FRAME, H_LABEL, ROOM, TB_BOX, Sheet
 from ..terminal.mechanism import pattern
 
 POLY_PAD = (10.0, 8.0, 10.0, 8.0)  # [mm] around a force polygon: its names
@@ -75,8 +76,9 @@ def symbol(sym: str, lang: str) -> str:
     tick = ""
     if sym[-1] in "′″":
         tick, sym = ("'" if sym[-1] == "′" else "''"), sym[:-1]
-    if sym in ("Fc", "Mc"):
-        return (tr(lang, "F_{c}") if sym == "Fc" else tr(lang, "M_{c}")) + tick
+    if sym[:2] in ("Fc", "Mc") and sym[2:].isdigit() or sym in ("Fc", "Mc"):  # Fc, or Fc3 of several loads
+        base = tr(lang, "F_{c}") if sym[:2] == "Fc" else tr(lang, "M_{c}")
+        return (base[:-1] + sym[2:] + "}" if sym[2:] and base.endswith("}") else base) + tick
     if sym.startswith("MΦ"):
         return f"M_{{Φ{sym[2:]}}}" + tick
     if sym.startswith(("Rτ", "Rn")):
@@ -84,11 +86,11 @@ def symbol(sym: str, lang: str) -> str:
     return f"{sym[0]}_{{{sym[1:]}}}" + tick if len(sym) > 1 else sym + tick
 
 
-def _link_lines(m, kin, i: int, names, k: float) -> np.ndarray:
+def _link_lines(m, kin, i: int, names, k: float, reach: dict | None = None) -> np.ndarray:
     """The lines of the links of `names` at position i [paper mm from the real origin, scale k]."""
     segs = []
-    for sg in link_segments(m, kin, i, names=names, unit=1.0 / k):
-        if sg[0] == "line":
+    for sg in link_segments(m, kin, i, names=names, unit=1.0 / k, reach=reach, guide_stub=GUIDE_STUB):
+        if sg[0] in ("line", "guide"):
             segs.append([sg[1], sg[2]])
         elif sg[0] == "poly":
             segs += [[a, b] for a, b in zip(sg[1][:-1], sg[1][1:])]
@@ -109,6 +111,32 @@ def _link_lines(m, kin, i: int, names, k: float) -> np.ndarray:
 
 def _group_links(s: Sheet2, group: int):
     return [ln for ln in s.sheet1.mechanism.links if ln.group == group]
+
+
+GUIDE_STUB = 10.0  # [paper mm] either side of a block: the neighbouring link's guide in a group's view
+
+
+def _group_reach(s: Sheet2, group: int, i: int) -> dict[str, float]:
+    """How far a group's view draws each of its slotted links from the pivot [real mm]: to every
+    point where a force acts on the link (a block riding on it — the tangent mechanism's R43 at B —,
+    a load, its centre of mass), so that no arrow stands off the link."""
+    kin = s.sheet1.cycle.kin
+    out = {}
+    for ln in _group_links(s, group):
+        if ln.kind != "slotted":
+            continue
+        pivot = complex(kin.z[ln.axis[1]][i])
+        at = [complex(f.z[i]) for f in s.loading.forces if f.number == ln.number]
+        at += [complex(r.at[i]) for r in s.forces.reactions if ln.number in r.pair.links]
+        out[ln.name] = max([abs(z - pivot) for z in at], default=0.0) * MM
+    return out
+
+
+def _group_segments(s: Sheet2, group: int, i: int, unit: float):
+    """:func:`link_segments` of a group's own view: its links wholly, a neighbour's guide as a stub."""
+    m, kin = s.sheet1.mechanism, s.sheet1.cycle.kin
+    return link_segments(m, kin, i, names={ln.name for ln in _group_links(s, group)}, unit=unit,
+                         reach=_group_reach(s, group, i), guide_stub=GUIDE_STUB)
 
 
 def _group_names(s: Sheet2, group: int) -> list[str]:
@@ -173,7 +201,7 @@ def _group_arrows(s: Sheet2, group: int, i: int, k: float, lang: str = "en"):
     pts = [np.array([z.real, z.imag]) * k for z, *_ in items]
     us = [np.array([v.real, v.imag]) / abs(v) for _, v, _, _ in items]
     lens = [arrow_len(abs(v), biggest) for _, v, _, _ in items]
-    segs = _link_lines(m, kin, i, {ln.name for ln in _group_links(s, group)}, k)
+    segs = _link_lines(m, kin, i, {ln.name for ln in _group_links(s, group)}, k, _group_reach(s, group, i))
     placed = place_arrows(list(zip(pts, us, lens)), segs)
     return [(tail, tip, p, label, kind) for (tail, tip), p, (_, _, label, kind) in zip(placed, pts, items)]
 
@@ -182,10 +210,10 @@ def _group_drawing(s: Sheet2, group: int, i: int, k: float):
     """The group's points [real mm] and its arrows' far ends as (point [real mm], vector [paper mm])
     at k paper mm per real mm (the forces' arrows as placed, and for the moments a ring of the arc's
     size)."""
-    m, kin = s.sheet1.mechanism, s.sheet1.cycle.kin
+    kin = s.sheet1.cycle.kin
     pts = [complex(kin.z[n][i]) * MM for n in _group_names(s, group)]
-    for sg in link_segments(m, kin, i, names={ln.name for ln in _group_links(s, group)}, unit=1.0 / k):
-        if sg[0] == "line":
+    for sg in _group_segments(s, group, i, 1.0 / k):
+        if sg[0] in ("line", "guide"):
             pts += [sg[1], sg[2]]
     arrows = []
     for tail, tip, _, _, _ in _group_arrows(s, group, i, k):
@@ -199,8 +227,7 @@ def _group_drawing(s: Sheet2, group: int, i: int, k: float):
 def _draw_group(sh: Sheet, f, s: Sheet2, group: int, i: int, lang: str, within) -> None:
     m, k = s.sheet1.mechanism, s.sheet1.cycle.kin
     unit = 1.0 / f.scale
-    links = {ln.name for ln in _group_links(s, group)}
-    draw_links(f, link_segments(m, k, i, names=links, unit=unit), "Основные", None, unit, 1.0)
+    draw_links(f, _group_segments(s, group, i, unit), "Основные", None, unit, 1.0)
     names = _group_names(s, group)
     pts = {n: np.array(f.p(k.z[n][i].real * MM, k.z[n][i].imag * MM)) for n in names}
     for n, q in pts.items():
@@ -369,19 +396,65 @@ def _lever_placed(s: Sheet2, k: float, lang: str = "en"):
             for (tail, tip), p, (_, _, lab, bal) in zip(placed, ps, items)]
 
 
-def _lever_items(s: Sheet2, lang: str) -> list[str]:
-    i = s.force_position
-    lv = s.lever
-    nm = tr(lang, "N·m")
-    return [tr(lang, "Σ M_{p}(F) = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)} " + tr(lang, "W"),
-            # ω_1 signed (counter-clockwise positive, as M_b): the substitution shows why M_b takes its sign
-            tr(lang, "M_{b} = ΣM_{p}/ω_{1} = ") + f"{num(float(lv.moment_sum[i]), lang, decimals=2)}/"
-            + f"({num(s.sheet1.mechanism.crank.omega, lang, sig=5)}) = {num(float(lv.balancing[i]), lang, decimals=3)} {nm}",
-            tr(lang, "force analysis: ") + f"{num(float(s.balancing[i]), lang, decimals=3)} {nm}",
-            f"Δ = {num(float(s.difference_pct()[i]), lang, decimals=4)} %"]
+def lever_items(s: Sheet2, lang: str, drawn_mu: float | None = None) -> list[str]:
+    """The lever's table (:meth:`Sheet2.lever_table`, the note's too) as the caption's items: each
+    force's ±F·h [N·mm], ΣF·h, F_ур = |ΣF·h|/(pa), M_ур = F_ур·l_OA, the force analysis's M_ур and
+    the difference; the arms' scale when the drawing stands at another μ."""
+    t = s.lever_table()
+    d = DECIMALS
+    nm, nmm, n_ = tr(lang, "N·m"), tr(lang, "N·mm"), tr(lang, "N")
+    head = tr(lang, "moments about the pole p, ±F·h, N·mm (F, N; h, mm):")
+    if drawn_mu is not None and abs(drawn_mu - t.scale) > 1e-9 * t.scale:
+        head = tr(lang, "the arms h at μ_{{v}} = {mu} (m/s)/mm;").format(mu=num(t.scale, lang, sig=3)) + " " + head
+    out = [head]
+    for x in t.terms:
+        sign = "-" if x.sign < 0 else ""
+        out.append(f"{symbol(x.symbol, lang)}: {sign}{num(x.force, lang, decimals=d['force'])}·"
+                   f"{num(x.arm, lang, decimals=d['arm'])} = {num(x.moment, lang, decimals=d['moment'])}")
+    out.append(f"ΣF·h = {num(t.total, lang, decimals=d['moment'])} {nmm}")
+    fb, mb, mz = tr(lang, "F_{b}"), tr(lang, "M_{b}"), tr(lang, "M_{b}^{Zh}")
+    (tot, pa), res = _substituted([(abs(t.total), d["moment"]), (t.pa, d["pa"])], lambda a, b: a / b,
+                                  t.balancing_force, d["balancing_force"], lang)
+    out.append(f"{fb} = |ΣF·h|/(pa) = {tot}/{pa} = {res} {n_}")
+    (f_b, _), res = _substituted([(t.balancing_force, d["balancing_force"]), (t.crank, None)], lambda a, b: a * b,
+                                 t.balancing, d["balancing"], lang)
+    out.append(f"{mz} = {fb}·l_{{1}} = {f_b}·{num(t.crank, lang, sig=9)} = {res} {nm}")
+    out.append(tr(lang, "force analysis: ") + f"{mb} = {num(t.kinetostatic, lang, decimals=d['balancing'])} {nm}")
+    out.append(f"Δ = (|{mb}| − {mz})/|{mb}|·100 {small_pct(t.difference_pct, lang, minus='-')} %")
+    return out
 
 
-LEVER_MM = 200.0  # the lever's drawing at most this large (a larger one only crowds its field)
+def _lever_scale_text(lang: str, mu: float, turned: bool = True) -> str:
+    text = f"μ_{{v}} = {num(mu, lang, sig=3)} " + tr(lang, "(m/s)/mm")
+    return text + tr(lang, "; the plan turned 90° counter-clockwise") if turned else text
+
+
+def _turned_in_caption(sh: Sheet, lang: str, width: float) -> bool:
+    """Whether the scale line with «the plan turned 90°» would shrink below its 5 mm in a field
+    `width` wide: the remark then opens the caption instead."""
+    return sh.text_width(_lever_scale_text(lang, 0.0025), H_LABEL) * ROOM > width
+
+
+def _lever_caption(sh: Sheet, s: Sheet2, lang: str, width: float, drawn_mu: float | None = None) -> list[str]:
+    """The caption's items: the lever's table (:func:`lever_items`), opened by «the plan turned 90°»
+    where the scale line has no room for it."""
+    head = [tr(lang, "the plan turned 90° counter-clockwise")] if _turned_in_caption(sh, lang, width) else []
+    return head + lever_items(s, lang, drawn_mu)
+
+
+def _substituted(leaves, op, result: float, decimals: int, lang: str):
+    """The leaves of a substitution as printed (each (value, decimals), None: as given, to 9
+    significant digits) with as many more decimals as it takes for `op` of the printed leaves to
+    give the printed result to half a unit of its last digit (as the note's substitutions are
+    printed), and the result's text."""
+    shown = float(f"{result:.{decimals}f}")
+    texts = []
+    for extra in range(5):
+        texts = [num(x, lang, sig=9) if dec is None else num(x, lang, decimals=dec + extra) for x, dec in leaves]
+        vals = [float(x) if dec is None else round(x, dec + extra) for x, dec in leaves]
+        if abs(op(*vals) - shown) <= 0.5 * 10.0 ** -decimals * (1 + 1e-9):
+            break
+    return texts, num(result, lang, decimals=decimals)
 
 
 def _lever_arrows(s: Sheet2, k: float = 1.0):
@@ -412,14 +485,16 @@ def _lever_heading(s: Sheet2, lang: str) -> str:
 def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
     plan = s.sheet1.plans[0].velocity
     f = field(sh, "lever", box, _lever_heading(s, lang))
-    lines = wrap_items(sh, _lever_items(s, lang), box[2] - box[0] - 4.0)
+    width = box[2] - box[0] - 4.0
+    lines = wrap_items(sh, _lever_caption(sh, s, lang, width), width)
     x0, _, x1, y1 = f.inner
     room = (x0, box[1] + caption_height(len(lines)), x1, y1 - SCALE_H)
     mu, fit = _lever_scale(s, room)
+    if abs(mu - s.lever_scale()) > 1e-9 * mu:  # drawn at another μ than the table's: the caption says so
+        lines = wrap_items(sh, _lever_caption(sh, s, lang, width, mu), width)
     k = fit.k
     sh.set_field_transform(f, fit.origin, k / plan.scale, "")
-    scale_line(sh, f, f"μ_{{v}} = {num(mu, lang, sig=3)} " + tr(lang, "(m/s)/mm") +
-               tr(lang, "; the plan turned 90° counter-clockwise"))
+    scale_line(sh, f, _lever_scale_text(lang, mu, not _turned_in_caption(sh, lang, width)))
     origin = np.array(fit.origin)
     pts = _lever_points(s)
 
@@ -434,7 +509,7 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
         if abs(z) * k > 0.3:
             sh.line(at(0j), at(z), "Основные")
     sh.dot(at(0j), 0.8)
-    draw_arrows(sh, origin, _lever_placed(s, k, lang), room)
+    draw_arrows(sh, origin, _lever_placed(s, k, lang), room, wide=True)  # a crowded drawing: room for a wider font
     named = set()
     centre = np.mean([at(z) for z in pts.values()], axis=0)
     for n in sorted(pts, key=lambda q: (q != plan.pole, q)):
@@ -449,7 +524,7 @@ def _lever_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
         text = ", ".join(sub(g) for g in group)
         d = q - centre
         sh.label(text, tuple(q), H_LABEL, within=room, dirs=dirs_from(d if np.hypot(*d) > 1e-9 else (0, 1)),
-                 dists=(1.2, 2.5, 4.0), priority=8)
+                 dists=(1.2, 2.5, 4.0), priority=8, wide=True)
     caption(sh, box, lines)
 
 
@@ -607,13 +682,11 @@ def _series_mu() -> list[float]:
 
 
 def _lever_ks(s: Sheet2) -> list[tuple[float, float]]:
-    """(μ, drawing mm per plan mm) the lever may take, the largest drawing first: round μ from
-    μ_v/4 up to μ_v, at most LEVER_MM across (μ_v itself always)."""
+    """(μ, drawing mm per plan mm) the lever may take: the core's μ of its table
+    (:meth:`Sheet2.lever_scale`, the note's) first, then the smaller drawings up to μ_v."""
     mu_v = s.sheet1.plans[0].velocity.scale
-    lo, hi = _lever_extent(s)
-    size = float(max(hi[0] - lo[0], hi[1] - lo[1], 1e-9))
-    out = [(mu, mu_v / mu) for mu in _series_mu() if mu_v / 4.0 * (1 - 1e-9) <= mu <= mu_v * (1 + 1e-9)]
-    return [(mu, k) for mu, k in out if size * k <= LEVER_MM or k <= 1.0 + 1e-9]
+    mu0 = s.lever_scale()
+    return [(mu, mu_v / mu) for mu in _series_mu() if mu0 * (1 - 1e-9) <= mu <= mu_v * (1 + 1e-9)]
 
 
 def _lever_need(sh: Sheet, s: Sheet2, lang: str, k: float, width: float | None = None) -> tuple[float, float]:
@@ -623,7 +696,7 @@ def _lever_need(sh: Sheet, s: Sheet2, lang: str, k: float, width: float | None =
     ends += [v for _, v in _lever_arrows(s, k)]
     w = max(z.real for z in ends) - min(z.real for z in ends) + 2 * LABEL_PAD[0] + 4.0
     w = max(w, 150.0)
-    cap = caption_height(len(wrap_items(sh, _lever_items(s, lang), (width or w) - 4.0)))
+    cap = caption_height(len(wrap_items(sh, _lever_caption(sh, s, lang, (width or w) - 4.0), (width or w) - 4.0)))
     h = max(z.imag for z in ends) - min(z.imag for z in ends) + 2 * LABEL_PAD[1] + 4.0 + SCALE_H + cap \
         + head(sh, _lever_heading(s, lang), width or w)
     return w, h
@@ -690,6 +763,9 @@ def _left(sh: Sheet, s: Sheet2, lang: str, x0: float, x1: float, column: bool):
         lab, fac, _, widths = _group_scale(sh, s, lang, needs, lever[0] - GAP - x0, h_groups)
     else:
         _, h_lever_min = _lever_need(sh, s, lang, ks[-1][1], x1 - x0)
+        _, h_lever = _lever_need(sh, s, lang, ks[0][1], x1 - x0)  # at the table's μ, if the groups keep 120 mm
+        if (y1 - y0) - 2 * GAP - h_poly - h_lever >= 120.0:
+            h_lever_min = h_lever
         rest = (y1 - y0) - 2 * GAP - h_poly
         if rest - h_lever_min < 120.0:  # the polygons give way (drawn at a larger μ_F, said under them)
             h_poly = max(90.0, (y1 - y0) - 2 * GAP - 120.0 - h_lever_min)

@@ -102,6 +102,26 @@ def planetary_module(paper_per_module: float) -> float:
     return max([m for m in MODULES if m <= paper_per_module * (1 + 1e-9)] or [1.0])
 
 
+SCHEME_HEADING_MM = 13.0  # the scheme field's one-line heading with its gaps (paper.Sheet.heading_height: 12,75)
+
+
+def reducer_fit(r):
+    """The scheme's ГОСТ scale on sheet 4 (paper mm per module) and the module the reducer is drawn
+    with (:func:`planetary_module`) — from the result alone, so the note's figures state the same
+    module: (fit, m [mm], scale [paper mm per real mm], its label)."""
+    rmax, gap, _, x_end = _scheme_layout(r.planetary)
+    x0b, y0b, x1b, y1b = BOX_SCHEME
+    split = x0b + 0.6 * (x1b - x0b)  # the scheme takes the left 60 % of the field, the linear velocities the rest
+    lo = np.array([-0.55 * rmax, -1.22 * rmax])
+    hi = np.array([x_end + 1.0 * gap + 0.3 * rmax, 1.22 * rmax])
+    room = (x0b + 2.0, y0b + 2.5 + LINE * 2 + 2.0, split, y1b - SCHEME_HEADING_MM - 2.0)
+    fit = fit_view(lo, hi, room, margin=(14.0, 4.0, 6.0, 4.0), choices=ENLARGE)
+    m_pl = planetary_module(fit.scale)
+    scale = fit.scale / m_pl  # paper mm per real mm
+    label = next((lab for lab, x in GOST_SCALES if abs(x - scale) < 1e-9 * scale), fit.label)
+    return fit, m_pl, scale, label
+
+
 def _scheme_layout(d):
     rmax = max(max(s.z_ring / 2, (s.z_sun + 2 * s.z_planet) / 2) for s in d.stages)
     gap = 0.26 * rmax
@@ -136,17 +156,13 @@ def _scheme_field(sh: Sheet, r, lang: str):
     x0b, y0b, x1b, y1b = BOX_SCHEME
     # the scheme takes the left 60 % of the field, the linear velocities the rest (same radii)
     split = x0b + 0.6 * (x1b - x0b)
-    lo = np.array([-0.55 * rmax, -1.22 * rmax])
-    hi = np.array([x_end + 1.0 * gap + 0.3 * rmax, 1.22 * rmax])
     fld = sh.add_field("scheme", BOX_SCHEME, tr(lang, "Planetary reducer scheme and linear velocities"))
     room = (x0b + 2.0, y0b + 2.5 + LINE * 2 + 2.0, split, fld.inner[3] - 2.0)
-    fit = fit_view(lo, hi, room, margin=(14.0, 4.0, 6.0, 4.0), choices=ENLARGE)
-    f = fit.scale
     # the reducer's module: the synthesis gives tooth numbers only; the drawing takes the largest standard
-    # module (ГОСТ 9563, series 1) at which the scheme fits its field at 1:1 (f paper mm per module)
-    m_pl = planetary_module(f)
-    scale = f / m_pl  # paper mm per real mm
-    label = next((lab for lab, x in GOST_SCALES if abs(x - scale) < 1e-9 * scale), fit.label)
+    # module (ГОСТ 9563, series 1) at which the scheme fits its field at 1:1 (f paper mm per module);
+    # reducer_fit (the note's figures take the module from it) under the heading's usual height
+    fit, m_pl, scale, label = reducer_fit(r)
+    f = fit.scale
     sh.set_field_transform(fld, fit.origin, f, fit.label)
     P = fld.p
     k_s = 0.001 / scale  # m/mm of the reducer at its module

@@ -337,6 +337,7 @@ class Label:
     order: int = 0
     anchors: tuple = ()  # further points a leader may start from (along a dimension line)
     optional: bool = False  # no free place: left out (the sheet lists it in `omitted`), not forced
+    wide: bool = False  # every place with room for a wider font (a leader too) before any without it
 
 
 # a direction -> (unit vector towards the text, the text box's alignment point: fx, fy in 0..1)

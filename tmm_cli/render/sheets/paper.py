@@ -709,14 +709,16 @@ class Sheet:
     # ---------------------------------------------------------------------------- labels
     def label(self, text: str, anchor, h: float = H_LABEL, *, within=None, rot: float = 0.0, dirs=None,
               dists=None, leader: bool = True, priority: int = 0, positions=(), dot: bool = False,
-              anchors=(), optional: bool = False) -> Label:
+              anchors=(), optional: bool = False, wide: bool = False) -> Label:
         """Queue a label near `anchor` [sheet mm]; :meth:`place_labels` puts it where it touches no
         line and no text (candidates: `positions` first — (x, y, rot) insertion points —, then
-        the directions `dirs` at the distances `dists`, then rings farther out with a leader)."""
+        the directions `dirs` at the distances `dists`, then rings farther out with a leader).
+        `wide`: every place with room for a CAD program's wider font, a leader's too, before any
+        without it (a crowded drawing, where a wider font would otherwise run into a neighbour)."""
         lab = Label(text=text, anchor=(float(anchor[0]), float(anchor[1])), h=h, within=within or FRAME_INNER,
                     rot=readable(rot), leader=leader, priority=priority, positions=tuple(positions), dot=dot,
                     order=len(self.labels), anchors=tuple(tuple(map(float, a)) for a in anchors),
-                    optional=optional)
+                    optional=optional, wide=wide)
         if dirs is not None:
             lab.dirs = tuple(dirs)
         if dists is not None:
@@ -772,10 +774,17 @@ class Sheet:
                         y = lab.anchor[1] - s * ww / 2 + c * off * side
                         ring.append((x, y, lab.rot, ww, "center"))
             rings.append(ring)
+        if lab.wide and lab.leader:  # room for a wider font first, near (the ring) or farther (a leader)
+            for x, y, r, ww, align in cands + rings[0]:
+                if self._free_text(x, y, ww, h, r, sub, lab.within):
+                    self._put_in(x, y, ww, text, h, r, align, ROOM if lab.wide else 1.0)
+                    return
+            if self._leader_spot(lab, text, w, h, sub, ROOM) is not None:
+                return
         cands += [c for pair in zip(*rings) for c in pair]
         for x, y, r, ww, align in cands:
             if self._free_text(x, y, ww, h, r, sub, lab.within):
-                self._put_in(x, y, ww, text, h, r, align)
+                self._put_in(x, y, ww, text, h, r, align, ROOM if lab.wide else 1.0)
                 return
         if lab.leader:
             for room in (ROOM, 1.0):
@@ -787,15 +796,16 @@ class Sheet:
         # nowhere free: the least crowded candidate, and the sheet remembers it (tests fail on it)
         x, y, r, ww, align = min(cands, key=lambda c: self._cost(text_corners(c[0], c[1], c[3], h, c[2], sub=sub,
                                                                                pad=CLEAR), lab))
-        self._put_in(x, y, ww, text, h, r, align)
+        self._put_in(x, y, ww, text, h, r, align, ROOM if lab.wide else 1.0)
         self.unplaced.append(text)
 
-    def _put_in(self, x, y, w, text, h, rot, align):
+    def _put_in(self, x, y, w, text, h, rot, align, room: float = 1.0):
         """A label in the box of length `w` whose baseline starts at (x, y), aligned in it."""
         k = {"left": 0.0, "center": 0.5, "right": 1.0}[align]
         c, s = math.cos(math.radians(rot)), math.sin(math.radians(rot))
-        # indexed as osifont sets it (the room kept is the label's own: labels keep their old density)
-        self._put(x + c * k * w, y + s * k * w, text, h, 1.0, rot, "Текст", align=align, room=1.0)
+        # indexed as osifont sets it (the room kept is the label's own: labels keep their old density),
+        # a `wide` label's with the room of a wider font (no later label takes it)
+        self._put(x + c * k * w, y + s * k * w, text, h, 1.0, rot, "Текст", align=align, room=room)
 
     def _cost(self, box, lab) -> float:
         return (0.0 if inside(box, lab.within) else 100.0) + 3.0 * self.obstacles.text_hits(box) \
@@ -829,7 +839,7 @@ class Sheet:
                 self.line(*shelf, "Тонкие")
                 if lab.dot:
                     self.dot((ax, ay), 0.5, "Тонкие")
-                self._put_in(x, y, w, text, h, 0.0, "left" if right else "right")
+                self._put_in(x, y, w, text, h, 0.0, "left" if right else "right", ROOM if lab.wide else 1.0)
                 return True
         return None
 

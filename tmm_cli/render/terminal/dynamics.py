@@ -9,7 +9,7 @@ import math
 import numpy as np
 
 from ...i18n import N_, tr
-from ...i18n.numbers import num
+from ...i18n.numbers import num, small_pct
 from ...linkage.sheet2 import Sheet2
 from .mechanism import _table
 
@@ -59,9 +59,33 @@ def reactions_table(s: Sheet2, lang: str):
         i = p.index
         row = [p.label] + [num(abs(complex(r.force[i])), lang, decimals=1) for r in ks.reactions]
         row += [num(float(s.balancing[i]), lang, decimals=3), num(float(s.lever.balancing[i]), lang, decimals=3),
-                num(float(diff[i]), lang, decimals=2)]
+                small_pct(float(diff[i]), lang, minus="-").removeprefix("= ")]
         t.add_row(*row, style="bold" if p.index == s.force_position else None)
     t.caption = tr(lang, "M_b: the motor's moment on the crank, counter-clockwise positive; Δ = (M_b − M_b,Zhuk.)/M_b")
+    t.caption_justify = "left"
+    return t
+
+
+def lever_table(s: Sheet2, lang: str):
+    """Zhukovsky's lever of the force position as sheet 2 and the note give it (:meth:`Sheet2.lever_table`):
+    each force's F, its arm h about the pole and ±F·h, ΣF·h, F_ур and M_ур."""
+    from ...linkage.zhukovsky import DECIMALS as D
+
+    lt = s.lever_table()
+    p = s.sheet1.cycle.positions[s.force_position]
+    t = _table(tr(lang, "Zhukovsky's lever, position {label} (μ_v = {mu} (m/s)/mm): moments about the pole p").format(
+        label=p.label, mu=num(lt.scale, lang, sig=3)),
+        (tr(lang, "Force"), "left"), (tr(lang, "Point"), "left"), ("F, " + tr(lang, "N"), "right"),
+        ("h, " + tr(lang, "mm"), "right"), ("±F·h, " + tr(lang, "N·mm"), "right"))
+    for x in lt.terms:
+        t.add_row(symbol(x.symbol, lang), x.point, num(x.force, lang, decimals=D["force"]),
+                  num(x.arm, lang, decimals=D["arm"]), num(x.moment, lang, decimals=D["moment"]))
+    t.add_row("Σ", "", "", "", num(lt.total, lang, decimals=D["moment"]), style="bold")
+    t.caption = tr(lang, "F_b = |ΣF·h|/(pa) = {total}/{pa} = {fb} N; M_b = F_b·l_1 = {mb} N·m; force analysis: {mk} N·m; "
+                         "Δ {d} %").format(
+        total=num(abs(lt.total), lang, decimals=D["moment"]), pa=num(lt.pa, lang, decimals=D["pa"]),
+        fb=num(lt.balancing_force, lang, decimals=D["balancing_force"]), mb=num(lt.balancing, lang, decimals=D["balancing"]),
+        mk=num(lt.kinetostatic, lang, decimals=D["balancing"]), d=small_pct(lt.difference_pct, lang, minus="-"))
     t.caption_justify = "left"
     return t
 
@@ -150,6 +174,7 @@ def flywheel_table(s: Sheet2, lang: str):
 
 
 def print_dynamics(console, s: Sheet2, lang: str) -> None:
-    for table in (forces_table(s, lang), reactions_table(s, lang), polygons_table(s, lang), reduced_table(s, lang),
+    for table in (forces_table(s, lang), reactions_table(s, lang), lever_table(s, lang), polygons_table(s, lang),
+                  reduced_table(s, lang),
                   flywheel_table(s, lang)):
         console.print(table)
