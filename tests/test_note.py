@@ -388,6 +388,10 @@ def test_tmm_note_to_docx_from_the_results(tmp_path):
     assert res.exit_code == 0, res.output
     import docx
 
-    text = "\n".join(p.text for p in docx.Document(str(folder / "note.docx")).paragraphs).replace("\u2060", "")
+    from docx.oxml.ns import qn
+
+    # the paragraphs' text with their formulas' (a value said after its symbol is inside the formula)
+    text = "\n".join("".join(t.text or "" for t in p._p.iter(qn("w:t"), qn("m:t")))
+                     for p in docx.Document(str(folder / "note.docx")).paragraphs).replace("\u2060", "")
     assert "60 об/мин" in text.replace("\xa0", " ")  # the run's own crank speed, from results.json
     assert not [p for p in folder.iterdir() if p.name.startswith(".tmm-note-")]

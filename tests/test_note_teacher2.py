@@ -141,7 +141,7 @@ def test_the_conclusion_gives_what_sheets_1_and_2_found(name, exported):
     assert "коэффициент неравномерности" in text
     assert text.rstrip().endswith("Все требования задания выполнены.")
     # the spur module is said to be the mesh drawing's
-    assert "зацепление вычерчено при модуле курсового проекта $m$ = 20\u00a0мм" in text
+    assert "зацепление вычерчено при модуле чертежа $m$ = 20\u00a0мм, заданном пособием в п. 2.1.1" in text
 
 
 def test_without_a_mechanism_the_abstract_and_conclusion_keep_to_sheets_3_and_4():
@@ -336,7 +336,7 @@ def test_the_spur_module_is_the_mesh_drawings_and_the_sources_are_cited():
     cited = set(doc.cited)
     assert {"book", "gost16532", "gost2104", "gost2302", "gost732"} <= cited, cited
     a = abstract(doc)
-    assert "зацепление вычерчено при модуле курсового проекта $m$ = 20\u00a0мм" in "\n".join(a.text)
+    assert "зацепление вычерчено при модуле чертежа $m$ = 20\u00a0мм, заданном пособием в п. 2.1.1" in "\n".join(a.text)
 
 
 @pytest.mark.parametrize("name", WITH_SHEET2)

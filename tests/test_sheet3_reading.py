@@ -86,7 +86,7 @@ def test_zone_numbers_readable(number):
             assert not _cross(*leaders[i], *leaders[j]), f"leaders cross: {leaders[i]} × {leaders[j]}"
     # a number left out is said in the caption
     left = expected - set(drawn)
-    caption = " ".join(t for e, c, h, rot, t in text_boxes(doc) if "не пронумерованы" in t or "not numbered" in t)
+    caption = " ".join(t for e, c, h, rot, t in text_boxes(doc) if "не обозначены" in t or "not marked" in t)
     if left:
         named = set(re.findall(r"\d+", caption.split("озиции")[-1]))
         assert left <= named, f"left out {sorted(left, key=int)}, caption: {caption!r}"

@@ -65,7 +65,7 @@ def run_project(
     if linkage is not None:
         torque_nm, crank_rpm = linkage.motor_input()
         notes = (Note.make("project_mechanism_motor", "assumption", torque=torque_nm, rpm=crank_rpm,
-                           file=linkage_name),)
+                           file=linkage_name),) + linkage_warnings(linkage)
 
     gears = design_gears(
         variant.n_cam_rpm,
@@ -83,6 +83,13 @@ def run_project(
     return ProjectResult(variant=variant, gears=gears, cam=cam, linkage=linkage, linkage_notes=notes)
 
 
+def linkage_warnings(s2) -> tuple[Note, ...]:
+    """The warnings of sheets 1 and 2 (a pressure angle above the usual limit, K < 1, a negative driving
+    moment …): a poor design is said in the project's terminal and results.json as well, not only in
+    linkage.json (their assumptions stay there)."""
+    return tuple(n for n in tuple(s2.sheet1.cycle.notes) + tuple(s2.notes) if n.level == "warning")
+
+
 def analyse_linkage(tables: dict, source: str = "mechanism"):
     """Sheets 1 and 2 of a mechanism file's tables (as :func:`tmm_cli.inputs.mechanism.read_mechanism_tables`
     reads them): the :class:`~tmm_cli.linkage.sheet2.Sheet2` whose driving moment and crank speed
@@ -95,7 +102,7 @@ def analyse_linkage(tables: dict, source: str = "mechanism"):
 
     mech = parse_mechanism(tables, source)
     inp = parse_sheet2(mech, source)
-    if inp.load is None and not inp.gas:
+    if not inp.has_load:
         raise TmmError(f"{source} has no [load]: sheet 4 takes the motor's moment from the work of the useful "
                        "resistance; add the [load] table (docs/dynamics.md) or give --torque without --mechanism")
     return analyse_sheet2(analyse_mechanism(mech, source=source), inp, source)

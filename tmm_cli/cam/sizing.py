@@ -249,7 +249,7 @@ def _solve(program, rocker, l_bc_m, nu_max_deg, closure, sigma) -> _Solve:
 class BookLine:
     """A bounding line of the book's construction: a point on it and its unit direction (zone frame)."""
 
-    name: str  # "A", "B" or "C"
+    name: str  # "A"; "B" (form closure, or a force-closed rocker) or "C" (a force-closed translating follower)
     point: tuple[float, float]
     direction: tuple[float, float]
 
@@ -377,7 +377,9 @@ def size_cam(
     if closure == "form":
         a2, c2, line_2 = _book_line(st, ret_idx, nu, "B")
     else:
-        a2, c2, line_2 = _book_line(st, rise_idx, nu, "C", through_b0=True)
+        # the book's line C through B0 (§1.3); a rocker's pivot is C in the same view, so there the line
+        # takes the book's other name of the second line, B (its form-closure construction)
+        a2, c2, line_2 = _book_line(st, rise_idx, nu, "B" if rocker else "C", through_b0=True)
     try:
         vtx = np.linalg.solve(np.array([a1, a2]), np.array([c1, c2]))
     except np.linalg.LinAlgError:  # parallel lines: no vertex, fall back to the true centre

@@ -16,7 +16,9 @@ MESSAGES: dict[str, str] = {
     "mechanism_position0_gas": N_("Position 0 is the dead centre of the first gas load's piston nearest its cylinder head (the start of its indicator diagram)."),
     "mechanism_position0_given": N_("Position 0 is at the crank angle the file gives (crank.start_deg)."),
     "mechanism_position0_turning": N_("The output link turns fully and has no extreme positions: there is no stroke and no K; position 0 is at the crank angle 0° (or crank.start_deg)."),
-    "mechanism_fast_working": N_("The working stroke is the faster one (K = {time_ratio:.4f} < 1): check load.working."),
+    "mechanism_fast_working": N_("The working stroke is the faster one (K = {time_ratio:.4f} < 1): the output moves faster "
+                                 "under the load than on the return, where a machine usually has K ≥ 1; check "
+                                 "load.working or the crank's sense."),
     "mechanism_stops": N_("The output link stops {count} times per crank turn (not only in its two extreme positions); the stroke and K are taken between its extreme positions."),
     "mechanism_pressure": N_("The pressure angle of group {group} reaches {angle_deg:.1f}° at φ = {phi_deg:.1f}° (more than {limit_deg:.0f}°): the group transmits motion poorly there."),
     "mechanism_slot": N_("The block slides along the slotted link {link} from {rho_min_mm:.1f} to {rho_max_mm:.1f} mm from its pivot {pivot}: the slot must reach at least {rho_max_mm:.1f} mm."),

@@ -30,7 +30,8 @@ class Sheet1:
 
 def analyse_mechanism(mech: Mechanism, plan: str | None = None, source: str = "mechanism") -> Sheet1:
     """Everything of sheet 1. `plan`: the label of the position of the (first) plans, e.g. '3'
-    or "7'" (default: the file's `plan`, else the middle of the working stroke).
+    or "7'" (default: the file's `plan`, else the middle of the working stroke, or the position next to it
+    where the plans are degenerate — a central crank-slider's v_BA = 0 at φ = 90°, as in the example).
 
     >>> from .mechanism_file import parse_mechanism
     >>> m = parse_mechanism({"frame": {"O": [0, 0]}, "crank": {"pivot": "O", "joint": "A",
@@ -38,7 +39,7 @@ def analyse_mechanism(mech: Mechanism, plan: str | None = None, source: str = "m
     ...     "length": 0.25, "guide": {"through": [0, 0], "angle_deg": 0}, "branch": "ahead"}]})
     >>> s = analyse_mechanism(m)
     >>> s.structure.formula, [p.position.label for p in s.plans], s.plans[0].velocity.scale
-    ('I(0,1) → II(2,3)', ['3', '9'], 0.1)
+    ('I(0,1) → II(2,3)', ['4', '10'], 0.1)
     """
     c = cycle(mech, source)
     first, second = default_plan_positions(c)

@@ -310,6 +310,78 @@ def nearest_even(cycle: Cycle, travel: float) -> int:
     return min(evens, key=gap).index
 
 
+DEGENERATE_MM = 2.0  # a plan narrower than this, or a moving point's vector shorter, shows no construction
+
+
+@record
+class Degeneracy:
+    """Why the plans of a position cannot show their groups' construction: the `plan` ('velocity' or
+    'acceleration') collapses to a line (`point` None), or the vector of the moving joint `point` is
+    shorter than :data:`DEGENERATE_MM` at the plan's scale (its tip lies at the pole)."""
+
+    plan: str
+    point: str | None
+
+
+def degeneracy(mech: Mechanism, pl: Plans, limit_mm: float = DEGENERATE_MM) -> Degeneracy | None:
+    """None when both plans of `pl` can be drawn and checked, else the first reason they cannot.
+
+    A plan whose points all lie within a strip narrower than `limit_mm` [mm] at its scale is a line:
+    the directions of its vector equations (⊥ a link, ∥ a guide) cannot be seen to meet. A moving
+    joint (or named point) whose vector is shorter than `limit_mm` lies at the pole: the triangle of
+    its group collapses (e.g. the Scotch yoke at φ = 90°: the block does not slide, v_A3A2 = 0, and the
+    yoke's acceleration is 0). The textbooks build the plans in a general position for this reason
+    (Artobolevsky, ch. 3: «в произвольном положении»).
+
+    >>> from types import SimpleNamespace as N
+    >>> flat = N(kind="velocity", scale=0.01, points={"p": 0j, "a": 0.5j, "b": 0.5j}, at_pole=("p",))
+    >>> good = N(kind="acceleration", scale=0.1, points={"π": 0j, "a": -5j, "b": 3 + 0j}, at_pole=("π",))
+    >>> m = N(joint_names=("O", "A", "B"), frame={"O": 0j}, points=())
+    >>> degeneracy(m, N(velocity=flat, acceleration=good))
+    Degeneracy(plan='velocity', point=None)
+    >>> degeneracy(m, N(velocity=good, acceleration=good)) is None
+    True
+    """
+    moving = [n for n in (*mech.joint_names, *(pt.name for pt in mech.points)) if n not in mech.frame]
+    for plan in (pl.velocity, pl.acceleration):
+        tips = np.array([complex(z) / plan.scale for z in plan.points.values()])
+        xy = np.c_[tips.real, tips.imag]
+        xy = xy - xy.mean(axis=0)
+        if len(xy) < 3 or float(np.abs(xy @ np.linalg.svd(xy, full_matrices=False)[2][1]).max()) < limit_mm:
+            return Degeneracy(plan.kind, None)
+        for n in moving:
+            tip = plan.points.get(_lc(n))
+            if tip is not None and abs(complex(tip)) / plan.scale < limit_mm:
+                return Degeneracy(plan.kind, n)
+    return None
+
+
+def _on_stroke(cycle: Cycle, p: Position, working: bool | None) -> bool:
+    """Whether the evenly spaced position `p` lies strictly inside the working (True) or the return
+    (False) stroke; `working` None: within a quarter turn of anything (an output turning fully)."""
+    if working is None or cycle.working is None:
+        return True
+    t = float(np.remainder(p.travel - cycle.lead, 2.0 * np.pi))
+    return 1e-9 < t < cycle.working - 1e-9 if working else cycle.working + 1e-9 < t < 2.0 * np.pi - 1e-9
+
+
+def _general_near(cycle: Cycle, travel: float, working: bool | None) -> int:
+    """The list index of the evenly spaced position nearest the crank travel `travel` [rad] on its
+    stroke whose plans are not degenerate (:func:`degeneracy`); the nearest itself when all are."""
+    evens = [p for p in cycle.positions if (p.extreme is None or p.label.isdigit()) and _on_stroke(cycle, p, working)]
+
+    def rank(p):  # of two as near, the one after the target (further into the stroke)
+        d = float(np.remainder(p.travel - travel, 2.0 * np.pi))
+        return round(min(d, 2.0 * np.pi - d), 9), d > np.pi
+    if not evens:
+        return nearest_even(cycle, travel)
+    ranked = sorted(evens, key=rank)
+    for p in ranked:
+        if degeneracy(cycle.mechanism, plans(cycle, p.index)) is None:
+            return p.index
+    return ranked[0].index
+
+
 def middle_of_working(cycle: Cycle) -> int | None:
     """The list index of the evenly spaced position nearest the middle of the working stroke
     (counted from its start extreme), None when the output turns fully."""
@@ -320,13 +392,16 @@ def default_plan_positions(cycle: Cycle) -> tuple[int, int]:
     """The positions of the two plans a sheet shows (list indices): the evenly spaced positions
     nearest the middle of the working and of the return stroke, both counted from the extreme
     position where the working stroke starts (whatever position 0 is: ``crank.start_deg``); without
-    extreme positions, the positions a quarter and three quarters of a turn from position 0. The
-    file's `plan` key, if given, is the first."""
+    extreme positions, the positions a quarter and three quarters of a turn from position 0. A
+    position whose plans are degenerate (:func:`degeneracy`: the Scotch yoke's and the central
+    crank-slider's middle of the stroke) gives way to the next nearest on the same stroke. The file's
+    `plan` key, if given, is the first."""
     if cycle.working is None:
-        targets = (0.5 * np.pi, 1.5 * np.pi)
+        targets = ((0.5 * np.pi, None), (1.5 * np.pi, None))
     else:
-        targets = (cycle.lead + 0.5 * cycle.working, cycle.lead + cycle.working + 0.5 * cycle.returning)
-    picks = [nearest_even(cycle, t) for t in targets]
+        targets = ((cycle.lead + 0.5 * cycle.working, True),
+                   (cycle.lead + cycle.working + 0.5 * cycle.returning, False))
+    picks = [_general_near(cycle, t, w) for t, w in targets]
     given = cycle.mechanism.plan
     if given is not None:
         i = cycle.index(given)

@@ -63,6 +63,10 @@ def no_break_after_slash(text: str) -> str:
     'https://e.lanbook.com/book/1'
     """
     return text if "://" in text else _SLASH.sub("/" + WORD_JOINER, text)
+# the text after an inline formula that goes on with a relation and a number («$n_к$ = 1100 об/мин»):
+# LibreOffice may break a line after a formula whatever space follows it (it put «= 1100» on the next
+# line of the task, «90 / мм» in another), so the sign, the number and its unit join the formula as upright text
+RELATION_AFTER_MATH = re.compile(r'[ \u00a0]([=≈≠<>≤≥])[ \u00a0]([−\-]?\d[\d\u202f]*(?:,\d+)?(?:°|\u00a0[^\s;,.()«»"$\\]+)?)')
 
 
 class DocxWriter:
@@ -260,7 +264,14 @@ class DocxWriter:
         from docx.shared import Pt
 
         text = self.doc.resolve(text)
-        for is_math, piece in split_math(text):
+        pieces = [list(x) for x in split_math(text)]
+        for k in range(len(pieces) - 1):  # «$n_к$ = 1100 об/мин»: the sign and the number join the formula
+            (is_math, src), (_, after) = pieces[k], pieces[k + 1]
+            m = RELATION_AFTER_MATH.match(after) if is_math and after else None
+            if m:
+                pieces[k][1] = f'{src} {m[1]} "{m[2]}"'
+                pieces[k + 1][1] = after[m.end():]
+        for is_math, piece in pieces:
             if is_math:  # in a table at the table's 12 pt, fractions on the line (no tall rows)
                 paragraph._p.append(omath(piece, size=12 if in_table else 14, linear=in_table))
             elif piece:
@@ -390,11 +401,11 @@ class DocxWriter:
         line(f["designation"], space=12)
         date = ("«___» __________ 20__ " + f["date-label"]).strip()
         first = True
-        for label, name, extra in ((f["teacher-label"], f["teacher"], date),
-                                   (f["student-label"] + (", " + f["group-label"] + " " + f["group"] if f["group"] else ""),
-                                    f["student"], date)):
+        for label, name, extra in ((f["teacher-label"], f["teacher"], date), (f["student-label"], f["student"], date)):
             line(f"{label}  ____________  {name or '____________'}", align=A.RIGHT, before=3.5 if first else 0.0,
                  space=6)
+            if not first:  # «студент группы» and the group, or a blank for it (as the typst title page)
+                line(f"{f['group-label']}  {f['group'] or '____________'}", align=A.RIGHT, space=6)
             line(extra, align=A.RIGHT, space=12)
             first = False
         line(f"{f['grade-label']} ____________", align=A.RIGHT)

@@ -150,7 +150,7 @@ def _abstract(c: Ctx) -> None:
                  "dimensions and the profile of the cam and the tooth numbers of the planetary reducer and of the "
                  "spur pair that satisfy the conditions of the textbook."))
     results = t("Results: the cam with the base radius $r_0$ = {r0}, {geo}; the planetary reducer {teeth} with {planets}; "
-                "the spur pair $z_1$ = {z1}, $z_2$ = {z2} (its mesh drawn at the course's module $m$ = {m}).").format(
+                "the spur pair $z_1$ = {z1}, $z_2$ = {z2} (its mesh drawn at the drawing's module $m$ = {m} that the textbook gives in §2.1.1).").format(
         r0=c.qty(z.r0_m * 1000, mm, decimals=2), geo=geo, teeth=_teeth_text(g), planets=c.planets(g.planetary.planets),
         z1=g.spur.z1, z2=g.spur.z2, m=c.qty(g.spur.m_mm, mm))
     text = [obj, aim]
@@ -209,11 +209,12 @@ def linkage_requirements(c: Ctx) -> list[tuple[str, bool]]:
     """Sheet 2's checks, each (text, met): the balancing moment by the two methods within 1 %; the
     speed with the flywheel within the allowed δ."""
     t = c.t
+    out = _sheet1_requirements(c)
     s2 = _sheet2(c)
     if s2 is None:
-        return []
+        return out
     diff = s2.lever_table().difference_pct
-    out = [(t("the balancing moments by the force analysis and by Zhukovsky's lever agree within 1 % ({diff})").format(
+    out += [(t("the balancing moments by the force analysis and by Zhukovsky's lever agree within 1 % ({diff})").format(
         diff=_lever_difference(c, s2)), abs(diff) < 1.0)]
     fw = s2.flywheel
     if fw is not None:
@@ -222,6 +223,39 @@ def linkage_requirements(c: Ctx) -> list[tuple[str, bool]]:
                        "allowed {delta}") if ok else
                      t("with the flywheel the coefficient of speed fluctuation $δ$ = {actual} exceeds the allowed "
                        "{delta}")).format(actual=c.n(fw.delta_actual, sig=3), delta=c.n(fw.delta, sig=4)), ok))
+    return out
+
+
+def _sheet1_requirements(c: Ctx) -> list[tuple[str, bool]]:
+    """Sheet 1's checks, each (text, met): every group's largest pressure angle within the usual limit
+    of a lever mechanism (45°: the transmission angle at least 45°, Artobolevsky), and a working stroke
+    not faster than the return (K ≥ 1: the output moves slowly under the load and returns fast)."""
+    from ...linkage.positions import PRESSURE_WARN_DEG
+    from ..terminal.mechanism import pattern
+
+    t, n = c.t, c.n
+    s1 = _sheet1(c)
+    if s1 is None:
+        return []
+    m, cy = s1.mechanism, s1.cycle
+    out = []
+    for p in cy.pressure:
+        g = m.groups[p.group - 1]
+        if g.kind == "RPR" and not g.offset:  # the block acts at right angles to the slot: 0°
+            continue
+        worst = math.degrees(p.worst)
+        ok = worst <= PRESSURE_WARN_DEG
+        out.append(((t("the largest pressure angle of group {group} ({kind}), {angle}°, does not exceed the usual "
+                       "limit of a lever mechanism, {limit}°") if ok else
+                     t("the largest pressure angle of group {group} ({kind}), {angle}° at $φ$ = {phi}°, exceeds the "
+                       "usual limit of a lever mechanism, {limit}°: the group transmits motion poorly there")).format(
+            group=p.group, kind=pattern(g.kind, c.lang), angle=n(worst, decimals=2), limit=n(PRESSURE_WARN_DEG),
+            phi=n(round(math.degrees(p.phi), 1) % 360.0, decimals=1)), ok))
+    if cy.time_ratio is not None and m.gas_head is None:
+        ok = cy.time_ratio >= 1.0 - 1e-9
+        out.append(((t("the working stroke is not faster than the return stroke: $K$ = {K} ≥ 1") if ok else
+                     t("$K$ = {K} < 1: the working stroke is faster than the return stroke (the output moves "
+                       "faster under the load than without it)")).format(K=n(cy.time_ratio, decimals=3)), ok))
     return out
 
 
@@ -366,7 +400,7 @@ def conclusion(c: Ctx) -> None:
     sp = g.spur
     rpm = t("rpm")
     c.p(t("The drive: a motor of {speed}, {scheme_words} {teeth} {with_planets} ($i$ = {ratio}), the spur pair "
-          "$z_1$ = {z1}, $z_2$ = {z2} (its mesh drawn at the course's module $m$ = {m}).").format(
+          "$z_1$ = {z1}, $z_2$ = {z2} (its mesh drawn at the drawing's module $m$ = {m} that the textbook gives in §2.1.1).").format(
         speed=c.qty(g.motor_rpm, rpm), scheme_words=scheme_words, teeth=_teeth_text(g),
         with_planets=c.nt("with {k} planet", "with {k} planets", d.planets).format(k=d.planets),
         ratio=n(d.ratio, decimals=4), z1=sp.z1, z2=sp.z2, m=c.qty(sp.m_mm, mm)))

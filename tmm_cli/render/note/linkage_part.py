@@ -17,7 +17,7 @@ import re
 from ...i18n import N_
 from ...linkage.positions import PRESSURE_WARN_DEG, displacement, output_coordinate
 from ...linkage.scales import PLAN_MM, SCHEME_MM
-from ...linkage.vector_plans import book_symbols, middle_of_working
+from ...linkage.vector_plans import DEGENERATE_MM, book_symbols, degeneracy, middle_of_working, plans as plans_of
 from ...linkage.roles import link_roles
 from ..terminal.mechanism import ROLE_WORDS, pattern
 from .ctx import Ctx, V, sheet1_of
@@ -359,6 +359,27 @@ def _middle_of_working(cy, pos) -> bool:
     return middle_of_working(cy) == pos.index
 
 
+def _general_position(c: Ctx, middle: str, why) -> str:
+    """Why the plans stand beside the middle of the working stroke: its plans are degenerate
+    (:func:`~tmm_cli.linkage.vector_plans.degeneracy`)."""
+    t = c.t
+    if why.point is None:
+        reason = (t("the velocity plan collapses to a straight line less than {mm} mm wide") if why.plan == "velocity"
+                  else t("the acceleration plan collapses to a straight line less than {mm} mm wide"))
+    else:
+        reason = (t("the point {p} of the velocity plan lies within {mm} mm of its pole")
+                  if why.plan == "velocity" else
+                  t("the point {p} of the acceleration plan lies within {mm} mm of its pole"))
+    reason = reason.format(p=_lc_math(why.point or ""), mm=c.n(DEGENERATE_MM))
+    return t("the position nearest the middle of the working stroke in which the plans are not degenerate (in the "
+             "middle, position {middle}, {reason}, and the groups' vector equations could not be checked on "
+             "such plans)").format(middle=middle, reason=reason)
+
+
+def _lc_math(name: str) -> str:
+    return "$" + pm(name).lower() + "$"
+
+
 def _sense(c: Ctx, x: float) -> str:
     return c.t("counter-clockwise") if x > 0 else c.t("clockwise")
 
@@ -370,8 +391,13 @@ def _plans(c: Ctx, s, pl) -> None:
     pos = pl.position
     c.doc.add(Heading(2, t("Velocity and acceleration plans of position {label}").format(label=pos.label)))
     middle = _middle_of_working(s.cycle, pos)
+    mid = middle_of_working(s.cycle)
+    why = (degeneracy(m, plans_of(s.cycle, mid)) if not middle and s.mechanism.plan is None and mid is not None
+           and pos.index == s.plans[0].position.index else None)
     where = (t("in the middle of the working stroke") if middle else
-             t("the position the task names") if s.mechanism.plan is not None else t("the position chosen for the plans"))
+             t("the position the task names") if s.mechanism.plan is not None else
+             _general_position(c, s.cycle.positions[mid].label, why) if why is not None else
+             t("the position chosen for the plans"))
     c.p(t("The plans are built for position {label} ($φ = {phi}°$), {where}, by the vector equations of the groups in "
           "the order of the structural formula {{cite:artobolevsky}}: the velocities from the pole $p$, the "
           "accelerations from the pole $π$; the points of the fixed joints lie at the poles. The vectors of both plans "

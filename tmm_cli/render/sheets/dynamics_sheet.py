@@ -76,8 +76,9 @@ def symbol(sym: str, lang: str) -> str:
     tick = ""
     if sym[-1] in "′″":
         tick, sym = ("'" if sym[-1] == "′" else "''"), sym[:-1]
-    if sym in ("Fc", "Mc"):
-        return (tr(lang, "F_{c}") if sym == "Fc" else tr(lang, "M_{c}")) + tick
+    if sym[:2] in ("Fc", "Mc") and sym[2:].isdigit() or sym in ("Fc", "Mc"):  # Fc, or Fc3 of several loads
+        base = tr(lang, "F_{c}") if sym[:2] == "Fc" else tr(lang, "M_{c}")
+        return (base[:-1] + sym[2:] + "}" if sym[2:] and base.endswith("}") else base) + tick
     if sym.startswith("MΦ"):
         return f"M_{{Φ{sym[2:]}}}" + tick
     if sym.startswith(("Rτ", "Rn")):
@@ -85,11 +86,11 @@ def symbol(sym: str, lang: str) -> str:
     return f"{sym[0]}_{{{sym[1:]}}}" + tick if len(sym) > 1 else sym + tick
 
 
-def _link_lines(m, kin, i: int, names, k: float) -> np.ndarray:
+def _link_lines(m, kin, i: int, names, k: float, reach: dict | None = None) -> np.ndarray:
     """The lines of the links of `names` at position i [paper mm from the real origin, scale k]."""
     segs = []
-    for sg in link_segments(m, kin, i, names=names, unit=1.0 / k):
-        if sg[0] == "line":
+    for sg in link_segments(m, kin, i, names=names, unit=1.0 / k, reach=reach, guide_stub=GUIDE_STUB):
+        if sg[0] in ("line", "guide"):
             segs.append([sg[1], sg[2]])
         elif sg[0] == "poly":
             segs += [[a, b] for a, b in zip(sg[1][:-1], sg[1][1:])]
@@ -110,6 +111,32 @@ def _link_lines(m, kin, i: int, names, k: float) -> np.ndarray:
 
 def _group_links(s: Sheet2, group: int):
     return [ln for ln in s.sheet1.mechanism.links if ln.group == group]
+
+
+GUIDE_STUB = 10.0  # [paper mm] either side of a block: the neighbouring link's guide in a group's view
+
+
+def _group_reach(s: Sheet2, group: int, i: int) -> dict[str, float]:
+    """How far a group's view draws each of its slotted links from the pivot [real mm]: to every
+    point where a force acts on the link (a block riding on it — the tangent mechanism's R43 at B —,
+    a load, its centre of mass), so that no arrow stands off the link."""
+    kin = s.sheet1.cycle.kin
+    out = {}
+    for ln in _group_links(s, group):
+        if ln.kind != "slotted":
+            continue
+        pivot = complex(kin.z[ln.axis[1]][i])
+        at = [complex(f.z[i]) for f in s.loading.forces if f.number == ln.number]
+        at += [complex(r.at[i]) for r in s.forces.reactions if ln.number in r.pair.links]
+        out[ln.name] = max([abs(z - pivot) for z in at], default=0.0) * MM
+    return out
+
+
+def _group_segments(s: Sheet2, group: int, i: int, unit: float):
+    """:func:`link_segments` of a group's own view: its links wholly, a neighbour's guide as a stub."""
+    m, kin = s.sheet1.mechanism, s.sheet1.cycle.kin
+    return link_segments(m, kin, i, names={ln.name for ln in _group_links(s, group)}, unit=unit,
+                         reach=_group_reach(s, group, i), guide_stub=GUIDE_STUB)
 
 
 def _group_names(s: Sheet2, group: int) -> list[str]:
@@ -202,7 +229,7 @@ def _group_arrows(s: Sheet2, group: int, i: int, k: float, lang: str = "en"):
     pts = [np.array([z.real, z.imag]) * k for z, *_ in items]
     us = [np.array([v.real, v.imag]) / abs(v) for _, v, _, _ in items]
     lens = [arrow_len(abs(v), biggest) for _, v, _, _ in items]
-    segs = _link_lines(m, kin, i, {ln.name for ln in _group_links(s, group)}, k)
+    segs = _link_lines(m, kin, i, {ln.name for ln in _group_links(s, group)}, k, _group_reach(s, group, i))
     placed = place_arrows(list(zip(pts, us, lens)), segs)
     return [(tail, tip, p, label, kind) for (tail, tip), p, (_, _, label, kind) in zip(placed, pts, items)]
 
@@ -211,10 +238,10 @@ def _group_drawing(s: Sheet2, group: int, i: int, k: float):
     """The group's points [real mm] and its arrows' far ends as (point [real mm], vector [paper mm])
     at k paper mm per real mm (the forces' arrows as placed, and for the moments a ring of the arc's
     size)."""
-    m, kin = s.sheet1.mechanism, s.sheet1.cycle.kin
+    kin = s.sheet1.cycle.kin
     pts = [complex(kin.z[n][i]) * MM for n in _group_names(s, group)]
-    for sg in link_segments(m, kin, i, names={ln.name for ln in _group_links(s, group)}, unit=1.0 / k):
-        if sg[0] == "line":
+    for sg in _group_segments(s, group, i, 1.0 / k):
+        if sg[0] in ("line", "guide"):
             pts += [sg[1], sg[2]]
     arrows = []
     for tail, tip, _, _, _ in _group_arrows(s, group, i, k):
@@ -228,8 +255,7 @@ def _group_drawing(s: Sheet2, group: int, i: int, k: float):
 def _draw_group(sh: Sheet, f, s: Sheet2, group: int, i: int, lang: str, within) -> None:
     m, k = s.sheet1.mechanism, s.sheet1.cycle.kin
     unit = 1.0 / f.scale
-    links = {ln.name for ln in _group_links(s, group)}
-    draw_links(f, link_segments(m, k, i, names=links, unit=unit), "Основные", None, unit, 1.0)
+    draw_links(f, _group_segments(s, group, i, unit), "Основные", None, unit, 1.0)
     names = _group_names(s, group)
     pts = {n: np.array(f.p(k.z[n][i].real * MM, k.z[n][i].imag * MM)) for n in names}
     for n, q in pts.items():

@@ -100,12 +100,15 @@ def ground(sh: Sheet, q, layer="Основные") -> None:
         sh.line((xx + 1.5, y - 5.0), (xx, y - 6.8), "Тонкие")
 
 
-def link_segments(mech, kin, i: int, names=None, unit: float = 1.0, reach: dict | None = None):
+def link_segments(mech, kin, i: int, names=None, unit: float = 1.0, reach: dict | None = None,
+                  guide_stub: float = 0.0):
     """What the links of `names` (all when None) look like at position number i of `kin` [real mm]:
     ('line', p0, p1) for bars (from the farthest pins and points on their axis), ('poly', pts) the
     outline and ('hatch', [(p0, p1), …]) the hatching of a bar with a joint off its axis (a rigid plate), ('box', centre, angle, w, h) for blocks and sliders (size
     in paper mm: `unit` real mm per paper mm); a slotted link runs from its pivot past the block to
-    `reach[name]` [real mm] plus 4 paper mm."""
+    `reach[name]` [real mm] plus 4 paper mm. With `guide_stub` [paper mm] > 0 (a group's own view), the
+    guide of a slider or block that lies on a link outside `names` is only ('guide', p0, p1) — a stub
+    `guide_stub` either side of the block, drawn thin dash-dot: the neighbouring link is not the group's."""
     z = {n: complex(x[i]) * MM for n, x in kin.z.items()}
     on_link: dict[str, list[str]] = {}
     for p in mech.points:
@@ -153,8 +156,16 @@ def link_segments(mech, kin, i: int, names=None, unit: float = 1.0, reach: dict 
             from ...linkage.chain import slider_pose
 
             centre, angle, segs = slider_pose(mech, kin, ln.name, i)
-            for p0, p1 in segs:
-                out.append(("line", p0 * MM, p1 * MM, ln))
+            gd = dict(mech.guided()).get(ln.name)
+            foreign = (guide_stub > 0 and names is not None and gd is not None and gd.moving
+                       and gd.link not in names)
+            for j, (p0, p1) in enumerate(segs):
+                if foreign and j == 0:  # the moving guide's segment comes first (slider_pose)
+                    e = (p1 - p0) / abs(p1 - p0)
+                    half = guide_stub * unit
+                    out.append(("guide", centre * MM - half * e, centre * MM + half * e, ln))
+                else:
+                    out.append(("line", p0 * MM, p1 * MM, ln))
             out.append(("box", centre * MM, angle, 10.0, 5.0, ln))
     return out
 
@@ -218,6 +229,9 @@ def draw_links(f, segs, layer: str, linetype, unit: float, size: float = 1.0) ->
         elif sg[0] == "line":
             p0, p1 = sg[1], sg[2]
             f.poly([[p0.real, p0.imag], [p1.real, p1.imag]], layer, linetype)
+        elif sg[0] == "guide":  # a neighbouring link's guide under a block: thin dash-dot (ГОСТ 2.303)
+            p0, p1 = sg[1], sg[2]
+            f.poly([[p0.real, p0.imag], [p1.real, p1.imag]], "Осевые", None)
         elif sg[0] == "poly":
             f.poly([[q.real, q.imag] for q in sg[1]], layer, linetype)
         else:
