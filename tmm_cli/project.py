@@ -102,7 +102,7 @@ def analyse_linkage(tables: dict, source: str = "mechanism"):
 
     mech = parse_mechanism(tables, source)
     inp = parse_sheet2(mech, source)
-    if inp.load is None and not inp.gas:
+    if not inp.has_load:
         raise TmmError(f"{source} has no [load]: sheet 4 takes the motor's moment from the work of the useful "
                        "resistance; add the [load] table (docs/dynamics.md) or give --torque without --mechanism")
     return analyse_sheet2(analyse_mechanism(mech, source=source), inp, source)

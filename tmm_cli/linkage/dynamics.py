@@ -29,7 +29,7 @@ import numpy as np
 from ..records import record
 from .chain import Kinematics
 from .forces import G, applied
-from .loads import Stroke, load_work
+from .loads import Stroke, load_strokes, load_work
 from .masses import centre_motion
 from .mechanism import Mechanism
 from .power import reduced_inertia, total_power
@@ -103,17 +103,23 @@ def weights_work(kin: Kinematics, masses):
     return total
 
 
-def dynamics(mech: Mechanism, inp: Sheet2Input, stroke: Stroke | None, kin: Kinematics, travel) -> Dynamics:
+def dynamics(mech: Mechanism, inp: Sheet2Input, stroke: Stroke | None, kin: Kinematics, travel,
+             strokes=None) -> Dynamics:
     """The reduced quantities on the grid `kin` at the crank travels `travel` (0 … 2π from
-    position 0, both ends included: sheet 1's curve; 0 … 4π for a two-turn cycle)."""
+    position 0, both ends included: sheet 1's curve; 0 … 4π for a two-turn cycle); `strokes` each table
+    load's (found when not given, :func:`.loads.load_strokes`)."""
     travel = np.asarray(travel, dtype=float)
     w_m = abs(kin.omega1)
     sense = 1 if kin.omega1 > 0 else -1
-    loading = applied(mech, inp, stroke, kin)
+    if strokes is None:
+        start = stroke.start if stroke is not None else (mech.crank.start if mech.crank.start is not None else 0.0)
+        strokes = load_strokes(mech, inp.tables, stroke, start)
+    loading = applied(mech, inp, stroke, kin, strokes)
     m_r = total_power(kin, loading, ("load", "weight")) / w_m
     a_r = np.zeros(travel.shape)
-    if inp.load is not None and stroke is not None:
-        a_r = a_r + load_work(inp.load, stroke, mech, kin, travel)
+    for ld, st in zip(inp.tables, strokes):
+        if st is not None:
+            a_r = a_r + load_work(ld, st, mech, kin, travel)
     for gl in inp.gas:
         from .gas import gas_work, piston
 

@@ -19,7 +19,7 @@ import numpy as np
 
 from ..records import record
 from .chain import Kinematics
-from .loads import Stroke, load_value
+from .loads import Stroke, load_strokes, load_value
 from .masses import centre_motion
 from .mechanism import Mechanism
 from .sheet2_file import Sheet2Input
@@ -91,10 +91,12 @@ def weight(m: float):
     return -1j * m * G
 
 
-def applied(mech: Mechanism, inp: Sheet2Input, stroke: Stroke | None, kin: Kinematics) -> Loading:
+def applied(mech: Mechanism, inp: Sheet2Input, stroke: Stroke | None, kin: Kinematics, strokes=None) -> Loading:
     """The applied forces and couples of every link at the kinematics' angles. A force or moment
     that is zero at every angle (the inertia of a crank turning uniformly about its centre of mass)
-    is left out."""
+    is left out. `stroke` is the output's (sheet 1's); `strokes` each table load's
+    (:func:`.loads.load_strokes`, found here when not given). One table load is Fc (Mc); of several,
+    each is named by its link's number, Fc3, Mc5."""
     forces, couples = [], []
     for ms in inp.masses:
         n = ms.number
@@ -116,12 +118,22 @@ def applied(mech: Mechanism, inp: Sheet2Input, stroke: Stroke | None, kin: Kinem
         pin = ln.pins[0]
         forces.append(AppliedForce(ln.name, ln.number, "load", f"P{ln.number}", pin, kin.z[pin],
                                    gas_force(gl, piston(gl, mech), mech, kin)))
-    if inp.load is not None and stroke is not None:
-        ld = inp.load
+    tables = inp.tables
+    if strokes is None:
+        strokes = load_strokes(mech, tables, stroke, stroke.start if stroke is not None else _start(mech))
+    for ld, st in zip(tables, strokes):
+        if st is None:
+            continue
         ln = mech.link(ld.link)
-        value = load_value(ld, stroke, mech, kin)
+        value = load_value(ld, st, mech, kin)
+        tail = str(ln.number) if len(tables) > 1 else ""
         if ld.kind == "force":
-            forces.append(AppliedForce(ln.name, ln.number, "load", "Fc", ln.name, kin.z[ln.name], value))
+            forces.append(AppliedForce(ln.name, ln.number, "load", "Fc" + tail, ln.name, kin.z[ln.name], value))
         else:
-            couples.append(AppliedCouple(ln.name, ln.number, "load", "Mc", value))
+            couples.append(AppliedCouple(ln.name, ln.number, "load", "Mc" + tail, value))
     return Loading(tuple(forces), tuple(couples))
+
+
+def _start(mech: Mechanism) -> float:
+    """Position 0's crank angle when the output has no stroke: ``start_deg`` or 0 (sheet 1's rule)."""
+    return mech.crank.start if mech.crank.start is not None else 0.0

@@ -15,7 +15,10 @@ cutting force of a shaper)::
     working = "away"                       # read by sheet 1: which stroke is the working one
 
 The load acts on the output link (the one whose extreme positions give position 0 and the stroke);
-a file whose load is elsewhere sets ``output`` to it.
+a file whose load is elsewhere sets ``output`` to it. A file may give several ``[[load]]`` tables, each
+on its own link (two presses on one crank): each then measures its stroke from its own link's extreme
+position where its working stroke starts (its own ``working``, or the slower stroke, or — both strokes
+equal — the extreme farthest from the crank pivot, the rule of sheet 1's position 0), :func:`link_stroke`.
 """
 
 from __future__ import annotations
@@ -44,6 +47,9 @@ class Load:
     stroke: tuple[float, ...]  # fractions of the stroke, 0 … 1, non-decreasing
     values: tuple[float, ...]  # magnitudes at those fractions, ≥ 0
     direction: float | None = None  # a force's own direction from +x [rad] (None: against the working motion)
+    working: str | None = None  # 'away' | 'towards' (the file's `working`), else None
+    joint: str | None = None  # the point whose distance from the crank pivot tells 'away' from 'towards'
+    key: str = "load"  # its name in the file ('load', or 'load[2]' of several [[load]])
 
 
 @record
@@ -59,6 +65,7 @@ class Stroke:
     kind: str  # 'slider' | 'rocker'
     origin: float  # crank angle where the working stroke starts [rad] (position 0 unless start_deg moves it)
     unit: complex | None = None  # a slider output's fixed guide direction (None: a rocker or a moving guide)
+    link: str | None = None  # the link whose stroke this is (None: the mechanism's output)
 
     @property
     def lead(self) -> float:
@@ -77,6 +84,41 @@ def stroke_of(c: Cycle) -> Stroke | None:
     gd = dict(mech.guided()).get(mech.output.link) if mech.output.kind == "slider" else None
     unit = gd.unit if gd is not None and not gd.moving else None
     return Stroke(c.start, mech.crank.sense, c.working, c.stroke, c.direction, q0, mech.output.kind, origin, unit)
+
+
+def link_stroke(mech: Mechanism, load: Load, start: float) -> Stroke | None:
+    """The :class:`Stroke` of a table load's own link (None when that link turns fully: no stroke).
+
+    Sheet 1's rule of position 0 applied to that link as if it were the output: its extreme positions
+    are where its velocity is zero (:func:`.positions.stationary`, exact), the working stroke starts at
+    the one the load's ``working`` names (away from / towards the crank pivot), else the slower stroke's
+    start, else (both strokes equal) the extreme farthest from the crank pivot. `start` is the crank
+    angle of position 0 [rad] (sheet 1's, whatever link gave it)."""
+    from dataclasses import replace
+
+    from .mechanism import Output
+    from .positions import stroke_numbers
+
+    ln = mech.link(load.link)
+    kind = "slider" if load.kind == "force" else "rocker"
+    own = replace(mech, output=Output(kind, ln.name, load.joint or ln.name, ln.group), working=load.working,
+                  gas_head=None)
+    numbers = stroke_numbers(own)
+    if numbers is None:
+        return None
+    extremes, length, working, direction = numbers
+    origin = extremes[0]
+    q0 = float(output_coordinate(own, solve(own, [origin]))[0][0])
+    gd = dict(mech.guided()).get(ln.name) if kind == "slider" else None
+    unit = gd.unit if gd is not None and not gd.moving else None
+    return Stroke(start, mech.crank.sense, working, length, direction, q0, kind, origin, unit, ln.name)
+
+
+def load_strokes(mech: Mechanism, loads, stroke: Stroke | None, start: float) -> tuple[Stroke | None, ...]:
+    """Each table load's :class:`Stroke`: the output's (`stroke`, sheet 1's) for a load on the output
+    link, its own link's (:func:`link_stroke`) for a load elsewhere; `start` is position 0's crank
+    angle [rad]."""
+    return tuple(stroke if ld.link == mech.output.link else link_stroke(mech, ld, start) for ld in loads)
 
 
 def table_value(load: Load, fraction):
@@ -117,7 +159,10 @@ def progress(stroke: Stroke, mech: Mechanism, kin: Kinematics):
     stroke began [rad, 0 … 2π) (:func:`phase`), the fraction of the stroke covered since then
     (0 … 1), and whether the crank is on the working stroke (its end included)."""
     travel = phase(stroke, kin.phi)
-    q = output_coordinate(mech, kin)[0]
+    if stroke.link is None or stroke.link == mech.output.link:
+        q = output_coordinate(mech, kin)[0]
+    else:  # a load's own link: a slider's place along its guide, a turning link's angle
+        q = kin.slide[stroke.link][0] if stroke.kind == "slider" else kin.angle[stroke.link]
     dq = q - stroke.q0
     if stroke.kind == "rocker":
         dq = np.remainder(dq + math.pi, 2.0 * math.pi) - math.pi
@@ -185,62 +230,67 @@ def _numbers(r, value, key: str, example: str) -> tuple[float, ...]:
     return tuple(r.number(v, key, example) for v in value)
 
 
-def parse_load(r, mech: Mechanism, raw) -> Load | None:
-    """The ``[load]`` table → :class:`Load` (`r`: the file's reader; None without a table)."""
+def parse_load(r, mech: Mechanism, raw, key: str = "load", anywhere: bool = False) -> Load | None:
+    """The ``[load]`` table → :class:`Load` (`r`: the file's reader; None without a table). `key` names
+    it in messages (``load``, or ``load[2]`` of several); `anywhere`: the load may sit on a link other
+    than the output (one of several table loads, each measuring its own link's stroke)."""
     if raw is None:
         return None
-    t = r.table(raw, "load", LOAD_KEYS)
+    t = r.table(raw, key, LOAD_KEYS)
     if set(t) <= {"working"}:  # only which stroke is the working one (sheet 1's key): no load
         return None
-    on = r.required(t, "on", "load.on", 'on = "B"')
+    on = r.required(t, "on", f"{key}.on", 'on = "B"')
     if isinstance(on, str):
-        name = r.name(on, "load.on", 'on = "B"')
+        name = r.name(on, f"{key}.on", 'on = "B"')
         ln = next((x for x in mech.links if x.kind == "slider" and x.name == name), None)
         if ln is None:
-            r.fail(f"'load.on' is {name!r}: no slider sits on that joint; give a slider's joint (on = \"B\") or a "
+            r.fail(f"'{key}.on' is {name!r}: no slider sits on that joint; give a slider's joint (on = \"B\") or a "
                    "turning link by two joints (on = [\"C\", \"B\"])")
-        kind = "force"
+        kind, joint = "force", ln.name
     else:
-        ends = r.names(on, "load.on", 2, 'on = ["C", "B"]')
+        ends = r.names(on, f"{key}.on", 2, 'on = ["C", "B"]')
         ln = next((x for x in mech.links if x.axis is not None and x.kind not in ("block", "crank")
                    and set(x.axis) == set(ends)), None)
         if ln is None:
-            r.fail(f"'load.on': no moving link joins {ends[0]} and {ends[1]} (the crank takes no load); give a "
+            r.fail(f"'{key}.on': no moving link joins {ends[0]} and {ends[1]} (the crank takes no load); give a "
                    "turning link by two joints, e.g. on = [\"C\", \"B\"], or a slider's joint")
-        kind = "moment"
-    if ln.name != mech.output.link:
-        r.fail(f"'load.on' is the link {ln.name} but the output link is {mech.output.link}: the load follows the "
+        kind, joint = "moment", ends[1] if ends[1] not in mech.frame else ends[0]  # the end that moves
+    if ln.name != mech.output.link and not anywhere:
+        r.fail(f"'{key}.on' is the link {ln.name} but the output link is {mech.output.link}: the load follows the "
                f"output's working stroke; put output = {_output_key(ln)} at the top of the file")
     values_key, other = ("force", "moment") if kind == "force" else ("moment", "force")
     if other in t:
         what = "a slider takes a force" if kind == "force" else "a turning link takes a moment"
-        r.fail(f"'load.{other}': {what}; give load.{values_key} = [...]")
-    stroke = _numbers(r, r.required(t, "stroke", "load.stroke", "stroke = [0.0, 0.5, 1.0]"), "load.stroke",
+        r.fail(f"'{key}.{other}': {what}; give {key}.{values_key} = [...]")
+    stroke = _numbers(r, r.required(t, "stroke", f"{key}.stroke", "stroke = [0.0, 0.5, 1.0]"), f"{key}.stroke",
                       "stroke = [0.0, 0.5, 1.0]")
     ex = f"{values_key} = [0.0, 500.0, 500.0]"
-    values = _numbers(r, r.required(t, values_key, f"load.{values_key}", ex), f"load.{values_key}", ex)
+    values = _numbers(r, r.required(t, values_key, f"{key}.{values_key}", ex), f"{key}.{values_key}", ex)
     if len(values) != len(stroke):
-        r.fail(f"'load.{values_key}' has {len(values)} values but 'load.stroke' has {len(stroke)}; give one value "
+        r.fail(f"'{key}.{values_key}' has {len(values)} values but '{key}.stroke' has {len(stroke)}; give one value "
                "per entry of the stroke")
     if stroke[0] != 0.0 or stroke[-1] != 1.0 or any(b < a for a, b in zip(stroke, stroke[1:])):
-        r.fail("'load.stroke' must run from 0 to 1 without decreasing (fractions of the stroke; repeat a fraction "
+        r.fail(f"'{key}.stroke' must run from 0 to 1 without decreasing (fractions of the stroke; repeat a fraction "
                "for a jump), e.g. stroke = [0.0, 0.5, 0.5, 1.0]")
     direction = None
     if "direction_deg" in t:
         gd = dict(mech.guided()).get(ln.name)
         if kind != "force" or gd is None or gd.moving:
-            r.fail("'load.direction_deg' gives a force its own direction: it acts on a slider on a fixed guide; leave it "
-                   "out here (the load then opposes the working motion)")
-        direction = math.radians(r.number(t["direction_deg"], "load.direction_deg", "direction_deg = 170") % 360.0)
+            r.fail(f"'{key}.direction_deg' gives a force its own direction: it acts on a slider on a fixed guide; leave "
+                   "it out here (the load then opposes the working motion)")
+        direction = math.radians(r.number(t["direction_deg"], f"{key}.direction_deg", "direction_deg = 170") % 360.0)
         if abs(math.cos(direction - gd.angle)) < 1e-6:
-            r.fail("'load.direction_deg' is across the slider's guide: such a force does no work and is no useful "
+            r.fail(f"'{key}.direction_deg' is across the slider's guide: such a force does no work and is no useful "
                    "resistance; give a direction with a part along the guide")
     unit = "N" if kind == "force" else "N·m"
     for v in values:
         if not 0.0 <= v <= FORCE_MAX:
-            r.fail(f"'load.{values_key}' has {v:g}; give magnitudes in [0, {FORCE_MAX:g}] {unit} (the load always "
+            r.fail(f"'{key}.{values_key}' has {v:g}; give magnitudes in [0, {FORCE_MAX:g}] {unit} (the load always "
                    "opposes the working motion)")
-    return Load(ln.name, kind, stroke, values, direction)
+    working = None
+    if "working" in t:
+        working = r.choice(t["working"], f"{key}.working", ("away", "towards"), 'working = "away"')
+    return Load(ln.name, kind, stroke, values, direction, working, joint, key)
 
 
 def _output_key(ln) -> str:

@@ -415,7 +415,8 @@ def _output(r: _Reader, b: _Builder, groups: tuple[Group, ...], value) -> Output
         for ln in b.links:
             if ln.axis is not None and ln.kind not in ("crank", "block") and set(ln.axis) == {value[0].strip(),
                                                                                             value[1].strip()}:
-                return Output("rocker", ln.name, value[1].strip(), ln.group)
+                end = value[1].strip() if value[1].strip() not in b.frame else value[0].strip()  # the end that moves
+                return Output("rocker", ln.name, end, ln.group)
     r.fail(bad)
 
 
@@ -431,12 +432,26 @@ def _gas_head(r: _Reader, b: _Builder, load) -> tuple[str, complex] | None:
     return on.strip(), r.xy(load[0]["head"], "load[1].head", "head = [0.0, 0.45]")
 
 
-def _working(r: _Reader, extra: dict) -> str | None:
+def _on_output(on, links, output: Output) -> bool:
+    """Whether a load's `on` (a slider's joint, or a link by two joints) names the output link."""
+    if isinstance(on, str):
+        return on.strip() == output.link
+    ln = next((x for x in links if x.name == output.link), None)
+    return (isinstance(on, list) and len(on) == 2 and all(isinstance(v, str) for v in on) and ln is not None
+            and ln.axis is not None and set(ln.axis) == {on[0].strip(), on[1].strip()})
+
+
+def _working(r: _Reader, extra: dict, links=(), output: Output | None = None) -> str | None:
     load = extra.get("load")
-    if isinstance(load, list):  # [[load]]: the table load's (gas loads have both strokes)
-        load = next((x for x in load if isinstance(x, dict) and "head" not in x), None)
+    key = "load.working"
+    if isinstance(load, list):  # [[load]]: the table load's on the output (else the first's; gas loads have both
+        tables = [(i, x) for i, x in enumerate(load, start=1) if isinstance(x, dict) and "head" not in x]  # strokes)
+        i, load = next(((i, x) for i, x in tables if output is not None and _on_output(x.get("on"), links, output)),
+                       tables[0] if tables else (0, None))
+        if len(tables) > 1:
+            key = f"load[{i}].working"
     if isinstance(load, dict) and "working" in load:
-        return r.choice(load["working"], "load.working", ("away", "towards"), 'working = "away"')
+        return r.choice(load["working"], key, ("away", "towards"), 'working = "away"')
     return None
 
 
@@ -515,4 +530,4 @@ def parse_mechanism(data: dict, source: str = "mechanism") -> Mechanism:
     extra = {k: data[k] for k in SHEET2_KEYS + RECORD_KEYS if k in data}
     points = tuple(done[point] for _, point, _, _, _ in raw)
     return Mechanism(name, positions, frame, crank, groups, points, tuple(b.links), tuple(b.pairs + [
-        p for g in groups for p in g.pairs]), dict(b.carrier), output, _working(r, extra), plan, extra, gas_head)
+        p for g in groups for p in g.pairs]), dict(b.carrier), output, _working(r, extra, b.links, output), plan, extra, gas_head)

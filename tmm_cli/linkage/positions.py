@@ -280,6 +280,16 @@ def _start(mech: Mechanism, roots: np.ndarray):
     return start, rule, (first, last), float(q[i_max] - q[i_min]), working, returning, 1 if up else -1
 
 
+def stroke_numbers(mech: Mechanism):
+    """(extremes, stroke, working, direction) of the output link by the rule of position 0 (the
+    extreme where the working stroke starts first in `extremes`; the stroke H [m] or swing [rad]; the
+    working stroke's crank travel [rad]; +1 when it increases the output's coordinate), or None when
+    the output turns fully. What a load on another link measures its own stroke by
+    (:func:`.loads.link_stroke`, with that link made the output)."""
+    _, _, extremes, stroke, working, _, direction = _start(mech, stationary(mech))
+    return None if extremes is None else (extremes, stroke, working, direction)
+
+
 def _positions(mech: Mechanism, start: float, extremes) -> tuple[Position, ...]:
     n, sense = mech.positions, mech.crank.sense
     spacing = TWO_PI / n

@@ -21,7 +21,7 @@ from .flywheel import Flywheel, flywheel
 from .forces import Loading, applied
 from .indicator import Indicator, indicators
 from .kinetostatics import Kinetostatics, kinetostatics
-from .loads import Stroke, stroke_of
+from .loads import Stroke, load_strokes, stroke_of
 from .polygons import ForcePolygon, force_polygons
 from .power import balancing_moment_by_power, reduced_inertia, reduced_moment
 from .scales import DIAGRAM_AXIS_MM, DIAGRAM_HEIGHT_MM, drafting_scale
@@ -100,6 +100,7 @@ class Sheet2:
 
         return repeat_curve(c.curve.kin, c.curve.travel, self.turns, c.start, self.sheet1.mechanism.crank.sense)[0]
     indicators: tuple[Indicator, ...] = ()  # the gas loads' indicator diagrams as drawn (:mod:`.indicator`)
+    strokes: tuple = ()  # each table load's Stroke (input.tables' order): its own link's working stroke
 
     @property
     def loading(self) -> Loading:
@@ -155,7 +156,7 @@ def _notes(s1: Sheet1, inp: Sheet2Input, fw: Flywheel | None, dyn: Dynamics) -> 
     notes.append(Note.make("dynamics_gravity" if inp.gravity else "dynamics_no_gravity", "assumption"))
     if not inp.masses:
         notes.append(Note.make("dynamics_massless", "assumption"))
-    if inp.load is None and not inp.gas:
+    if not inp.has_load:
         notes.append(Note.make("dynamics_no_load", "assumption"))
     if fw is None:
         notes.append(Note.make("dynamics_no_table", "assumption"))
@@ -193,6 +194,11 @@ def analyse_sheet2(s1: Sheet1, inp: Sheet2Input, source: str = "mechanism") -> S
     if inp.load is not None and stroke is None:
         raise TmmError(f"{source}: the load needs an output link that moves back and forth (it has no working "
                        f"stroke: {mech.output.link} turns fully); drop [load] or choose another output")
+    strokes = load_strokes(mech, inp.tables, stroke, c.start)
+    for ld, st in zip(inp.tables, strokes):
+        if st is None:
+            raise TmmError(f"{source}: '{ld.key}.on' is the link {ld.link}, which turns fully: it has no stroke to "
+                           "measure the load's diagram along; put the load on a link that moves back and forth")
     for i, gl in enumerate(inp.gas, start=1):
         from .gas import piston
 
@@ -214,13 +220,14 @@ def analyse_sheet2(s1: Sheet1, inp: Sheet2Input, source: str = "mechanism") -> S
             repeated = repeat_positions(c.positions, turns, mech.positions)
             kin = repeat_positions_kin(c.kin, c.positions, turns, c.start, mech.crank.sense)
             curve_kin, curve_travel = repeat_curve(c.curve.kin, c.curve.travel, turns, c.start, mech.crank.sense)
-    loading = applied(mech, inp, stroke, kin)
+    loading = applied(mech, inp, stroke, kin, strokes)
     ks = kinetostatics(mech, loading, kin)
     i = s1.plans[0].position.index
     rotor = inp.dynamics.J_rotor if inp.dynamics is not None else 0.0
-    dyn = dynamics(mech, inp, stroke, curve_kin, curve_travel)
+    dyn = dynamics(mech, inp, stroke, curve_kin, curve_travel, strokes)
     fw = flywheel(dyn, inp.dynamics) if inp.dynamics is not None else None
     return Sheet2(s1, inp, stroke, ks, balancing_moment_by_power(kin, loading), lever(mech, loading, kin), i,
                   force_polygons(mech, ks, i), reduced_moment(kin, loading), reduced_inertia(kin, inp.masses, rotor),
                   dyn, fw, dynamics_scales(dyn, fw), _notes(s1, inp, fw, dyn), turns, repeated,
-                  kin if turns > 1 else None, indicators=indicators(mech, inp.gas, repeated or c.positions, kin))
+                  kin if turns > 1 else None, indicators=indicators(mech, inp.gas, repeated or c.positions, kin),
+                  strokes=strokes)

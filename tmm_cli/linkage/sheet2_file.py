@@ -52,11 +52,23 @@ class Sheet2Input:
     load: Load | None
     dynamics: DynamicsSpec | None
     gas: tuple = ()  # GasLoad: the gas forces from indicator diagrams ([[load]] with head)
+    loads: tuple[Load, ...] = ()  # every table load (stroke/force or moment), in file order; `load` is the one on
+    # the output link (None when none is)
+
+    @property
+    def tables(self) -> tuple[Load, ...]:
+        """Every table load: `loads`, or `load` alone when `loads` is not given."""
+        return self.loads or ((self.load,) if self.load is not None else ())
 
     @property
     def has_forces(self) -> bool:
         """The file asks for sheet 2: it gives masses or a load."""
-        return bool(self.masses) or self.load is not None or bool(self.gas)
+        return bool(self.masses) or bool(self.tables) or bool(self.gas)
+
+    @property
+    def has_load(self) -> bool:
+        """The file gives a useful resistance or a gas force: work for the motor to balance."""
+        return bool(self.tables) or bool(self.gas)
 
 
 def _ratio(r, t: dict, key: str, default: float, lo: float, hi: float) -> float:
@@ -109,7 +121,8 @@ def parse_sheet2(mech: Mechanism, source: str = "mechanism") -> Sheet2Input:
     masses = parse_masses(r, mech, extra.get("mass"))
     raw = extra.get("load")
     gas = []
-    if isinstance(raw, list):  # [[load]]: gas loads (with head) and at most one table load
+    loads: list[Load] = []
+    if isinstance(raw, list):  # [[load]]: gas loads (with head) and table loads, each on its own link
         from .gas import parse_gas
 
         if not raw or len(raw) > 20:
@@ -119,12 +132,41 @@ def parse_sheet2(mech: Mechanism, source: str = "mechanism") -> Sheet2Input:
             if isinstance(t, dict) and "head" in t:
                 gas.append(parse_gas(r, mech, t, f"load[{i}]"))
             else:
-                tables.append(t)
-        if len(tables) > 1:
-            r.fail("'load' has several tables of stroke and force (or moment); one is read, on the output link: give "
-                   "the others as gas loads (with head) or drop them")
+                tables.append((i, t))
         if len({g.link for g in gas}) != len(gas):
             r.fail("'load': two gas loads on one piston; give each piston one [[load]]")
-        raw = tables[0] if tables else None
-    load = parse_load(r, mech, raw)
-    return Sheet2Input(gravity, masses, load, parse_dynamics(r, extra.get("dynamics")), tuple(gas))
+        if len(tables) == 1:  # one table load: on the output as ever (beside gas loads, on its own link)
+            ld = parse_load(r, mech, tables[0][1], anywhere=bool(gas))
+            loads = [ld] if ld is not None else []
+        else:
+            loads = _several(r, mech, tables, bool(gas))
+        raw = None
+    else:
+        ld = parse_load(r, mech, raw)
+        loads = [ld] if ld is not None else []
+    load = next((ld for ld in loads if ld.link == mech.output.link), None)
+    return Sheet2Input(gravity, masses, load, parse_dynamics(r, extra.get("dynamics")), tuple(gas), tuple(loads))
+
+
+def _several(r, mech: Mechanism, tables, gas: bool) -> list[Load]:
+    """Several table loads of [[load]], each on its own link (``load[i]`` in messages): two on one
+    link are refused (one diagram per link: add them into one), and without gas loads one of them must
+    be on the output link (position 0, the stroke and K of sheet 1 follow it)."""
+    loads, seen = [], {}
+    for i, t in tables:
+        ld = parse_load(r, mech, t, f"load[{i}]", anywhere=True)
+        if ld is None:
+            r.fail(f"'load[{i}]' gives no load (only 'working'); give on, stroke and force (or moment), or drop it")
+        if ld.link in seen:
+            r.fail(f"'load[{i}].on' is the link {ld.link}, which load[{seen[ld.link]}] loads already: give each link "
+                   "one table (add the two diagrams into one)")
+        seen[ld.link] = i
+        loads.append(ld)
+    if not gas and mech.output.link not in seen:
+        from .loads import _output_key
+
+        first = mech.link(loads[0].link)
+        r.fail(f"'output' is {mech.output.link}, which none of the table loads is on: position 0, the stroke and K "
+               f"follow the output's working stroke; put output = {_output_key(first)} (or another loaded link) at "
+               "the top of the file")
+    return loads

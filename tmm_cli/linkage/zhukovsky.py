@@ -59,7 +59,8 @@ class Lever:
 # arms [mm] to 0.01, moments F·h [N·mm] to 0.1, pa [mm] and F_ур [N] to 0.01, M_ур [N·m] to 0.001
 DECIMALS = {"force": 2, "arm": 2, "moment": 1, "pa": 2, "balancing_force": 2, "balancing": 3}
 
-LEVER_MM = 220.0  # the lever's drawing at most this large [mm]: larger only crowds its field
+LEVER_MM = 180.0  # the lever's drawing at most this large [mm]: larger only crowds its field (at 220 mm
+# the V compressor's lever of position 4 had no room on sheet 2 beside its indicator diagrams)
 ROUND_MU = (1.0, 2.0, 2.5, 4.0, 5.0)  # a drafter's round scales ×10ⁿ
 
 
@@ -104,8 +105,8 @@ def lever_scale(mu_v: float, points) -> float:
     to μ_v at which its longest side is at most LEVER_MM; μ_v itself when none (the lever may be
     drawn at any scale: only the arms' ratios count).
 
-    >>> lever_scale(0.01, [0j, 78j])   # 312 mm at 0,0025, 195 mm at 0,004
-    0.004
+    >>> lever_scale(0.01, [0j, 78j])   # 195 mm at 0,004, 156 mm at 0,005
+    0.005
     >>> lever_scale(0.02, [0j, 200 + 0j])
     0.02
     """

@@ -148,6 +148,9 @@ def add_sheet2(doc: dict, s: Sheet2) -> dict:
         doc["forces"]["load"]["direction_deg"] = math.degrees(s.input.load.direction)
     if s.turns > 1:  # the force analysis' position lies in the cycle's first turn
         doc["forces"]["turn"] = 1
+    tables = s.input.tables
+    if tables != ((s.input.load,) if s.input.load is not None else ()):  # several table loads, each on its own link
+        doc["forces"]["loads"] = [_table_load(s, ld, st) for ld, st in zip(tables, s.strokes)]
     if s.input.gas:  # the gas loads: each piston's indicator diagram and dead centres
         from ...linkage.gas import piston
 
@@ -163,6 +166,23 @@ def add_sheet2(doc: dict, s: Sheet2) -> dict:
                 entry["strokes"] = ["expansion", "exhaust", "intake", "compression"]
                 entry["cycle_start_travel_deg"] = _f(math.degrees(m.crank.sense * (g.origin - s.sheet1.cycle.start)))
     return doc
+
+
+def _table_load(s: Sheet2, ld, st) -> dict:
+    """One of several table loads: its diagram and its own link's working stroke (where it starts, how
+    long it lasts, the stroke or the swing)."""
+    number = s.sheet1.mechanism.link(ld.link).number
+    out = {"link": ld.link, "number": number, "kind": ld.kind, "symbol": ("Fc" if ld.kind == "force" else "Mc") +
+           (str(number) if len(s.input.tables) > 1 else ""), "stroke": list(ld.stroke), "values": list(ld.values),
+           "working": ld.working}
+    if ld.direction is not None:
+        out["direction_deg"] = math.degrees(ld.direction)
+    if st is not None:
+        out.update({"working_start_deg": math.degrees(st.origin) % 360.0, "working_stroke_deg": math.degrees(st.working),
+                    "stroke_m": st.length if st.kind == "slider" else None,
+                    "swing_deg": math.degrees(st.length) if st.kind == "rocker" else None,
+                    "direction": st.direction})
+    return out
 
 
 def dynamics_csv(s: Sheet2) -> str:

@@ -54,9 +54,9 @@ def fsym(c: Ctx, sym: str) -> str:
     for mark, word in (("″", '^"″"'), ("′", '^"′"')):
         if sym.endswith(mark):
             sym, tick = sym[:-1], word
-    if sym in ("Fc", "Mc"):
-        name = c.t(sym)  # the book's Fпс, Mпс
-        return f'{name[0]}_"{name[1:]}"' + tick
+    if sym in ("Fc", "Mc") or sym[:2] in ("Fc", "Mc") and sym[2:].isdigit():  # Fc3, Mc5 of several loads
+        name = c.t(sym[:2])  # the book's Fпс, Mпс
+        return f'{name[0]}_"{name[1:]}{sym[2:]}"' + tick
     letters, number = _split(sym)
     if letters == "MΦ":
         return f"M_(Φ {number})" + tick
@@ -222,6 +222,9 @@ def _load(c: Ctx, s) -> None:
 
     t, n = c.t, c.n
     ld, st = s.input.load, s.stroke
+    if s.input.tables != ((ld,) if ld is not None else ()):  # several table loads, or one off the output
+        _several_loads(c, s)
+        return
     if ld is None or st is None:
         return
     mech = s.sheet1.mechanism
@@ -256,6 +259,72 @@ def _load(c: Ctx, s) -> None:
     else:
         c.p(t("In position {label} the crank is on the return stroke: ${sym} = 0$.").format(
             label=_position(s).label, sym=sym))
+
+
+def _load_symbol(s, ld) -> str:
+    """The symbol of a table load in the loading (Fc, Mc; of several, Fc3, Mc5 by the link's number)."""
+    tail = str(s.sheet1.mechanism.link(ld.link).number) if len(s.input.tables) > 1 else ""
+    return ("Fc" if ld.kind == "force" else "Mc") + tail
+
+
+def _several_loads(c: Ctx, s) -> None:
+    """The table loads, each on its own link and over its own working stroke: each one's diagram,
+    where its working stroke starts and how long it is, and its value in the position."""
+    from ...linkage.loads import progress, table_value
+
+    t, n = c.t, c.n
+    mech = s.sheet1.mechanism
+    i = s.force_position
+    kin = s.sheet1.cycle.kin
+    label = _position(s).label
+    c.p(t("The useful resistances act each on its own link and each over that link's own working stroke: a load's "
+          "diagram gives it against the share of its link's stroke (or swing) covered since the link left the extreme "
+          "position where its working stroke starts; it is linear between the points of the diagram, opposes the "
+          "working motion and is zero on that link's return stroke. Each link's extreme positions are where its "
+          "velocity is zero; its working stroke is the one its file's table names (away from or towards the crank's "
+          "pivot), else the slower one."))
+    for ld, st in zip(s.input.tables, s.strokes):
+        if st is None:
+            continue
+        ln = mech.link(ld.link)
+        sym = fsym(c, _load_symbol(s, ld))
+        unit = t("N") if ld.kind == "force" else t("N·m")
+        lead = math.degrees(st.lead)
+        where = (t("position 0") if lead < 1e-6 else
+                 t("{lead}° of the crank's turn after position 0").format(lead=n(lead, decimals=2)))
+        if ld.kind == "force":
+            c.p(t("The force ${sym}$ acts on the {link} (link {number}) along its guide against its working stroke. That "
+                  "stroke starts at the crank angle $φ$ = {start}° ({where}), lasts {work}° of the turn and moves the "
+                  "slider by $H$ = {length} mm.").format(
+                sym=sym, link=_link_name(c, ln), number=ln.number, start=n(math.degrees(st.origin) % 360.0, decimals=2),
+                where=where,
+                work=n(math.degrees(st.working), decimals=2), length=n(st.length * 1e3, decimals=2)))
+            if ld.direction is not None:
+                c.p(t("Its direction is its own, fixed at {deg}° from the $x$ axis (not along the guide): its part across "
+                      "the guide does no work but loads the pairs.").format(deg=n(math.degrees(ld.direction), decimals=1)))
+        else:
+            c.p(t("The moment ${sym}$ acts on the {link} (link {number}) against its working swing. That swing starts at "
+                  "the crank angle $φ$ = {start}° ({where}), lasts {work}° of the turn and turns the link by $ψ$ = "
+                  "{length}°.").format(
+                sym=sym, link=_link_name(c, ln), number=ln.number, start=n(math.degrees(st.origin) % 360.0, decimals=2),
+                where=where,
+                work=n(math.degrees(st.working), decimals=2), length=n(math.degrees(st.length), decimals=2)))
+        share = t("Share of the working stroke") if ld.kind == "force" else t("Share of the working swing")
+        c.table(f"dyn_load_{ln.number}", t("Diagram of the useful resistance ${sym}$").format(sym=sym),
+                [share] + [n(x, sig=3) for x in ld.stroke], [[f"${sym}$, {unit}"] + [n(y, sig=5) for y in ld.values]],
+                align=["left"] + ["center"] * len(ld.stroke), widths=[2.2] + [1.0] * len(ld.stroke))
+        _, fraction, working = progress(st, mech, kin)
+        f, on = float(fraction[i]), bool(working[i])
+        value = float(table_value(ld, f)) if on else 0.0
+        c.doc.claim(kind="linkage_load_at_position", label=label, working=on, share=f, value=value, link=ld.link)
+        if on:
+            c.p(t("In position {label} the {link} (link {number}) is on its working stroke and has covered the share "
+                  "{share} of it, so ${sym} = {value}$ {unit}.").format(label=label, link=_link_name(c, ln), number=ln.number,
+                                                     share=n(f, decimals=3), sym=sym, value=c.q(value, decimals=1),
+                                                     unit=unit))
+        else:
+            c.p(t("In position {label} the {link} (link {number}) is on its return stroke: ${sym} = 0$.").format(
+                label=label, link=_link_name(c, ln), number=ln.number, sym=sym))
 
 
 def _gas(c: Ctx, s) -> None:
@@ -765,7 +834,9 @@ def _reduction(c: Ctx, s) -> None:
     # the work of the resistances over the cycle
     ld, st = s.input.load, s.stroke
     a_c = float(d.A_r[-1])
-    if ld is not None and st is not None:
+    if s.input.tables != ((ld,) if ld is not None else ()):  # several table loads, or one off the output
+        _several_works(c, s)
+    elif ld is not None and st is not None:
         area = float(table_integral(ld, 1.0))
         if ld.kind == "force" and ld.direction is not None:
             from ...linkage.loads import _along
@@ -872,6 +943,45 @@ def _reduction(c: Ctx, s) -> None:
               "$J_\"пр\"$ over the crank's turn are shown in Figure {fig:linkage_dynamics}."))
         c.fig("linkage_dynamics", t("Reduced moments, change of the kinetic energy and reduced moment of inertia over "
                                     "the crank's turn"))
+
+
+def _several_works(c: Ctx, s) -> None:
+    """Each table load's work over a cycle, −(its link's stroke or swing)·(the area under its diagram)
+    (cos α of it for a force of its own direction): every one takes its own area on its own stroke."""
+    from ...linkage.loads import _along, table_integral
+
+    t = c.t
+    mech = s.sheet1.mechanism
+    c.p(t("The work of the resistances over a cycle: the weights do none (their centres come back); each useful "
+          "resistance takes the area under its diagram times its own link's stroke $H$ (a moment: times its swing $ψ$, "
+          "rad), a force of its own direction only by its part along the guide, $cos α$ of it ($α$ the angle between "
+          "the force and the working motion):"))
+    lines = []
+    for ld, st in zip(s.input.tables, s.strokes):
+        if st is None:
+            continue
+        k = mech.link(ld.link).number
+        area = float(table_integral(ld, 1.0))
+        along = _along(ld, st)
+        work = along * st.length * area
+        if ld.kind == "moment":
+            lines.append(c.calc(f'A_("с{k}") = -ψ_{k} S_(M {k})', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)],
+                                V(work, sig=5), t("J")))
+        elif ld.direction is not None:
+            lines.append(c.calc(f'A_("с{k}") = H_{k} S_(F {k}) cos α_{k}', "{0} dot {1} dot ({2})",
+                                [V(st.length, sig=5), V(area, sig=6), V(along, sig=6)], V(work, sig=5), t("J")))
+        else:
+            lines.append(c.calc(f'A_("с{k}") = -H_{k} S_(F {k})', "-{0} dot {1}", [V(st.length, sig=5), V(area, sig=6)],
+                                V(work, sig=5), t("J")))
+    c.formula(*lines, where=[("H_i, ψ_i", t("the stroke of link i, m, or its swing, rad")),
+                             ("S_(F i), S_(M i)", t("the area under the diagram of its useful resistance against the share "
+                                                    "of its stroke, N or N·m"))])
+    if s.input.gas:
+        c.p(t("With the gas forces' works below, their sum is the work of the resistances over the cycle, "
+              '$A_"с"$ = {a} J.').format(a=c.n(float(s.dynamics.A_r[-1]), sig=5)))
+    else:
+        c.p(t('Their sum is the work of the resistances over the cycle, $A_"с"$ = {a} J.').format(
+            a=c.n(float(s.dynamics.A_r[-1]), sig=5)))
 
 
 # --- 5. the flywheel --------------------------------------------------------------------------------
