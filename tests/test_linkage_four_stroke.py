@@ -371,3 +371,32 @@ def test_a_table_load_repeats_each_turn_of_the_cycle(start):
     scale = float(np.max(np.abs(s.balancing)))
     assert np.max(np.abs(s.balancing - s.power_balance)) <= 1e-8 * scale
     assert np.max(np.abs(s.balancing - s.lever.balancing)) <= 1e-8 * scale
+
+
+def test_the_note_figure_draws_the_whole_cycle():
+    """The note's Figure 3 (M, ΔT, J over φ): the φ axis runs to 720° at a μ_φ that holds it, a dashed line
+    ends turn 1, ΔT comes back to 0 at 720°; a one-turn example keeps 0 … 360° at 2,5 °/mm."""
+    from tmm_cli.project import analyse_linkage
+    from tmm_cli.render.figures import note_scales as S
+    from tmm_cli.render.figures.note import note_figure_of, note_style
+
+    for name, end in (("engine_4stroke", 720.0), ("four_bar", 360.0)):
+        s2 = analyse_linkage(data(name), f"{name}.toml")
+        sc = S.dynamics_scales(s2)
+        assert sc.phi.mu * sc.phi.mm == pytest.approx(end) and sc.phi.mm <= S.DYNAMICS["x"][1]
+        with note_style():
+            fig = note_figure_of("linkage_dynamics", s2, "ru")
+            ax_m, ax_t, ax_j = sorted(fig.axes, key=lambda a: -a.get_position().y0)[:3]
+            for ax in (ax_m, ax_t, ax_j):
+                assert ax.get_xlim()[1] == pytest.approx(end)
+                dashed = [ln for ln in ax.get_lines() if ln.get_linestyle() == "--" and
+                          np.allclose(ln.get_xdata(), 360.0)]
+                assert len(dashed) == (end > 360.0)
+            dT = next(ln for ln in ax_t.get_lines() if ln.get_label() == "Δ$T$")
+            x, y = np.asarray(dT.get_xdata()), np.asarray(dT.get_ydata())
+            assert x[-1] == pytest.approx(end) and x.max() == pytest.approx(end)
+            assert abs(y[-1]) < 1e-6 * max(1.0, float(np.abs(y).max()))
+            ticks = list(ax_j.get_xticks())
+            assert ticks[-1] == pytest.approx(end) and len(ticks) == (25 if end > 360 else 13)
+            import matplotlib.pyplot as plt
+            plt.close(fig)

@@ -524,8 +524,9 @@ def _linkage_plans(s1, lang: str):
 
 
 def _dynamics(s2, lang: str):
-    """M_пр and M_д, ΔT and ΔT_I (Mertsalov), J_пр over the crank's turn from position 0, each at its
-    round μ; the positions of the crank marked on the axis."""
+    """M_пр and M_д, ΔT and ΔT_I (Mertsalov), J_пр over the cycle from position 0 (a four-stroke
+    engine's two turns, 0 … 720°, as sheet 2's `dynamics_figure`), each at its round μ; the positions
+    of the crank marked on the axis."""
     from .kit import mt
 
     d, fw = s2.dynamics, s2.flywheel
@@ -563,10 +564,15 @@ def _dynamics(s2, lang: str):
     ax.set_ylabel(mt(f"J, {kg}"))
     _limits(ax, sc.phi, sc.J)
     _mu(ax, mt(f"μ_J = {_mus(sc.J.mu, lang)} {kg}/{mm}"), "upper left")
-    ticks = [(math.degrees(p.travel), p.label) for p in c.positions if p.label.isdigit()] + [(360.0, "0")]
+    end = 360.0 * s2.turns
+    ticks = [(math.degrees(p.travel), p.label) for p in s2.positions if p.label.isdigit()] + [(end, "0")]
     for k, ax in enumerate(axes):
-        for lo, hi in c.stroke_spans():  # the working stroke, from its start extreme
-            ax.axvspan(math.degrees(lo), math.degrees(hi), color=C_RISE, alpha=0.06, lw=0)
+        for turn in range(s2.turns):  # the cycle's turns (a four-stroke engine's two)
+            for lo, hi in c.stroke_spans():  # the working stroke, from its start extreme
+                ax.axvspan(math.degrees(lo) + 360.0 * turn, math.degrees(hi) + 360.0 * turn, color=C_RISE,
+                           alpha=0.06, lw=0)
+            if turn:  # the end of a turn within the cycle
+                ax.axvline(360.0 * turn, color="k", lw=0.8, ls="--")
         ax.axhline(0, color="k", lw=0.5)
         ax.set_xticks([t for t, _ in ticks])
         ax.set_xticklabels([lab for _, lab in ticks] if k == 2 else [])

@@ -177,7 +177,7 @@ DYNAMICS = {"size": (TEXT_WIDTH_MM, 162.0), "x": (17.0, 144.0), "panel": 40.0, "
 
 @record
 class DynamicsScales:
-    """The note's diagrams of sheet 2 over the crank's turn φ (0 … 360°)."""
+    """The note's diagrams of sheet 2 over the cycle φ (0 … 360° a turn; a four-stroke engine's two turns 0 … 720°)."""
 
     phi: Axis  # °
     M: Axis  # N·m
@@ -194,8 +194,8 @@ def dynamics_scales(s2) -> DynamicsScales:
     if fw is not None:
         dt1 = fw.mertsalov.dT_I - fw.mertsalov.dT_I[0]
         t_lo, t_hi = min(t_lo, float(dt1.min())), max(t_hi, float(dt1.max()))
-    mu_phi = DYNAMICS["mu_phi"]
-    return DynamicsScales(Axis(0.0, mu_phi, 360.0 / mu_phi), fit_axis(m_lo, m_hi, ph), fit_axis(t_lo, t_hi, ph),
+    mu_phi = DYNAMICS["mu_phi"] * s2.turns  # the cycle on the same 144 mm: 5 °/mm for two turns
+    return DynamicsScales(Axis(0.0, mu_phi, 360.0 * s2.turns / mu_phi), fit_axis(m_lo, m_hi, ph), fit_axis(t_lo, t_hi, ph),
                           fit_axis(float(d.J_r.min()), float(d.J_r.max()), ph, keep_zero=False))
 
 
