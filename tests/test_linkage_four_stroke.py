@@ -400,3 +400,69 @@ def test_the_note_figure_draws_the_whole_cycle():
             assert ticks[-1] == pytest.approx(end) and len(ticks) == (25 if end > 360 else 13)
             import matplotlib.pyplot as plt
             plt.close(fig)
+
+
+def _engine_note(name="engine_4stroke", lang="ru"):
+    from tmm_cli.project import analyse_linkage, run_project
+    from tmm_cli.render.note import build_note
+    from tmm_cli.render.note.markdown import markdown
+    from tmm_cli.variants import get_variant
+
+    s2 = analyse_linkage(data(name), f"{name}.toml")
+    return s2, markdown(build_note(run_project(get_variant("17"), linkage=s2, linkage_name=f"{name}.toml"), lang, {}),
+                        "note")
+
+
+def _num(x: str) -> float:
+    return float(x.replace("−", "-").replace(",", ".").replace("\u00a0", "").replace(" ", ""))
+
+
+def test_the_note_formulas_give_its_table_of_the_reduction():
+    """The engine's chapter 2.4: the printed M_с = |A_д|/(4π) and ΔT = A_д − M_с Δφ, substituted at every position
+    with the table's own A_д column, give the table's ΔT (to its rounding); −M_с is the figure's constant line."""
+    import re
+
+    s2, text = _engine_note()
+    assert "Δ T = A<sub>д</sub> + A<sub>с</sub> = A<sub>д</sub> − M<sub>с</sub> Δ φ" in text
+    m = re.search(r"M<sub>с</sub> = \|A<sub>д</sub>\|/\(4 π\) = ([\d,]+)/\(4 π\) = ([\d,]+) Н·м", text)
+    assert m, "the formula of M_с"
+    mc = _num(m.group(2))
+    assert mc == pytest.approx(_num(m.group(1)) / (4 * math.pi), abs=1e-3)
+    head = text.index("| № | Δ φ, ° | M<sub>пр</sub>, Н·м | J<sub>пр</sub>, кг·м² | A<sub>д</sub>, Дж | Δ T, Дж |")
+    rows = []
+    for line in text[head:].splitlines()[2:]:
+        if not line.startswith("|"):
+            break
+        rows.append([_num(c) for c in line.strip("|").split("|")])
+    assert len(rows) == 25  # 24 positions and the cycle's end
+    for _, phi, _, _, a, dt in rows:
+        assert a - mc * math.radians(phi) == pytest.approx(dt, abs=0.02), phi
+    assert rows[-1][1] == 720.0 and rows[-1][5] == pytest.approx(0.0, abs=0.01)
+    assert mc == pytest.approx(-s2.dynamics.M_d, abs=1e-3)
+
+
+def test_an_engine_is_said_to_drive_its_consumer(tmp_path):
+    """A machine-motor in the book's roles: the gas forces drive (A_д), the constant moment is the consumer's
+    resisting moment M_с — in the note and in sheet 2's main results; sheet 4's motor choice says what it assumes.
+    The V compressor (a machine-consumer) keeps the driving moment of its motor."""
+    from test_sheets import TITLE, reopen
+
+    from tmm_cli.render.sheets.dynamics_sheet import sheet2 as build
+
+    text = _engine_note()[1].replace("\u00a0", " ")
+    assert "момент сопротивления потребителя, приведённый к кривошипу" in text
+    assert "M<sub>с</sub> = |A<sub>д</sub>|/(4 π)" in text and "M<sub>д</sub> = |A" not in text
+    assert "A<sub>д</sub> = A<sub>P 3</sub> = 700,04 Дж" in text  # one term, not «= 700,04 = 700,04»
+    assert "двигатель его притормаживает" not in text and "определяется мощность двигателя" not in text
+    assert "момент сопротивления потребителя M<sub>с</sub> = 55,71 Н·м" in text  # the abstract
+    assert "выбор электродвигателя ниже — лишь формальная проверка" in text  # the gear chapter
+    _, comp = _engine_note("v_compressor")
+    assert "M<sub>д</sub> = |A<sub>с</sub>|/(2 π)" in comp and "определяется мощность двигателя" in comp
+    assert "потребител" not in comp
+    for name, engine in (("engine_4stroke", True), ("v_compressor", False)):
+        _, s = sheet2(data(name))
+        doc = reopen(build(s, "ru", TITLE), tmp_path, f"sheet2-{name}")
+        words = " ".join(e.dxf.text for e in doc.modelspace().query("TEXT")) + " ".join(
+            e.text for e in doc.modelspace().query("MTEXT"))
+        assert ("Момент сопротивления потребителя" in words) == engine, name
+        assert ("Движущий момент" in words) != engine, name

@@ -33,6 +33,7 @@ MESSAGES: dict[str, str] = {
     "dynamics_methods": N_("The flywheel is Mertsalov's; Wittenbauer's energy–mass diagram gives J_fl = {j_w:.4g} kg·m² (Mertsalov's differs by {diff_pct:+.2f} %: it neglects the change of the second group's energy with the speed)."),
     "dynamics_motor": N_("Over a cycle the gas forces do more work than they take: the mechanism is a motor; the constant moment it gives the machine is {moment:.4g} N·m (the driving moment M_d is negative: the machine's resistance)."),
     "dynamics_driving_negative": N_("The driving moment comes out negative (M_d = {moment:.4g} N·m): over a turn the loads give work to the crank; check the load's direction and load.working."),
+    "project_engine_consumer": N_("The mechanism of sheet 2 is an engine: sheet 4 takes its consumer's resisting moment M_c = {torque:.4g} N·m as the moment the gear train passes from the crank to the consumer, and the choice of an electric motor there is only a formal check of the train's load (an engine needs none)."),
     "project_mechanism_motor": N_("Sheet 4 takes the mean reduced moment M = {torque:.4g} N·m (the driving moment of sheet 2) and the crank speed n_cr = {rpm:.5g} rpm from the mechanism file {file}."),
     # tmm synth (issue 33): the synthesis of a lever mechanism from its task
     "synth_best_pivot": N_("The crank's pivot A is the point of the locus of θ where the smallest transmission angle is largest: γ_min = {gamma_deg:.2f}° (the book leaves the point to the designer; give frame = … to choose another)."),

@@ -669,10 +669,16 @@ def _crank(c: Ctx, s) -> None:
     w = kin.omega1
     drives = mb * w > 0
     sense = t("counter-clockwise") if mb > 0 else t("clockwise")
-    c.p((t("The balancing moment turns {sense}, the way the crank turns: in this position the motor drives the "
-           "mechanism.") if drives else
-         t("The balancing moment turns {sense}, against the crank's rotation: in this position the mechanism drives "
-           "the crank and the motor brakes it.")).format(sense=sense))
+    if s.input.gas and s.dynamics.M_d < 0.0:  # an engine: the gas drives, the consumer's moment resists
+        c.p((t("The balancing moment turns {sense}, the way the crank turns: in this position the crank (with the "
+               "energy stored in the flywheel) drives the mechanism.") if drives else
+             t("The balancing moment turns {sense}, against the crank's rotation: in this position the gas forces "
+               "drive the crank and the consumer brakes it.")).format(sense=sense))
+    else:
+        c.p((t("The balancing moment turns {sense}, the way the crank turns: in this position the motor drives the "
+               "mechanism.") if drives else
+             t("The balancing moment turns {sense}, against the crank's rotation: in this position the mechanism drives "
+               "the crank and the motor brakes it.")).format(sense=sense))
     c.doc.claim(kind="linkage_balancing_sense", moment=mb, omega=w, drives=drives)
 
 
@@ -817,6 +823,10 @@ def _reduction(c: Ctx, s) -> None:
           "angle the crank has turned from position 0 (not the crank angle $φ$ from the axis $x$ of Table "
           "{{tab:linkage_positions}}). The values at the positions (from the grid of every 0,5° on "
           "which the works are computed) are given in Table {{tab:dyn_reduced}}.").format(sense=sense))
+    # a machine-motor (the gas forces do positive work over the cycle): the gas forces drive, their work is
+    # A_д (of the indicator diagram), and the constant moment is the consumer's resisting moment M_с (the book's roles)
+    motor = gas and float(d.A_r[-1]) > 0.0
+    work = 'A_"д"' if motor and not s.input.tables else 'A_"с"'
     rows = []
     for p in positions:
         k = p.index
@@ -828,7 +838,7 @@ def _reduction(c: Ctx, s) -> None:
     c.table("dyn_reduced", t("Reduced moment, reduced moment of inertia, work of the gas forces, resistances and "
                              "weights and change of the kinetic energy") if gas else
             t("Reduced moment, reduced moment of inertia, work of the resistances and change of the kinetic energy"),
-            ["№", "$Δ φ$, °", '$M_"пр"$, ' + t("N·m"), '$J_"пр"$, ' + t("kg·m²"), '$A_"с"$, ' + t("J"),
+            ["№", "$Δ φ$, °", '$M_"пр"$, ' + t("N·m"), '$J_"пр"$, ' + t("kg·m²"), f"${work}$, " + t("J"),
              "$Δ T$, " + t("J")], rows,
             align=["center"] + ["right"] * 5, widths=[0.6, 0.8, 1.1, 1.2, 1.1, 1.1])
     # the work of the resistances over the cycle
@@ -915,24 +925,41 @@ def _reduction(c: Ctx, s) -> None:
                 t("The weights do no work over a cycle (their centres come back), so the work of the applied forces "
                   "over the cycle is the gas forces' (positive: over the cycle they drive the machine):"))
             vals = [V(w, sig=5) for _, w in works]
-            sub = " + ".join("({%d})" % k if w < 0 and k else "{%d}" % k for k, (_, w) in enumerate(works))
-            c.formula(c.calc('A_"с" = ' + " + ".join(sym for sym, _ in works), sub, vals, V(a_c, sig=5), t("J")),
-                      where=[('A_"с"', t("the work of the gas forces, the resistances and the weights over a cycle, "
-                                         "J"))])
-    c.p(t("Over a steady cycle the driving work equals the resistance work, so the constant driving moment of the "
-          "motor reduced to the crank is"))
+            what = (t("the work of the gas forces, the driving forces of the engine, over a cycle, J") if motor else
+                    t("the work of the gas forces, the resistances and the weights over a cycle, J"))
+            if len(works) == 1:  # one term: «A_с = A_P3 = 700,04 J», not «= 700,04 = 700,04»
+                c.formula(c.calc(f"{work} = {works[0][0]}", None, (), V(a_c, sig=5), t("J")), where=[(work, what)])
+            else:
+                sub = " + ".join("({%d})" % k if w < 0 and k else "{%d}" % k for k, (_, w) in enumerate(works))
+                c.formula(c.calc(f"{work} = " + " + ".join(sym for sym, _ in works), sub, vals, V(a_c, sig=5), t("J")),
+                          where=[(work, what)])
     m = abs(d.M_d)
-    if s.turns == 1:
-        c.formula(c.calc('M_"д" = abs(A_"с")/(2 π)', "{0}/(2 π)", [V(abs(a_c), sig=6)], V(m, sig=5), t("N·m")),
-                  where=['M_"д"'])
-    else:  # the cycle of a four-stroke engine: two turns, 4π rad
-        c.formula(c.calc('M_"д" = abs(A_"с")/(4 π)', "{0}/(4 π)", [V(abs(a_c), sig=6)], V(m, sig=5), t("N·m")),
-                  where=['M_"д"'])
-    c.p(t("This is the mean reduced moment $M$ = {m} by which the power of the motor is chosen in the chapter on the "
-          "gear mechanisms.").format(m=c.qty(m, t("N·m"), sig=5)))
-    c.doc.claim(kind="linkage_drive_moment", moment=m, work=a_c)
-    c.p(t("The driving work grows linearly, $A_\"д\" = M_\"д\" Δ φ$, and the kinetic energy of the machine changes by "
-          "$Δ T = A_\"д\" + A_\"с\"$ (Table {tab:dyn_reduced}); over the cycle $Δ T$ comes back to zero."))
+    cycle = "2 π" if s.turns == 1 else "4 π"  # the cycle of a four-stroke engine: two turns, 4π rad
+    if motor:
+        c.p(t("The machine is an engine: over the cycle the gas forces, its driving forces, do the positive work "
+              "${a}$ of the indicator diagram. The machine it drives (the consumer: a pump, a generator) resists with "
+              "a constant moment reduced to the crank, $M_\"с\"$; over a steady cycle its work equals the driving "
+              "work, so").format(a=work))
+        c.formula(c.calc(f'M_"с" = abs({work})/({cycle})', "{0}/(%s)" % cycle, [V(abs(a_c), sig=6)], V(m, sig=5),
+                         t("N·m")),
+                  where=[('M_"с"', t("the consumer's resisting moment reduced to the crank, constant, N·m"))])
+        c.p(t("It acts against the crank's rotation: in the sign of Table {{tab:dyn_reduced}} it is $-M_\"с\"$ = {mm}. "
+              "The gear mechanism of sheet 4 passes this moment from the crank to the consumer.").format(
+            mm=c.qty(-m, t("N·m"), sig=5)))
+        c.doc.claim(kind="linkage_drive_moment", moment=m, work=a_c)
+        c.p(t("The consumer's work grows linearly against the rotation, $A_\"с\" = -M_\"с\" Δ φ$ ($Δ φ$ in rad), and "
+              "the kinetic energy of the machine changes by $Δ T = {a} + A_\"с\" = {a} - M_\"с\" Δ φ$ (Table "
+              "{{tab:dyn_reduced}}); over the cycle $Δ T$ comes back to zero.").format(a=work))
+    else:
+        c.p(t("Over a steady cycle the driving work equals the resistance work, so the constant driving moment of the "
+              "motor reduced to the crank is"))
+        c.formula(c.calc(f'M_"д" = abs(A_"с")/({cycle})', "{0}/(%s)" % cycle, [V(abs(a_c), sig=6)], V(m, sig=5),
+                         t("N·m")), where=['M_"д"'])
+        c.p(t("This is the mean reduced moment $M$ = {m} by which the power of the motor is chosen in the chapter on the "
+              "gear mechanisms.").format(m=c.qty(m, t("N·m"), sig=5)))
+        c.doc.claim(kind="linkage_drive_moment", moment=m, work=a_c)
+        c.p(t("The driving work grows linearly, $A_\"д\" = M_\"д\" Δ φ$, and the kinetic energy of the machine changes by "
+              "$Δ T = A_\"д\" + A_\"с\"$ (Table {tab:dyn_reduced}); over the cycle $Δ T$ comes back to zero."))
     if c.has("linkage_dynamics") and s.turns > 1:
         c.p(t("The diagrams of $M_\"пр\"$ and $M_\"д\"$, of $Δ T$ (with $Δ T_\"I\"$ of the flywheel's calculation) and of "
               "$J_\"пр\"$ over the cycle of two turns (0 … 720°) are shown in Figure {fig:linkage_dynamics}."))

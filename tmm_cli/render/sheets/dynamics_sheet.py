@@ -876,7 +876,9 @@ def _rows(s: Sheet2, lang: str) -> list[tuple[str, str]]:
     d, fw = s.dynamics, s.flywheel
     nm, kg = tr(lang, "N·m"), tr(lang, "kg·m²")
     i = s.force_position
-    rows = [(tr(lang, "Driving moment M_{d}"), f"{num(d.M_d, lang, decimals=2)} {nm}"),
+    engine = bool(s.input.gas) and d.M_d < 0.0  # the gas drives: the constant moment is the consumer's resistance
+    rows = [(tr(lang, "Consumer's resisting moment M_{c}"), f"{num(-d.M_d, lang, decimals=2)} {nm}") if engine else
+            (tr(lang, "Driving moment M_{d}"), f"{num(d.M_d, lang, decimals=2)} {nm}"),
             (tr(lang, "M_{{b}}, position {label}; Zhukovsky").format(label=s.sheet1.cycle.positions[i].label),
              f"{num(float(s.balancing[i]), lang, decimals=2)}; {num(float(s.lever.balancing[i]), lang, decimals=2)} {nm}")]
     if fw is not None:
