@@ -259,8 +259,19 @@ def test_the_json_lists_both_turns(tmp_path):
     assert [p["index"] for p in pos] == list(range(24)) and [p["label"] for p in pos] == [str(j) for j in range(24)]
     assert all(0.0 <= p["phi_deg"] < 720.0 for p in pos)
     assert [p["turn"] for p in pos] == [1] * 12 + [2] * 12
+    # phi_deg as the crank has turned over the cycle: 30° on at each position (the crank turns ccw), passing
+    # 720 → 0 once (as a turn's angle passes 360 → 0); the crank link's own angle is phi_deg mod 360; no 1e-13
+    sense = {"ccw": 1, "cw": -1}[doc["crank"]["sense"]]
+    steps = [(b["phi_deg"] - a["phi_deg"]) % 720.0 for a, b in zip(pos, pos[1:] + pos[:1])]
+    assert steps == pytest.approx([(sense * 30.0) % 720.0] * 24, abs=1e-9)
+    assert sum(b["phi_deg"] < a["phi_deg"] for a, b in zip(pos, pos[1:])) <= 1
+    assert [p["phi_deg"] for p in pos[:10]] == pytest.approx([90.0 + 30.0 * j for j in range(10)], abs=1e-9)
+    assert pos[9]["phi_deg"] == 360.0 and pos[21]["phi_deg"] == 0.0
+    assert all(p["phi_deg"] == 0.0 or abs(p["phi_deg"]) > 1e-9 for p in pos)
+    for p in pos:
+        d_ = (p["phi_deg"] - p["links"]["OA"]["angle_deg"]) % 360.0
+        assert min(d_, 360.0 - d_) < 1e-9
     for a, b in zip(pos[:12], pos[12:]):
-        assert b["phi_deg"] == pytest.approx(a["phi_deg"] + 360.0, abs=1e-9)
         assert b["travel_deg"] == pytest.approx(a["travel_deg"] + 360.0, abs=1e-9)
         assert b["points"] == a["points"] and b["links"] == a["links"]
         assert b["reduced"]["inertia_kgm2"] == a["reduced"]["inertia_kgm2"]

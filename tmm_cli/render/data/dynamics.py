@@ -111,20 +111,37 @@ def dynamics_json(s: Sheet2) -> dict:
     return out
 
 
+def _cycle_angle(phi0: float, sense: int, travel: float, cycle: float) -> float:
+    """The crank angle [°] over a cycle of `cycle` degrees, from position 0's angle `phi0` turned on by
+    `travel` in the crank's `sense` (±1); below 1e-9° of 0 or of the cycle's end it is 0.
+
+    >>> _cycle_angle(90.0, 1, 630.0, 720.0), _cycle_angle(90.0, 1, 270.0, 720.0), _cycle_angle(90.0, -1, 120.0, 720.0)
+    (0.0, 360.0, 690.0)
+    """
+    x = (phi0 + sense * travel) % cycle
+    return 0.0 if x < 1e-9 or cycle - x < 1e-9 else x
+
+
 def _more_turns(doc: dict, s: Sheet2) -> None:
     """A cycle of several turns (issue 34): the positions list every turn's in the order the crank
     turns — each turn's kinematics the first's, `label` numbered on, `phi_deg` running on past 360°
-    as the crank has turned (a turn's crank angle + 360° a turn: 0 … 720), `travel_deg` the travel
-    from position 0 and `turn` (1, 2); the top level says the cycle's `turns`."""
+    as the crank has turned: position 0's crank angle plus (in the crank's sense) the travel from it,
+    over the cycle's 360°·turns (0 … 720, as a turn's angle runs 0 … 360: it passes 720 → 0 once, where
+    the crank passes the axis x a second time), `travel_deg` the travel from position 0 and `turn`
+    (1, 2); the top level says the cycle's `turns`.
+    """
     import copy
 
     first = doc["positions"]
+    sense = s.sheet1.mechanism.crank.sense
+    phi0 = first[0]["phi_deg"]
     out = []
     for p in s.positions:
         turn = int(p.index // len(first))
         entry = copy.deepcopy(first[p.index % len(first)])
         entry.update({"index": p.index, "label": p.label, "turn": turn + 1,
-                      "phi_deg": _f(entry["phi_deg"] + 360.0 * turn), "travel_deg": _f(math.degrees(p.travel))})
+                      "phi_deg": _f(_cycle_angle(phi0, sense, math.degrees(p.travel), 360.0 * s.turns)),
+                      "travel_deg": _f(math.degrees(p.travel))})
         out.append(entry)
     doc["positions"] = out
     doc["cycle"] = {"turns": s.turns, "cycle_deg": 360 * s.turns, "positions_per_turn": len(first)}
