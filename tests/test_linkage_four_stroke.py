@@ -467,6 +467,8 @@ def test_an_engine_is_said_to_drive_its_consumer(tmp_path):
     assert "двигатель его притормаживает" not in text and "определяется мощность двигателя" not in text
     assert "момент сопротивления потребителя M<sub>с</sub> = 55,71 Н·м" in text  # the abstract
     assert "выбор электродвигателя ниже — лишь формальная проверка" in text  # the gear chapter
+    assert "За цикл из двух оборотов Δ T<sub>I</sub> наибольшее" in text and "За оборот Δ T" not in text
+    assert "С маховиком угловая скорость кривошипа за цикл из двух оборотов изменяется" in text
     _, comp = _engine_note("v_compressor")
     assert "M<sub>д</sub> = |A<sub>с</sub>|/(2 π)" in comp and "определяется мощность двигателя" in comp
     assert "потребител" not in comp
