@@ -104,21 +104,20 @@ def _mechanisms() -> list[tuple[str, str]]:
 MECHANISMS = _mechanisms()
 
 
-@pytest.mark.parametrize("name,text", MECHANISMS, ids=[n for n, _ in MECHANISMS])
-def test_the_levers_labels_are_free(name, text, tmp_path):
+def sheet2_dxf(name: str, text: str, tmp_path):
+    """(Sheet2, the DXF document read back) of a mechanism file's text; every label placed."""
     m = parse_mechanism(tomllib.loads(text), name)
     s = analyse_sheet2(analyse_mechanism(m), parse_sheet2(m, name))
     path = tmp_path / "sheet2.dxf"
     sh = build_sheet2(s, "ru", TITLE)
     assert not sh.unplaced, sh.unplaced
     sh.doc.saveas(path)
-    doc = ezdxf.readfile(path)
-    box = field_boxes(doc)["lever"]
-    # drawn at the μ of the lever's table (the note's): the field's scale is 1/μ [mm per m/s]
-    tags = next([t.value for t in e.get_xdata("TMM_FIELD")] for e in doc.modelspace()
-                if e.has_xdata("TMM_FIELD") and e.get_xdata("TMM_FIELD")[0].value == "lever")
-    assert 1.0 / tags[7] == pytest.approx(s.lever_scale(), rel=1e-9)
+    return s, ezdxf.readfile(path)
 
+
+def field_texts(doc, box, room: float):
+    """(corners, text) of the names in a field `box` (its heading, 7 mm, left out) with the widths
+    `room` times osifont's, and the field's lines as segments (p0, p1)."""
     def inside(pts, tol=0.5):
         return (pts[:, 0].min() >= box[0] - tol and pts[:, 0].max() <= box[2] + tol
                 and pts[:, 1].min() >= box[1] - tol and pts[:, 1].max() <= box[3] + tol)
@@ -130,19 +129,40 @@ def test_the_levers_labels_are_free(name, text, tmp_path):
         pts = entity_points(e)
         if pts is not None and len(pts) > 1 and inside(pts):
             segs += list(zip(pts[:-1], pts[1:]))
-    p0, p1 = np.array([a for a, _ in segs]), np.array([b for _, b in segs])
-    assert len(segs) > 5  # the lever is drawn
+    p0, p1 = np.array([a for a, _ in segs]).reshape(-1, 2), np.array([b for _, b in segs]).reshape(-1, 2)
+    texts = [(c, t) for _e, c, h, _r, t in text_boxes(doc, room) if inside(c, 0.0) and h < 6.9]
+    return texts, (p0, p1)
+
+
+def clashes(texts, segs) -> list[str]:
+    """Each name crossed by a line of its field, and each pair of names that overlap."""
+    p0, p1 = segs
+    out = []
+    for i, (ci, ti) in enumerate(texts):
+        if len(p0) and _seg_box_hits(p0, p1, ci).any():
+            out.append(f"{ti!r} is crossed by a line")
+        for cj, tj in texts[i + 1:]:
+            if _boxes_overlap(ci, cj):
+                out.append(f"{ti!r} and {tj!r} overlap")
+    return out
+
+
+@pytest.mark.parametrize("name,text", MECHANISMS, ids=[n for n, _ in MECHANISMS])
+def test_the_levers_labels_are_free(name, text, tmp_path):
+    s, doc = sheet2_dxf(name, text, tmp_path)
+    box = field_boxes(doc)["lever"]
+    # drawn at the μ of the lever's table (the note's): the field's scale is 1/μ [mm per m/s]
+    tags = next([t.value for t in e.get_xdata("TMM_FIELD")] for e in doc.modelspace()
+                if e.has_xdata("TMM_FIELD") and e.get_xdata("TMM_FIELD")[0].value == "lever")
+    assert 1.0 / tags[7] == pytest.approx(s.lever_scale(), rel=1e-9)
     for room in (1.0, 1.3):
-        texts = [(c, t) for _e, c, h, _r, t in text_boxes(doc, room) if inside(c, 0.0) and h < 6.9]
+        texts, segs = field_texts(doc, box, room)
+        assert len(segs[0]) > 5  # the lever is drawn
         assert len(texts) >= 4
         names = {t for _, t in texts}
         assert "p" in " ".join(names)
         assert any(t.startswith(("F", "G", "Φ")) for t in names) or not s.lever.forces  # the forces are named
-        for i, (ci, ti) in enumerate(texts):
-            hits = _seg_box_hits(p0, p1, ci)
-            assert not hits.any(), f"{name}: {ti!r} is crossed by a line of the lever (room {room})"
-            for cj, tj in texts[i + 1:]:
-                assert not _boxes_overlap(ci, cj), f"{name}: {ti!r} and {tj!r} overlap (room {room})"
+        assert not clashes(texts, segs), f"{name} (room {room}): {clashes(texts, segs)}"
 
 
 @pytest.mark.parametrize("name,text", MECHANISMS, ids=[n for n, _ in MECHANISMS])

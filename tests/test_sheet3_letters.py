@@ -45,11 +45,11 @@ def test_a_translating_follower_keeps_the_books_line_c():
 
 
 def test_the_positions_left_out_are_said_in_drawing_language():
-    for number in (39, 52, 8, 3):
+    for number in (39, 52, 8, 3, 7, 20, 25):  # a larger zone (issue 32's layout) leaves fewer out
         texts = _texts(number)
         assert not any("нет места" in t or "не пронумерованы" in t for t in texts)
         said = [t for t in texts if "не обозначены" in t]
         if said:
             assert said[0].startswith("Позиции ") and said[0].rstrip(".").endswith("не обозначены")
             return
-    pytest.fail("no variant among 39, 52, 8, 3 leaves a position number out")
+    pytest.fail("no variant among 39, 52, 8, 3, 7, 20, 25 leaves a position number out")

@@ -135,6 +135,21 @@ def inline_math(math: str) -> str:
 
 WORD_JOINER = "\u2060"
 
+_UNIT_DOT = re.compile(r"[^\W\d_]+(?:·[^\W\d_]+)+(?P<semi>;?)")
+
+
+def unit_dot(text: str) -> str:
+    """A unit with a product dot in text («Н·м», «кг·м²») boxed whole: a justified line stretched
+    the gap after a bare «·» as after a word (typst takes U+00B7 for a justifiable mark: the reader
+    saw «14,37 Н· м»), and a box of the dot alone lets the line break beside it. A number's
+    «·10⁻⁴» is left as it is; a «;» after the box is escaped (typst would swallow it as the end
+    of the embedded expression).
+
+    >>> print(unit_dot("M = 14,37 Н·м; J = 2 кг·м², 1,5·10⁻⁴ с"))
+    M = 14,37 #box[Н·м]\\; J = 2 #box[кг·м²], 1,5·10⁻⁴ с
+    """
+    return _UNIT_DOT.sub(lambda m: "#box[" + m.group(0).rstrip(";") + "]" + ("\\;" if m.group("semi") else ""), text)
+
 
 def unit_on_one_line(text: str) -> str:
     """A header's unit kept on one line: no break after a slash of its text («рад/с», not «рад/ с»),
@@ -188,12 +203,12 @@ class TypstWriter:
                     for k, part in enumerate(parts):
                         if k % 2:
                             resolved = self.doc.resolve(part, ref=ref, cite=cite)
-                            out.append(resolved if resolved.startswith("#ref") else escape(resolved, start=False))
+                            out.append(resolved if resolved.startswith("#ref") else unit_dot(escape(resolved, start=False)))
                         elif k and part.startswith(";") and out[-1].startswith("#"):
                             # typst ends an embedded expression at a ";" and swallows it: «таблице 6; звенья»
-                            out.append("\\;" + escape(part[1:], start=False))
+                            out.append("\\;" + unit_dot(escape(part[1:], start=False)))
                         else:
-                            out.append(escape(part, start=first and j == 0 and k == 0))
+                            out.append(unit_dot(escape(part, start=first and j == 0 and k == 0)))
             first = False
         return "".join(out)
 

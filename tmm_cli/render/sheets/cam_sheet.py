@@ -9,8 +9,8 @@ Nothing is computed a second time: every curve is an array of the result placed 
 a field of the result.
 
 The fields are laid out from the measured extent of their drawings (:func:`layout`): the motion
-laws and ν(φ) in the left column, the profile at the top right sized to its construction, the table
-under it, the zone in the column between at the largest ГОСТ 2.302 scale that fits.
+laws and ν(φ) in the left column, the profile (at the core's scale) and the table at one of a few
+places on the right, the zone at the largest ГОСТ 2.302 scale that has a free place beside them.
 """
 
 from __future__ import annotations
@@ -22,8 +22,8 @@ import numpy as np
 
 from ...i18n import tr
 from ...i18n.numbers import num
-from .layout import fit_view, nice_scale
-from .paper import FRAME, H_LABEL, H_MIN_LABEL, TB_BOX, TB_H, Sheet, gost_label
+from .layout import GOST_SCALES, fit_view, largest_empty_square, nice_scale
+from .paper import FRAME, H_LABEL, H_MIN_LABEL, TB_BOX, Sheet, gost_label
 
 H_NOTE = 3.5  # captions under a field
 LINE = 5.6  # caption line pitch
@@ -31,7 +31,6 @@ LEFT_W = 320.0  # the left column (motion laws, ν(φ)): b = 240 mm plus the axe
 GAP = 2.0  # between fields
 PROFILE_RING = 14.0  # [paper mm] from the cam's outline to the first ψ arc; 7 mm between the arcs
 PROFILE_PAD = 12.0  # beyond the last ψ arc (its label)
-TABLE_MIN_H = 110.0
 
 
 def _n(x, lang, d=2):
@@ -58,6 +57,7 @@ class Layout3:
     zone: tuple
     profile: tuple
     table: tuple
+    zone_caption_beside: bool = False  # the zone's captions at its right, not under it
 
 
 def _motion_height(r) -> float:
@@ -70,46 +70,186 @@ def _table_height(r) -> float:
     return 12.0 + 9.0 * (_results_rows(r)) + 3.0
 
 
-def _zone_room_fit(r, width: float, height: float):
-    """The zone's scale in a field of width × height [mm] (heading, scale and captions inside)."""
-    lo, hi = _zone_window(r)
-    room = (0.0, 0.0, width - 2.0, height - ZONE_HEAD - ZONE_CAPS)
-    return fit_view(lo, hi, room, margin=ZONE_MARGIN), lo, hi
-
-
+ZONE_CAP_W = 175.0  # the zone's captions beside its drawing
+ZONE_MIN_W = 165.0  # the zone's captions (narrowed to fit)
+ZONE_CAP_WIDE = 236.0  # … and where they need not be narrowed
+PROFILE_MIN_W = 200.0  # its heading
+TABLE_MIN_W = 215.0
 ZONE_HEAD = 16.0 + 8.0  # heading and its scale
 ZONE_CAPS = 2.5 + LINE * 5 + 2.0  # five caption lines: the data, the hatching, the book's lines, O_b, the numbers left out
 ZONE_MARGIN = (12.0, 10.0, 12.0, 8.0)
 
 
+def _zone_need(ext, s: float, side: bool = False) -> tuple[float, float]:
+    """[mm] The zone field's width and height at scale `s` (`ext`: the window's width and height
+    [real mm], :func:`_zone_window`): the window with its margins, heading and captions — under
+    the drawing (at least ZONE_MIN_W wide), or `side` by side with it."""
+    ml, mb, mr, mt = ZONE_MARGIN
+    w, h = ext[0] * s + ml + mr + 2.5, ext[1] * s + mb + mt + ZONE_HEAD + 2.5  # 0.5 mm to spare
+    if side:
+        return w + ZONE_CAP_W, max(h + 2.0, ZONE_HEAD + ZONE_CAPS)
+    return max(w, ZONE_MIN_W), h + ZONE_CAPS
+
+
+def _zone_scale(ext, cell, side: bool = False) -> float:
+    """The largest ГОСТ 2.302 scale at which the zone field fits the cell (x0, y0, x1, y1); 0: none."""
+    w, h = cell[2] - cell[0], cell[3] - cell[1]
+    best = 0.0
+    for _, s in GOST_SCALES:
+        nw, nh = _zone_need(ext, s, side)
+        if nw <= w + 1e-9 and nh <= h + 1e-9:
+            best = s
+    return best
+
+
+def _profile_need(r) -> tuple[float, float]:
+    """[mm] The profile field's width and height at the core's scale (heading, scale, two caption lines)."""
+    lo, hi = _profile_extent(r, _profile_factor(r))
+    return max(hi[0] - lo[0] + 8.0, PROFILE_MIN_W), hi[1] - lo[1] + 16.0 + 8.0 + LINE * 2 + 6.0
+
+
+def _free_places(w: float, h: float, frame, boxes) -> np.ndarray:
+    """Lower-left corners (n × 2) at which a w × h box stands in `frame` clear of `boxes`: a free
+    place, when there is one, can be slid left and down until it rests on the frame or on a box's
+    right or top side, so those are the corners tried."""
+    b = np.asarray(boxes, float).reshape(-1, 4)
+    xs = np.concatenate([[frame[0]], b[:, 2]])
+    ys = np.concatenate([[frame[1]], b[:, 3]])
+    X, Y = np.tile(xs, len(ys)), np.repeat(ys, len(xs))
+    ok = (X + w <= frame[2] + 1e-9) & (Y + h <= frame[3] + 1e-9)
+    hit = ((X[:, None] < b[None, :, 2] - 1e-9) & (b[None, :, 0] < X[:, None] + w - 1e-9)
+           & (Y[:, None] < b[None, :, 3] - 1e-9) & (b[None, :, 1] < Y[:, None] + h - 1e-9)).any(axis=1)
+    return np.column_stack([X, Y])[ok & ~hit]
+
+
+def _spread(corner, w: float, h: float, frame, boxes):
+    """The w × h box at a free corner moved to the middle of the free room to its right and above."""
+    x, y = corner
+    right, top = frame[2], frame[3]
+    for b in boxes:
+        if b[1] < y + h and y < b[3] and b[0] >= x + w - 1e-9:
+            right = min(right, b[0])
+        if b[0] < x + w and x < b[2] and b[1] >= y + h - 1e-9:
+            top = min(top, b[1])
+    x += max(0.0, right - GAP - x - w) / 2
+    y += max(0.0, top - GAP - y - h) / 2
+    return (x, y, x + w, y + h)
+
+
+def _grown(box, g: float = GAP):
+    return (box[0] - g, box[1] - g, box[2] + g, box[3] + g)
+
+
+def _fixed_places(r, right):
+    """Where the profile (its size fixed by the core's scale) and the table may stand in the frame
+    right of the left column: pairs (profile box, table box) that do not overlap."""
+    xa, Y0, X1, Y1 = right
+    wr, hr = _profile_need(r)
+    wr = min(wr, X1 - xa)  # the profile's rings wider than that are cut at the field's edge
+    ht = _table_height(r)
+    tb = TB_BOX[3] + GAP  # the lowest y over the title block
+    profs = {(X1 - wr, Y1 - hr), (X1 - wr, max(tb, (tb + Y1 - hr) / 2)), (xa, Y1 - hr), (xa, Y0)}
+    if Y1 - hr >= tb:
+        profs.add((X1 - wr, tb))
+    wt = max(min(wr, TB_BOX[2] - TB_BOX[0]), TABLE_MIN_W)
+    tabs = [(X1 - wt, y, X1, y + ht) for y in (tb, (tb + Y1 - ht) / 2, Y1 - ht)]  # over the title block
+    tabs.append((xa, Y0, TB_BOX[0] - GAP, Y0 + ht))  # beside it
+    out = []
+    for px, py in sorted(profs):
+        prof = (px, py, px + wr, py + hr)
+        if py < Y0 - 1e-9 or py + hr > Y1 + 1e-9:
+            continue
+        for tab in tabs:
+            if tab[2] - tab[0] < TABLE_MIN_W - 1e-9 or _overlap(_grown(prof), tab):
+                continue
+            if _overlap(_grown(prof), TB_BOX) or _overlap(_grown(tab), TB_BOX):
+                continue
+            out.append((prof, tab))
+    return out
+
+
+def _overlap(a, b) -> bool:
+    return a[0] < b[2] - 1e-9 and b[0] < a[2] - 1e-9 and a[1] < b[3] - 1e-9 and b[1] < a[3] - 1e-9
+
+
+def _left_ink(r, motion, pressure):
+    """Where the left column's drawings reach (their fields are wider and the ν plot lower than
+    their boxes): what the search for the least empty square counts as used."""
+    sc = r.motion.scales
+    x0 = motion[0] + 1.0
+    xo = x0 + max(26.0, min(max(sc.h_v_mm, sc.h_a_mm) + 10.0, motion[2] - x0 - sc.b_mm - 26.0))
+    m = (motion[0], motion[1], min(motion[2], xo + sc.b_mm + 24.0), motion[3])
+    v, p = r.variant, r.profile
+    keep = np.degrees(p.phi) <= v.phi_working_deg + 1e-9
+    top = max(float(p.nu_deg[keep].max()), v.nu_max_deg)
+    yo = pressure[1] + 1.0 + 2.5 + LINE * 2 + 12.0
+    hh = 14.0
+    k_nu = nice_scale(top / (pressure[3] - hh - yo - 16.0))
+    pr = (pressure[0], pressure[1], pressure[0] + 23.0 + sc.b_mm + 40.0,
+          min(pressure[3], yo + top / k_nu + 14.0 + hh))
+    return m, pr
+
+
 def layout(r) -> Layout3:
     """The field boxes of sheet 3, each sized to its drawing: the motion laws and ν(φ) in the left
-    column; the profile at the top right at the core's scale; the zone at the largest standard
-    scale that fits the column between; the table under the zone when it leaves room there, else
-    under the profile."""
+    column (the book's scales (1.9)–(1.13)); on the right the profile at the core's scale and the
+    table, at one of a few places each (:func:`_fixed_places`), and the zone at the largest ГОСТ
+    2.302 scale at which its field (captions under the drawing or beside it) has a free place
+    anywhere beside them; of those, the places that leave the smallest empty square on the sheet."""
     X0, Y0, X1, Y1 = FRAME
     xl = X0 + LEFT_W
     hm = min(_motion_height(r), Y1 - Y0 - 170.0)
     motion = (X0 + GAP, Y1 - hm, xl, Y1 - GAP)
     pressure = (X0 + GAP, Y0 + GAP, xl, Y1 - hm - GAP)
-    lo, hi = _profile_extent(r, _profile_factor(r))
-    ht = _table_height(r)
-    wp = min(max(hi[0] - lo[0] + 8.0, 250.0), X1 - xl - 165.0)
-    hp = min(hi[1] - lo[1] + 16.0 + 8.0 + LINE * 2 + 6.0, Y1 - Y0 - TB_H - ht - 2 * GAP)
-    profile = (X1 - wp, Y1 - hp, X1 - GAP, Y1 - GAP)
-    xb0, xb1 = xl + GAP, X1 - wp - GAP
-    fit_full, zlo, zhi = _zone_room_fit(r, xb1 - xb0, Y1 - Y0 - 2 * GAP)
-    fit_part, _, _ = _zone_room_fit(r, xb1 - xb0, Y1 - Y0 - 3 * GAP - ht)
-    need = lambda fit: (zhi[1] - zlo[1]) * fit.scale + ZONE_MARGIN[1] + ZONE_MARGIN[3] + ZONE_HEAD + ZONE_CAPS + 2.0
-    if fit_part.scale >= fit_full.scale and xb1 - xb0 >= 230.0:  # the table fits under the zone
-        hz = min(need(fit_part), Y1 - Y0 - 3 * GAP - ht)
-        zone = (xb0, Y1 - GAP - hz, xb1, Y1 - GAP)
-        table = (xb0, Y0 + GAP, xb1, Y0 + GAP + ht)
-    else:
-        hz = min(need(fit_full), Y1 - Y0 - 2 * GAP)
-        zone = (xb0, Y1 - GAP - hz, xb1, Y1 - GAP)
-        table = (X1 - wp, TB_BOX[3] + GAP, X1 - GAP, min(Y1 - hp - GAP, TB_BOX[3] + GAP + ht + 40.0))
-    return Layout3(motion, pressure, zone, profile, table)
+    right = (xl + GAP, Y0 + GAP, X1 - GAP, Y1 - GAP)
+    lo, hi = _zone_window(r)
+    ext = (float(hi[0] - lo[0]), float(hi[1] - lo[1]))
+    scales = [g for _, g in GOST_SCALES]
+    cands = []  # (scale, caption beside, profile, table)
+    best_i = -1  # the largest scale found so far: a place need only be tried at it and above
+    for prof, tab in _fixed_places(r, right):
+        taken = [_grown(b) for b in (motion, pressure, TB_BOX, prof, tab)]
+        for side in (False, True):
+            if best_i >= 0 and not len(_free_places(*_zone_need(ext, scales[best_i], side), right, taken)):
+                continue  # not even the scale found: this place cannot do better
+            lo_i, hi_i = best_i, len(scales) - 1  # the largest scale with a free place: a bisection
+            while lo_i < hi_i:
+                mid = (lo_i + hi_i + 1) // 2
+                if len(_free_places(*_zone_need(ext, scales[mid], side), right, taken)):
+                    lo_i = mid
+                else:
+                    hi_i = mid - 1
+            if lo_i >= 0:
+                best_i = lo_i
+                cands.append((scales[lo_i], side, prof, tab, taken))
+    if not cands:  # a zone too large even at 1:100: the room left of the profile, the drawing cut there
+        prof, tab = _fixed_places(r, right)[0]
+        return Layout3(motion, pressure, (right[0], Y0 + GAP, prof[0] - GAP, Y1 - GAP), prof, tab)
+    s_best = max(c[0] for c in cands)
+    fixed = [*_left_ink(r, motion, pressure), TB_BOX]
+    best = None
+    for s, side, prof, tab, taken in cands:
+        if s < s_best:
+            continue
+        w, h = _zone_need(ext, s, side)
+        seen = set()
+        for corner in _free_places(w, h, right, taken):
+            zone = tuple(float(c) for c in _spread(corner, w, h, right, taken))
+            if tuple(round(c, 1) for c in zone) in seen:
+                continue
+            seen.add(tuple(round(c, 1) for c in zone))
+            empty = largest_empty_square(FRAME, [*fixed, prof, tab, zone], give_up=-best[0][0] if best else math.inf)
+            key = (-round(empty, 6), not side)
+            if best is None or key > best[0]:
+                best = (key, zone, prof, tab, side, taken)
+    _, zone, prof, tab, side, taken = best
+    if not side:  # as wide as the captions like where there is room (not narrowed), still centred
+        for grow in np.linspace(max(0.0, ZONE_CAP_WIDE - (zone[2] - zone[0])) / 2, 0.0, 5):
+            wider = (zone[0] - grow, zone[1], zone[2] + grow, zone[3])
+            if wider[0] >= right[0] and wider[2] <= right[2] and not any(_overlap(wider, b) for b in taken):
+                zone = wider
+                break
+    return Layout3(motion, pressure, zone, prof, tab, side)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -276,7 +416,7 @@ def _zone_window(r):
     return lo - pad, hi + pad
 
 
-def _zone_field(sh: Sheet, r, lang: str, box):
+def _zone_field(sh: Sheet, r, lang: str, box, beside: bool = False):
     v, z, p = r.variant, r.sizing, r.profile
     zn = z.zone
     k = 1000.0
@@ -288,10 +428,14 @@ def _zone_field(sh: Sheet, r, lang: str, box):
     lo, hi = _zone_window(r)
     f = sh.add_field("zone", box, tr(lang, "Minimum cam radius"))
     x0b, y0b, x1b, y1b = box
-    room = (x0b + 1.0, y0b + ZONE_CAPS, x1b - 1.0, y1b - ZONE_HEAD)
+    if beside:  # the captions in a column at the right, the drawing beside them
+        room = (x0b + 1.0, y0b + 2.0, x1b - ZONE_CAP_W, y1b - ZONE_HEAD)
+    else:
+        room = (x0b + 1.0, y0b + ZONE_CAPS, x1b - 1.0, y1b - ZONE_HEAD)
     fit = fit_view(lo, hi, room, margin=ZONE_MARGIN)
     fac = fit.scale
     sh.set_field_transform(f, fit.origin, fac, fit.label)
+    _export_extent(sh, f, lo, hi)
     _field_scale_text(sh, f, lang, fit.label)
     w0, w1 = f.p(*lo), f.p(*hi)
     window = (max(room[0], w0[0]), max(room[1], w0[1]), min(room[2], w1[0]), min(room[3], w1[1]))
@@ -427,9 +571,28 @@ def _zone_field(sh: Sheet, r, lang: str, box):
         lines = list(txt)
         if left:
             lines.append(tr(lang, "Positions {list} are not marked").format(list=", ".join(left)))
-        sh.caption(box[0], box[2], box[1] + 2.5, lines, H_NOTE, LINE)
+        sh.caption(box[2] - ZONE_CAP_W if beside else box[0], box[2], box[1] + 2.5, lines, H_NOTE, LINE)
 
     return f, caption
+
+
+def _export_extent(sh: Sheet, f, lo, hi) -> None:
+    """What the zone needs at any scale, appended to the field's XDATA after a tag "extent": the
+    window at scale 1 (its own units: lower-left and upper-right corners), then the paper room
+    [mm] (width, height) its margins, heading and captions add — captions under the drawing, then
+    beside it —, then the least width with the captions under it. A reader can tell what a larger
+    scale would need: extent × scale + room."""
+    from .paper import XDATA_APP
+
+    rooms = [np.array(_zone_need((0.0, 0.0), 0.0, side)) for side in (False, True)]
+    rooms[0][0] = ZONE_MARGIN[0] + ZONE_MARGIN[2] + 2.0  # under: as wide as the drawing and its margins …
+    for e in sh.msp:
+        if e.has_xdata(XDATA_APP):
+            tags = [(t.code, t.value) for t in e.get_xdata(XDATA_APP)]
+            if tags[0][1] == f.name:  # … but at least ZONE_MIN_W (its captions)
+                e.set_xdata(XDATA_APP, tags + [(1000, "extent")]
+                            + [(1040, float(v)) for v in (*lo, *hi, *rooms[0], *rooms[1], ZONE_MIN_W)])
+                return
 
 
 def _unit_normal(a, b, away):
@@ -627,13 +790,25 @@ def _psi_arcs(r, fac) -> list[tuple[int, float, float, float]]:
 
 def _local_radius(r, fac, ray, half_deg=6.0) -> float:
     """[paper mm] The cam's outline radius (pitch curve + roller) around the direction `ray`."""
-    p = r.profile
-    P = p.pitch
+    ang, rad = _polar(r.profile)
     a0 = math.degrees(math.atan2(ray[1], ray[0]))
-    ang = np.degrees(np.arctan2(P[:, 1], P[:, 0]))
     sel = np.abs(((ang - a0) + 180.0) % 360.0 - 180.0) <= half_deg
-    rad = (np.hypot(*P.T) + p.roller_m) * 1000.0 * fac
-    return float(rad[sel].max() if sel.any() else rad.max())
+    return float(rad[sel].max() if sel.any() else rad.max()) * 1000.0 * fac
+
+
+_POLAR: dict = {}
+
+
+def _polar(p):
+    """The pitch curve's polar angles [deg] and outline radii (+ roller) [m], computed once a profile."""
+    key = id(p)
+    got = _POLAR.get(key)
+    if got is None or got[0] is not p:
+        P = p.pitch
+        got = (p, np.degrees(np.arctan2(P[:, 1], P[:, 0])), np.hypot(P[:, 0], P[:, 1]) + p.roller_m)
+        _POLAR.clear()  # one profile at a time (a sheet); no growth over a batch
+        _POLAR[key] = got
+    return got[1], got[2]
 
 
 def _scale_rays(r) -> list[np.ndarray]:
@@ -784,16 +959,72 @@ def _profile_field(sh: Sheet, r, lang: str, box):
         scale = d.scale if lang == "ru" else d.scale.replace(",", ".")
         txt.append(tr(lang, "({scale}: beyond Table 1.1, the cam is too large for 1:10)").format(scale=scale))
     # under the profile it describes (not at the foot of the field): the drawing's lowest point
-    from ezdxf import bbox as _bbox
-
-    ext = _bbox.extents(list(sh.msp)[n_before:], fast=False)
+    ext = _extents_lxb(list(sh.msp)[n_before:])
     y_cap = box[1] + 2.5
     xa, xb = box[0], box[2]
-    if ext.has_data:
-        y_cap = max(y_cap, ext.extmin.y - 3.0 - H_NOTE - LINE * (len(txt) - 1))
-        xa, xb = max(box[0], ext.extmin.x - 2.0), min(box[2], max(ext.extmax.x, ext.extmin.x + 200.0) + 2.0)
+    if ext is not None:
+        y_cap = max(y_cap, ext[1] - 3.0 - H_NOTE - LINE * (len(txt) - 1))
+        xa, xb = max(box[0], ext[0] - 2.0), min(box[2], max(ext[2], ext[0] + 200.0) + 2.0)
     sh.caption(xa, xb, y_cap, txt, H_NOTE, LINE)
     return f
+
+
+def _extents_lxb(entities):
+    """(x_min, y_min, x_max) of ezdxf's exact bounding box of `entities` (``bbox.extents(…,
+    fast=False)``; None when empty), asking ezdxf only about the entities that can reach an extreme:
+    each entity's box is bounded from outside (its points grown by its width and 0.05 mm for the
+    flattening of a curve) and from inside (points the exact box surely holds: ends and vertices);
+    an entity whose outer bound cannot reach past the best inner bound of all cannot hold the
+    extreme. The same numbers as the whole call, at a fraction of its time (it flattens every
+    curve and traces every wide polyline)."""
+    from ezdxf import bbox as _bbox
+
+    tol = 0.05
+    rows = []  # (entity, outer (x0, y0, x1, y1) or None: always asked, inner (x0, y0, x1, y1))
+    for e in entities:
+        kind = e.dxftype()
+        outer = inner = None
+        ext = e.dxf.get("extrusion", (0.0, 0.0, 1.0))
+        if abs(ext[0]) < 1e-12 and abs(ext[1]) < 1e-12 and ext[2] > 0:
+            if kind == "LINE":
+                a, b = e.dxf.start, e.dxf.end
+                inner = (min(a.x, b.x), min(a.y, b.y), max(a.x, b.x), max(a.y, b.y))
+                outer = (inner[0] - tol, inner[1] - tol, inner[2] + tol, inner[3] + tol)
+            elif kind == "LWPOLYLINE" and len(e) > 0:
+                pts = np.asarray(e.get_points("xyseb"), float)
+                grow = max(float(np.abs(pts[:, 2:4]).max()), abs(e.dxf.get("const_width", 0.0))) / 2 + tol
+                if np.any(pts[:, 4] != 0.0):  # an arc segment bulges by at most half its chord
+                    grow += float(np.hypot(*np.diff(np.vstack([pts[:, :2], pts[:1, :2]]), axis=0).T).max()) / 2
+                lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
+                inner = (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
+                outer = (inner[0] - grow, inner[1] - grow, inner[2] + grow, inner[3] + grow)
+            elif kind in ("CIRCLE", "ARC"):
+                c, rad = e.dxf.center, e.dxf.radius
+                outer = (c.x - rad - tol, c.y - rad - tol, c.x + rad + tol, c.y + rad + tol)
+                if kind == "ARC":
+                    a, b = e.start_point, e.end_point
+                    inner = (min(a.x, b.x), min(a.y, b.y), max(a.x, b.x), max(a.y, b.y))
+            elif kind == "SOLID":
+                v = [e.dxf.get(f"vtx{i}") for i in range(4)]
+                v = [q for q in v if q is not None]
+                inner = (min(q.x for q in v), min(q.y for q in v), max(q.x for q in v), max(q.y for q in v))
+                outer = (inner[0] - tol, inner[1] - tol, inner[2] + tol, inner[3] + tol)
+        rows.append((e, outer, inner))
+    if not rows:
+        return None
+    inners = [i for _, _, i in rows if i is not None]
+    if inners:
+        bx0 = min(i[0] for i in inners)  # the exact box reaches at least this far
+        by0 = min(i[1] for i in inners)
+        bx1 = max(i[2] for i in inners)
+    else:
+        bx0 = by0 = math.inf
+        bx1 = -math.inf
+    ask = [e for e, o, _ in rows if o is None or o[0] <= bx0 or o[1] <= by0 or o[2] >= bx1]
+    got = _bbox.extents(ask, fast=False)
+    if not got.has_data:
+        return None
+    return (got.extmin.x, got.extmin.y, got.extmax.x)
 
 
 def _dirs(v) -> tuple[str, ...]:
@@ -946,7 +1177,7 @@ def sheet3(result, lang: str, title) -> Sheet:
     _motion_field(sh, result, lang, lay.motion)
     _pressure_field(sh, result, lang, lay.pressure)
     prof = _profile_field(sh, result, lang, lay.profile)
-    _, zone_caption = _zone_field(sh, result, lang, lay.zone)
+    _, zone_caption = _zone_field(sh, result, lang, lay.zone, lay.zone_caption_beside)
     _results(sh, result, lang, lay.table, prof.scale_label)
     v = result.variant
     sh.title_block(title, name=tr(lang, "Cam mechanism synthesis"),

@@ -192,6 +192,34 @@ def _couples_on(s: Sheet2, group: int, i: int, lang: str):
     return out
 
 
+SLIDE_ARC = 225.0  # [°] the middle of a slide couple's arc (a link's own M_Φ takes 45°: the two never meet)
+
+
+def _slide_couples(s: Sheet2, group: int, i: int):
+    """(centre [real mm], moment [N·m], label) of the couples the slides pass onto the group's links
+    (a guide holding its block against turning, as the note names them: M_03 of a yoke on its
+    guide, M_34 of a block in a moving slot), each at its block's joint; a couple zero to the
+    problem's precision (below 10⁻⁹ of the cycle's largest force on the crank's arm or largest
+    moment, as the note's zero) is not drawn."""
+    numbers = {ln.number for ln in _group_links(s, group)}
+    fmax = max((float(np.max(np.abs(f.f))) for f in s.loading.forces), default=0.0)
+    mmax = max((float(np.max(np.abs(c.m))) for c in s.loading.couples), default=0.0)
+    floor = 1e-9 * max(fmax * s.sheet1.mechanism.crank.length, mmax)
+    out = []
+    for r in s.forces.reactions:
+        a, b = r.pair.links
+        if r.couple is None or abs(float(r.couple[i])) <= floor or (a in numbers) == (b in numbers):
+            continue  # no couple, or an inner pair's (not a load on the group)
+        at = complex(r.at[i]) * MM
+        pair = f"{a}{b}" if max(a, b) < 10 else f"{a},{b}"
+        if b in numbers:
+            out.append((at, float(r.couple[i]), f"M_{{{pair}}}"))
+        else:  # the group's link holds a later group's block: the couple back on it (as R_ba)
+            back = f"{b}{a}" if max(a, b) < 10 else f"{b},{a}"
+            out.append((at, -float(r.couple[i]), f"M_{{{back}}}"))
+    return out
+
+
 def _group_arrows(s: Sheet2, group: int, i: int, k: float, lang: str = "en"):
     """The group's force arrows at k paper mm per real mm: (tail, tip, point) [paper mm from the real
     origin], label, kind — placed by :func:`place_arrows` among the group's links."""
@@ -220,7 +248,7 @@ def _group_drawing(s: Sheet2, group: int, i: int, k: float):
     for tail, tip, _, _, _ in _group_arrows(s, group, i, k):
         for end in (tail, tip):
             arrows.append((0j, complex(end[0], end[1])))
-    for z, _, _ in _couples_on(s, group, i, "en"):
+    for z, _, _ in _couples_on(s, group, i, "en") + _slide_couples(s, group, i):
         arrows += [(z, 9.0 * complex(math.cos(a), math.sin(a))) for a in (0.0, math.pi / 2, math.pi, -math.pi / 2)]
     return pts, arrows
 
@@ -237,17 +265,21 @@ def _draw_group(sh: Sheet, f, s: Sheet2, group: int, i: int, lang: str, within) 
         else:
             sh.circle(q, 1.1, "Основные")
     centre = np.mean(list(pts.values()), axis=0)
-    draw_arrows(sh, f.origin, _group_arrows(s, group, i, f.scale, lang), within)
-    for z, mom, label in _couples_on(s, group, i, lang):
+    # a crowded drawing: every name with room for a CAD program's wider font (as the lever's)
+    draw_arrows(sh, f.origin, _group_arrows(s, group, i, f.scale, lang), within, wide=True)
+    couples = [(z, mom, label, 45.0) for z, mom, label in _couples_on(s, group, i, lang)]
+    couples += [(z, mom, label, SLIDE_ARC) for z, mom, label in _slide_couples(s, group, i)]
+    for z, mom, label, a_mid in couples:
         c = np.array(f.p(z.real, z.imag))
-        mid, out = rotation_arrow(sh, c, 6.5, 1 if mom > 0 else -1, 45.0, "Основные")
-        sh.label(label, tuple(mid), H_LABEL, within=within, dirs=dirs_from(out, 5), dists=(1.0, 2.5, 4.0), priority=6)
+        mid, out = rotation_arrow(sh, c, 6.5, 1 if mom > 0 else -1, a_mid, "Основные")
+        sh.label(label, tuple(mid), H_LABEL, within=within, dirs=dirs_from(out, 5), dists=(1.0, 2.5, 4.0), priority=6,
+                 wide=True)
     named = {n for n in pts}
     for n, q in pts.items():
         d = q - centre
         d = d / (np.hypot(*d) or 1.0)
         sh.label(sub(n), tuple(q), H_LABEL, within=within, dirs=dirs_from(-d if group else d), dists=(1.2, 2.5, 4.0),
-                 priority=8)
+                 priority=8, wide=True)
     for f_ in s.loading.forces:
         if f_.point in named or f_.number not in {ln.number for ln in _group_links(s, group)}:
             continue
@@ -255,7 +287,7 @@ def _draw_group(sh: Sheet, f, s: Sheet2, group: int, i: int, lang: str, within) 
         q = np.array(f.p(complex(f_.z[i]).real * MM, complex(f_.z[i]).imag * MM))
         sh.dot(q, 0.6)
         sh.label(sub(f_.point), tuple(q), H_LABEL, within=within, dirs=("sw", "se", "nw", "ne", "w", "e"),
-                 dists=(1.2, 2.5, 4.0), priority=7)
+                 dists=(1.2, 2.5, 4.0), priority=7, wide=True)
 
 
 def _polygon_tips(pg) -> np.ndarray:
@@ -333,7 +365,7 @@ def _polygon_field(sh: Sheet, s: Sheet2, pg, box, lang: str) -> None:
         if n >= SHORT_MM:
             side = np.array([-d[1], d[0]]) / n
             sh.label(symbol(v.symbol, lang), tuple((a + b) / 2), H_LABEL, within=room, dirs=dirs_from(side, 4) +
-                     dirs_from(-side, 4), dists=(0.8, 2.0, 3.5), priority=6)
+                     dirs_from(-side, 4), dists=(0.8, 2.0, 3.5), priority=6, wide=True)
     if note:
         lines = wrap_items(sh, _polygon_items(pg, lang) + [note], box[2] - box[0] - 4.0)
     caption(sh, box, lines)

@@ -113,6 +113,42 @@ def nice_scale(value: float, up: bool = True) -> float:
     return float(max(c for c in cands if c <= value * (1 + 1e-12)))
 
 
+def largest_empty_square(frame, boxes, give_up: float = math.inf) -> float:
+    """[mm] The side of the largest square inside `frame` (x0, y0, x1, y1) that overlaps none of
+    `boxes`: how much of a sheet is left unused in one place (a layout keeps it small). Stops as
+    soon as a square of `give_up` is found (a search for the smallest need not look further).
+
+    >>> largest_empty_square((0, 0, 100, 50), [(0, 0, 30, 50)])
+    50.0
+    >>> largest_empty_square((0, 0, 100, 100), [(40, 40, 60, 60)])
+    40.0
+    """
+    x0, y0, x1, y1 = frame
+    bs = [(max(b[0], x0), max(b[1], y0), min(b[2], x1), min(b[3], y1)) for b in boxes]
+    bs = sorted((b for b in bs if b[2] > b[0] and b[3] > b[1]), key=lambda b: b[1])
+    xs = sorted({x0, x1, *(b[0] for b in bs), *(b[2] for b in bs)})
+    best = 0.0
+    for i, xa in enumerate(xs):  # every strip between two box edges: its longest free run of y
+        for xb in reversed(xs[i + 1:]):  # widest first: a narrower strip cannot do better than its width
+            if xb - xa <= best:
+                break
+            y = y0
+            run = 0.0
+            for b in bs:
+                if b[0] < xb and b[2] > xa:
+                    if b[1] - y > run:
+                        run = b[1] - y
+                    if b[3] > y:
+                        y = b[3]
+            if y1 - y > run:
+                run = y1 - y
+            if min(xb - xa, run) > best:
+                best = min(xb - xa, run)
+                if best >= give_up:
+                    return float(best)
+    return float(best)
+
+
 # ----------------------------------------------------------------------------------------------
 # text boxes and readability
 
@@ -201,6 +237,7 @@ class Obstacles:
         self.nx, self.ny = int(math.ceil(width / self.RES)) + 1, int(math.ceil(height / self.RES)) + 1
         self.lines = np.zeros((self.ny, self.nx), dtype=bool)
         self.texts = np.zeros((self.ny, self.nx), dtype=bool)
+        self.taken = np.zeros((self.ny, self.nx), dtype=bool)  # lines | texts: one lookup a candidate
 
     def _cells(self, pts: np.ndarray):
         ix = np.clip((pts[:, 0] / self.RES).astype(int), 0, self.nx - 1)
@@ -212,7 +249,9 @@ class Obstacles:
         pts = np.asarray(pts, dtype=float)
         if len(pts) < 2:
             if len(pts):
-                self.lines[self._cells(pts)] = True
+                cells = self._cells(pts)
+                self.lines[cells] = True
+                self.taken[cells] = True
             return
         d = np.diff(pts, axis=0)
         n = np.maximum(1, np.ceil(np.hypot(d[:, 0], d[:, 1]) / self.STEP).astype(int))
@@ -220,7 +259,9 @@ class Obstacles:
         start = np.repeat(np.cumsum(n) - n, n)
         t = (np.arange(int(n.sum())) - start) / n[seg]
         q = pts[:-1][seg] + d[seg] * t[:, None]
-        self.lines[self._cells(np.vstack([q, pts[-1:]]))] = True
+        cells = self._cells(np.vstack([q, pts[-1:]]))
+        self.lines[cells] = True
+        self.taken[cells] = True
 
     def add_circle(self, c, r: float, a0: float = 0.0, a1: float = 360.0) -> None:
         span = (a1 - a0) % 360.0 or 360.0
@@ -229,7 +270,9 @@ class Obstacles:
         self.add_polyline(np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)]))
 
     def add_box(self, corners: np.ndarray) -> None:
-        self.texts[self._box_cells(np.asarray(corners, dtype=float))] = True
+        cells = self._box_cells(np.asarray(corners, dtype=float))
+        self.texts[cells] = True
+        self.taken[cells] = True
 
     def _box_cells(self, corners: np.ndarray):
         x0, y0, x1, y1 = _aabb(corners)
@@ -248,8 +291,14 @@ class Obstacles:
     # -- looking up
     def free(self, corners: np.ndarray) -> bool:
         """No line cell and no text cell under the box (one lookup of its cells)."""
-        cells = self._box_cells(np.asarray(corners, dtype=float))
-        return not (self.texts[cells].any() or self.lines[cells].any())
+        return not self.taken[self._box_cells(np.asarray(corners, dtype=float))].any()
+
+    def free_rect(self, x0: float, y0: float, x1: float, y1: float) -> bool:
+        """:meth:`free` of an upright box given by its sides (the cells :meth:`_box_cells` takes for
+        it, without building its corners: the placer asks this thousands of times a sheet)."""
+        ix0, ix1 = int(max(0, x0 // self.RES)), int(min(self.nx - 1, x1 // self.RES))
+        iy0, iy1 = int(max(0, y0 // self.RES)), int(min(self.ny - 1, y1 // self.RES))
+        return not self.taken[iy0:iy1 + 1, ix0:ix1 + 1].any()
 
     def line_hits(self, corners: np.ndarray) -> int:
         """How many line cells the box covers (0: free of lines)."""

@@ -29,7 +29,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .layout import CLEAR, GOST_SCALES, Label, Obstacles, inside, readable, ring_positions, text_corners
+from .layout import (CLEAR, DESCENT, GOST_SCALES, SUB_DESCENT, Label, Obstacles, inside, readable, ring_positions,
+                     text_corners)
 
 SHEET_W, SHEET_H = 841.0, 594.0  # A1 landscape [mm]
 FRAME = (20.0, 5.0, SHEET_W - 5.0, SHEET_H - 5.0)  # x0, y0, x1, y1 of the frame
@@ -735,6 +736,16 @@ class Sheet:
     def _free(self, corners, within) -> bool:
         return inside(corners, within) and self.obstacles.free(corners)
 
+    def _free_text(self, x, y, w, h, rot, sub, within) -> bool:
+        """:meth:`_free` of the box :func:`text_corners` gives (pad CLEAR); an upright one from its
+        sides, with the same arithmetic (the same cells), without building its corners."""
+        if rot != 0.0:
+            return self._free(text_corners(x, y, w, h, rot, sub=sub, pad=CLEAR), within)
+        d = (SUB_DESCENT if sub else DESCENT) * h
+        x0, y0, x1, y1 = x + -CLEAR, y + (-d - CLEAR), x + (w + CLEAR), y + (h + CLEAR)
+        return within[0] <= x0 and within[1] <= y0 and x1 <= within[2] and y1 <= within[3] \
+            and self.obstacles.free_rect(x0, y0, x1, y1)
+
     def _place(self, lab: Label) -> None:
         """The label at the first free candidate: the caller's positions (left ends of the baseline,
         as measured in osifont), then around the anchor with ROOM for a wider font — the text aligned
@@ -765,15 +776,14 @@ class Sheet:
             rings.append(ring)
         if lab.wide and lab.leader:  # room for a wider font first, near (the ring) or farther (a leader)
             for x, y, r, ww, align in cands + rings[0]:
-                if self._free(text_corners(x, y, ww, h, r, sub=sub, pad=CLEAR), lab.within):
+                if self._free_text(x, y, ww, h, r, sub, lab.within):
                     self._put_in(x, y, ww, text, h, r, align, ROOM if lab.wide else 1.0)
                     return
             if self._leader_spot(lab, text, w, h, sub, ROOM) is not None:
                 return
         cands += [c for pair in zip(*rings) for c in pair]
         for x, y, r, ww, align in cands:
-            box = text_corners(x, y, ww, h, r, sub=sub, pad=CLEAR)
-            if self._free(box, lab.within):
+            if self._free_text(x, y, ww, h, r, sub, lab.within):
                 self._put_in(x, y, ww, text, h, r, align, ROOM if lab.wide else 1.0)
                 return
         if lab.leader:
@@ -816,8 +826,7 @@ class Sheet:
                 right = math.cos(t) >= -1e-9
                 x = ex if right else ex - w
                 y = ey + d_lo + 0.6
-                box = text_corners(x, y, w, h, 0.0, sub=sub, pad=CLEAR)
-                if not self._free(box, lab.within):
+                if not self._free_text(x, y, w, h, 0.0, sub, lab.within):
                     continue
                 shelf = ((x - 0.5, ey), (x + w + 0.5, ey))
                 start = np.array([ax, ay]) + 0.4 * np.array([math.cos(t), math.sin(t)])
