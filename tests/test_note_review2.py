@@ -3,7 +3,8 @@ from the note's text:
 
 - C10: a rocker's working stroke is its swing — the note says «рабочее качание» (and «холостое
   качание» on the return) of the press feeder's rocker and of a four-bar's output rocker, and keeps
-  «рабочий ход» for a slider.
+  «рабочий ход» for a slider. Figure 3 (the reduced moments against φ) shades the output's working
+  stroke: with several loads, each on its own stroke, its axis says whose (link 3's, the ram's).
 """
 
 from __future__ import annotations
@@ -37,3 +38,12 @@ def test_a_rocker_swings_a_slider_strokes(name, swings, strokes):
     assert sum(w.endswith("качание") for w in said) == swings, said
     assert sum(w.endswith("ход") for w in said) == strokes, said
     assert not re.search(r"(коромысло|кулиса)[^.]*совершает рабочий ход", text)
+
+
+def test_the_figure_says_whose_working_stroke_it_shades():
+    from tmm_cli.render.figures.note import _dynamics
+
+    for name, whose in (("press_feeder", "рабочий ход выходного звена 3 затенён"), ("shaper", "рабочий ход затенён")):
+        tables = tomllib.loads((EXAMPLES / f"{name}.toml").read_text(encoding="utf-8"))
+        fig = _dynamics(analyse_linkage(tables, f"{name}.toml"), "ru")
+        assert fig.axes[-1].get_xlabel().endswith(whose), fig.axes[-1].get_xlabel()
