@@ -12,7 +12,7 @@ def assert_every_link_in_equilibrium(s, name: str) -> None:
     """Rebuild each link's free body from the loads and the reactions the analysis found (the
     balancing moment on the crank): ΣF = 0 and ΣM = 0 about the link's first pin, every position."""
     m = s.sheet1.mechanism
-    k = s.sheet1.cycle.kin
+    k = s.kin  # the cycle's positions: sheet 1's, or a four-stroke engine's two turns of them
     n = len(k.phi)
     big = max(float(np.max(np.abs(s.balancing))), 1.0) * 1e-9
     for ln in m.links:

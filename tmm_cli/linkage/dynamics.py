@@ -1,5 +1,6 @@
-"""The dynamics of the machine reduced to the crank over one turn: M_r(φ), J_r(φ), the works, the
-constant driving moment, the change of kinetic energy.
+"""The dynamics of the machine reduced to the crank over its cycle (one turn; a four-stroke engine's
+two, :mod:`.turns`): M_r(φ), J_r(φ), the works, the constant driving moment, the change of kinetic
+energy.
 
 The dynamic model of a machine (Artobolevsky, "Динамика машин: приведение сил и масс",
 "Уравнение движения машины"; Frolov, "Динамика машин"; METHOD.md "Sheets 1 and 2"):
@@ -8,7 +9,7 @@ The dynamic model of a machine (Artobolevsky, "Динамика машин: пр
 - their work since position 0, A_r(φ) = ∫₀^φ M_r dφ — here exactly, not by a quadrature: the
   load's as the area under its diagram times the stroke (:func:`.loads.load_work`), the weights'
   as the fall of their centres, −Σ m·g·(y_S(φ) − y_S(0));
-- the driving moment constant over the turn with A_d(2π) = −A_r(2π): M_d = −A_r(2π)/(2π);
+- the driving moment constant over the cycle Φ (2π, or 4π) with A_d(Φ) = −A_r(Φ): M_d = −A_r(Φ)/Φ;
 - the change of kinetic energy ΔT(φ) = A_d(φ) + A_r(φ) = M_d·φ + A_r(φ);
 - the reduced moment of inertia J_r(φ) = Σ(m·v_S² + J_S·ω²)/ω₁² + J_rotor, split into the first
   group's constant part (the crank and the rotor) and the second group's J_II(φ) (every other
@@ -52,7 +53,7 @@ class LoadDiagram:
 class Dynamics:
     """The machine reduced to the crank over one turn from position 0."""
 
-    travel: np.ndarray  # φ: the crank's travel from position 0 [rad], 0 … 2π
+    travel: np.ndarray  # φ: the crank's travel from position 0 [rad], 0 … 2π (a two-turn cycle: 0 … 4π)
     omega_mean: float  # ω_m = |ω₁| [rad/s]
     sense: int  # +1 the crank turns counter-clockwise
     J_r: np.ndarray  # reduced moment of inertia of the mechanism and the rotor [kg·m²]
@@ -84,14 +85,16 @@ class Dynamics:
         return self.sense * self.M_d
 
 
-def driving_moment(resistance_work: float) -> float:
-    """M_d = −A_r(2π)/(2π) [N·m]: the constant moment doing over one turn the work the resistance
-    takes (the energy balance of a steady cycle, A_d + A_r = 0).
+def driving_moment(resistance_work: float, cycle: float = 2.0 * math.pi) -> float:
+    """M_d = −A_r(Φ)/Φ [N·m]: the constant moment doing over the cycle Φ (one turn, 2π; a four-stroke
+    engine's two, 4π) the work the resistance takes (the energy balance of a steady cycle, A_d + A_r = 0).
 
     >>> round(driving_moment(-628.3185307179587), 12)   # 628 J a turn: 100 N·m
     100.0
+    >>> round(driving_moment(-628.3185307179587, 4 * math.pi), 12)   # 628 J in two turns: 50 N·m
+    50.0
     """
-    return -resistance_work / (2.0 * math.pi)
+    return -resistance_work / cycle
 
 
 def weights_work(kin: Kinematics, masses):
@@ -117,8 +120,8 @@ def weights_work(kin: Kinematics, masses):
 def dynamics(mech: Mechanism, inp: Sheet2Input, stroke: Stroke | None, kin: Kinematics, travel,
              strokes=None) -> Dynamics:
     """The reduced quantities on the grid `kin` at the crank travels `travel` (0 … 2π from
-    position 0, both ends included: sheet 1's curve); `strokes` each table load's (found when not
-    given, :func:`.loads.load_strokes`)."""
+    position 0, both ends included: sheet 1's curve; 0 … 4π for a two-turn cycle); `strokes` each table
+    load's (found when not given, :func:`.loads.load_strokes`)."""
     travel = np.asarray(travel, dtype=float)
     w_m = abs(kin.omega1)
     sense = 1 if kin.omega1 > 0 else -1
@@ -144,5 +147,6 @@ def dynamics(mech: Mechanism, inp: Sheet2Input, stroke: Stroke | None, kin: Kine
     j_r = reduced_inertia(kin, inp.masses, rotor)
     crank = [ms for ms in inp.masses if ms.number == 1]
     j_first = rotor + float(reduced_inertia(kin, crank)[0])
-    return Dynamics(travel, w_m, sense, j_r, j_first, rotor, m_r, a_r, driving_moment(float(a_r[-1])),
+    cycle = 2.0 * math.pi * max(1, round(float(travel[-1]) / (2.0 * math.pi)))  # a turn, or a four-stroke's two
+    return Dynamics(travel, w_m, sense, j_r, j_first, rotor, m_r, a_r, driving_moment(float(a_r[-1]), cycle),
                     tuple(diagrams))

@@ -1,5 +1,6 @@
 """Gas forces on pistons from their indicator diagrams (a ``[[load]]`` with ``head``): the piston
-compressor, the two-stroke engine, the pump — a cycle of one crank turn.
+compressor, the two-stroke engine, the pump — a cycle of one crank turn — and the four-stroke
+engine, a cycle of two turns.
 
 The standard load of sheet 2 for engines and compressors (Artobolevsky, «Динамика машин»: the
 indicator diagram; Frolov, «Силовой анализ механизмов»)::
@@ -16,6 +17,14 @@ piston moves away from the head (from the dead centre nearest it), row 2 while i
 drives where the piston moves away and resists where it comes back. The pressure is linear in the
 travel between the table's entries. Its work is exact: A·H·∫p dx over each stroke (+ away, − back),
 the area of the indicator diagram times A·H over a cycle.
+
+Four rows are a four-stroke engine's cycle of two crank turns (Artobolevsky, «Динамика машин»: the
+indicator diagram of a four-stroke engine; Frolov, «Теория механизмов и машин», the engine's cycle
+of 720°): expansion (away from the head), exhaust (back), intake (away), compression (back), in the
+cycle's order from the dead centre nearest the head. Which pair of rows acts depends on the turn:
+the load then carries ``origin``, the crank angle [rad] where its first row begins — its first dead
+centre nearest the head at or after position 0 (:func:`bind_cycle`) — and the crank angles of the
+kinematics are taken as turned, unwrapped (φ0 + sense·travel, travel 0 … 4π), not folded into a turn.
 """
 
 from __future__ import annotations
@@ -44,8 +53,14 @@ class GasLoad:
     head: complex  # a point of the cylinder head on the piston's line [m]
     area: float  # [m²]
     travel: tuple[float, ...]  # s/H from the dead centre nearest the head, 0 … 1
-    pressure: tuple[tuple[float, ...], ...]  # [MPa] gauge, one row a stroke (away, back)
+    pressure: tuple[tuple[float, ...], ...]  # [MPa] gauge, one row a stroke (away, back; 4 rows: two turns)
     kind: str = "gas"
+    origin: float | None = None  # a two-turn cycle: the crank angle where row 1 begins [rad] (None: the near dead centre)
+
+    @property
+    def turns(self) -> int:
+        """The turns of the crank its cycle takes: 1 (2 rows) or 2 (4 rows, a four-stroke engine)."""
+        return len(self.pressure) // 2
 
 
 @record
@@ -123,21 +138,36 @@ def _row_integral(travel, row, x):
     return cum[j] + (x - t[j]) * (p[j] + np.interp(x, t, p)) / 2.0
 
 
+TURN_TOLERANCE = 1e-6  # [rad] of crank travel: the dead centres found to ~1e-8 still start their turn
+
+
+def turn_of(gl: GasLoad, pst: Piston, mech: Mechanism, phi, back):
+    """Which turn of a two-turn cycle (0 or 1) the crank angles `phi` (as turned, unwrapped) lie in,
+    counted from the load's `origin`; `back` (0/1 per angle) says the piston comes back to the head —
+    a back stroke ends a turn, so an angle a rounding past a near dead centre stays in its turn."""
+    origin = pst.near if gl.origin is None else gl.origin
+    theta = mech.crank.sense * (np.asarray(phi, dtype=float) - origin)
+    nudge = TURN_TOLERANCE * (1.0 - 2.0 * np.asarray(back, dtype=float))
+    return np.remainder(np.floor((theta + nudge) / (2.0 * math.pi)), 2.0).astype(int)
+
+
 def state(gl: GasLoad, pst: Piston, mech: Mechanism, kin: Kinematics):
     """(x, row, q): the travel s/H from the dead centre nearest the head, the row of the diagram
     acting (0 moving away from the head, 1 coming back; at a dead centre, the stroke that starts
-    there) and the distance from the head [m]."""
+    there; a two-turn cycle: + 2 in its second turn, rows 0 … 3) and the distance from the head [m]."""
     q, qd = _distance(gl, mech, kin)
     x = np.clip((q - pst.q_near) / pst.stroke, 0.0, 1.0)
     tol = 1e-9 * pst.stroke * abs(mech.crank.omega)
     row = np.where(qd > tol, 0, np.where(qd < -tol, 1, np.where(x < 0.5, 0, 1)))
+    if gl.turns == 2:
+        row = row + 2 * turn_of(gl, pst, mech, kin.phi, row)
     return x, row, q
 
 
 def gas_pressure(gl: GasLoad, pst: Piston, mech: Mechanism, kin: Kinematics):
     """The gauge pressure [Pa] on the piston at the kinematics' angles."""
     x, row, _ = state(gl, pst, mech, kin)
-    p = np.where(row == 0, np.interp(x, gl.travel, gl.pressure[0]), np.interp(x, gl.travel, gl.pressure[1]))
+    p = np.choose(row, [np.interp(x, gl.travel, r) for r in gl.pressure])
     return p * 1.0e6
 
 
@@ -150,7 +180,8 @@ def gas_work(gl: GasLoad, pst: Piston, mech: Mechanism, kin: Kinematics):
     """The gas force's work [J] from the first angle of `kin` on, exactly along the piston's path:
     +A·H·∫p₁ dx while it moves away from the head, −A·H·∫p₂ dx while it comes back, each stroke's
     piece split at the dead centre between two angles (the angles must follow the crank's turn
-    closely enough that the piston passes at most one dead centre between them)."""
+    closely enough that the piston passes at most one dead centre between them). A two-turn cycle's
+    rows follow one another the same way: expansion, exhaust, intake, compression."""
     x, row, _ = state(gl, pst, mech, kin)
     scale = gl.area * pst.stroke * 1.0e6
 
@@ -163,7 +194,7 @@ def gas_work(gl: GasLoad, pst: Piston, mech: Mechanism, kin: Kinematics):
         if r0 == r1:  # away: F along the motion, x grows; back: against it, x falls — both p·A·H·dx
             w = integral(r0, x1) - integral(r0, x0)
         else:
-            end = 1.0 if r0 == 0 else 0.0  # the dead centre passed
+            end = 1.0 if r0 % 2 == 0 else 0.0  # the dead centre passed: the far one after a stroke away
             w = (integral(r0, end) - integral(r0, x0)) + (integral(r1, x1) - integral(r1, end))
         out[i] = out[i - 1] + scale * float(w)
     return out
@@ -195,11 +226,9 @@ def parse_gas(r, mech: Mechanism, t: dict, key: str) -> GasLoad:
     rows = r.required(t, "pressure", f"{key}.pressure", ex_p)
     if not isinstance(rows, list) or not all(isinstance(x, list) for x in rows):
         r.fail(f"'{key}.pressure' must be a list of rows of gauge pressures [MPa], one row a stroke, e.g. {ex_p}")
-    if len(rows) == 4:
-        r.fail(f"'{key}.pressure' has 4 rows, a four-stroke engine's cycle of two turns: not supported yet; give 2 rows "
-               "(one turn: a two-stroke engine, a compressor, a pump)")
-    if len(rows) != 2:
-        r.fail(f"'{key}.pressure' has {len(rows)} rows; give 2 (one turn: the stroke away from the head, then back)")
+    if len(rows) not in (2, 4):
+        r.fail(f"'{key}.pressure' has {len(rows)} rows; give 2 (one turn: the stroke away from the head, then back) or "
+               "4 (two turns, a four-stroke engine: expansion, exhaust, intake, compression)")
     pressure = []
     for j, row in enumerate(rows, start=1):
         if len(row) != len(travel):
@@ -232,3 +261,29 @@ def piston_forces(mech: Mechanism, gas, kin: Kinematics) -> dict[str, np.ndarray
         pst = piston(gl, mech)
         out[gl.link] = gas_pressure(gl, pst, mech, kin) * gl.area
     return out
+
+
+def cycle_turns(gas) -> int:
+    """The turns of the crank the machine's cycle takes: the longest of its gas loads' (a four-stroke
+    engine's 2; every other load repeats each turn).
+
+    >>> cycle_turns([]), cycle_turns([GasLoad("B", 0j, 0.01, (0.0, 1.0), ((1.0, 0.0),) * 4)])
+    (1, 2)
+    """
+    return max((gl.turns for gl in gas), default=1)
+
+
+def bind_cycle(gas, mech: Mechanism, start: float) -> tuple:
+    """The gas loads with the crank angle where each two-turn load's first row begins: its first dead
+    centre nearest the head at or after position 0 (crank angle `start` [rad]), as turned from there
+    (start + sense·τ, 0 ≤ τ < 2π; a dead centre within TURN_TOLERANCE of position 0 is position 0's)."""
+    out = []
+    for gl in gas:
+        if gl.turns == 2:
+            sense = mech.crank.sense
+            tau = float(np.remainder(sense * (piston(gl, mech).near - start), 2.0 * math.pi))
+            if tau < TURN_TOLERANCE or tau > 2.0 * math.pi - TURN_TOLERANCE:
+                tau = 0.0
+            gl = GasLoad(gl.link, gl.head, gl.area, gl.travel, gl.pressure, gl.kind, start + sense * tau)
+        out.append(gl)
+    return tuple(out)

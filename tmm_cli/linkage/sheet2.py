@@ -47,14 +47,14 @@ class DynamicsScales:
 
 def dynamics_scales(dyn: Dynamics, fw: Flywheel | None, axis_mm: float = DIAGRAM_AXIS_MM,
                     height_mm: float = DIAGRAM_HEIGHT_MM) -> DynamicsScales:
-    """μ of the diagrams M_r and M_d, A_r and A_d, ΔT (and ΔT_I), J_r over the turn, and of each
-    table load's own diagram."""
+    """μ of the diagrams M_r and M_d, A_r and A_d, ΔT (and ΔT_I), J_r over the cycle (a turn; a
+    four-stroke engine's two on the same axis length), and of each table load's own diagram."""
     m = max(float(np.max(np.abs(dyn.M_r))), abs(dyn.M_d))
     a = max(float(np.max(np.abs(dyn.A_r))), float(np.max(np.abs(dyn.A_d))))
     t = float(np.max(np.abs(dyn.dT)))
     if fw is not None:
         t = max(t, float(np.max(np.abs(fw.mertsalov.dT_I - fw.mertsalov.dT_I[0]))))
-    return DynamicsScales(2.0 * math.pi / axis_mm, drafting_scale(m, height_mm), drafting_scale(a, height_mm),
+    return DynamicsScales(float(dyn.travel[-1]) / axis_mm, drafting_scale(m, height_mm), drafting_scale(a, height_mm),
                           drafting_scale(t, height_mm), drafting_scale(float(np.max(dyn.J_r)), height_mm), axis_mm,
                           height_mm, tuple(drafting_scale(float(np.max(ld.values)), height_mm) for ld in dyn.loads))
 
@@ -64,7 +64,7 @@ class Sheet2:
     sheet1: Sheet1
     input: Sheet2Input
     stroke: Stroke | None
-    forces: Kinetostatics  # at sheet 1's positions (its cycle.kin), with their loading
+    forces: Kinetostatics  # at the cycle's positions (:attr:`positions`: sheet 1's, or two turns of them)
     power_balance: np.ndarray  # M_b from the power balance at the positions [N·m]
     lever: Lever  # Zhukovsky's lever at the positions
     force_position: int  # the position of the force polygons and of the lever's drawing (list index)
@@ -75,6 +75,31 @@ class Sheet2:
     flywheel: Flywheel | None  # None without a [dynamics] table
     scales: DynamicsScales  # of the diagrams
     notes: tuple[Note, ...]
+    turns: int = 1  # the crank turns of the machine's cycle (a four-stroke engine: 2)
+    cycle_positions: tuple = ()  # its positions, a turn's repeated each turn (:mod:`.turns`); () = sheet 1's
+    cycle_kin: object = None  # the kinematics at them, the crank angle as turned (None: sheet 1's)
+
+    @property
+    def positions(self):
+        """The positions of the cycle, in the order the crank turns: sheet 1's for a cycle of one
+        turn, 2·N of them (numbered on) for two. Every per-position array of this record follows it."""
+        return self.cycle_positions or self.sheet1.cycle.positions
+
+    @property
+    def kin(self):
+        """The kinematics at :attr:`positions` (a two-turn cycle: each turn's the first's, the crank
+        angle φ0 + sense·travel as turned)."""
+        return self.cycle_kin if self.cycle_kin is not None else self.sheet1.cycle.kin
+
+    def curve_kin(self):
+        """The kinematics on the dynamics' grid (:attr:`Dynamics.travel`): sheet 1's curve, or its
+        turns repeated over a two-turn cycle."""
+        c = self.sheet1.cycle
+        if self.turns == 1:
+            return c.curve.kin
+        from .turns import repeat_curve
+
+        return repeat_curve(c.curve.kin, c.curve.travel, self.turns, c.start, self.sheet1.mechanism.crank.sense)[0]
     indicators: tuple[Indicator, ...] = ()  # the gas loads' indicator diagrams as drawn (:mod:`.indicator`)
     strokes: tuple = ()  # each table load's Stroke (input.tables' order): its own link's working stroke
 
@@ -182,14 +207,28 @@ def analyse_sheet2(s1: Sheet1, inp: Sheet2Input, source: str = "mechanism") -> S
             raise TmmError(f"{source}: 'load[{i}].head' is reached by the piston {gl.link} (it comes "
                            f"{-piston(gl, mech).q_near:.6g} m past it); put the cylinder head beyond the piston's "
                            "dead centre")
-    kin = c.kin
+    kin, curve_kin, curve_travel, turns, repeated = c.kin, c.curve.kin, c.curve.travel, 1, ()
+    if inp.gas:
+        from .gas import bind_cycle, cycle_turns
+
+        turns = cycle_turns(inp.gas)
+        if turns > 1:  # a four-stroke engine: the positions and the diagrams over its two turns
+            from dataclasses import replace
+
+            from .turns import repeat_curve, repeat_positions, repeat_positions_kin
+
+            inp = replace(inp, gas=bind_cycle(inp.gas, mech, c.start))
+            repeated = repeat_positions(c.positions, turns, mech.positions)
+            kin = repeat_positions_kin(c.kin, c.positions, turns, c.start, mech.crank.sense)
+            curve_kin, curve_travel = repeat_curve(c.curve.kin, c.curve.travel, turns, c.start, mech.crank.sense)
     loading = applied(mech, inp, stroke, kin, strokes)
     ks = kinetostatics(mech, loading, kin)
     i = s1.plans[0].position.index
     rotor = inp.dynamics.J_rotor if inp.dynamics is not None else 0.0
-    dyn = dynamics(mech, inp, stroke, c.curve.kin, c.curve.travel, strokes)
+    dyn = dynamics(mech, inp, stroke, curve_kin, curve_travel, strokes)
     fw = flywheel(dyn, inp.dynamics) if inp.dynamics is not None else None
     return Sheet2(s1, inp, stroke, ks, balancing_moment_by_power(kin, loading), lever(mech, loading, kin), i,
                   force_polygons(mech, ks, i), reduced_moment(kin, loading), reduced_inertia(kin, inp.masses, rotor),
-                  dyn, fw, dynamics_scales(dyn, fw), _notes(s1, inp, fw, dyn),
-                  indicators=indicators(mech, inp.gas, c.positions, kin), strokes=strokes)
+                  dyn, fw, dynamics_scales(dyn, fw), _notes(s1, inp, fw, dyn), turns, repeated,
+                  kin if turns > 1 else None, indicators=indicators(mech, inp.gas, repeated or c.positions, kin),
+                  strokes=strokes)

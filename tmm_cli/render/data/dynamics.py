@@ -111,13 +111,34 @@ def dynamics_json(s: Sheet2) -> dict:
     return out
 
 
+def _more_turns(doc: dict, s: Sheet2) -> None:
+    """A cycle of several turns (issue 34): the positions list every turn's in the order the crank
+    turns — each turn's kinematics the first's, `label` numbered on, `phi_deg` running on past 360°
+    as the crank has turned (a turn's crank angle + 360° a turn: 0 … 720), `travel_deg` the travel
+    from position 0 and `turn` (1, 2); the top level says the cycle's `turns`."""
+    import copy
+
+    first = doc["positions"]
+    out = []
+    for p in s.positions:
+        turn = int(p.index // len(first))
+        entry = copy.deepcopy(first[p.index % len(first)])
+        entry.update({"index": p.index, "label": p.label, "turn": turn + 1,
+                      "phi_deg": _f(entry["phi_deg"] + 360.0 * turn), "travel_deg": _f(math.degrees(p.travel))})
+        out.append(entry)
+    doc["positions"] = out
+    doc["cycle"] = {"turns": s.turns, "cycle_deg": 360 * s.turns, "positions_per_turn": len(first)}
+
+
 def add_sheet2(doc: dict, s: Sheet2) -> dict:
     """Sheet 1's document with sheet 2's keys added (the same dict, returned)."""
-    for entry, p in zip(doc["positions"], s.sheet1.cycle.positions):
+    if s.turns > 1:  # a four-stroke engine: the positions of every turn of its cycle, numbered on
+        _more_turns(doc, s)
+    for entry, p in zip(doc["positions"], s.positions):
         entry.update(_position_entry(s, p.index))
     doc["dynamics"] = dynamics_json(s)
     doc["forces"] = {"conventions": CONVENTIONS, "gravity": s.input.gravity,
-                     "position": s.sheet1.cycle.positions[s.force_position].label, "polygons": _polygons(s),
+                     "position": s.positions[s.force_position].label, "polygons": _polygons(s),
                      "masses": [{"link": m.link, "number": m.number, "m_kg": m.m, "J_kgm2": m.J, "centre": m.label}
                                 for m in s.input.masses],
                      "load": None if s.input.load is None else {"link": s.input.load.link, "kind": s.input.load.kind,
@@ -125,6 +146,8 @@ def add_sheet2(doc: dict, s: Sheet2) -> dict:
                                                                  "values": list(s.input.load.values)}}
     if s.input.load is not None and s.input.load.direction is not None:  # a force of its own direction
         doc["forces"]["load"]["direction_deg"] = math.degrees(s.input.load.direction)
+    if s.turns > 1:  # the force analysis' position lies in the cycle's first turn
+        doc["forces"]["turn"] = 1
     tables = s.input.tables
     if tables != ((s.input.load,) if s.input.load is not None else ()):  # several table loads, each on its own link
         doc["forces"]["loads"] = [_table_load(s, ld, st) for ld, st in zip(tables, s.strokes)]
@@ -137,6 +160,11 @@ def add_sheet2(doc: dict, s: Sheet2) -> dict:
              "area_m2": g.area, "travel": list(g.travel), "pressure_MPa": [list(r) for r in g.pressure],
              "stroke_m": piston(g, m).stroke, "near_dead_centre_deg": math.degrees(piston(g, m).near) % 360.0,
              "far_dead_centre_deg": math.degrees(piston(g, m).far) % 360.0} for g in s.input.gas]
+        for entry, g in zip(doc["forces"]["gas"], s.input.gas):
+            if g.turns > 1:  # a four-stroke: where its expansion (the first row) begins, as turned from position 0
+                entry["turns"] = g.turns
+                entry["strokes"] = ["expansion", "exhaust", "intake", "compression"]
+                entry["cycle_start_travel_deg"] = _f(math.degrees(m.crank.sense * (g.origin - s.sheet1.cycle.start)))
     return doc
 
 
@@ -158,10 +186,10 @@ def _table_load(s: Sheet2, ld, st) -> dict:
 
 
 def dynamics_csv(s: Sheet2) -> str:
-    """The dynamics over the turn (every 0.5° from position 0): M_r, the works, ΔT, J_r, J_II,
+    """The dynamics over the cycle (every 0.5° from position 0; a four-stroke engine's 720°): M_r, the works, ΔT, J_r, J_II,
     Mertsalov's ΔT_I and the speed with the flywheel (moments and works in the sense of rotation)."""
     d, fw = s.dynamics, s.flywheel
-    k = s.sheet1.cycle.curve.kin
+    k = s.curve_kin()  # a four-stroke engine's: both turns
     head = ["travel_deg", "phi_deg", "M_r_Nm", "A_r_J", "A_d_J", "dT_J", "J_r_kgm2", "J_II_kgm2"]
     cols = [np.degrees(d.travel), np.degrees(np.remainder(k.phi, 2 * np.pi)), d.M_r, d.A_r, d.A_d, d.dT, d.J_r, d.J_II]
     if fw is not None:

@@ -419,13 +419,18 @@ def dynamics_figure(s: Sheet2, lang: str):
     ax.axhline(d.J_first, color="#9a9a9a", lw=0.9, ls=":", label=tr(lang, "$J_{crank}+J_{rotor}$"))
     ax.set_ylabel(f"J, {kg}")
     ax.set_title(r"$\mu_J$ = " + f"{num(sc.J, lang, sig=3)} {kg}/" + tr(lang, "mm"), fontsize=9, loc="right", pad=3)
-    evens = [p for p in c.positions if p.label.isdigit()]
+    evens = [p for p in s.positions if p.label.isdigit()]  # the cycle's: a four-stroke engine's two turns
+    end = 360.0 * s.turns
     for j, ax in enumerate(axes):
-        for lo, hi in c.stroke_spans():  # the working stroke, from its start extreme
-            ax.axvspan(math.degrees(lo), math.degrees(hi), color=C_APPLIED, alpha=0.05, lw=0)
+        for turn in range(s.turns):
+            for lo, hi in c.stroke_spans():  # the working stroke, from its start extreme
+                ax.axvspan(math.degrees(lo) + 360.0 * turn, math.degrees(hi) + 360.0 * turn, color=C_APPLIED,
+                           alpha=0.05, lw=0)
+            if turn:  # the end of a turn within the cycle
+                ax.axvline(360.0 * turn, color="k", lw=0.8, ls="--")
         ax.axhline(0, color="k", lw=0.5)
-        ax.set_xlim(0, 360)
-        ax.set_xticks([math.degrees(p.travel) for p in evens] + [360.0])
+        ax.set_xlim(0, end)
+        ax.set_xticks([math.degrees(p.travel) for p in evens] + [end])
         ax.set_xticklabels([p.label for p in evens] + ["0"] if j == 3 else [])
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8, loc="best", frameon=False, ncol=2)
@@ -445,8 +450,7 @@ def wittenbauer_figure(s: Sheet2, lang: str):
     fig = new_figure(width, height)
     ax = fig.add_axes((1.0 / width, 0.8 / height, 1 - 1.3 / width, 1 - (top + 1.0) / height))
     ax.plot(d.J_r, d.dT, color="k", lw=1.4)
-    c = s.sheet1.cycle
-    for p in c.positions:
+    for p in s.positions:  # the cycle's: a four-stroke engine's two turns
         if p.label.isdigit():
             jr, dt = (float(np.interp(p.travel, d.travel, y)) for y in (d.J_r, d.dT))
             ax.plot(jr, dt, "o", ms=3, color="tab:orange")

@@ -195,11 +195,11 @@ def _kind(c: Ctx, f, s) -> str:
         from ...linkage.gas import gas_pressure, piston, state
 
         gl, mech = gas[f.link], s.sheet1.mechanism
-        kin = s.sheet1.cycle.kin.at(s.force_position)
+        kin = s.kin.at(s.force_position)  # the crank angle as turned: a four-stroke's rows depend on the turn
         pst = piston(gl, mech)
         _, row, _ = state(gl, pst, mech, kin)
         p = c.zero(float(gas_pressure(gl, pst, mech, kin)[0]) * gl.area, "N")  # the force away from the head
-        drives = p * (1.0 if int(row[0]) == 0 else -1.0)  # away from the head it drives where it pushes (at a dead
+        drives = p * (1.0 if int(row[0]) % 2 == 0 else -1.0)  # rows 0, 2: away from the head, it drives (at a dead
         if drives > 0:                                     # centre: on the stroke that begins there)
             return c.t("driving force (gas pressure)")
         if drives < 0:
@@ -348,12 +348,24 @@ def _gas(c: Ctx, s) -> None:
         return
     mech = s.sheet1.mechanism
     i = s.force_position
-    kin = s.sheet1.cycle.kin.at(i)
+    kin = s.kin.at(i)  # the crank angle as turned: a four-stroke's rows depend on the turn
     c.p(t("The gas force on a piston is $P = p A$ along its cylinder, away from the cylinder head, on both strokes: "
           "$p$ the gauge pressure of the indicator diagram against the piston's travel $s/H$ from the dead centre "
           "nearest the head (the first row while the piston moves away from the head, the second while it comes back), "
           "$A$ the piston's area. It drives the crank where the piston moves away from the head and resists where it "
           "comes back."))
+    if s.turns > 1:  # a four-stroke engine: why its cycle takes two turns
+        per = s.sheet1.mechanism.positions  # the regular positions a turn (the second turn numbered on from it)
+        c.p(t("The piston of a four-stroke engine makes four strokes in its working cycle — expansion (the working "
+              "stroke), exhaust, intake and compression — a stroke each half turn of the crank, so the cycle, and with "
+              "it the gas force and the reduced moment, repeats only after two turns of the crank (720°). Its "
+              "indicator diagram has four rows, in the cycle's order from the dead centre nearest the head; the "
+              "kinematics and the reduced moment of inertia repeat every turn, the gas force does not. The positions, "
+              "the diagrams, the change of the kinetic energy and the flywheel are therefore taken over the two turns: "
+              "the positions of the second turn are numbered on, {a} … {b}, and the angle $Δ φ$ runs from 0 to 720°.")
+            .format(a=per, b=2 * per - 1))
+    strokes = (t("expansion (away from the head)"), t("exhaust (towards the head)"), t("intake (away from the head)"),
+               t("compression (towards the head)"))
     if c.has("linkage_indicator"):
         c.p(t("The indicator diagrams of the tables below, each stroke with its number in the order of the cycle and the "
               "force $P = p A$ on the right-hand axis, are shown in Figure {fig:linkage_indicator}; sheet 2 draws them "
@@ -364,16 +376,21 @@ def _gas(c: Ctx, s) -> None:
         ln = mech.link(gl.link)
         sym = fsym(c, f"P{ln.number}")
         pst = piston(gl, mech)
+        names = (t("away from the head"), t("towards the head")) if gl.turns == 1 else strokes
         c.table(f"dyn_gas_{ln.number}", t("Indicator diagram of the piston {p} (gauge pressure, MPa; area {a} m²)").format(
             p=gl.link, a=n(gl.area, sig=4)), ["$s/H$"] + [n(x, sig=3) for x in gl.travel],
-            [[t("away from the head")] + [n(y, sig=4) for y in gl.pressure[0]],
-             [t("towards the head")] + [n(y, sig=4) for y in gl.pressure[1]]],
+            [[name] + [n(y, sig=4) for y in row] for name, row in zip(names, gl.pressure)],
             align=["left"] + ["center"] * len(gl.travel), widths=[2.2] + [0.9] * len(gl.travel))
         x, row, _ = state(gl, pst, mech, kin)
         p = float(gas_pressure(gl, pst, mech, kin)[0]) / 1.0e6
-        c.p(t("In position {label} the piston {p} is at $s/H$ = {x}, moving {way}: $p$ = {pr} MPa,").format(
-            label=_position(s).label, p=gl.link, x=n(float(x[0]), decimals=3), pr=n(p, sig=4),
-            way=t("away from the head") if int(row[0]) == 0 else t("towards the head")))
+        if gl.turns == 1:
+            c.p(t("In position {label} the piston {p} is at $s/H$ = {x}, moving {way}: $p$ = {pr} MPa,").format(
+                label=_position(s).label, p=gl.link, x=n(float(x[0]), decimals=3), pr=n(p, sig=4),
+                way=t("away from the head") if int(row[0]) == 0 else t("towards the head")))
+        else:
+            c.p(t("In position {label} (the first turn of the cycle) the piston {p} is at $s/H$ = {x}, the stroke "
+                  "{stroke}: $p$ = {pr} MPa,").format(label=_position(s).label, p=gl.link, x=n(float(x[0]), decimals=3),
+                                                       pr=n(p, sig=4), stroke=strokes[int(row[0])]))
         c.formula(c.calc(f"{sym} = p A", "{0} dot 10^6 dot {1}", [V(p, sig=6), V(gl.area, exact=True)],
                          V(p * 1.0e6 * gl.area, sig=4), t("N")), numbered=False)
 
@@ -788,7 +805,7 @@ def _reduction(c: Ctx, s) -> None:
 
     t, n = c.t, c.n
     d = s.dynamics
-    positions = s.sheet1.cycle.positions
+    positions = s.positions  # the cycle's: a four-stroke engine's two turns of them
     c.doc.add(Heading(2, t("Dynamic model: reduced moment and reduced moment of inertia")))
     gas = bool(s.input.gas)  # gas forces drive on one stroke and resist on the other: M_пр is not of resistances only
     c.p(t("The mechanism is replaced by its dynamic model: the crank with the reduced moment of the driving and "
@@ -868,14 +885,40 @@ def _reduction(c: Ctx, s) -> None:
         for gl in s.input.gas:
             ln = s.sheet1.mechanism.link(gl.link)
             h = piston(gl, s.sheet1.mechanism).stroke
-            s1, s2 = (float(_row_integral(gl.travel, row, 1.0)) for row in gl.pressure)
-            c.p(t("The gas force on the piston {p} does over a cycle the work of its indicator diagram: the area between "
-                  "its rows times the piston's area and stroke (positive where the expansion's row lies higher):")
-                .format(p=gl.link))
-            c.formula(c.calc(f'A_(P {ln.number}) = A H (S_1 - S_2) dot 10^6', "{0} dot {1} dot ({2} - {3}) dot 10^6",
-                             [V(gl.area, exact=True), V(h, sig=6), V(s1, sig=6), V(s2, sig=6)],
-                             V(gl.area * h * (s1 - s2) * 1.0e6, sig=5), t("J")), numbered=False)
-            works.append((f"A_(P {ln.number})", gl.area * h * (s1 - s2) * 1.0e6))
+            areas = [float(_row_integral(gl.travel, row, 1.0)) for row in gl.pressure]
+            if gl.turns == 1 and s.turns == 1:
+                s1, s2 = areas
+                c.p(t("The gas force on the piston {p} does over a cycle the work of its indicator diagram: the area "
+                      "between its rows times the piston's area and stroke (positive where the expansion's row lies "
+                      "higher):").format(p=gl.link))
+                c.formula(c.calc(f'A_(P {ln.number}) = A H (S_1 - S_2) dot 10^6', "{0} dot {1} dot ({2} - {3}) dot 10^6",
+                                 [V(gl.area, exact=True), V(h, sig=6), V(s1, sig=6), V(s2, sig=6)],
+                                 V(gl.area * h * (s1 - s2) * 1.0e6, sig=5), t("J")), numbered=False)
+                works.append((f"A_(P {ln.number})", gl.area * h * (s1 - s2) * 1.0e6))
+            elif gl.turns == 1:  # a one-turn diagram in a cycle of two turns: it works twice
+                s1, s2 = areas
+                c.p(t("The gas force on the piston {p} repeats its one-turn indicator diagram twice in the cycle of two "
+                      "turns: twice the area between its rows times the piston's area and stroke:").format(p=gl.link))
+                c.formula(c.calc(f'A_(P {ln.number}) = 2 A H (S_1 - S_2) dot 10^6',
+                                 "2 dot {0} dot {1} dot ({2} - {3}) dot 10^6",
+                                 [V(gl.area, exact=True), V(h, sig=6), V(s1, sig=6), V(s2, sig=6)],
+                                 V(2.0 * gl.area * h * (s1 - s2) * 1.0e6, sig=5), t("J")), numbered=False)
+                works.append((f"A_(P {ln.number})", 2.0 * gl.area * h * (s1 - s2) * 1.0e6))
+            else:
+                s1, s2, s3, s4 = areas
+                c.p(t("The gas force on the piston {p} does over its cycle of two turns the work of its indicator "
+                      "diagram: the area of its loop — under the rows of expansion and intake (away from the head) less "
+                      "under those of exhaust and compression (towards it) — times the piston's area and stroke:")
+                    .format(p=gl.link))
+                # each area after the first with its own sign folded into the operator: «− 0,0126», not «+ −0,0126»
+                signs = [(1 if k % 2 == 0 else -1) * (1 if a >= 0 else -1) for k, a in enumerate(areas)]
+                terms = "{2}" if s1 >= 0 else "-{2}"
+                terms += "".join(f" {'+' if sg > 0 else '-'} {{{k + 2}}}" for k, sg in enumerate(signs[1:], start=1))
+                c.formula(c.calc(f'A_(P {ln.number}) = A H (S_1 - S_2 + S_3 - S_4) dot 10^6',
+                                 "{0} dot {1} dot (" + terms + ") dot 10^6",
+                                 [V(gl.area, exact=True), V(h, sig=6)] + [V(abs(a), sig=6) for a in areas],
+                                 V(gl.area * h * (s1 - s2 + s3 - s4) * 1.0e6, sig=5), t("J")), numbered=False)
+                works.append((f"A_(P {ln.number})", gl.area * h * (s1 - s2 + s3 - s4) * 1.0e6))
         if ld is None:  # the gas forces alone: their works are A_с, driving on one stroke, resisting on the other
             c.p(t("The weights do no work over a cycle (their centres come back), so the work of the applied forces "
                   "over the cycle is the gas forces' (negative: over the cycle they take work from the motor):")
@@ -890,14 +933,23 @@ def _reduction(c: Ctx, s) -> None:
     c.p(t("Over a steady cycle the driving work equals the resistance work, so the constant driving moment of the "
           "motor reduced to the crank is"))
     m = abs(d.M_d)
-    c.formula(c.calc('M_"д" = abs(A_"с")/(2 π)', "{0}/(2 π)", [V(abs(a_c), sig=6)], V(m, sig=5), t("N·m")),
-              where=['M_"д"'])
+    if s.turns == 1:
+        c.formula(c.calc('M_"д" = abs(A_"с")/(2 π)', "{0}/(2 π)", [V(abs(a_c), sig=6)], V(m, sig=5), t("N·m")),
+                  where=['M_"д"'])
+    else:  # the cycle of a four-stroke engine: two turns, 4π rad
+        c.formula(c.calc('M_"д" = abs(A_"с")/(4 π)', "{0}/(4 π)", [V(abs(a_c), sig=6)], V(m, sig=5), t("N·m")),
+                  where=['M_"д"'])
     c.p(t("This is the mean reduced moment $M$ = {m} by which the power of the motor is chosen in the chapter on the "
           "gear mechanisms.").format(m=c.qty(m, t("N·m"), sig=5)))
     c.doc.claim(kind="linkage_drive_moment", moment=m, work=a_c)
     c.p(t("The driving work grows linearly, $A_\"д\" = M_\"д\" Δ φ$, and the kinetic energy of the machine changes by "
           "$Δ T = A_\"д\" + A_\"с\"$ (Table {tab:dyn_reduced}); over the cycle $Δ T$ comes back to zero."))
-    if c.has("linkage_dynamics"):
+    if c.has("linkage_dynamics") and s.turns > 1:
+        c.p(t("The diagrams of $M_\"пр\"$ and $M_\"д\"$, of $Δ T$ (with $Δ T_\"I\"$ of the flywheel's calculation) and of "
+              "$J_\"пр\"$ over the cycle of two turns (0 … 720°) are shown in Figure {fig:linkage_dynamics}."))
+        c.fig("linkage_dynamics", t("Reduced moments, change of the kinetic energy and reduced moment of inertia over "
+                                    "the cycle of two turns"))
+    elif c.has("linkage_dynamics"):
         c.p(t("The diagrams of $M_\"пр\"$ and $M_\"д\"$, of $Δ T$ (with $Δ T_\"I\"$ of the flywheel's calculation) and of "
               "$J_\"пр\"$ over the crank's turn are shown in Figure {fig:linkage_dynamics}."))
         c.fig("linkage_dynamics", t("Reduced moments, change of the kinetic energy and reduced moment of inertia over "

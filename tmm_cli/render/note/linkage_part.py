@@ -266,6 +266,13 @@ def _positions(c: Ctx, s) -> None:
           "rotation.{extra} The scale of the scheme in all positions is $μ_l = {mu_l}$ m/mm, the round value with "
           "which it takes at most {room} mm.").format(count=m.positions, step=n(round(step, 2)), extra=extra,
                                                       mu_l=c.q(s.scheme_scale, sig=3), room=n(SCHEME_MM)))
+    loads = m.extra.get("load")
+    if isinstance(loads, list) and any(isinstance(x, dict) and "head" in x and isinstance(x.get("pressure"), list)
+                                       and len(x["pressure"]) == 4 for x in loads):  # a four-stroke engine
+        c.p(t("The engine is a four-stroke one: its working cycle takes two turns of the crank. The kinematics repeat "
+              "every turn, so this chapter and sheet 1 take the positions of one turn; the force analysis and the "
+              "dynamics (chapter 2) take both turns, the positions of the second turn numbered on, {a} … {b}.")
+            .format(a=m.positions, b=2 * m.positions - 1))
     if cy.stroke is not None and cy.working is not None:
         first = next(p for p in cy.positions if p.extreme == "start")
         last = next(p for p in cy.positions if p.extreme == "end")

@@ -592,7 +592,7 @@ def _series(s: Sheet2, lang: str):
         from ...linkage.scales import DIAGRAM_HEIGHT_MM
 
         mech = s.sheet1.mechanism
-        forces = piston_forces(mech, s.input.gas, s.sheet1.cycle.curve.kin)
+        forces = piston_forces(mech, s.input.gas, s.curve_kin())  # over the cycle: a four-stroke's 720°
         mu = drafting_scale(max(float(np.max(np.abs(f))) for f in forces.values()), DIAGRAM_HEIGHT_MM)
         out.insert(0, ("P", mu, tr(lang, "N/mm"), [
             (f / mu, "Основные" if j == 0 else "Штриховые", None, f"P_{{{mech.link(name).number}}}")
@@ -608,6 +608,9 @@ def _flat(name: str) -> str:
 def _diagram_items(s: Sheet2, lang: str) -> list[str]:
     items = [f"μ_{{{_flat(name)}}} = {num(mu, lang, sig=3)} {unit}" for name, mu, unit, _ in _series(s, lang)]
     items.append(f"μ_{{φ}} = {num(math.degrees(s.scales.phi), lang, sig=3)} °/" + tr(lang, "mm"))
+    if s.turns > 1:  # a four-stroke engine: the axis covers its cycle of two turns
+        items.append(tr(lang, "φ: 0 … {deg}°, the cycle of {turns} turns; dashed: the end of a turn").format(
+            deg=360 * s.turns, turns=s.turns))
     items.append(tr(lang, "positions from position 0; moments and works in the crank's sense of rotation"))
     items.append(tr(lang, "dashed: the crank and the rotor, ") + f"{num(s.dynamics.J_first, lang, sig=4)} " +
                  tr(lang, "kg·m²"))
@@ -629,26 +632,29 @@ def _diagrams_heading(lang: str) -> str:
 
 def _diagrams_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
     d, sc = s.dynamics, s.scales
-    c = s.sheet1.cycle
     f = field(sh, "dynamics_diagrams", box, _diagrams_heading(lang))
     x0b, y0b, x1b, y1b = f.inner
     length = sc.axis_mm
     x0 = x0b + DIAGRAM_LEFT - 1.0 + max(0.0, (x1b - x0b) - (DIAGRAM_LEFT + length + 9.0 + DIAGRAM_RIGHT)) / 2
     xs = x0 + d.travel / sc.phi
-    marks = [x0 + p.travel / sc.phi for p in c.positions]
+    marks = [x0 + p.travel / sc.phi for p in s.positions]  # the cycle's: a four-stroke engine's two turns
+    turns = [x0 + 2.0 * math.pi * k / sc.phi for k in range(1, s.turns)]
     lines = wrap_items(sh, _diagram_items(s, lang), box[2] - box[0] - 4.0)
     within = (x0b, y0b + caption_height(len(lines)), x1b, y1b)
     y = y1b
     y_axis = y
     loads = {symbol(ld.symbol, lang): ld for ld in d.loads}
     for name, mu, unit, curves in _series(s, lang):
-        y_axis = diagram(sh, within, x0, y, length, xs, curves, name, marks)
+        y_axis = diagram(sh, within, x0, y, length, xs, curves, name, marks, dashed=turns)
         if name in loads:  # a table load's own diagram: its working strokes dimensioned above it
             _working_spans(sh, within, x0, y_axis, y_axis + max(float(np.max(curves[0][0])), 0.0) + 3.0, sc.phi,
                            loads[name], lang)
         down = max(max(float(-np.min(cv[0])) for cv in curves), 0.0)
         y = y_axis - down - 3.0 - 4.0
-    position_numbers(sh, within, [(x0 + p.travel / sc.phi, p.label) for p in shown(c.positions)], y + 4.0)
+    position_numbers(sh, within, [(x0 + p.travel / sc.phi, p.label) for p in shown(s.positions)], y + 4.0)
+    if s.turns > 1:  # the axis of a two-turn cycle: its turns' ends in degrees under the numbers
+        position_numbers(sh, within, [(x0 + 2.0 * math.pi * k / sc.phi, f"{360 * k}°") for k in range(1, s.turns + 1)],
+                         y + 4.0 - H_MIN_LABEL - 2.2)
     caption(sh, box, lines)
 
 

@@ -70,7 +70,13 @@ def size(sh, ind, lang: str, width: float | None = None) -> tuple[float, float]:
     w = max(LEFT + length + RIGHT + 8.0, WIDTH_MIN)
     n = len(wrap_items(sh, _items(ind, lang), (width or w) - 4.0))
     return w, head(sh, heading(ind, lang), width or w) + SCALE_H + TOP + up + down + BOTTOM + NUMBERS_H \
-        + caption_height(n) + 2.0
+        + (_rows(ind) - 4) * (H_MIN_LABEL + 2.2) + caption_height(n) + 2.0
+
+
+def _rows(ind) -> int:
+    """Rows of position numbers under the s axis: 4, and 7 for the 2·N positions of a two-turn cycle
+    (each s/H then carries up to four positions' numbers)."""
+    return 7 if len(ind.marks) > 16 else 4
 
 
 def _ticks(lo: float, hi: float, mu: float) -> tuple[float, list[float]]:
@@ -137,7 +143,7 @@ def draw(sh, ind, lang: str, box) -> None:
         if abs(y - oy) > 1.5:
             sh.line((xm, oy), (xm, y), "Тонкие")
         xs.append((xm, label))
-    position_numbers(sh, within, xs, oy - down, rows=4)
+    position_numbers(sh, within, xs, oy - down, rows=_rows(ind))
     caption(sh, box, lines)
 
 

@@ -36,7 +36,7 @@ def forces_table(s: Sheet2, lang: str):
     for c in ld.couples:
         cols.append((f"{symbol(c.symbol, lang)}, " + tr(lang, "N·m"), "right"))
     t = _table(tr(lang, "Applied forces: inertia Φ = −m·a_S, moments M_Φ = −J_S·ε, weights G, the resistance (magnitudes; moments ccw positive)"), *cols)
-    for p in s.sheet1.cycle.positions:
+    for p in s.positions:  # the cycle's: two turns of them for a four-stroke engine
         i = p.index
         row = [p.label, num(_deg(p.phi), lang, decimals=1)]
         row += [num(abs(complex(f.f[i])), lang, decimals=1) for f in ld.forces]
@@ -55,7 +55,7 @@ def reactions_table(s: Sheet2, lang: str):
     t = _table(tr(lang, "Reactions in the pairs (Rij: link i on link j) and the balancing moment on the crank"),
                *cols)
     diff = s.difference_pct()
-    for p in s.sheet1.cycle.positions:
+    for p in s.positions:  # the cycle's: two turns of them for a four-stroke engine
         i = p.index
         row = [p.label] + [num(abs(complex(r.force[i])), lang, decimals=1) for r in ks.reactions]
         row += [num(float(s.balancing[i]), lang, decimals=3), num(float(s.lever.balancing[i]), lang, decimals=3),
@@ -115,7 +115,7 @@ def reduced_table(s: Sheet2, lang: str):
                ("№", "right"), (tr(lang, "M_r, {nm}").format(nm=nm), "right"),
                (tr(lang, "J_r, kg·m²"), "right"), (tr(lang, "A_r, {j}").format(j=j), "right"),
                (tr(lang, "A_d, {j}").format(j=j), "right"), (f"ΔT, {j}", "right"))
-    for p in s.sheet1.cycle.positions:
+    for p in s.positions:  # the cycle's: two turns of them for a four-stroke engine
         i = p.index
         at = lambda y: float(np.interp(p.travel, d.travel, y))  # noqa: E731 (the grid holds every position's travel)
         t.add_row(p.label, num(d.sense * float(s.reduced_moment[i]), lang, decimals=3),
@@ -133,10 +133,12 @@ def flywheel_table(s: Sheet2, lang: str):
                (tr(lang, "Note"), "left"))
     t.add_row(tr(lang, "Driving moment M_d (constant)"),
               f"{num(d.M_d, lang, decimals=3)} {nm}",
-              tr(lang, "A_d = −A_r over a turn; ") +
+              (tr(lang, "A_d = −A_r over a turn; ") if s.turns == 1 else
+               tr(lang, "A_d = −A_r over the cycle of two turns (720°); ")) +
               (tr(lang, "counter-clockwise") if d.sense > 0 else
                tr(lang, "clockwise")))
-    t.add_row(tr(lang, "Work of the resistance per turn A_r"),
+    t.add_row(tr(lang, "Work of the resistance per turn A_r") if s.turns == 1 else
+              tr(lang, "Work of the resistance per cycle (two turns) A_r"),
               f"{num(d.A_r[-1], lang, decimals=2)} " + tr(lang, "J"), "")
     t.add_row(tr(lang, "J of the crank and the rotor (first group)"),
               f"{num(d.J_first, lang, sig=4)} {kg}", "")
