@@ -5,6 +5,8 @@ from the note's text:
   качание» on the return) of the press feeder's rocker and of a four-bar's output rocker, and keeps
   «рабочий ход» for a slider. Figure 3 (the reduced moments against φ) shades the output's working
   stroke: with several loads, each on its own stroke, its axis says whose (link 3's, the ram's).
+- C7: a four-stroke engine's ΔT_I extremes and its speed's change are «за цикл из двух оборотов», a
+  one-turn machine's «за оборот».
 """
 
 from __future__ import annotations
@@ -47,3 +49,11 @@ def test_the_figure_says_whose_working_stroke_it_shades():
         tables = tomllib.loads((EXAMPLES / f"{name}.toml").read_text(encoding="utf-8"))
         fig = _dynamics(analyse_linkage(tables, f"{name}.toml"), "ru")
         assert fig.axes[-1].get_xlabel().endswith(whose), fig.axes[-1].get_xlabel()
+
+
+@pytest.mark.parametrize("name, cycle", [("engine_4stroke", "за цикл из двух оборотов"), ("shaper", "за оборот")])
+def test_the_flywheels_extremes_are_over_the_cycle(name, cycle):
+    text = _note(name)
+    said = re.findall(r"(?:^|\n)За (цикл из двух оборотов|оборот) \S*Δ", text)
+    assert said == [cycle[3:]], said
+    assert f"кривошипа {cycle} изменяется" in text

@@ -1016,8 +1016,11 @@ def _flywheel(c: Ctx, s) -> None:
                      ('J_"II"', t("the reduced moment of inertia of the second group, kg·m²"))])
     hi, lo = float(me.dT_I[me.i_max]), float(me.dT_I[me.i_min])
     deg = lambda k: c.qd(math.degrees(float(d.travel[k])), decimals=1)  # noqa: E731
-    c.p(t("Over the turn $Δ T_\"I\"$ is largest at $Δ φ = {phi_max}$ and smallest at $Δ φ = {phi_min}$; the moment of "
-          "inertia the first group needs and the flywheel's:").format(phi_max=deg(me.i_max), phi_min=deg(me.i_min)))
+    text = (t("Over the turn $Δ T_\"I\"$ is largest at $Δ φ = {phi_max}$ and smallest at $Δ φ = {phi_min}$; the moment "
+              "of inertia the first group needs and the flywheel's:") if s.turns == 1 else
+            t("Over the cycle of two turns $Δ T_\"I\"$ is largest at $Δ φ = {phi_max}$ and smallest at $Δ φ = {phi_min}$; "
+              "the moment of inertia the first group needs and the flywheel's:"))
+    c.p(text.format(phi_max=deg(me.i_max), phi_min=deg(me.i_min)))
     vals = [V(hi, sig=6), V(lo, sig=6), V(fw.delta, exact=True), V(fw.omega_mean, sig=5)]
     c.formula(c.calc('J_"I" = (Δ T_("I" max) - Δ T_("I" min))/(δ ω_1^2)', _neg("({0} - {1})/({2} dot {3}^2)", vals, 1),
                      vals, V(me.J_I, sig=5), t("kg·m²")))
@@ -1051,8 +1054,10 @@ def _flywheel(c: Ctx, s) -> None:
               "needed."))
     if fw.size is not None:
         _size(c, fw)
-    c.p(t("With the flywheel the crank speed changes over the turn between {w_min} and {w_max} rad/s: "
-          "$δ = {delta}$.").format(w_min=n(float(fw.omega.min()), decimals=4), w_max=n(float(fw.omega.max()), decimals=4),
+    c.p((t("With the flywheel the crank speed changes over the turn between {w_min} and {w_max} rad/s: "
+           "$δ = {delta}$.") if s.turns == 1 else
+         t("With the flywheel the crank speed changes over the cycle of two turns between {w_min} and {w_max} rad/s: "
+           "$δ = {delta}$.")).format(w_min=n(float(fw.omega.min()), decimals=4), w_max=n(float(fw.omega.max()), decimals=4),
                                   delta=c.q(fw.delta_actual, sig=3)))
     c.doc.claim(kind="linkage_delta_actual", delta=fw.delta, actual=fw.delta_actual)
 
