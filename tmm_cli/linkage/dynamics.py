@@ -28,12 +28,25 @@ import numpy as np
 
 from ..records import record
 from .chain import Kinematics
-from .forces import G, applied
-from .loads import Stroke, load_strokes, load_work
+from .forces import G, applied, load_symbol
+from .loads import Stroke, load_size, load_strokes, load_work, working_spans
 from .masses import centre_motion
 from .mechanism import Mechanism
 from .power import reduced_inertia, total_power
 from .sheet2_file import Sheet2Input
+
+
+@record(eq=False)
+class LoadDiagram:
+    """A table load's own diagram over the cycle (the course's «диаграмма сил полезного
+    сопротивления» against φ): its magnitude on the dynamics' grid — the table's value at the
+    fraction of its own link's stroke on that link's working stroke, zero on the return
+    (:func:`.loads.load_size`)."""
+
+    symbol: str  # 'Fc' / 'Mc' (the only table load), 'Fc3', 'Mc5' (several: the link's number)
+    kind: str  # 'force' [N] | 'moment' [N·m]
+    values: np.ndarray  # the magnitude at the dynamics' travels, ≥ 0 [N or N·m]
+    spans: tuple[tuple[float, float], ...]  # its working strokes' crank travel from position 0 [rad]
 
 
 @record(eq=False)
@@ -49,6 +62,7 @@ class Dynamics:
     M_r: np.ndarray  # reduced moment of the resistance and the weights, in the sense of rotation [N·m]
     A_r: np.ndarray  # their work since position 0 [J]
     M_d: float  # the constant driving moment, in the sense of rotation [N·m]
+    loads: tuple[LoadDiagram, ...] = ()  # each table load's own diagram (the file's order)
 
     @property
     def J_II(self) -> np.ndarray:
@@ -117,9 +131,12 @@ def dynamics(mech: Mechanism, inp: Sheet2Input, stroke: Stroke | None, kin: Kine
     loading = applied(mech, inp, stroke, kin, strokes)
     m_r = total_power(kin, loading, ("load", "weight")) / w_m
     a_r = np.zeros(travel.shape)
+    diagrams = []
     for ld, st in zip(inp.tables, strokes):
         if st is not None:
             a_r = a_r + load_work(ld, st, mech, kin, travel)
+            diagrams.append(LoadDiagram(load_symbol(mech, ld, len(inp.tables)), ld.kind,
+                                        load_size(ld, st, mech, kin), working_spans(st, float(travel[-1]))))
     for gl in inp.gas:
         from .gas import gas_work, piston
 
@@ -131,4 +148,5 @@ def dynamics(mech: Mechanism, inp: Sheet2Input, stroke: Stroke | None, kin: Kine
     crank = [ms for ms in inp.masses if ms.number == 1]
     j_first = rotor + float(reduced_inertia(kin, crank)[0])
     cycle = 2.0 * math.pi * max(1, round(float(travel[-1]) / (2.0 * math.pi)))  # a turn, or a four-stroke's two
-    return Dynamics(travel, w_m, sense, j_r, j_first, rotor, m_r, a_r, driving_moment(float(a_r[-1]), cycle))
+    return Dynamics(travel, w_m, sense, j_r, j_first, rotor, m_r, a_r, driving_moment(float(a_r[-1]), cycle),
+                    tuple(diagrams))

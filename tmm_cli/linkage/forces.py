@@ -126,12 +126,18 @@ def applied(mech: Mechanism, inp: Sheet2Input, stroke: Stroke | None, kin: Kinem
             continue
         ln = mech.link(ld.link)
         value = load_value(ld, st, mech, kin)
-        tail = str(ln.number) if len(tables) > 1 else ""
         if ld.kind == "force":
-            forces.append(AppliedForce(ln.name, ln.number, "load", "Fc" + tail, ln.name, kin.z[ln.name], value))
+            forces.append(AppliedForce(ln.name, ln.number, "load", load_symbol(mech, ld, len(tables)), ln.name,
+                                       kin.z[ln.name], value))
         else:
-            couples.append(AppliedCouple(ln.name, ln.number, "load", "Mc" + tail, value))
+            couples.append(AppliedCouple(ln.name, ln.number, "load", load_symbol(mech, ld, len(tables)), value))
     return Loading(tuple(forces), tuple(couples))
+
+
+def load_symbol(mech: Mechanism, load, count: int) -> str:
+    """A table load's symbol: Fc (a force) or Mc (a moment) when it is the only one (`count`), else
+    followed by its link's number, Fc3, Mc5."""
+    return ("Fc" if load.kind == "force" else "Mc") + (str(mech.link(load.link).number) if count > 1 else "")
 
 
 def _start(mech: Mechanism) -> float:

@@ -170,12 +170,39 @@ def progress(stroke: Stroke, mech: Mechanism, kin: Kinematics):
     return travel, fraction, travel <= stroke.working + WORKING_TOLERANCE
 
 
+def load_size(load: Load, stroke: Stroke, mech: Mechanism, kin: Kinematics):
+    """The load's magnitude at the kinematics' angles [N or N·m]: the table's value at the fraction
+    of the stroke covered on the working stroke, zero on the return stroke — the ordinates of its
+    diagram against the crank's turn (the course's «диаграмма сил полезного сопротивления»)."""
+    _, fraction, working = progress(stroke, mech, kin)
+    return np.where(working, table_value(load, fraction), 0.0)
+
+
+def working_spans(stroke: Stroke, end: float) -> tuple[tuple[float, float], ...]:
+    """The crank's travel from position 0 [rad] on the working strokes, as intervals within
+    [0, `end`] (`end`: the cycle's travel, 2π, or 4π for a two-turn cycle); a stroke that began
+    before position 0 gives the first interval from 0.
+
+    >>> st = Stroke(0.0, 1, 3.0, 0.1, 1, 0.0, "slider", 5.0)   # 3 rad of working stroke from 5 rad on
+    >>> [tuple(round(x, 6) for x in s) for s in working_spans(st, 2 * math.pi)]
+    [(0.0, 1.716815), (5.0, 6.283185)]
+    """
+    out = []
+    k = -1
+    while stroke.lead + 2.0 * math.pi * k < end - WORKING_TOLERANCE:
+        lo = stroke.lead + 2.0 * math.pi * k
+        hi = lo + stroke.working
+        if hi > WORKING_TOLERANCE:
+            out.append((max(lo, 0.0), min(hi, end)))
+        k += 1
+    return tuple(out)
+
+
 def load_value(load: Load, stroke: Stroke, mech: Mechanism, kin: Kinematics):
     """The load at the kinematics' angles: a force as a complex vector [N] (along the guide,
     against the working motion) or a moment [N·m] (counter-clockwise positive, against the working
     swing); zero on the return stroke."""
-    _, fraction, working = progress(stroke, mech, kin)
-    size = np.where(working, table_value(load, fraction), 0.0)
+    size = load_size(load, stroke, mech, kin)
     if load.kind == "moment":
         return -stroke.direction * size
     if load.direction is not None:  # its own fixed direction (a cutting force with a vertical part)

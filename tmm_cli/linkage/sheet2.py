@@ -42,12 +42,13 @@ class DynamicsScales:
     J: float  # μ_J [kg·m²/mm] (J_r against the turn)
     axis_mm: float
     height_mm: float
+    loads: tuple[float, ...] = ()  # μ of each table load's own diagram [N/mm or N·m/mm] (Dynamics.loads' order)
 
 
 def dynamics_scales(dyn: Dynamics, fw: Flywheel | None, axis_mm: float = DIAGRAM_AXIS_MM,
                     height_mm: float = DIAGRAM_HEIGHT_MM) -> DynamicsScales:
     """μ of the diagrams M_r and M_d, A_r and A_d, ΔT (and ΔT_I), J_r over the cycle (a turn; a
-    four-stroke engine's two on the same axis length)."""
+    four-stroke engine's two on the same axis length), and of each table load's own diagram."""
     m = max(float(np.max(np.abs(dyn.M_r))), abs(dyn.M_d))
     a = max(float(np.max(np.abs(dyn.A_r))), float(np.max(np.abs(dyn.A_d))))
     t = float(np.max(np.abs(dyn.dT)))
@@ -55,7 +56,7 @@ def dynamics_scales(dyn: Dynamics, fw: Flywheel | None, axis_mm: float = DIAGRAM
         t = max(t, float(np.max(np.abs(fw.mertsalov.dT_I - fw.mertsalov.dT_I[0]))))
     return DynamicsScales(float(dyn.travel[-1]) / axis_mm, drafting_scale(m, height_mm), drafting_scale(a, height_mm),
                           drafting_scale(t, height_mm), drafting_scale(float(np.max(dyn.J_r)), height_mm), axis_mm,
-                          height_mm)
+                          height_mm, tuple(drafting_scale(float(np.max(ld.values)), height_mm) for ld in dyn.loads))
 
 
 @record(eq=False)

@@ -253,9 +253,15 @@ def _load(c: Ctx, s) -> None:
     value = float(table_value(ld, f)) if on else 0.0
     c.doc.claim(kind="linkage_load_at_position", label=_position(s).label, working=on, share=f, value=value)
     if on:
-        c.p(t("In position {label} the crank is on the working stroke and the output has covered the share {share} of "
-              "it, so ${sym} = {value}$ {unit}.").format(label=_position(s).label, share=n(f, decimals=3), sym=sym,
-                                                      value=c.q(value, decimals=1), unit=unit))
+        text = (t("In position {label} the crank is on the working stroke and the output has covered the share {share} of "
+                  "it, so ${sym} = {value}$ {unit}.") if ld.kind == "force" else
+                t("In position {label} the output rocker is on its working swing and has covered the share {share} of "
+                  "it, so ${sym} = {value}$ {unit}."))
+        c.p(text.format(label=_position(s).label, share=n(f, decimals=3), sym=sym, value=c.q(value, decimals=1),
+                        unit=unit))
+    elif ld.kind == "moment":
+        c.p(t("In position {label} the output rocker is on its return swing: ${sym} = 0$.").format(
+            label=_position(s).label, sym=sym))
     else:
         c.p(t("In position {label} the crank is on the return stroke: ${sym} = 0$.").format(
             label=_position(s).label, sym=sym))
@@ -263,8 +269,9 @@ def _load(c: Ctx, s) -> None:
 
 def _load_symbol(s, ld) -> str:
     """The symbol of a table load in the loading (Fc, Mc; of several, Fc3, Mc5 by the link's number)."""
-    tail = str(s.sheet1.mechanism.link(ld.link).number) if len(s.input.tables) > 1 else ""
-    return ("Fc" if ld.kind == "force" else "Mc") + tail
+    from ...linkage.forces import load_symbol
+
+    return load_symbol(s.sheet1.mechanism, ld, len(s.input.tables))
 
 
 def _several_loads(c: Ctx, s) -> None:
@@ -317,14 +324,18 @@ def _several_loads(c: Ctx, s) -> None:
         f, on = float(fraction[i]), bool(working[i])
         value = float(table_value(ld, f)) if on else 0.0
         c.doc.claim(kind="linkage_load_at_position", label=label, working=on, share=f, value=value, link=ld.link)
-        if on:
-            c.p(t("In position {label} the {link} (link {number}) is on its working stroke and has covered the share "
-                  "{share} of it, so ${sym} = {value}$ {unit}.").format(label=label, link=_link_name(c, ln), number=ln.number,
-                                                     share=n(f, decimals=3), sym=sym, value=c.q(value, decimals=1),
-                                                     unit=unit))
+        if on:  # a rocker's stroke is its swing (рабочее качание)
+            text = (t("In position {label} the {link} (link {number}) is on its working stroke and has covered the share "
+                      "{share} of it, so ${sym} = {value}$ {unit}.") if ld.kind == "force" else
+                    t("In position {label} the {link} (link {number}) is on its working swing and has covered the share "
+                      "{share} of it, so ${sym} = {value}$ {unit}."))
+            c.p(text.format(label=label, link=_link_name(c, ln), number=ln.number, share=n(f, decimals=3), sym=sym,
+                            value=c.q(value, decimals=1), unit=unit))
         else:
-            c.p(t("In position {label} the {link} (link {number}) is on its return stroke: ${sym} = 0$.").format(
-                label=label, link=_link_name(c, ln), number=ln.number, sym=sym))
+            text = (t("In position {label} the {link} (link {number}) is on its return stroke: ${sym} = 0$.")
+                    if ld.kind == "force" else
+                    t("In position {label} the {link} (link {number}) is on its return swing: ${sym} = 0$."))
+            c.p(text.format(label=label, link=_link_name(c, ln), number=ln.number, sym=sym))
 
 
 def _gas(c: Ctx, s) -> None:
@@ -1032,10 +1043,11 @@ def _flywheel(c: Ctx, s) -> None:
                      ('J_"II"', t("the reduced moment of inertia of the second group, kg·m²"))])
     hi, lo = float(me.dT_I[me.i_max]), float(me.dT_I[me.i_min])
     deg = lambda k: c.qd(math.degrees(float(d.travel[k])), decimals=1)  # noqa: E731
-    c.p((t("Over the turn $Δ T_\"I\"$ is largest at $Δ φ = {phi_max}$ and smallest at $Δ φ = {phi_min}$; the moment of "
-           "inertia the first group needs and the flywheel's:") if s.turns == 1 else
-         t("Over the cycle of two turns $Δ T_\"I\"$ is largest at $Δ φ = {phi_max}$ and smallest at $Δ φ = {phi_min}$; "
-           "the moment of inertia the first group needs and the flywheel's:")).format(phi_max=deg(me.i_max), phi_min=deg(me.i_min)))
+    text = (t("Over the turn $Δ T_\"I\"$ is largest at $Δ φ = {phi_max}$ and smallest at $Δ φ = {phi_min}$; the moment "
+              "of inertia the first group needs and the flywheel's:") if s.turns == 1 else
+            t("Over the cycle of two turns $Δ T_\"I\"$ is largest at $Δ φ = {phi_max}$ and smallest at $Δ φ = {phi_min}$; "
+              "the moment of inertia the first group needs and the flywheel's:"))
+    c.p(text.format(phi_max=deg(me.i_max), phi_min=deg(me.i_min)))
     vals = [V(hi, sig=6), V(lo, sig=6), V(fw.delta, exact=True), V(fw.omega_mean, sig=5)]
     c.formula(c.calc('J_"I" = (Δ T_("I" max) - Δ T_("I" min))/(δ ω_1^2)', _neg("({0} - {1})/({2} dot {3}^2)", vals, 1),
                      vals, V(me.J_I, sig=5), t("kg·m²")))

@@ -19,6 +19,7 @@ energy–mass diagram are drawing scales chosen to fit their fields and printed 
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -569,7 +570,8 @@ DIAGRAM_RIGHT = 16.0
 
 
 def _series(s: Sheet2, lang: str):
-    """(name, μ, unit, [(ordinates [mm], layer, linetype, label)]) of the four diagrams."""
+    """(name, μ, unit, [(ordinates [mm], layer, linetype, label)]) of the diagrams: the piston forces P and
+    each table load's own (F_пс3, M_пс5: the core's Dynamics.loads), then M, A, ΔT, J."""
     d, fw, sc = s.dynamics, s.flywheel, s.scales
     jm = tr(lang, "J/mm")
     out = [("M", sc.M, tr(lang, "N·m/mm"), [(d.M_r / sc.M, "Основные", None, tr(lang, "M_{r}")),
@@ -582,6 +584,9 @@ def _series(s: Sheet2, lang: str):
                else [])),
            ("J", sc.J, tr(lang, "kg·m²/mm"), [(d.J_r / sc.J, "Основные", None, tr(lang, "J_{r}")),
                                                 (np.full(d.travel.shape, d.J_first) / sc.J, "Штриховые", None, None)])]
+    out[0:0] = [(symbol(ld.symbol, lang), mu, tr(lang, "N/mm") if ld.kind == "force" else tr(lang, "N·m/mm"),
+                 [(ld.values / mu, "Основные", None, None)])
+                for ld, mu in zip(d.loads, sc.loads)]  # each table load's own diagram, zero on its return stroke
     if s.input.gas:  # the piston force diagrams P = p·A over the turn (+ away from the head)
         from ...linkage.gas import piston_forces
         from ...linkage.scales import DIAGRAM_HEIGHT_MM
@@ -595,8 +600,13 @@ def _series(s: Sheet2, lang: str):
     return out
 
 
+def _flat(name: str) -> str:
+    """A diagram's name as one subscript of its μ: 'F_{пс3}' → 'Fпс3' (markup does not nest)."""
+    return re.sub(r"[_^]\{([^}]*)\}", r"\1", name)
+
+
 def _diagram_items(s: Sheet2, lang: str) -> list[str]:
-    items = [f"μ_{{{name}}} = {num(mu, lang, sig=3)} {unit}" for name, mu, unit, _ in _series(s, lang)]
+    items = [f"μ_{{{_flat(name)}}} = {num(mu, lang, sig=3)} {unit}" for name, mu, unit, _ in _series(s, lang)]
     items.append(f"μ_{{φ}} = {num(math.degrees(s.scales.phi), lang, sig=3)} °/" + tr(lang, "mm"))
     if s.turns > 1:  # a four-stroke engine: the axis covers its cycle of two turns
         items.append(tr(lang, "φ: 0 … {deg}°, the cycle of {turns} turns; dashed: the end of a turn").format(
@@ -633,8 +643,12 @@ def _diagrams_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
     within = (x0b, y0b + caption_height(len(lines)), x1b, y1b)
     y = y1b
     y_axis = y
+    loads = {symbol(ld.symbol, lang): ld for ld in d.loads}
     for name, mu, unit, curves in _series(s, lang):
         y_axis = diagram(sh, within, x0, y, length, xs, curves, name, marks, dashed=turns)
+        if name in loads:  # a table load's own diagram: its working strokes dimensioned above it
+            _working_spans(sh, within, x0, y_axis, y_axis + max(float(np.max(curves[0][0])), 0.0) + 3.0, sc.phi,
+                           loads[name], lang)
         down = max(max(float(-np.min(cv[0])) for cv in curves), 0.0)
         y = y_axis - down - 3.0 - 4.0
     position_numbers(sh, within, [(x0 + p.travel / sc.phi, p.label) for p in shown(s.positions)], y + 4.0)
@@ -642,6 +656,27 @@ def _diagrams_field(sh: Sheet, s: Sheet2, lang: str, box) -> None:
         position_numbers(sh, within, [(x0 + 2.0 * math.pi * k / sc.phi, f"{360 * k}°") for k in range(1, s.turns + 1)],
                          y + 4.0 - H_MIN_LABEL - 2.2)
     caption(sh, box, lines)
+
+
+def _working_spans(sh: Sheet, within, x0: float, y_axis: float, y: float, mu_phi: float, ld, lang: str) -> None:
+    """The working strokes of a table load's diagram (:attr:`LoadDiagram.spans`) as dimension lines at
+    height `y` over extension lines from the φ axis, the longest named «working stroke» (a moment on
+    a rocker: «working swing»), so that where the load acts reads even where its table starts or ends
+    at zero."""
+    spans = [(x0 + lo / mu_phi, x0 + hi / mu_phi) for lo, hi in ld.spans if (hi - lo) / mu_phi > 1.0]
+    for a, b in spans:
+        for x in (a, b):
+            if x > x0 + 0.3:
+                sh.line((x, y_axis), (x, y + 1.5), "Тонкие")
+        sh.line((a, y), (b, y), "Тонкие")
+        if b - a > 7.0:
+            sh.arrow((a, y), (-1, 0), "Тонкие", 2.5, 0.8)
+            sh.arrow((b, y), (1, 0), "Тонкие", 2.5, 0.8)
+    if spans:
+        a, b = max(spans, key=lambda ab: ab[1] - ab[0])
+        text = tr(lang, "working stroke") if ld.kind == "force" else tr(lang, "working swing")
+        sh.label(text, ((a + b) / 2, y), H_MIN_LABEL, within=within, dirs=("n", "ne", "nw"), dists=(0.8, 1.5),
+                 leader=False, priority=5, optional=True)
 
 
 def _witt_items(s: Sheet2, lang: str) -> list[str]:

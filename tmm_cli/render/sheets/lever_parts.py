@@ -283,6 +283,7 @@ def diagram_extent(curves) -> tuple[float, float]:
     return up, down
 
 
+LABEL_APART = 4.0  # [mm] two curves' names anchored closer than this: the later one moves along its curve
 DIAGRAM_TOP = 13.0  # above the highest ordinate: the arrow and the axis' name
 DIAGRAM_BOTTOM = 3.0  # below the lowest
 NUMBERS_H = 2.5 + 2 * (H_MIN_LABEL + 2.2) + H_MIN_LABEL  # three rows of position numbers
@@ -324,12 +325,20 @@ def diagram(sh: Sheet, within, x0: float, y_top: float, length: float, xs, curve
     for x in dashed:
         sh.line((x, y0 - down), (x, y0 + up), "Штриховые")
     if label_curves:
+        anchors = []
         for (vals, layer, lt, lab), yy in zip(curves, ys):
             if not lab:
                 continue
             j = int(np.argmax(np.abs(yy)))
             if float(np.ptp(yy)) < 1.0:  # a straight line: the label near its right end
                 j = int(0.88 * (len(yy) - 1))
+            if any(math.hypot(xs[j] - ax, yy[j] - ay) < LABEL_APART for ax, ay in anchors):
+                # its extreme is an earlier curve's (ΔT_I at ΔT's): named where it parts most from the first
+                # curve, away from the earlier names, so that the two names do not meet at one point
+                free = np.all([np.abs(xs - ax) >= 3.0 * LABEL_APART for ax, _ in anchors], axis=0)
+                if np.any(free):
+                    j = int(np.argmax(np.where(free, np.abs(yy - ys[0]) + 1e-3 * np.abs(yy), -1.0)))
+            anchors.append((float(xs[j]), float(yy[j])))
             out = (0.0, 1.0) if yy[j] >= 0 else (0.0, -1.0)
             sh.label(lab, (float(xs[j]), y0 + float(yy[j])), H_LABEL, within=within, dirs=dirs_from(out),
                      dists=(1.0, 2.5, 4.5), priority=6)
