@@ -407,6 +407,11 @@ def test_the_note_figure_draws_the_whole_cycle():
             x, y = np.asarray(dT.get_xdata()), np.asarray(dT.get_ydata())
             assert x[-1] == pytest.approx(end) and x.max() == pytest.approx(end)
             assert abs(y[-1]) < 1e-6 * max(1.0, float(np.abs(y).max()))
+            r = fig.canvas.get_renderer()
+            for ax in (ax_m, ax_t, ax_j):  # each panel's μ box clear of its legend
+                leg = ax.get_legend().get_window_extent(r)
+                mus = [t.get_window_extent(r) for t in ax.texts if "μ" in t.get_text()]
+                assert mus and not any(m.overlaps(leg) for m in mus), ax.get_ylabel()
             ticks = list(ax_j.get_xticks())
             assert ticks[-1] == pytest.approx(end) and len(ticks) == (25 if end > 360 else 13)
             import matplotlib.pyplot as plt

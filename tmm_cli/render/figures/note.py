@@ -579,7 +579,9 @@ def _dynamics(s2, lang: str):
         ax.set_xticks([t for t, _ in ticks])
         ax.set_xticklabels([lab for _, lab in ticks] if k == 2 else [])
         ax.grid(alpha=0.3, lw=0.4)
-        ax.legend(loc="upper right", ncol=2, fontsize=MIN_PT, frameon=True, framealpha=0.9, edgecolor="0.6")
+        # a two-turn ΔT comes back to 0 at the right: its μ box takes the upper right, the legend the middle
+        where = "upper center" if k == 1 and s2.turns > 1 else "upper right"
+        ax.legend(loc=where, ncol=2, fontsize=MIN_PT, frameon=True, framealpha=0.9, edgecolor="0.6")
     if len(s2.input.tables) > 1 and c.stroke_spans():  # several loads, each its own stroke: say whose is shaded
         number = s2.sheet1.mechanism.link(s2.sheet1.mechanism.output.link).number
         axes[-1].set_xlabel(mt(tr(lang, "positions of the crank; φ from position 0 (μ_φ = {mu} °/mm), the working stroke "
