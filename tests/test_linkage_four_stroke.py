@@ -484,3 +484,27 @@ def test_an_engine_is_said_to_drive_its_consumer(tmp_path):
             e.text for e in doc.modelspace().query("MTEXT"))
         assert ("Момент сопротивления потребителя" in words) == engine, name
         assert ("Движущий момент" in words) != engine, name
+
+
+
+def test_the_terminal_names_an_engines_constant_moment_the_consumers_resistance():
+    """An engine's terminal table says what sheet 2 and the note say: the constant moment is the
+    consumer's resistance M_с = A·H·∮p dx/(4π) > 0, printed positive (a compressor keeps «Движущий
+    момент»)."""
+    import re
+
+    from cli_helpers import run
+
+    for name, word, other in (("engine_4stroke", "Момент сопротивления потребителя M_с", "Движущий момент M_д"),
+                              ("v_compressor", "Движущий момент M_д", "Момент сопротивления потребителя")):
+        res = run("linkage", EXAMPLES / f"{name}.toml", "--lang", "ru", "--no-plots")
+        assert res.exit_code == 0, res.output
+        text = " ".join(res.output.split())
+        assert word in text and other not in text, name
+        if name == "engine_4stroke":
+            d = data(name)
+            m = parse_mechanism(d, "m.toml")
+            ld = next(ld for ld in d["load"] if "pressure" in ld)
+            H, _, _ = piston_geometry(m, ld, 0.0)  # the stroke does not depend on where the turn starts
+            printed = float(re.search(word + r"[^│]*│ ([\d,]+) Н·м", text).group(1).replace(",", "."))
+            assert printed == pytest.approx(loop_work(ld, H) / (4 * math.pi), abs=2e-3)

@@ -66,7 +66,7 @@ def run_project(
         torque_nm, crank_rpm = linkage.motor_input()
         notes = (Note.make("project_mechanism_motor", "assumption", torque=torque_nm, rpm=crank_rpm,
                            file=linkage_name),) + linkage_warnings(linkage)
-        if linkage.input.gas and linkage.dynamics.M_d < 0.0:  # an engine: M is its consumer's resisting moment
+        if linkage.is_engine:  # an engine: M is its consumer's resisting moment
             notes += (Note.make("project_engine_consumer", "assumption", torque=torque_nm),)
 
     gears = design_gears(

@@ -135,6 +135,13 @@ class Sheet2:
         out.setdefault("a", 1j * complex(self.sheet1.cycle.kin.v[self.sheet1.mechanism.crank.joint][i]) / plan.scale)
         return out
 
+    @property
+    def is_engine(self) -> bool:
+        """A machine-motor: gas loads whose work over the cycle is given out (M_d < 0), so the gas
+        forces drive and the constant moment is the consumer's resistance M_с = −M_d (the book's
+        machine-motor, §2 of the dynamics; issue 34's review)."""
+        return bool(self.input.gas) and self.dynamics.M_d < 0.0
+
     def lever_scale(self) -> float:
         """μ [(m/s)/mm] of Zhukovsky's lever as drawn on sheet 2 and read in the note."""
         return lever_scale(self.sheet1.plans[0].velocity.scale, self.lever_points().values())

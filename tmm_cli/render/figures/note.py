@@ -544,7 +544,7 @@ def _dynamics(s2, lang: str):
         axes.append(_axes(fig, box, size))
     ax = axes[0]
     ax.plot(x, d.M_r, color="k", lw=1.2, label=mt(trc(lang, "note figure, dynamics", "M_r")))
-    engine = bool(s2.input.gas) and d.M_d < 0.0  # the consumer's resisting moment M_с, drawn with its sign
+    engine = s2.is_engine  # the consumer's resisting moment M_с, drawn with its sign
     sym = "−" + mt(trc(lang, "note figure, dynamics", "M_c")) if engine else mt(trc(lang, "note figure, dynamics", "M_d"))
     ax.axhline(d.M_d, color=C_RET, lw=1.2, label=sym + " = " + _n(d.M_d, lang, decimals=2) + " " + nm)
     ax.set_ylabel(mt(f"M, {nm}"))

@@ -680,7 +680,7 @@ def _crank(c: Ctx, s) -> None:
     w = kin.omega1
     drives = mb * w > 0
     sense = t("counter-clockwise") if mb > 0 else t("clockwise")
-    if s.input.gas and s.dynamics.M_d < 0.0:  # an engine: the gas drives, the consumer's moment resists
+    if s.is_engine:  # an engine: the gas drives, the consumer's moment resists
         c.p((t("The balancing moment turns {sense}, the way the crank turns: in this position the crank (with the "
                "energy stored in the flywheel) drives the mechanism.") if drives else
              t("The balancing moment turns {sense}, against the crank's rotation: in this position the gas forces "

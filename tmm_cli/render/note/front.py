@@ -187,7 +187,7 @@ def linkage_results(c: Ctx) -> list[str]:
     out.append(t("the balancing moment in position {label} $M_\"ур\"$ = {mb} (by Zhukovsky's lever, a difference of "
                  "{diff})").format(label=s2.sheet1.cycle.positions[i].label, mb=c.qty(mb, t("N·m"), decimals=2),
                                    diff=_lever_difference(c, s2)))
-    if s2.input.gas and s2.dynamics.M_d < 0.0:  # an engine: the constant moment is its consumer's resistance
+    if s2.is_engine:  # an engine: the constant moment is its consumer's resistance
         out.append(t("the consumer's resisting moment $M_\"с\"$ = {mc}").format(mc=c.qty(-s2.dynamics.M_d, t("N·m"), sig=4)))
     else:
         out.append(t("the driving moment $M_\"д\"$ = {md}").format(md=c.qty(abs(s2.dynamics.M_d), t("N·m"), sig=4)))

@@ -631,7 +631,7 @@ def _power(c: Ctx) -> None:
         return
     p = g.power
     s2 = c.r.linkage
-    if s2 is not None and s2.input.gas and s2.dynamics.M_d < 0.0:  # an engine: no electric motor drives it
+    if s2 is not None and s2.is_engine:  # an engine: no electric motor drives it
         c.p(t("The mechanism of sheet 2 is an engine: here $M$ is its consumer's resisting moment $M_\"с\"$, the gear train is taken to pass it from the crank to the consumer, and the choice of an electric motor below is only a formal check of the train's load (an engine needs none)."))
     c.p(t("The required power is the mean reduced moment times the crank's angular speed, divided by the efficiencies of the reducer and of the linkage (§2.6 {cite:book}):"))
     c.formula(c.calc('ω_"кр" = (π n_"кр")/30', "(π dot {0})/30", [V(g.crank_rpm, exact=True)], V(p.omega_cr_rad_s, decimals=3),

@@ -911,7 +911,7 @@ def _rows(s: Sheet2, lang: str) -> list[tuple[str, str]]:
     d, fw = s.dynamics, s.flywheel
     nm, kg = tr(lang, "N·m"), tr(lang, "kg·m²")
     i = s.force_position
-    engine = bool(s.input.gas) and d.M_d < 0.0  # the gas drives: the constant moment is the consumer's resistance
+    engine = s.is_engine  # the gas drives: the constant moment is the consumer's resistance
     rows = [(tr(lang, "Consumer's resisting moment M_{c}"), f"{num(-d.M_d, lang, decimals=2)} {nm}") if engine else
             (tr(lang, "Driving moment M_{d}"), f"{num(d.M_d, lang, decimals=2)} {nm}"),
             (tr(lang, "M_{{b}}, position {label}; Zhukovsky").format(label=s.sheet1.cycle.positions[i].label),

@@ -131,8 +131,9 @@ def flywheel_table(s: Sheet2, lang: str):
     t = _table(tr(lang, "Dynamics and the flywheel"),
                (tr(lang, "Quantity"), "left"), (tr(lang, "Value"), "right"),
                (tr(lang, "Note"), "left"))
-    t.add_row(tr(lang, "Driving moment M_d (constant)"),
-              f"{num(d.M_d, lang, decimals=3)} {nm}",
+    t.add_row(*((tr(lang, "Consumer's resisting moment M_c (constant)"), f"{num(-d.M_d, lang, decimals=3)} {nm}")
+                if s.is_engine else
+                (tr(lang, "Driving moment M_d (constant)"), f"{num(d.M_d, lang, decimals=3)} {nm}")),
               (tr(lang, "A_d = −A_r over a turn; ") if s.turns == 1 else
                tr(lang, "A_d = −A_r over the cycle of two turns (720°); ")) +
               (tr(lang, "counter-clockwise") if d.sense > 0 else
