@@ -100,6 +100,17 @@ class Sheet2:
         from .turns import repeat_curve
 
         return repeat_curve(c.curve.kin, c.curve.travel, self.turns, c.start, self.sheet1.mechanism.crank.sense)[0]
+
+    def piston_force_diagram(self) -> tuple[dict[str, np.ndarray], float]:
+        """Sheet 2's diagram of the piston forces: P = p·A [N] of each gas load's piston on the
+        dynamics' grid over the cycle (+ away from its head; :func:`.gas.piston_forces`) and its
+        drafting scale μ_P [N/mm] for DIAGRAM_HEIGHT_MM; ({}, 0.0) without a gas load."""
+        if not self.input.gas:
+            return {}, 0.0
+        from .gas import piston_forces
+
+        forces = piston_forces(self.sheet1.mechanism, self.input.gas, self.curve_kin())
+        return forces, drafting_scale(max(float(np.max(np.abs(f))) for f in forces.values()), DIAGRAM_HEIGHT_MM)
     indicators: tuple[Indicator, ...] = ()  # the gas loads' indicator diagrams as drawn (:mod:`.indicator`)
     strokes: tuple = ()  # each table load's Stroke (input.tables' order): its own link's working stroke
 

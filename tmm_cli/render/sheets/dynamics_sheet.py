@@ -587,13 +587,9 @@ def _series(s: Sheet2, lang: str):
     out[0:0] = [(symbol(ld.symbol, lang), mu, tr(lang, "N/mm") if ld.kind == "force" else tr(lang, "N·m/mm"),
                  [(ld.values / mu, "Основные", None, None)])
                 for ld, mu in zip(d.loads, sc.loads)]  # each table load's own diagram, zero on its return stroke
-    if s.input.gas:  # the piston force diagrams P = p·A over the turn (+ away from the head)
-        from ...linkage.gas import piston_forces
-        from ...linkage.scales import DIAGRAM_HEIGHT_MM
-
+    forces, mu = s.piston_force_diagram()  # P = p·A over the cycle (+ away from the head), from the core
+    if forces:
         mech = s.sheet1.mechanism
-        forces = piston_forces(mech, s.input.gas, s.curve_kin())  # over the cycle: a four-stroke's 720°
-        mu = drafting_scale(max(float(np.max(np.abs(f))) for f in forces.values()), DIAGRAM_HEIGHT_MM)
         out.insert(0, ("P", mu, tr(lang, "N/mm"), [
             (f / mu, "Основные" if j == 0 else "Штриховые", None, f"P_{{{mech.link(name).number}}}")
             for j, (name, f) in enumerate(forces.items())]))
