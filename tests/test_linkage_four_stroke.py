@@ -501,6 +501,9 @@ def test_the_terminal_names_an_engines_constant_moment_the_consumers_resistance(
         assert res.exit_code == 0, res.output
         text = " ".join(res.output.split())
         assert word in text and other not in text, name
+        # the reactions table's M_ур: the consumer's moment for an engine, the motor's for a compressor
+        assert ("M_ур — момент потребителя на кривошипе" in text) == (name == "engine_4stroke"), name
+        assert ("M_ур — момент двигателя на кривошипе" in text) == (name != "engine_4stroke"), name
         if name == "engine_4stroke":
             d = data(name)
             m = parse_mechanism(d, "m.toml")

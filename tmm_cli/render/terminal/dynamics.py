@@ -61,7 +61,9 @@ def reactions_table(s: Sheet2, lang: str):
         row += [num(float(s.balancing[i]), lang, decimals=3), num(float(s.lever.balancing[i]), lang, decimals=3),
                 small_pct(float(diff[i]), lang, minus="-").removeprefix("= ")]
         t.add_row(*row, style="bold" if p.index == s.force_position else None)
-    t.caption = tr(lang, "M_b: the motor's moment on the crank, counter-clockwise positive; Δ = (M_b − M_b,Zhuk.)/M_b")
+    t.caption = (tr(lang, "M_b: the consumer's moment on the crank (an engine: the gas forces drive), counter-clockwise "
+                    "positive; Δ = (M_b − M_b,Zhuk.)/M_b") if s.is_engine else
+                 tr(lang, "M_b: the motor's moment on the crank, counter-clockwise positive; Δ = (M_b − M_b,Zhuk.)/M_b"))
     t.caption_justify = "left"
     return t
 
