@@ -25,6 +25,7 @@ from tmm_cli.inputs.names import clean_text, file_name
 pypdf = pytest.importorskip("pypdf")
 docx = pytest.importorskip("docx")
 ezdxf = pytest.importorskip("ezdxf")
+from ezdxf.tools.text import plain_text  # noqa: E402 (after the importorskip)
 EXAMPLES = Path(__file__).resolve().parents[1] / "docs" / "examples"
 
 # every markup character of typst, Markdown, HTML, rich, DXF and mathtext; controls, breaks, bidi
@@ -97,6 +98,7 @@ SETTINGS = settings(max_examples=3, deadline=None, suppress_health_check=[Health
 @SETTINGS
 @example(text='X $#text(fill: red)[INJ] #read("note-style.typ")$ a///b /* [/x] %%u G_{x}^{2} <img src=x>')
 @example(text="M\n\n= HEADING $x^$ \x1b[2J\u202e")
+@example(text="^")  # a final caret (hypothesis found it: ezdxf's reader drops it, see below)
 @given(text=texts)
 def test_project_and_note_to_docx_set_any_text_as_typed(tmp_path_factory, text):
     tmp = tmp_path_factory.mktemp("p")
@@ -116,7 +118,10 @@ def test_project_and_note_to_docx_set_any_text_as_typed(tmp_path_factory, text):
         body = "\n".join(p.text for p in docx.Document(folder / "note.docx").paragraphs).replace("\u2060", "")
         assert folded in body
         assert folded in md_rendered((folder / "report.md").read_text(encoding="utf-8"))  # the mechanism's name
-        shown = [e.plain_text() for e in ezdxf.readfile(folder / "sheet3.dxf").modelspace().query("TEXT")]
+        # ezdxf's plain_text drops a final caret («x^ » → «x»: its one-line fixer cuts a trailing «^»)
+        # though «^ » is AutoCAD's literal caret anywhere: a sentinel after the text keeps it in place
+        shown = [plain_text(e.dxf.text + "\x00").removesuffix("\x00")
+                 for e in ezdxf.readfile(folder / "sheet3.dxf").modelspace().query("TEXT")]
         assert folded in shown  # the student's cell of the title block, one line as typed
     res = run("note", folder, "--to", "docx", "--student", text, "--lang", "en")
     if ok_or_refused(res) == 0 and folded:
